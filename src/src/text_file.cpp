@@ -1,0 +1,49 @@
+#include "ppp_core/text_file.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <sys/stat.h>
+
+#include "ppp_core/error.hpp"
+
+namespace ppp {
+
+std::string readTextFile(const std::string& path, std::size_t max_bytes) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) throw IoError(path, std::string("cannot open: ") + std::strerror(errno));
+  if (S_ISDIR(info.st_mode)) throw IoError(path, "is a directory, expected a file");
+  if (static_cast<std::size_t>(info.st_size) > max_bytes) {
+    throw IoError(path, "file of " + std::to_string(info.st_size) + " bytes exceeds the limit of " +
+                            std::to_string(max_bytes) + " bytes");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(path, std::string("cannot open: ") + std::strerror(errno));
+  std::ostringstream contents;
+  contents << in.rdbuf();
+  if (in.bad()) throw IoError(path, "read failed");
+  return contents.str();
+}
+
+void writeFileAtomically(const std::string& path, const std::string& contents) {
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) throw IoError(path, std::string("cannot write: ") + std::strerror(errno));
+    out << contents;
+    out.flush();
+    if (!out) {
+      std::remove(temporary.c_str());
+      throw IoError(path, "write failed");
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
+    std::remove(temporary.c_str());
+    throw IoError(path, "cannot replace: " + reason);
+  }
+}
+
+}  // namespace ppp
