@@ -1,6 +1,7 @@
 #include "ppp_core/random_problem.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <string>
 
 #include "ppp_core/error.hpp"
