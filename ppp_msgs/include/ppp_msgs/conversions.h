@@ -1,0 +1,61 @@
+#pragma once
+
+#include <nav_msgs/OccupancyGrid.h>
+
+#include <cstdint>
+#include <string>
+
+#include "ppp_core/grid.hpp"
+#include "ppp_core/problem.hpp"
+#include "ppp_msgs/Obstacle.h"
+#include "ppp_msgs/Problem.h"
+
+/// Conversions between the ROS-free ppp_core model and the PPP Lab messages.
+/// The y-flip between the grid (y down, row 0 at the top) and the ROS map frame (y up, row 0 at the
+/// bottom) is done here, only through ppp::MapFrame.
+namespace ppp_msgs {
+
+/// OccupancyGrid value of a free cell.
+constexpr std::int8_t kFreeValue = 0;
+/// OccupancyGrid value of an obstacle cell.
+constexpr std::int8_t kObstacleValue = 100;
+/// Smallest OccupancyGrid value read as an obstacle by fromOccupancyGrid().
+constexpr std::int8_t kObstacleThreshold = 50;
+
+/// The grid as a map-frame occupancy grid: 0 free, 100 obstacle, origin (0,0) with identity
+/// orientation, grid cell (x,y) at data[MapFrame::mapIndex(x,y)] (the grid's top row is the last map row).
+/// The header stamp is left zero for the caller to set.
+/// @throws ppp::InvalidArgument naming "resolution" when it is not a positive finite number,
+///         or "grid" when the grid is empty.
+nav_msgs::OccupancyGrid toOccupancyGrid(const ppp::Grid& grid, double resolution, const std::string& frame_id = "map");
+
+/// The grid of a map-frame occupancy grid: values 50..100 are obstacles, 0..49 free, and -1 (unknown)
+/// is treated as an obstacle (a planner must not be offered cells nobody has seen as free).
+/// Origin and orientation are ignored; the map is taken as axis-aligned with row 0 at the bottom.
+/// @throws ppp::InvalidArgument naming the field (map.info.width, map.info.height, map.info.resolution,
+///         map.data, map.data[i]) for sides outside [kMinGridSide, kMaxGridSide], a non-positive
+///         resolution, a data size other than width*height, or a value outside [-1, 100].
+ppp::Grid fromOccupancyGrid(const nav_msgs::OccupancyGrid& map);
+
+/// The descriptor as a message; coordinates stay in the genotype's grid convention (y down).
+ppp_msgs::Obstacle toMessage(const ppp::Obstacle& obstacle);
+
+/// The descriptor of a message. @throws ppp::InvalidArgument naming `what` for an unknown shape.
+ppp::Obstacle fromMessage(const ppp_msgs::Obstacle& message, const std::string& what = "obstacle.shape");
+
+/// The problem as a message: decoded map in the map frame, start and goal as map-frame cell indices,
+/// genotype and metadata unchanged. The header stamp is left zero for the caller to set.
+/// @throws ppp::InvalidArgument naming the field when the problem is invalid (ppp::validateProblem)
+///         or the resolution is not a positive finite number.
+ppp_msgs::Problem toMessage(const ppp::Problem& problem, const std::string& id, double resolution);
+
+/// The problem of a message, rebuilt from its genotype: size from map.info, start and goal converted
+/// back from map-frame indices, then the decoded genotype compared cell by cell with the map.
+/// The map resolution and the id are not part of ppp::Problem and are dropped.
+/// @throws ppp::InvalidArgument naming the field for a malformed map (see fromOccupancyGrid), a start or
+///         goal off the map, an invalid problem (ppp::validateProblem), or a map that disagrees with the
+///         decoded genotype (naming the first differing cell in grid row-major order, as map.data[i] and in
+///         both grid and map coordinates).
+ppp::Problem fromMessage(const ppp_msgs::Problem& message);
+
+}  // namespace ppp_msgs

@@ -1,0 +1,195 @@
+#include "ppp_msgs/conversions.h"
+
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <string>
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/map_frame.hpp"
+
+namespace ppp_msgs {
+
+namespace {
+
+std::string cellText(int x, int y) { return "(" + std::to_string(x) + ", " + std::to_string(y) + ")"; }
+
+std::string sizeText(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
+
+void checkResolution(double resolution, const char* field) {
+  if (!(resolution > 0.0) || !std::isfinite(resolution)) {
+    throw ppp::InvalidArgument(
+        field, "expected a positive, finite number of metres per cell, got " + std::to_string(resolution));
+  }
+}
+
+/// A map side as an int; uint32 values above the limit (including negatives assigned to it) are rejected here.
+int checkedSide(std::uint32_t side, const char* field) {
+  if (side < static_cast<std::uint32_t>(ppp::kMinGridSide) || side > static_cast<std::uint32_t>(ppp::kMaxGridSide)) {
+    throw ppp::InvalidArgument(field, "expected a number of cells in [" + std::to_string(ppp::kMinGridSide) + ", " +
+                                          std::to_string(ppp::kMaxGridSide) + "], got " + std::to_string(side) +
+                                          (side > 0x7fffffffu ? " (a negative value wrapped to uint32?)" : ""));
+  }
+  return static_cast<int>(side);
+}
+
+/// The grid cell of a map-frame cell index message; `field` names it when it lies off the map.
+ppp::Cell gridCellOf(const ppp_msgs::GridCell& cell, const ppp::MapFrame& frame, const char* field) {
+  if (cell.x < 0 || cell.y < 0 || cell.x >= frame.width || cell.y >= frame.height) {
+    throw ppp::InvalidArgument(field, "map-frame cell (column, row from the bottom) " + cellText(cell.x, cell.y) +
+                                          " is outside the " + sizeText(frame.width, frame.height) + " map");
+  }
+  return frame.cellOfMapRowColumn(cell.x, cell.y);
+}
+
+/// The map-frame cell index message of a grid cell.
+ppp_msgs::GridCell mapCellOf(ppp::Cell cell, const ppp::MapFrame& frame) {
+  ppp_msgs::GridCell message;
+  message.x = cell.x;
+  message.y = frame.mapRow(cell);
+  return message;
+}
+
+}  // namespace
+
+nav_msgs::OccupancyGrid toOccupancyGrid(const ppp::Grid& grid, double resolution, const std::string& frame_id) {
+  checkResolution(resolution, "resolution");
+  ppp::validateGridSize(grid.width(), grid.height(), "grid");
+  const ppp::MapFrame frame{grid.width(), grid.height(), resolution};
+
+  nav_msgs::OccupancyGrid map;
+  map.header.frame_id = frame_id;
+  map.info.resolution = static_cast<float>(resolution);
+  map.info.width = static_cast<std::uint32_t>(grid.width());
+  map.info.height = static_cast<std::uint32_t>(grid.height());
+  map.info.origin.position.x = 0.0;
+  map.info.origin.position.y = 0.0;
+  map.info.origin.position.z = 0.0;
+  map.info.origin.orientation.x = 0.0;
+  map.info.origin.orientation.y = 0.0;
+  map.info.origin.orientation.z = 0.0;
+  map.info.origin.orientation.w = 1.0;
+  map.data.assign(static_cast<std::size_t>(grid.size()), kFreeValue);
+  for (int i = 0; i < grid.size(); ++i) {
+    const ppp::Cell cell = grid.cellAt(i);
+    if (grid.isObstacle(cell)) map.data[static_cast<std::size_t>(frame.mapIndex(cell))] = kObstacleValue;
+  }
+  return map;
+}
+
+ppp::Grid fromOccupancyGrid(const nav_msgs::OccupancyGrid& map) {
+  const int width = checkedSide(map.info.width, "map.info.width");
+  const int height = checkedSide(map.info.height, "map.info.height");
+  checkResolution(map.info.resolution, "map.info.resolution");
+  const std::size_t expected = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  if (map.data.size() != expected) {
+    throw ppp::InvalidArgument("map.data", "expected width*height = " + std::to_string(expected) + " values for the " +
+                                               sizeText(width, height) + " map, got " +
+                                               std::to_string(map.data.size()));
+  }
+
+  const ppp::MapFrame frame{width, height, map.info.resolution};
+  ppp::Grid grid(width, height);
+  for (std::size_t i = 0; i < expected; ++i) {
+    const int value = map.data[i];
+    if (value < -1 || value > kObstacleValue) {
+      throw ppp::InvalidArgument("map.data[" + std::to_string(i) + "]",
+                                 "expected -1 (unknown) or an occupancy in [0, 100], got " + std::to_string(value));
+    }
+    const int column = static_cast<int>(i % static_cast<std::size_t>(width));
+    const int row = static_cast<int>(i / static_cast<std::size_t>(width));
+    grid.setObstacle(frame.cellOfMapRowColumn(column, row), value == -1 || value >= kObstacleThreshold);
+  }
+  return grid;
+}
+
+ppp_msgs::Obstacle toMessage(const ppp::Obstacle& obstacle) {
+  ppp_msgs::Obstacle message;
+  message.shape = static_cast<std::uint8_t>(obstacle.shape);
+  message.x = obstacle.x;
+  message.y = obstacle.y;
+  message.length = obstacle.length;
+  message.height = obstacle.height;
+  return message;
+}
+
+ppp::Obstacle fromMessage(const ppp_msgs::Obstacle& message, const std::string& what) {
+  if (message.shape >= std::size(ppp::kAllShapes)) {
+    throw ppp::InvalidArgument(what, "expected a shape in [0, " + std::to_string(std::size(ppp::kAllShapes) - 1) +
+                                         "] (HBAR, VBAR, DIAG_DOWN, DIAG_UP, BLOCK), got " +
+                                         std::to_string(message.shape));
+  }
+  ppp::Obstacle obstacle;
+  obstacle.shape = ppp::kAllShapes[message.shape];
+  obstacle.x = message.x;
+  obstacle.y = message.y;
+  obstacle.length = message.length;
+  obstacle.height = message.height;
+  return obstacle;
+}
+
+ppp_msgs::Problem toMessage(const ppp::Problem& problem, const std::string& id, double resolution) {
+  ppp::validateProblem(problem);
+  checkResolution(resolution, "resolution");
+  const ppp::MapFrame frame{problem.width, problem.height, resolution};
+
+  ppp_msgs::Problem message;
+  message.id = id;
+  message.map = toOccupancyGrid(ppp::decodeGrid(problem), resolution);
+  message.start = mapCellOf(problem.start, frame);
+  message.goal = mapCellOf(problem.goal, frame);
+  message.max_obstacles = static_cast<std::uint32_t>(problem.max_obstacles);
+  message.obstacles.reserve(problem.obstacles.size());
+  for (const ppp::Obstacle& obstacle : problem.obstacles) message.obstacles.push_back(toMessage(obstacle));
+  message.metadata.reserve(problem.metadata.size());
+  for (const auto& entry : problem.metadata) {
+    diagnostic_msgs::KeyValue key_value;
+    key_value.key = entry.first;
+    key_value.value = entry.second;
+    message.metadata.push_back(key_value);
+  }
+  return message;
+}
+
+ppp::Problem fromMessage(const ppp_msgs::Problem& message) {
+  const ppp::Grid map_grid = fromOccupancyGrid(message.map);
+  const ppp::MapFrame frame{map_grid.width(), map_grid.height(), message.map.info.resolution};
+
+  ppp::Problem problem;
+  problem.width = map_grid.width();
+  problem.height = map_grid.height();
+  problem.start = gridCellOf(message.start, frame, "start");
+  problem.goal = gridCellOf(message.goal, frame, "goal");
+  if (message.max_obstacles > static_cast<std::uint32_t>(ppp::kMaxObstacleBudget)) {
+    throw ppp::InvalidArgument("max_obstacles", "expected an integer in [0, " +
+                                                    std::to_string(ppp::kMaxObstacleBudget) + "], got " +
+                                                    std::to_string(message.max_obstacles));
+  }
+  problem.max_obstacles = static_cast<int>(message.max_obstacles);
+  problem.obstacles.reserve(message.obstacles.size());
+  for (std::size_t i = 0; i < message.obstacles.size(); ++i) {
+    const std::string field = "obstacles[" + std::to_string(i) + "]";
+    problem.obstacles.push_back(fromMessage(message.obstacles[i], field + ".shape"));
+    ppp::validateObstacle(problem.obstacles.back(), problem.width, problem.height, field);
+  }
+  problem.metadata.reserve(message.metadata.size());
+  for (const diagnostic_msgs::KeyValue& entry : message.metadata) problem.metadata.emplace_back(entry.key, entry.value);
+  ppp::validateProblem(problem);
+
+  const ppp::Grid decoded = ppp::decodeGrid(problem);
+  for (int i = 0; i < decoded.size(); ++i) {
+    const ppp::Cell cell = decoded.cellAt(i);
+    if (decoded.isObstacle(cell) == map_grid.isObstacle(cell)) continue;
+    const int map_index = frame.mapIndex(cell);
+    throw ppp::InvalidArgument("map.data[" + std::to_string(map_index) + "]",
+                               "map cell (column, row from the bottom) " + cellText(cell.x, frame.mapRow(cell)) +
+                                   " = grid cell " + cellText(cell.x, cell.y) + " holds " +
+                                   std::to_string(message.map.data[static_cast<std::size_t>(map_index)]) + " (" +
+                                   (map_grid.isObstacle(cell) ? "obstacle" : "free") +
+                                   ") but the genotype decodes it as " +
+                                   (decoded.isObstacle(cell) ? "obstacle" : "free"));
+  }
+  return problem;
+}
+
+}  // namespace ppp_msgs
