@@ -1,0 +1,52 @@
+#include "ppp_core/csv.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "ppp_core/error.hpp"
+
+namespace ppp {
+
+std::string csvField(const std::string& value) {
+  if (value.find_first_of(",\"\r\n") == std::string::npos) return value;
+  std::string quoted = "\"";
+  for (char c : value) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+std::string csvLine(const std::vector<std::string>& fields) {
+  std::string line;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (i > 0) line += ',';
+    line += csvField(fields[i]);
+  }
+  return line;
+}
+
+CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& header)
+    : path_(path), columns_(header.size()), out_(path, std::ios::trunc) {
+  if (!out_) throw IoError(path, std::string("cannot write: ") + std::strerror(errno));
+  write(header);
+}
+
+void CsvWriter::write(const std::vector<std::string>& row) {
+  if (row.size() != columns_) {
+    throw InvalidArgument(path_, "row of " + std::to_string(row.size()) + " fields, header has " +
+                                     std::to_string(columns_));
+  }
+  out_ << csvLine(row) << '\n';
+  out_.flush();
+  if (!out_) throw IoError(path_, "write failed");
+}
+
+std::string formatNumber(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value);
+  return buffer;
+}
+
+}  // namespace ppp

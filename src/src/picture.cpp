@@ -1,0 +1,199 @@
+#include "ppp_core/picture.hpp"
+
+#include <png.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <utility>
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/text_file.hpp"
+
+namespace ppp {
+
+namespace {
+
+/// A row-major RGB canvas that ignores drawing outside its bounds.
+class Canvas {
+ public:
+  Canvas(int width, int height)
+      : width_(width), height_(height), pixels_(static_cast<std::size_t>(width) * height * 3, 0) {}
+
+  void set(int x, int y, Rgb colour) {
+    if (x < 0 || y < 0 || x >= width_ || y >= height_) return;
+    std::uint8_t* p = &pixels_[(static_cast<std::size_t>(y) * width_ + x) * 3];
+    p[0] = colour.r;
+    p[1] = colour.g;
+    p[2] = colour.b;
+  }
+
+  /// Fills the rectangle [x0, x1) × [y0, y1).
+  void fill(int x0, int y0, int x1, int y1, Rgb colour) {
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) set(x, y, colour);
+    }
+  }
+
+  /// A filled disc of `radius` pixels (0 is a single pixel).
+  void disc(Pixel centre, int radius, Rgb colour) {
+    for (int dy = -radius; dy <= radius; ++dy) {
+      for (int dx = -radius; dx <= radius; ++dx) {
+        if (dx * dx + dy * dy <= radius * radius + radius) set(centre.x + dx, centre.y + dy, colour);
+      }
+    }
+  }
+
+  /// A Bresenham line from a to b, `thickness` pixels wide.
+  void line(Pixel a, Pixel b, int thickness, Rgb colour) {
+    const int dx = std::abs(b.x - a.x);
+    const int dy = -std::abs(b.y - a.y);
+    const int sx = a.x < b.x ? 1 : -1;
+    const int sy = a.y < b.y ? 1 : -1;
+    int error = dx + dy;
+    const int lo = -(thickness - 1) / 2;
+    const int hi = thickness / 2;
+    for (Pixel p = a;;) {
+      fill(p.x + lo, p.y + lo, p.x + hi + 1, p.y + hi + 1, colour);
+      if (p.x == b.x && p.y == b.y) break;
+      const int twice = 2 * error;
+      if (twice >= dy) {
+        error += dy;
+        p.x += sx;
+      }
+      if (twice <= dx) {
+        error += dx;
+        p.y += sy;
+      }
+    }
+  }
+
+  std::vector<std::uint8_t> release() { return std::move(pixels_); }
+
+ private:
+  int width_;
+  int height_;
+  std::vector<std::uint8_t> pixels_;
+};
+
+/// Colours a cell's square, leaving its grid lines alone.
+void fillCell(Canvas& canvas, Cell c, Rgb colour, const PictureOptions& options) {
+  const Pixel o = cellOrigin(c, options);
+  const int inset = options.grid_lines ? 1 : 0;
+  canvas.fill(o.x + inset, o.y + inset, o.x + options.cell_pixels, o.y + options.cell_pixels, colour);
+}
+
+void checkPictureSize(const Problem& problem, const PictureOptions& options) {
+  const long long width = static_cast<long long>(problem.width) * options.cell_pixels + (options.grid_lines ? 1 : 0);
+  const long long height = static_cast<long long>(problem.height) * options.cell_pixels + (options.grid_lines ? 1 : 0);
+  if (width > kMaxPictureSide || height > kMaxPictureSide) {
+    throw InvalidArgument("cell_pixels", "a " + std::to_string(problem.width) + "x" + std::to_string(problem.height) +
+                                             " grid at " + std::to_string(options.cell_pixels) +
+                                             " pixels per cell makes a " + std::to_string(width) + "x" +
+                                             std::to_string(height) + " picture; the limit is " +
+                                             std::to_string(kMaxPictureSide) + " pixels per side");
+  }
+}
+
+}  // namespace
+
+void PictureOptions::validate() const {
+  if (cell_pixels < 1 || cell_pixels > 256) {
+    throw InvalidArgument("cell_pixels", "expected an integer in [1, 256], got " + std::to_string(cell_pixels));
+  }
+  if (grid_lines && cell_pixels < 3) {
+    throw InvalidArgument("cell_pixels", "grid lines need at least 3 pixels per cell, got " +
+                                             std::to_string(cell_pixels) + "; use more or turn grid_lines off");
+  }
+}
+
+int pictureWidth(int width, const PictureOptions& options) {
+  return width * options.cell_pixels + (options.grid_lines ? 1 : 0);
+}
+
+int pictureHeight(int height, const PictureOptions& options) {
+  return height * options.cell_pixels + (options.grid_lines ? 1 : 0);
+}
+
+Pixel cellOrigin(Cell c, const PictureOptions& options) {
+  return Pixel{c.x * options.cell_pixels, c.y * options.cell_pixels};
+}
+
+Pixel cellCentre(Cell c, const PictureOptions& options) {
+  const Pixel o = cellOrigin(c, options);
+  return Pixel{o.x + options.cell_pixels / 2, o.y + options.cell_pixels / 2};
+}
+
+std::vector<std::uint8_t> renderProblemRgb(const Problem& problem, const std::vector<Cell>& path,
+                                           const PictureOptions& options) {
+  options.validate();
+  validateProblem(problem);
+  checkPictureSize(problem, options);
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    const Cell c = path[i];
+    if (c.x < 0 || c.y < 0 || c.x >= problem.width || c.y >= problem.height) {
+      throw InvalidArgument("path", "step " + std::to_string(i) + " (" + std::to_string(c.x) + ", " +
+                                        std::to_string(c.y) + ") is outside the " + std::to_string(problem.width) +
+                                        "x" + std::to_string(problem.height) + " grid");
+    }
+  }
+  const Grid grid = decodeGrid(problem);
+  Canvas canvas(pictureWidth(problem.width, options), pictureHeight(problem.height, options));
+  if (options.grid_lines) {
+    canvas.fill(0, 0, pictureWidth(problem.width, options), pictureHeight(problem.height, options), kGridLineColour);
+  }
+  for (int y = 0; y < problem.height; ++y) {
+    for (int x = 0; x < problem.width; ++x) {
+      const Cell c{x, y};
+      fillCell(canvas, c, grid.isObstacle(c) ? kObstacleColour : kFreeColour, options);
+    }
+  }
+  const int thickness = std::max(1, options.cell_pixels / 8);
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    canvas.line(cellCentre(path[i - 1], options), cellCentre(path[i], options), thickness, kPathColour);
+  }
+  for (const Cell c : path) canvas.disc(cellCentre(c, options), options.cell_pixels / 5, kPathColour);
+  // Start and goal go last so they stay solid squares where the path enters them.
+  fillCell(canvas, problem.start, kStartColour, options);
+  fillCell(canvas, problem.goal, kGoalColour, options);
+  return canvas.release();
+}
+
+std::string encodePng(const std::vector<std::uint8_t>& rgb, int width, int height) {
+  if (width < 1 || height < 1 || width > kMaxPictureSide || height > kMaxPictureSide) {
+    throw InvalidArgument("png size", "expected width and height in [1, " + std::to_string(kMaxPictureSide) +
+                                          "], got " + std::to_string(width) + "x" + std::to_string(height));
+  }
+  const std::size_t expected = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3;
+  if (rgb.size() != expected) {
+    throw InvalidArgument("png pixels", "expected " + std::to_string(expected) + " bytes for " + std::to_string(width) +
+                                            "x" + std::to_string(height) + " RGB, got " + std::to_string(rgb.size()));
+  }
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  image.width = static_cast<png_uint_32>(width);
+  image.height = static_cast<png_uint_32>(height);
+  image.format = PNG_FORMAT_RGB;
+  std::string png(PNG_IMAGE_PNG_SIZE_MAX(image), '\0');
+  png_alloc_size_t size = png.size();
+  // The simplified API keeps libpng's setjmp/longjmp error handling away from C++ objects.
+  if (!png_image_write_to_memory(&image, png.data(), &size, 0, rgb.data(), 0, nullptr)) {
+    const std::string message = image.message;
+    png_image_free(&image);
+    throw Error("PNG encoding failed: " + message);
+  }
+  png_image_free(&image);
+  png.resize(size);
+  return png;
+}
+
+void writeProblemPng(const Problem& problem, const std::vector<Cell>& path, const std::string& png_path,
+                     const PictureOptions& options) {
+  const std::vector<std::uint8_t> rgb = renderProblemRgb(problem, path, options);
+  writeFileAtomically(png_path,
+                      encodePng(rgb, pictureWidth(problem.width, options), pictureHeight(problem.height, options)));
+}
+
+}  // namespace ppp
