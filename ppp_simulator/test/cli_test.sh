@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# Behaviour of the `ppp` command line, run as a user would. Usage: cli_test.sh PATH_TO_PPP
+set -u
+ppp="$1"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+
+pass() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
+
+# expect_ok NAME COMMAND...: the command exits 0.
+expect_ok() {
+  local name="$1"; shift
+  if "$@" > "$work/out" 2> "$work/err"; then pass; else fail "$name: exit $? $(cat "$work/err")"; fi
+}
+
+# expect_error NAME TEXT COMMAND...: the command exits non-zero and stderr contains TEXT.
+expect_error() {
+  local name="$1" text="$2"; shift 2
+  if "$@" > "$work/out" 2> "$work/err"; then fail "$name: succeeded, expected an error"; return; fi
+  if grep -qF -- "$text" "$work/err"; then pass; else fail "$name: error lacks '$text': $(cat "$work/err")"; fi
+}
+
+for sub in random evaluate convert; do
+  expect_ok "help $sub" "$ppp" "$sub" --help
+  grep -q "Usage" "$work/out" && pass || fail "help $sub has no usage"
+done
+
+expect_ok "random" "$ppp" random --size 12x9 --obstacles 6 --seed 7 -o "$work/a.ppp"
+expect_ok "random again" "$ppp" random --size 12x9 --obstacles 6 --seed 7 -o "$work/b.ppp"
+cmp -s "$work/a.ppp" "$work/b.ppp" && pass || fail "same seed gave different files"
+expect_ok "random other seed" "$ppp" random --size 12x9 --obstacles 6 --seed 8 -o "$work/c.ppp"
+cmp -s "$work/a.ppp" "$work/c.ppp" && fail "different seeds gave the same file" || pass
+grep -q "^size 12 9$" "$work/a.ppp" && pass || fail "size line"
+
+expect_ok "evaluate json" "$ppp" evaluate "$work/a.ppp" --json
+for key in width height valid turns advances turns_plus_advances obstacle_use visibility start goal centre \
+  top_right bottom_left horizontal_openness vertical_openness difficulty; do
+  grep -q "\"$key\":" "$work/out" && pass || fail "evaluate --json lacks $key"
+done
+/usr/bin/python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["width"]==12 and d["valid"] is True' \
+  "$work/out" && pass || fail "evaluate --json is not the expected JSON"
+expect_ok "evaluate text" "$ppp" evaluate "$work/a.ppp"
+grep -q "difficulty" "$work/out" && pass || fail "evaluate text lacks difficulty"
+expect_ok "evaluate csv" "$ppp" evaluate "$work/a.ppp" "$work/c.ppp" --csv "$work/m.csv"
+[ "$(wc -l < "$work/m.csv")" -eq 3 ] && pass || fail "evaluate --csv rows"
+expect_ok "evaluate weight" "$ppp" evaluate "$work/a.ppp" --json --weight goal=0 --weight one_turn_penalty=5
+
+expect_ok "to yaml" "$ppp" convert "$work/a.ppp" "$work/a.yaml" --resolution 0.5
+[ -s "$work/a.pgm" ] && pass || fail "no pgm next to the yaml"
+expect_ok "from yaml" "$ppp" convert "$work/a.yaml" "$work/a2.ppp"
+cmp -s "$work/a.ppp" "$work/a2.ppp" && pass || fail ".ppp -> .yaml -> .ppp is not identical"
+expect_ok "to png" "$ppp" convert "$work/a.ppp" "$work/a.png" --route
+head -c 8 "$work/a.png" | od -An -c | grep -q "P   N   G" && pass || fail "png signature"
+expect_ok "to bt" "$ppp" convert "$work/a.ppp" "$work/a.bt" --height 2
+[ -s "$work/a.bt" ] && pass || fail "empty .bt"
+
+expect_error "missing file" "$work/none.ppp" "$ppp" evaluate "$work/none.ppp"
+printf 'ppp 1\nsize 4 x\n' > "$work/bad.ppp"
+expect_error "bad file" "bad.ppp:2: size: height must be an integer" "$ppp" evaluate "$work/bad.ppp"
+expect_error "bad size" "--size: expected WIDTHxHEIGHT" "$ppp" random --size 20 --obstacles 1 --seed 1 -o "$work/x.ppp"
+expect_error "huge size" "--size: expected width and height in [2, 4096]" \
+  "$ppp" random --size 5000x5000 --obstacles 1 --seed 1 -o "$work/x.ppp"
+expect_error "negative obstacles" "--obstacles" "$ppp" random --obstacles -2 --seed 1 -o "$work/x.ppp"
+expect_error "start outside" "start: cell (30, 0) is outside" \
+  "$ppp" random --obstacles 1 --seed 1 --start 30,0 -o "$work/x.ppp"
+expect_error "start is goal" "goal: must differ from start" \
+  "$ppp" random --obstacles 1 --seed 1 --start 19,19 -o "$work/x.ppp"
+expect_error "unknown weight" "unknown weight 'gaol'; valid: start" "$ppp" evaluate "$work/a.ppp" --weight gaol=1
+expect_error "bad extension" "cannot write '.txt' files" "$ppp" convert "$work/a.ppp" "$work/a.txt"
+expect_error "bad height" "height" "$ppp" convert "$work/a.ppp" "$work/z.bt" --height -1
+[ ! -e "$work/x.ppp" ] && pass || fail "a failed command left an output file"
+expect_error "no subcommand" "A subcommand is required" "$ppp"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,7 @@
+# Sourced by the other scripts: repository root, Debian's python first on PATH, loopback-only ROS.
+# shellcheck shell=bash
+PPP_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+export PPP_ROOT
+export PATH="/usr/bin:/bin:$PATH"
+export PPP_BUILD_DIR="${PPP_BUILD_DIR:-$PPP_ROOT/build}"
+export ROS_IP=127.0.0.1

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs, from Debian's own archive, whatever PPP Lab needs that is not yet installed. Idempotent:
+# when everything is present it changes nothing and takes well under a second.
+set -euo pipefail
+
+packages=(
+  # build tools
+  cmake g++ make pkg-config
+  # ROS 1 as Debian ships it: catkin, roscpp, rospy, rosbag, roslaunch, message generation
+  ros-core-dev python3-rostest rosbash libtf2-ros-dev
+  python3-diagnostic-msgs python3-nav-msgs python3-geometry-msgs python3-sensor-msgs
+  # libraries the core and the tools use
+  libpng-dev libyaml-cpp-dev liboctomap-dev libeigen3-dev nlohmann-json3-dev libcli11-dev
+  # tests, benchmarks and the fuzzer
+  libgtest-dev libbenchmark-dev clang libclang-rt-14-dev
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$package")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -q
+"${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# The test command: installs what is missing, builds everything and runs every test.
+# Exits non-zero if any step or any test fails.
+set -uo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
+cd "$PPP_ROOT"
+
+failures=()
+step() {
+  local name="$1"; shift
+  echo "=== $name"
+  if "$@"; then echo "=== $name: ok"; else echo "=== $name: FAILED"; failures+=("$name"); fi
+}
+
+scripts/install-deps.sh || { echo "install failed"; exit 1; }
+step "build workspace" scripts/build.sh
+step "build tests" cmake --build "$PPP_BUILD_DIR" --target tests -j "$(nproc)"
+step "workspace tests (ctest)" ctest --test-dir "$PPP_BUILD_DIR" --output-on-failure -j "$(nproc)"
+
+# The core must build and pass its tests with no ROS at all: catkin is never looked for, and
+# #error stand-ins for ROS headers come first on the include path.
+core_dir="$PPP_ROOT/build-core"
+step "configure core without ROS" cmake -S src -B "$core_dir" -DPPP_CORE_FORBID_ROS=ON -DPPP_CORE_BENCHMARKS=OFF \
+  -DCMAKE_BUILD_TYPE=Release
+step "build core without ROS" cmake --build "$core_dir" -j "$(nproc)"
+step "core tests without ROS (ctest)" ctest --test-dir "$core_dir" --output-on-failure -j "$(nproc)"
+
+step "fuzz the .ppp parser (30 s)" scripts/fuzz.sh 30
+
+echo
+if [ ${#failures[@]} -eq 0 ]; then
+  echo "test.sh: every step passed"
+  exit 0
+fi
+echo "test.sh: FAILED steps: ${failures[*]}"
+exit 1
