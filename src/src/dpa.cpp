@@ -24,22 +24,25 @@ void DpaSolver::pad(const Grid& grid) {
 }
 
 int DpaSolver::fewestAdvances(int start, int goal) {
-  // Turns are free, so this is a breadth-first search over cells.
+  // Turns are free, so this is a breadth-first search over cells. Each cell is queued at most once, so the
+  // queue is sized up front and the relaxations are branch-free (see fewestStateCost).
   cell_distance_.assign(free_.size(), kUnreached);
-  current_.clear();
-  current_.push_back(start);
+  if (current_.size() < free_.size()) current_.resize(free_.size());
+  int* queue = current_.data();
+  std::size_t tail = 0;
+  queue[tail++] = start;
   cell_distance_[start] = 0;
   const int offsets[4] = {-padded_width_, 1, padded_width_, -1};
-  for (std::size_t head = 0; head < current_.size(); ++head) {
-    const int cell = current_[head];
+  for (std::size_t head = 0; head < tail; ++head) {
+    const int cell = queue[head];
     const int d = cell_distance_[cell];
     if (cell == goal) return d;
     for (int offset : offsets) {
       const int n = cell + offset;
-      if (free_[n] && cell_distance_[n] == kUnreached) {
-        cell_distance_[n] = d + 1;
-        current_.push_back(n);
-      }
+      const bool better = free_[n] && cell_distance_[n] == kUnreached;
+      cell_distance_[n] = better ? d + 1 : cell_distance_[n];
+      queue[tail] = n;
+      tail += better ? 1 : 0;
     }
   }
   return -1;
@@ -48,49 +51,60 @@ int DpaSolver::fewestAdvances(int start, int goal) {
 int DpaSolver::fewestStateCost(int start, int goal, bool turn_costs, std::vector<int>* distance) {
   // Layered breadth-first search over states (cell * 4 + heading). With turn_costs only turns cost one and
   // advancing is free (fewest turns); otherwise both cost one (fewest turns + advances).
+  // The relaxations are branch-free, as their branches were unpredictable and dominated the run time: a
+  // successor is always written to the next free queue slot, and the slot is kept only when it improved.
+  // current_ and next_ are buffers that only grow; their used lengths are tracked here.
   std::vector<int>& dist = *distance;
   dist.assign(free_.size() * 4, kUnreached);
-  const int offsets[4] = {-padded_width_, 1, padded_width_, -1};
-  current_.clear();
-  next_.clear();
+  const int ahead[4] = {-padded_width_ * 4, 4, padded_width_ * 4, -4};  // state offset of the cell ahead
+  if (current_.size() < 4) current_.resize(4);
+  std::size_t current_size = 0;
   for (int h = 0; h < 4; ++h) {
     dist[start * 4 + h] = 0;
-    current_.push_back(start * 4 + h);
+    current_[current_size++] = start * 4 + h;
   }
-  for (int layer = 0; !current_.empty(); ++layer) {
-    for (std::size_t head = 0; head < current_.size(); ++head) {
-      const int state = current_[head];
-      if (dist[state] != layer) continue;  // improved after it was queued
-      const int cell = state >> 2;
-      const int h = state & 3;
-      const int ahead = cell + offsets[h];
-      if (free_[ahead]) {
-        const int advanced = ahead * 4 + h;
-        if (!turn_costs) {
-          if (dist[advanced] > layer + 1) {
-            dist[advanced] = layer + 1;
-            next_.push_back(advanced);
-          }
-        } else if (dist[advanced] > layer) {
+  for (int layer = 0; current_size > 0; ++layer) {
+    const int next_layer = layer + 1;
+    std::size_t queued = 0;
+    auto relax = [&](int successor, bool open) {
+      const bool better = open && dist[successor] > next_layer;
+      dist[successor] = better ? next_layer : dist[successor];
+      next_[queued] = successor;
+      queued += better ? 1 : 0;
+    };
+    auto turnOff = [&](int state) {
+      relax((state & ~3) | ((state + 3) & 3), true);
+      relax((state & ~3) | ((state + 1) & 3), true);
+    };
+    if (turn_costs) {
+      for (std::size_t head = 0; head < current_size; ++head) {
+        int state = current_[head];
+        if (dist[state] != layer) continue;  // improved after it was queued
+        // Advancing is free: walk the whole ray ahead within this layer, turning off it at every cell, instead
+        // of queueing each ray state and coming back to it (same distances, about half the memory traffic).
+        for (;;) {
+          if (next_.size() < queued + 2) next_.resize(2 * (queued + 2));
+          turnOff(state);
+          const int advanced = state + ahead[state & 3];
+          if (!free_[advanced >> 2] || dist[advanced] <= layer) break;
           dist[advanced] = layer;
-          current_.push_back(advanced);
+          state = advanced;
         }
       }
-      const int left = cell * 4 + ((h + 3) & 3);
-      const int right = cell * 4 + ((h + 1) & 3);
-      if (dist[left] > layer + 1) {
-        dist[left] = layer + 1;
-        next_.push_back(left);
-      }
-      if (dist[right] > layer + 1) {
-        dist[right] = layer + 1;
-        next_.push_back(right);
+    } else {
+      // Uniform costs: a state's first distance is final, so nothing queued goes stale.
+      if (next_.size() < 3 * current_size) next_.resize(3 * current_size);
+      for (std::size_t head = 0; head < current_size; ++head) {
+        const int state = current_[head];
+        const int advanced = state + ahead[state & 3];
+        relax(advanced, free_[advanced >> 2] != 0);
+        turnOff(state);
       }
     }
     const int best = std::min({dist[goal * 4], dist[goal * 4 + 1], dist[goal * 4 + 2], dist[goal * 4 + 3]});
     if (best <= layer) return best;
     current_.swap(next_);
-    next_.clear();
+    current_size = queued;
   }
   return -1;
 }

@@ -33,12 +33,15 @@ Evaluator::Evaluator(const DifficultyWeights& weights) : weights_(weights) { wei
 Evaluation Evaluator::evaluate(const Problem& problem) { return evaluate(problem, decodeGrid(problem)); }
 
 Evaluation Evaluator::evaluate(const Problem& problem, const Grid& grid) {
+  return evaluate(problem, grid, dpa_.solve(grid, problem.start, problem.goal));
+}
+
+Evaluation Evaluator::evaluate(const Problem& problem, const Grid& grid, const DpaResult& dpa) {
   Evaluation e;
-  last_dpa_ = dpa_.solve(grid, problem.start, problem.goal);
-  e.valid = last_dpa_.reachable;
-  e.turns = last_dpa_.turns;
-  e.advances = last_dpa_.advances;
-  e.turns_plus_advances = last_dpa_.turns_plus_advances;
+  e.valid = dpa.reachable;
+  e.turns = dpa.turns;
+  e.advances = dpa.advances;
+  e.turns_plus_advances = dpa.turns_plus_advances;
   e.obstacles = static_cast<int>(problem.obstacles.size());
   e.obstacle_use = problem.max_obstacles > 0 ? static_cast<double>(e.obstacles) / problem.max_obstacles : 0.0;
   const auto points = viewpoints(problem);

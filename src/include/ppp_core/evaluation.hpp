@@ -63,14 +63,13 @@ class Evaluator {
   Evaluation evaluate(const Problem& problem, const Grid& grid);
   /// Decodes and evaluates a problem.
   Evaluation evaluate(const Problem& problem);
-  /// The DPA result of the last evaluate() (its route included).
-  const DpaResult& lastDpa() const { return last_dpa_; }
+  /// Evaluates with a DPA result the caller already has for this grid (saves solving it again).
+  Evaluation evaluate(const Problem& problem, const Grid& grid, const DpaResult& dpa);
 
  private:
   DifficultyWeights weights_;
   DpaSolver dpa_;
   VisibilitySolver visibility_;
-  DpaResult last_dpa_;
 };
 
 /// Names of the taxonomic characters of SPEC 7, in characterVector() order.

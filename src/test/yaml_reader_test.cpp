@@ -1,0 +1,49 @@
+#include "ppp_core/yaml_reader.hpp"
+
+#include <gtest/gtest.h>
+
+namespace ppp {
+namespace {
+
+TEST(YamlReaderTest, ReadsKnownKeysAndRejectsUnknownOnes) {
+  const YAML::Node root = YAML::Load("runs: 12\nname: demo\nrate: 0.5\nextra: 1\n");
+  YamlMapReader reader(root, "x.yaml");
+  int runs = 0;
+  std::string name;
+  double rate = 0;
+  bool flag = false;
+  EXPECT_TRUE(reader.read("runs", &runs));
+  EXPECT_TRUE(reader.read("name", &name));
+  EXPECT_TRUE(reader.read("rate", &rate));
+  EXPECT_FALSE(reader.read("flag", &flag));
+  EXPECT_EQ(runs, 12);
+  EXPECT_EQ(name, "demo");
+  EXPECT_EQ(rate, 0.5);
+  try {
+    reader.rejectUnknownKeys();
+    FAIL();
+  } catch (const ParseError& e) {
+    EXPECT_EQ(std::string(e.what()), "x.yaml:4: extra: unknown key; valid keys: flag, name, rate, runs");
+  }
+}
+
+TEST(YamlReaderTest, WrongTypeNamesLineAndExpectation) {
+  const YAML::Node root = YAML::Load("a: 1\nsub:\n  runs: lots\n");
+  YamlMapReader top(root, "y.yaml");
+  YamlMapReader sub(top.lookup("sub"), "y.yaml", "sub");
+  int runs = 0;
+  try {
+    sub.read("runs", &runs);
+    FAIL();
+  } catch (const ParseError& e) {
+    EXPECT_EQ(std::string(e.what()), "y.yaml:3: sub.runs: expected an integer, got 'lots'");
+  }
+}
+
+TEST(YamlReaderTest, NotAMappingAndBadSyntax) {
+  EXPECT_THROW(YamlMapReader(YAML::Load("- 1\n- 2\n"), "z.yaml"), ParseError);
+  EXPECT_THROW(loadYamlFile("/nonexistent.yaml"), IoError);
+}
+
+}  // namespace
+}  // namespace ppp
