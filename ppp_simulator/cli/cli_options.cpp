@@ -47,8 +47,8 @@ Cell parseCell(const std::string& text, const std::string& option) {
   return cell;
 }
 
-DifficultyWeights parseWeights(const std::vector<std::string>& assignments) {
-  DifficultyWeights w;
+DifficultyWeights parseWeights(const std::vector<std::string>& assignments, const DifficultyWeights& base) {
+  DifficultyWeights w = base;
   const std::pair<const char*, double*> fields[] = {
       {"start", &w.start},
       {"centre", &w.centre},

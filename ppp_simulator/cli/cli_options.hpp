@@ -21,8 +21,8 @@ Size parseSize(const std::string& text, const std::string& option);
 /// Parses "X,Y". @throws InvalidArgument naming `option`.
 Cell parseCell(const std::string& text, const std::string& option);
 
-/// Applies "NAME=VALUE" overrides to difficulty weights. @throws InvalidArgument listing the valid names.
-DifficultyWeights parseWeights(const std::vector<std::string>& assignments);
+/// Applies "NAME=VALUE" overrides to `base` weights. @throws InvalidArgument listing the valid names.
+DifficultyWeights parseWeights(const std::vector<std::string>& assignments, const DifficultyWeights& base = {});
 
 }  // namespace cli
 }  // namespace ppp

@@ -11,6 +11,12 @@ void addRandomCommand(CLI::App& app);
 void addEvaluateCommand(CLI::App& app);
 /// Adds `ppp convert`: between .ppp, map_server .yaml, .png and OctoMap .bt.
 void addConvertCommand(CLI::App& app);
+/// Adds `ppp generate`: evolve a PPP set and write it with its taxonomy.
+void addGenerateCommand(CLI::App& app);
+/// Adds `ppp tree`: rebuild a set's taxonomy over a character set.
+void addTreeCommand(CLI::App& app);
+/// Adds `ppp select`: pick k diverse PPPs of a set.
+void addSelectCommand(CLI::App& app);
 
 }  // namespace cli
 }  // namespace ppp

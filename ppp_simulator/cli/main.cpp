@@ -12,6 +12,9 @@ int main(int argc, char** argv) {
   ppp::cli::addRandomCommand(app);
   ppp::cli::addEvaluateCommand(app);
   ppp::cli::addConvertCommand(app);
+  ppp::cli::addGenerateCommand(app);
+  ppp::cli::addTreeCommand(app);
+  ppp::cli::addSelectCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,52 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "ppp_core/evaluation.hpp"
+#include "ppp_core/grid.hpp"
+#include "ppp_core/random_problem.hpp"
+#include "ppp_core/yaml_reader.hpp"
+
+namespace ppp {
+namespace generator {
+
+/// Everything that shapes one run of the generator. Defaults match config/generator.yaml.
+struct GeneratorOptions {
+  std::string fitness = "turns";    ///< Fitness function name (see fitnessCatalogue()).
+  DifficultyWeights weights;        ///< Weights of the `difficulty` fitness.
+  int population = 60;              ///< PPPs in the pool, >= 2.
+  long matings = 10000;             ///< Steady-state mating events, >= 0.
+  int tournament_size = 4;          ///< Individuals drawn per mating event (capped at the population), >= 2.
+  double mutation_rate = 0.9;       ///< Probability that a child is mutated once (change, add or remove).
+  int width = 20;                   ///< Grid columns.
+  int height = 20;                  ///< Grid rows.
+  std::optional<Cell> start;        ///< Start cell; default top-left.
+  std::optional<Cell> goal;         ///< Goal cell; default bottom-right.
+  int max_obstacles = 10;           ///< Obstacle budget: most descriptors per chromosome, >= 0.
+  RandomObstacleOptions obstacle_shapes;  ///< Size limits of random descriptors.
+  std::uint64_t seed = 1;           ///< Seed of every random choice of the run.
+  std::string characters = "extended";  ///< Character set of the taxonomy (wei or extended).
+
+  /// Checks every option. @throws InvalidArgument naming the option and what was expected.
+  void validate() const;
+  /// The start cell in effect.
+  Cell startCell() const { return start ? *start : Cell{0, 0}; }
+  /// The goal cell in effect.
+  Cell goalCell() const { return goal ? *goal : Cell{width - 1, height - 1}; }
+};
+
+/// Applies the keys of a generator YAML mapping (config/generator.yaml) over `options`.
+/// @throws ParseError naming the file, line and key for unknown keys and wrong types.
+void applyGeneratorYaml(YamlMapReader& reader, GeneratorOptions* options);
+
+/// Loads config/generator.yaml-style options from a file, over the defaults.
+/// @throws IoError, ParseError, InvalidArgument.
+GeneratorOptions loadGeneratorOptions(const std::string& path);
+
+/// The options as YAML in the config file's format (written with every generated set).
+std::string generatorOptionsYaml(const GeneratorOptions& options);
+
+}  // namespace generator
+}  // namespace ppp

@@ -1,0 +1,62 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "ppp_core/evaluation.hpp"
+#include "ppp_core/problem.hpp"
+#include "ppp_generator/genetic_algorithm.hpp"
+#include "ppp_generator/generator_options.hpp"
+#include "ppp_generator/taxonomy.hpp"
+
+namespace ppp {
+namespace generator {
+
+/// A set of PPPs with everything the taxonomy and the reports need.
+struct ProblemSet {
+  std::string fitness;                   ///< Fitness function that produced the set.
+  bool maximise = true;                  ///< Its direction.
+  std::vector<std::string> ids;          ///< "ppp_000", ... (file stem of each PPP).
+  std::vector<Problem> problems;         ///< The PPPs, metadata included.
+  std::vector<Evaluation> evaluations;   ///< Every measure of each PPP.
+  std::vector<double> fitness_values;    ///< Raw fitness value of each PPP.
+
+  /// Fitness oriented so that larger is fitter ("harder"), per PPP.
+  std::vector<double> hardness() const;
+};
+
+/// The UPGMA taxonomy of a set over one character set.
+struct Taxonomy {
+  CharacterSet characters = CharacterSet::Extended;  ///< Characters used.
+  Eigen::MatrixXd normalised;  ///< One row per PPP, every character scaled to [0, 1] across the set.
+  Eigen::MatrixXd distances;   ///< Euclidean distances between rows.
+  Tree tree;                   ///< UPGMA tree; leaf i is PPP i.
+};
+
+/// Orders the final pool fittest first (stable), names the PPPs and annotates each with its id, the fitness
+/// name and value, the generator seed and its characters.
+ProblemSet makeProblemSet(const GeneratorOptions& options, const std::vector<Individual>& pool);
+
+/// Builds the taxonomy of a set. @throws InvalidArgument for an empty set.
+Taxonomy buildTaxonomy(const ProblemSet& set, CharacterSet characters);
+
+/// Writes the set as a directory: one `.ppp` per PPP, `set.csv`, `generator.yaml` and the tree files.
+/// Everything is written to a temporary sibling directory first and renamed into place, so the directory
+/// is either complete or untouched. An existing directory is replaced only if it holds a PPP set.
+/// @throws IoError when the directory cannot be written or holds something else.
+void writeProblemSetDirectory(const std::string& dir, const ProblemSet& set, const GeneratorOptions& options);
+
+/// Checks, before a long run, that `dir` can be created or replaced. @throws IoError saying why not.
+void checkOutputDirectory(const std::string& dir);
+
+/// Writes tree.nwk, tree.json and tree.html (with thumbnails) for a set into `dir`. @throws IoError.
+void writeTreeFiles(const std::string& dir, const ProblemSet& set, const Taxonomy& taxonomy);
+
+/// Reads a set directory written by writeProblemSetDirectory (its `set.csv` and `.ppp` files) and
+/// re-evaluates every PPP. @throws IoError, ParseError.
+ProblemSet readProblemSetDirectory(const std::string& dir);
+
+}  // namespace generator
+}  // namespace ppp

@@ -1,0 +1,104 @@
+// generator_node: evolves a PPP set with the generator library and publishes it.
+//   publishes  problem_set (ppp_msgs/ProblemSet, latched)  the whole set
+//              map         (nav_msgs/OccupancyGrid, latched) the set's PPP number ~publish_index
+//   service    ~generate   (ppp_msgs/Generate)              evolve again (optionally with another seed)
+//   parameters see config/generator.yaml (same names) plus ~output_dir, ~publish_index, ~resolution,
+//              ~generate_on_start
+#include <ros/ros.h>
+
+#include <nav_msgs/OccupancyGrid.h>
+
+#include "generator_parameters.hpp"
+#include "ppp_core/error.hpp"
+#include "ppp_generator/genetic_algorithm.hpp"
+#include "ppp_generator/problem_set.hpp"
+#include "ppp_msgs/Generate.h"
+#include "ppp_msgs/ProblemSet.h"
+#include "ppp_msgs/conversions.h"
+
+namespace ppp {
+namespace generator {
+
+/// Runs the generator on demand and publishes what it made.
+class GeneratorNode {
+ public:
+  /// Advertises the topics and the service. @throws InvalidArgument for bad parameters.
+  GeneratorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
+      : parameters_(readNodeParameters(private_nh)),
+        set_publisher_(nh.advertise<ppp_msgs::ProblemSet>("problem_set", 1, true)),
+        map_publisher_(nh.advertise<nav_msgs::OccupancyGrid>("map", 1, true)),
+        service_(private_nh.advertiseService("generate", &GeneratorNode::onGenerate, this)) {}
+
+  /// Evolves a set with `seed` (0: the configured one), writes and publishes it; returns its size.
+  std::size_t generate(std::uint64_t seed) {
+    GeneratorOptions options = parameters_.options;
+    if (seed != 0) options.seed = seed;
+    if (!parameters_.output_dir.empty()) checkOutputDirectory(parameters_.output_dir);
+    GeneticAlgorithm ga(options);
+    ROS_INFO("generating %d PPPs (%s fitness, %ld matings, seed %lu)", options.population, options.fitness.c_str(),
+             options.matings, static_cast<unsigned long>(options.seed));
+    const auto pool = ga.run(
+        [](long done, long total, double best) {
+          ROS_INFO("%ld/%ld matings, best fitness %g", done, total, best);
+        },
+        std::max(1L, options.matings / 10));
+    const ProblemSet set = makeProblemSet(options, pool);
+    if (!parameters_.output_dir.empty()) {
+      writeProblemSetDirectory(parameters_.output_dir, set, options);
+      ROS_INFO("wrote the set to %s", parameters_.output_dir.c_str());
+    }
+    ppp_msgs::ProblemSet message;
+    message.header.stamp = ros::Time::now();
+    message.header.frame_id = "map";
+    message.name = options.fitness;
+    for (std::size_t i = 0; i < set.problems.size(); ++i) {
+      message.problems.push_back(ppp_msgs::toMessage(set.problems[i], set.ids[i], parameters_.resolution));
+    }
+    nav_msgs::OccupancyGrid map = message.problems[parameters_.publish_index].map;
+    map.header.stamp = message.header.stamp;
+    set_publisher_.publish(message);
+    map_publisher_.publish(map);
+    ROS_INFO("published %zu PPPs; map shows %s", set.problems.size(), set.ids[parameters_.publish_index].c_str());
+    return set.problems.size();
+  }
+
+  /// Whether to evolve at start-up.
+  bool generateOnStart() const { return parameters_.generate_on_start; }
+
+ private:
+  bool onGenerate(ppp_msgs::Generate::Request& request, ppp_msgs::Generate::Response& response) {
+    try {
+      response.count = static_cast<std::uint32_t>(generate(request.seed));
+      response.success = true;
+      response.message = "published " + std::to_string(response.count) + " PPPs";
+    } catch (const Error& e) {
+      response.success = false;
+      response.message = e.what();
+      ROS_ERROR("generate failed: %s", e.what());
+    }
+    return true;
+  }
+
+  NodeParameters parameters_;
+  ros::Publisher set_publisher_;
+  ros::Publisher map_publisher_;
+  ros::ServiceServer service_;
+};
+
+}  // namespace generator
+}  // namespace ppp
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "generator");
+  ros::NodeHandle nh;
+  ros::NodeHandle private_nh("~");
+  try {
+    ppp::generator::GeneratorNode node(nh, private_nh);
+    if (node.generateOnStart()) node.generate(0);
+    ros::spin();
+  } catch (const ppp::Error& e) {
+    ROS_FATAL("generator: %s", e.what());
+    return 1;
+  }
+  return 0;
+}

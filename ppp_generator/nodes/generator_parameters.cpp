@@ -1,0 +1,80 @@
+#include "generator_parameters.hpp"
+
+#include <vector>
+
+#include "ppp_core/error.hpp"
+
+namespace ppp {
+namespace generator {
+
+namespace {
+
+/// Reads an optional parameter of type T; a present parameter of another type is an error.
+template <typename T>
+void readParameter(const ros::NodeHandle& nh, const std::string& name, T* value, const char* expected) {
+  if (!nh.hasParam(name)) return;
+  if (!nh.getParam(name, *value)) throw InvalidArgument("~" + name, std::string("expected ") + expected);
+}
+
+std::optional<Cell> readCell(const ros::NodeHandle& nh, const std::string& name) {
+  std::vector<int> pair;
+  if (!nh.hasParam(name)) return std::nullopt;
+  if (!nh.getParam(name, pair) || pair.size() != 2) throw InvalidArgument("~" + name, "expected [x, y]");
+  return Cell{pair[0], pair[1]};
+}
+
+}  // namespace
+
+NodeParameters readNodeParameters(const ros::NodeHandle& nh) {
+  NodeParameters p;
+  GeneratorOptions& o = p.options;
+  readParameter(nh, "fitness", &o.fitness, "a string");
+  readParameter(nh, "population", &o.population, "an integer");
+  int matings = static_cast<int>(o.matings);
+  readParameter(nh, "matings", &matings, "an integer");
+  o.matings = matings;
+  readParameter(nh, "tournament_size", &o.tournament_size, "an integer");
+  readParameter(nh, "mutation_rate", &o.mutation_rate, "a number");
+  readParameter(nh, "width", &o.width, "an integer");
+  readParameter(nh, "height", &o.height, "an integer");
+  if (auto cell = readCell(nh, "start")) o.start = cell;
+  if (auto cell = readCell(nh, "goal")) o.goal = cell;
+  readParameter(nh, "max_obstacles", &o.max_obstacles, "an integer");
+  readParameter(nh, "max_bar_length", &o.obstacle_shapes.max_bar_length, "an integer");
+  readParameter(nh, "max_block_side", &o.obstacle_shapes.max_block_side, "an integer");
+  int seed = static_cast<int>(o.seed);
+  readParameter(nh, "seed", &seed, "an integer");
+  if (seed < 0) throw InvalidArgument("~seed", "expected an integer >= 0, got " + std::to_string(seed));
+  o.seed = static_cast<std::uint64_t>(seed);
+  readParameter(nh, "characters", &o.characters, "a string");
+  const std::pair<const char*, double*> weights[] = {
+      {"weights/start", &o.weights.start},
+      {"weights/centre", &o.weights.centre},
+      {"weights/top_right", &o.weights.top_right},
+      {"weights/bottom_left", &o.weights.bottom_left},
+      {"weights/goal", &o.weights.goal},
+      {"weights/unused_obstacles", &o.weights.unused_obstacles},
+      {"weights/horizontal_openness", &o.weights.horizontal_openness},
+      {"weights/vertical_openness", &o.weights.vertical_openness},
+      {"weights/one_turn_penalty", &o.weights.one_turn_penalty},
+  };
+  for (const auto& w : weights) readParameter(nh, w.first, w.second, "a number");
+  readParameter(nh, "output_dir", &p.output_dir, "a string");
+  readParameter(nh, "publish_index", &p.publish_index, "an integer");
+  readParameter(nh, "resolution", &p.resolution, "a number");
+  readParameter(nh, "generate_on_start", &p.generate_on_start, "true or false");
+  try {
+    o.validate();
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument("~" + e.name(), std::string(e.what()).substr(e.name().size() + 2));
+  }
+  if (p.publish_index < 0 || p.publish_index >= o.population) {
+    throw InvalidArgument("~publish_index", "expected an index in [0, population = " + std::to_string(o.population) +
+                                                "), got " + std::to_string(p.publish_index));
+  }
+  if (!(p.resolution > 0)) throw InvalidArgument("~resolution", "expected metres per cell > 0");
+  return p;
+}
+
+}  // namespace generator
+}  // namespace ppp

@@ -1,0 +1,25 @@
+#pragma once
+
+#include <string>
+
+#include <ros/node_handle.h>
+
+#include "ppp_generator/generator_options.hpp"
+
+namespace ppp {
+namespace generator {
+
+/// What the generator node reads from its private (`~`) parameters besides the generator options.
+struct NodeParameters {
+  GeneratorOptions options;     ///< The generator's options (defaults: config/generator.yaml's).
+  std::string output_dir;       ///< When set, the set's files are written here, as `ppp generate -o` does.
+  int publish_index = 0;        ///< Which PPP of the set is published on `map`.
+  double resolution = 1.0;      ///< Metres per cell of the published maps.
+  bool generate_on_start = true;  ///< Evolve a set at start-up (otherwise only on the service call).
+};
+
+/// Reads and validates the `~` parameters. @throws InvalidArgument naming the parameter ("~population").
+NodeParameters readNodeParameters(const ros::NodeHandle& private_nh);
+
+}  // namespace generator
+}  // namespace ppp

@@ -1,0 +1,86 @@
+#include "ppp_generator/fitness.hpp"
+
+#include <memory>
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/rng.hpp"
+#include "ppp_core/visibility.hpp"
+
+namespace ppp {
+namespace generator {
+
+namespace {
+
+using ValueFunction = std::function<double(const Problem&, const Grid&, const DpaResult&)>;
+
+/// One registry row: to add a fitness function, add a row here.
+struct Entry {
+  const char* name;
+  bool maximise;
+  const char* description;
+  ValueFunction (*make)(const FitnessParameters&);
+};
+
+ValueFunction evaluationField(const FitnessParameters& p, double Evaluation::*field) {
+  auto evaluator = std::make_shared<Evaluator>(p.weights);
+  return [evaluator, field](const Problem& problem, const Grid& grid, const DpaResult& dpa) {
+    return evaluator->evaluate(problem, grid, dpa).*field;
+  };
+}
+
+const Entry kEntries[] = {
+    {"turns", true, "Wei's: fewest turns of the optimal route (maximised)",
+     [](const FitnessParameters&) -> ValueFunction {
+       return [](const Problem&, const Grid&, const DpaResult& dpa) { return static_cast<double>(dpa.turns); };
+     }},
+    {"advances", true, "Ashlock's: fewest advances to the goal (maximised)",
+     [](const FitnessParameters&) -> ValueFunction {
+       return [](const Problem&, const Grid&, const DpaResult& dpa) { return static_cast<double>(dpa.advances); };
+     }},
+    {"turns_plus_advances", true, "Ashlock's: fewest turns + advances (maximised)",
+     [](const FitnessParameters&) -> ValueFunction {
+       return [](const Problem&, const Grid&, const DpaResult& dpa) {
+         return static_cast<double>(dpa.turns_plus_advances);
+       };
+     }},
+    {"difficulty", false, "visibility, openness and obstacle use; every weight a parameter (minimised)",
+     [](const FitnessParameters& p) { return evaluationField(p, &Evaluation::difficulty); }},
+    {"goal_visibility", false, "fraction of the grid visible from the goal (minimised)",
+     [](const FitnessParameters&) -> ValueFunction {
+       auto solver = std::make_shared<VisibilitySolver>();
+       return [solver](const Problem& problem, const Grid& grid, const DpaResult&) {
+         return static_cast<double>(solver->solve(grid, problem.goal)) / grid.size();
+       };
+     }},
+    {"visibility_magnitude", false, "norm of the five viewpoint visibilities (minimised)",
+     [](const FitnessParameters& p) { return evaluationField(p, &Evaluation::visibility_magnitude); }},
+    {"random", true, "baseline: a random value per PPP, no selection pressure",
+     [](const FitnessParameters& p) -> ValueFunction {
+       auto rng = std::make_shared<Rng>(deriveSeed(p.seed, {0x66697431}));
+       return [rng](const Problem&, const Grid&, const DpaResult&) { return rng->uniform01(); };
+     }},
+};
+
+}  // namespace
+
+std::vector<FitnessInfo> fitnessCatalogue() {
+  std::vector<FitnessInfo> catalogue;
+  for (const Entry& e : kEntries) catalogue.push_back({e.name, e.maximise, e.description});
+  return catalogue;
+}
+
+std::string fitnessNames() {
+  std::string names;
+  for (const Entry& e : kEntries) names += (names.empty() ? "" : ", ") + std::string(e.name);
+  return names;
+}
+
+Fitness makeFitness(const std::string& name, const FitnessParameters& parameters) {
+  for (const Entry& e : kEntries) {
+    if (name == e.name) return Fitness{e.name, e.maximise, e.make(parameters)};
+  }
+  throw InvalidArgument("fitness", "unknown fitness '" + name + "'; valid: " + fitnessNames());
+}
+
+}  // namespace generator
+}  // namespace ppp

@@ -1,0 +1,202 @@
+#include "ppp_generator/problem_set.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <numeric>
+#include <sstream>
+
+#include "ppp_core/csv.hpp"
+#include "ppp_core/error.hpp"
+#include "ppp_core/picture.hpp"
+#include "ppp_core/ppp_file.hpp"
+#include "ppp_core/text_file.hpp"
+#include "ppp_generator/newick.hpp"
+#include "ppp_generator/tree_json.hpp"
+#include "ppp_generator/tree_html.hpp"
+
+namespace ppp {
+namespace generator {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kSetFile = "set.csv";
+constexpr const char* kOptionsFile = "generator.yaml";
+constexpr int kThumbnailCellPixels = 4;
+
+std::vector<std::string> setCsvHeader() {
+  std::vector<std::string> header{"id", "file", "fitness", "fitness_value"};
+  for (const std::string& name : characterNames()) header.push_back(name);
+  return header;
+}
+
+std::string idOf(std::size_t index, std::size_t count) {
+  const int digits = std::max(3, static_cast<int>(std::to_string(count > 0 ? count - 1 : 0).size()));
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "ppp_%0*zu", digits, index);
+  return buffer;
+}
+
+std::string readRequiredMetadata(const Problem& p, const std::string& key, const std::string& file) {
+  const std::string* value = findMetadata(p.metadata, key);
+  if (value == nullptr) throw ParseError(file, 0, "meta " + key, "missing; this file was not written by the generator");
+  return *value;
+}
+
+void writeText(const fs::path& path, const std::string& text) { writeFileAtomically(path.string(), text); }
+
+}  // namespace
+
+std::vector<double> ProblemSet::hardness() const {
+  std::vector<double> h;
+  for (double v : fitness_values) h.push_back(maximise ? v : -v);
+  return h;
+}
+
+ProblemSet makeProblemSet(const GeneratorOptions& options, const std::vector<Individual>& pool) {
+  std::vector<int> order(pool.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return pool[a].score > pool[b].score; });
+  const Fitness fitness = makeFitness(options.fitness, FitnessParameters{options.weights, options.seed});
+  ProblemSet set;
+  set.fitness = options.fitness;
+  set.maximise = fitness.maximise;
+  Evaluator evaluator(options.weights);
+  for (std::size_t rank = 0; rank < order.size(); ++rank) {
+    const Individual& individual = pool[order[rank]];
+    Problem problem = individual.problem;
+    const Evaluation evaluation = evaluator.evaluate(problem);
+    const std::string id = idOf(rank, order.size());
+    problem.metadata.clear();
+    setMetadata(&problem.metadata, "id", id);
+    setMetadata(&problem.metadata, "fitness", options.fitness);
+    setMetadata(&problem.metadata, "fitness_value", formatNumber(individual.value));
+    setMetadata(&problem.metadata, "generator_seed", std::to_string(options.seed));
+    const auto values = characterVector(evaluation);
+    for (std::size_t c = 0; c < values.size(); ++c) {
+      setMetadata(&problem.metadata, "character." + characterNames()[c], formatNumber(values[c]));
+    }
+    set.ids.push_back(id);
+    set.problems.push_back(std::move(problem));
+    set.evaluations.push_back(evaluation);
+    set.fitness_values.push_back(individual.value);
+  }
+  return set;
+}
+
+Taxonomy buildTaxonomy(const ProblemSet& set, CharacterSet characters) {
+  if (set.problems.empty()) throw InvalidArgument("set", "no PPPs to build a taxonomy of");
+  Taxonomy taxonomy;
+  taxonomy.characters = characters;
+  taxonomy.normalised = normaliseColumns(characterMatrix(set.evaluations, characters));
+  taxonomy.distances = euclideanDistances(taxonomy.normalised);
+  taxonomy.tree = upgma(taxonomy.distances);
+  return taxonomy;
+}
+
+void writeTreeFiles(const std::string& dir, const ProblemSet& set, const Taxonomy& taxonomy) {
+  const fs::path root(dir);
+  writeText(root / "tree.nwk", toNewick(taxonomy.tree, set.ids) + "\n");
+  writeText(root / "tree.json", treeToJson(taxonomy.tree, set.ids).dump(1) + "\n");
+  PictureOptions thumbnail;
+  thumbnail.cell_pixels = kThumbnailCellPixels;
+  thumbnail.grid_lines = false;
+  std::vector<std::string> thumbnails;
+  for (const Problem& problem : set.problems) {
+    thumbnails.push_back(encodePng(renderProblemRgb(problem, {}, thumbnail), pictureWidth(problem.width, thumbnail),
+                                   pictureHeight(problem.height, thumbnail)));
+  }
+  const std::string title = "PPP taxonomy: " + std::to_string(set.problems.size()) + " PPPs, fitness " +
+                            set.fitness + ", " + characterSetName(taxonomy.characters) + " characters";
+  writeText(root / "tree.html", treeHtml(taxonomy.tree, set.ids, thumbnails, title));
+}
+
+void checkOutputDirectory(const std::string& dir) {
+  const fs::path root(dir);
+  std::error_code error;
+  if (fs::exists(root, error)) {
+    if (!fs::is_directory(root)) throw IoError(dir, "exists and is not a directory");
+    if (!fs::is_empty(root, error) && !fs::exists(root / kSetFile)) {
+      throw IoError(dir, "holds files but no " + std::string(kSetFile) + "; refusing to replace something that is "
+                         "not a PPP set");
+    }
+  }
+  const fs::path parent = root.has_parent_path() ? root.parent_path() : fs::path(".");
+  fs::create_directories(parent, error);
+  const fs::path probe = parent / (root.filename().string() + ".write-check");
+  if (!fs::create_directory(probe, error) && !fs::exists(probe)) {
+    throw IoError(dir, "cannot create the output directory: " + error.message());
+  }
+  fs::remove(probe, error);
+}
+
+void writeProblemSetDirectory(const std::string& dir, const ProblemSet& set, const GeneratorOptions& options) {
+  checkOutputDirectory(dir);
+  const fs::path root(dir);
+  const fs::path parent = root.has_parent_path() ? root.parent_path() : fs::path(".");
+  const fs::path staging = parent / (root.filename().string() + ".partial");
+  std::error_code error;
+  fs::remove_all(staging, error);
+  if (!fs::create_directory(staging, error)) throw IoError(staging.string(), "cannot create: " + error.message());
+  {
+    CsvWriter csv((staging / kSetFile).string(), setCsvHeader());
+    for (std::size_t i = 0; i < set.problems.size(); ++i) {
+      const std::string file = set.ids[i] + ".ppp";
+      writePppFile(set.problems[i], (staging / file).string());
+      std::vector<std::string> row{set.ids[i], file, set.fitness, formatNumber(set.fitness_values[i])};
+      for (double value : characterVector(set.evaluations[i])) row.push_back(formatNumber(value));
+      csv.write(row);
+    }
+  }
+  writeText(staging / kOptionsFile, generatorOptionsYaml(options));
+  writeTreeFiles(staging.string(), set, buildTaxonomy(set, parseCharacterSet(options.characters)));
+  if (fs::exists(root)) fs::remove_all(root, error);
+  fs::rename(staging, root, error);
+  if (error) throw IoError(dir, "cannot move the finished set into place: " + error.message());
+}
+
+ProblemSet readProblemSetDirectory(const std::string& dir) {
+  const fs::path root(dir);
+  const std::string csv_path = (root / kSetFile).string();
+  const std::string text = readTextFile(csv_path, 64u << 20);
+  std::istringstream lines(text);
+  std::string line;
+  std::getline(lines, line);
+  if (line != csvLine(setCsvHeader())) {
+    throw ParseError(csv_path, 1, "header", "not a PPP set file (expected the header written by ppp generate)");
+  }
+  ProblemSet set;
+  GeneratorOptions options;
+  if (fs::exists(root / kOptionsFile)) options = loadGeneratorOptions((root / kOptionsFile).string());
+  Evaluator evaluator(options.weights);
+  int line_number = 1;
+  while (std::getline(lines, line)) {
+    ++line_number;
+    if (line.empty()) continue;
+    const auto comma = line.find(',');
+    const auto second = line.find(',', comma + 1);
+    if (comma == std::string::npos || second == std::string::npos) {
+      throw ParseError(csv_path, line_number, "file", "expected id,file,...");
+    }
+    const std::string file = line.substr(comma + 1, second - comma - 1);
+    const std::string path = (root / file).string();
+    Problem problem = readPppFile(path);
+    set.fitness = readRequiredMetadata(problem, "fitness", path);
+    set.ids.push_back(readRequiredMetadata(problem, "id", path));
+    const std::string value = readRequiredMetadata(problem, "fitness_value", path);
+    char* end = nullptr;
+    set.fitness_values.push_back(std::strtod(value.c_str(), &end));
+    if (end == value.c_str() || *end != '\0') throw ParseError(path, 0, "meta fitness_value", "not a number: " + value);
+    set.evaluations.push_back(evaluator.evaluate(problem));
+    set.problems.push_back(std::move(problem));
+  }
+  if (set.problems.empty()) throw ParseError(csv_path, line_number, "set", "lists no PPPs");
+  set.maximise = makeFitness(set.fitness).maximise;
+  return set;
+}
+
+}  // namespace generator
+}  // namespace ppp

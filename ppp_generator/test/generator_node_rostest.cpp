@@ -1,0 +1,125 @@
+// Wiring of generator_node: latched map and set, files equal to what it published and to a library run,
+// the generate service, and bad parameters.
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <ros/topic.h>
+
+#include <nav_msgs/OccupancyGrid.h>
+
+#include <cstdio>
+#include <string>
+
+#include "generator_parameters.hpp"
+#include "ppp_core/ppp_file.hpp"
+#include "ppp_generator/genetic_algorithm.hpp"
+#include "ppp_generator/problem_set.hpp"
+#include "ppp_msgs/Generate.h"
+#include "ppp_msgs/ProblemSet.h"
+
+namespace ppp {
+namespace generator {
+namespace {
+
+const ros::Duration kWait(60.0);
+
+NodeParameters generatorParameters() { return readNodeParameters(ros::NodeHandle("/generator")); }
+
+TEST(GeneratorNodeTest, LatchedMapEqualsTheChosenPppFile) {
+  ros::NodeHandle nh;
+  auto map = ros::topic::waitForMessage<nav_msgs::OccupancyGrid>("map", nh, kWait);
+  ASSERT_TRUE(map) << "no latched map";
+  auto set = ros::topic::waitForMessage<ppp_msgs::ProblemSet>("problem_set", nh, kWait);
+  ASSERT_TRUE(set) << "no latched problem set";
+  const NodeParameters parameters = generatorParameters();
+  ASSERT_EQ(set->problems.size(), 8u);
+  const std::string id = set->problems[parameters.publish_index].id;
+  const Problem problem = readPppFile(parameters.output_dir + "/" + id + ".ppp");
+  const Grid grid = decodeGrid(problem);
+  ASSERT_EQ(map->info.width, 12u);
+  ASSERT_EQ(map->info.height, 9u);
+  EXPECT_DOUBLE_EQ(map->info.resolution, 0.5);
+  EXPECT_EQ(map->header.frame_id, "map");
+  for (int y = 0; y < grid.height(); ++y) {
+    for (int x = 0; x < grid.width(); ++x) {
+      // Grid rows run down from the top; map rows run up from the bottom.
+      const int expected = grid.isObstacle(Cell{x, y}) ? 100 : 0;
+      EXPECT_EQ(map->data[(grid.height() - 1 - y) * grid.width() + x], expected) << x << "," << y;
+    }
+  }
+}
+
+TEST(GeneratorNodeTest, SetEqualsALibraryRunWithTheSameOptions) {
+  ros::NodeHandle nh;
+  auto set = ros::topic::waitForMessage<ppp_msgs::ProblemSet>("problem_set", nh, kWait);
+  ASSERT_TRUE(set);
+  const NodeParameters parameters = generatorParameters();
+  GeneticAlgorithm ga(parameters.options);
+  const ProblemSet expected = makeProblemSet(parameters.options, ga.run());
+  ASSERT_EQ(expected.problems.size(), set->problems.size());
+  for (std::size_t i = 0; i < expected.problems.size(); ++i) {
+    EXPECT_EQ(set->problems[i].id, expected.ids[i]);
+    const Problem written = readPppFile(parameters.output_dir + "/" + expected.ids[i] + ".ppp");
+    EXPECT_EQ(formatPpp(written), formatPpp(expected.problems[i]));
+  }
+}
+
+TEST(GeneratorNodeTest, ServiceEvolvesANewSet) {
+  ros::NodeHandle nh;
+  auto before = ros::topic::waitForMessage<ppp_msgs::ProblemSet>("problem_set", nh, kWait);
+  ASSERT_TRUE(before);
+  ASSERT_TRUE(ros::service::waitForService("/generator/generate", kWait));
+  ppp_msgs::Generate call;
+  call.request.seed = 7;
+  ASSERT_TRUE(ros::service::call("/generator/generate", call));
+  EXPECT_TRUE(call.response.success) << call.response.message;
+  EXPECT_EQ(call.response.count, 8u);
+  auto after = ros::topic::waitForMessage<ppp_msgs::ProblemSet>("problem_set", nh, kWait);
+  ASSERT_TRUE(after);
+  EXPECT_GT(after->header.stamp, before->header.stamp);
+  bool differs = false;
+  for (std::size_t i = 0; i < after->problems.size(); ++i) differs |= after->problems[i].map.data != before->problems[i].map.data;
+  EXPECT_TRUE(differs) << "seed 7 gave the same set as seed 42";
+}
+
+/// Runs the node with one bad private parameter; returns its exit status and output.
+int runWithParameter(const std::string& assignment, int index, std::string* output) {
+  // A fresh node name per run, so no parameter of an earlier run is still set.
+  const std::string command =
+      std::string(GENERATOR_NODE) + " __name:=bad_generator_" + std::to_string(index) + " " + assignment + " 2>&1";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  char buffer[512];
+  while (pipe != nullptr && std::fgets(buffer, sizeof buffer, pipe) != nullptr) *output += buffer;
+  return pipe == nullptr ? -1 : ::pclose(pipe);
+}
+
+TEST(GeneratorNodeTest, BadParametersStopTheNodeNamingThem) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"_population:=1", "~population: expected at least 2"},
+      {"_fitness:=hardest", "~fitness: unknown fitness 'hardest'; valid: turns"},
+      {"_matings:=-5", "~matings: expected a count >= 0"},
+      {"_width:=1", "~size: expected width and height in [2, 4096]"},
+      {"_max_obstacles:=-1", "~max_obstacles: expected a budget"},
+      {"_characters:=all", "~characters: unknown character set 'all'"},
+      {"_population:=many", "~population: expected an integer"},
+      {"_publish_index:=99", "~publish_index: expected an index in [0, population = 60)"},
+      {"_output_dir:=/proc/forbidden/set", "/proc/forbidden/set"},
+  };
+  int index = 0;
+  for (const auto& c : cases) {
+    std::string output;
+    const int status = runWithParameter(c.first, index++, &output);
+    EXPECT_NE(status, 0) << c.first;
+    EXPECT_NE(output.find(c.second), std::string::npos) << c.first << " printed:\n" << output;
+  }
+}
+
+}  // namespace
+}  // namespace generator
+}  // namespace ppp
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "generator_node_rostest");
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}

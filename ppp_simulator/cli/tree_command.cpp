@@ -1,0 +1,84 @@
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+#include "ppp_core/error.hpp"
+#include "ppp_core/ppp_file.hpp"
+#include "ppp_generator/diverse_selection.hpp"
+#include "ppp_generator/newick.hpp"
+#include "ppp_generator/problem_set.hpp"
+
+namespace ppp {
+namespace cli {
+
+namespace {
+
+struct TreeFlags {
+  std::string dir;
+  std::string characters = "extended";
+};
+
+struct SelectFlags {
+  std::string dir;
+  int k = 0;
+  std::string prefer = "medoid";
+  std::string characters = "extended";
+  std::string copy_to;
+};
+
+void runTree(const TreeFlags& f) {
+  const auto characters = generator::parseCharacterSet(f.characters);
+  const generator::ProblemSet set = generator::readProblemSetDirectory(f.dir);
+  const generator::Taxonomy taxonomy = generator::buildTaxonomy(set, characters);
+  generator::writeTreeFiles(f.dir, set, taxonomy);
+  std::cout << generator::toNewick(taxonomy.tree, set.ids) << "\n";
+  std::cerr << "wrote tree.nwk, tree.json and tree.html (" << f.characters << " characters) to " << f.dir << "\n";
+}
+
+void runSelect(const SelectFlags& f) {
+  const auto characters = generator::parseCharacterSet(f.characters);
+  if (f.prefer != "medoid" && f.prefer != "hardest") {
+    throw InvalidArgument("--prefer", "expected medoid or hardest, got '" + f.prefer + "'");
+  }
+  const generator::ProblemSet set = generator::readProblemSetDirectory(f.dir);
+  const generator::Taxonomy taxonomy = generator::buildTaxonomy(set, characters);
+  const std::vector<double> hardness = set.hardness();
+  const auto chosen =
+      generator::selectDiverse(taxonomy.tree, taxonomy.distances, f.k, f.prefer == "hardest" ? &hardness : nullptr);
+  if (!f.copy_to.empty()) std::filesystem::create_directories(f.copy_to);
+  for (int index : chosen) {
+    std::cout << set.ids[index] << ".ppp\n";
+    if (!f.copy_to.empty()) {
+      writePppFile(set.problems[index], (std::filesystem::path(f.copy_to) / (set.ids[index] + ".ppp")).string());
+    }
+  }
+}
+
+}  // namespace
+
+void addTreeCommand(CLI::App& app) {
+  auto flags = std::make_shared<TreeFlags>();
+  CLI::App* command =
+      app.add_subcommand("tree", "Rebuild a set's UPGMA taxonomy (tree.nwk, tree.json, tree.html) over a character set");
+  command->add_option("dir", flags->dir, "Set directory written by ppp generate")->required();
+  command->add_option("--characters", flags->characters, "wei or extended")->capture_default_str();
+  command->callback([flags] { runTree(*flags); });
+}
+
+void addSelectCommand(CLI::App& app) {
+  auto flags = std::make_shared<SelectFlags>();
+  CLI::App* command = app.add_subcommand(
+      "select", "Pick k diverse PPPs: cut the taxonomy into k clusters and take one representative of each");
+  command->add_option("dir", flags->dir, "Set directory written by ppp generate")->required();
+  command->add_option("-k", flags->k, "Number of PPPs to pick")->required();
+  command->add_option("--prefer", flags->prefer, "Representative: medoid (most central) or hardest (best fitness)")
+      ->capture_default_str();
+  command->add_option("--characters", flags->characters, "wei or extended")->capture_default_str();
+  command->add_option("--copy-to", flags->copy_to, "Also copy the picked .ppp files into this directory");
+  command->callback([flags] { runSelect(*flags); });
+}
+
+}  // namespace cli
+}  // namespace ppp
