@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds the ppp_core benchmarks standalone (Release) in build-bench/ and runs them, 3 repetitions each.
+# Builds the ppp_core benchmarks standalone (Release) in build-bench/ and the workspace (build/), and runs the
+# core and generator benchmarks, 3 repetitions each.
 # Console summary on stdout, JSON per binary in bench-results/. Extra arguments go to every benchmark binary
 # (e.g. --benchmark_filter=Dpa). Figures in BENCHMARKS.md come from this script.
 set -euo pipefail
@@ -21,6 +22,18 @@ echo "machine: nproc=$(nproc) cpu='${cpu_model:-unknown}' date=$(date -u +%Y-%m-
 for bench in "${benchmarks[@]}"; do
   echo "== ${bench}"
   "${build_dir}/${bench}" \
+    --benchmark_repetitions=3 \
+    --benchmark_report_aggregates_only=true \
+    --benchmark_format=console \
+    --benchmark_out="${results_dir}/${bench}.json" \
+    --benchmark_out_format=json \
+    "$@"
+done
+# Generator benchmarks live in the catkin workspace (package ppp_generator).
+PATH="/usr/bin:$PATH" scripts/build.sh > /dev/null
+for bench in upgma_bench generator_bench; do
+  echo "== ${bench}"
+  "build/devel/lib/ppp_generator/${bench}" \
     --benchmark_repetitions=3 \
     --benchmark_report_aggregates_only=true \
     --benchmark_format=console \

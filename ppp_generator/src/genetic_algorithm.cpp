@@ -14,6 +14,13 @@ namespace {
 
 constexpr long kMaxInitialRedraws = 1000000;
 
+/// FNV-1a over the grid cells.
+std::uint64_t hashCells(const Grid& grid) {
+  std::uint64_t hash = 0xcbf29ce484222325ULL;
+  for (std::uint8_t cell : grid.cells()) hash = (hash ^ cell) * 0x100000001b3ULL;
+  return hash;
+}
+
 }  // namespace
 
 GeneticAlgorithm::GeneticAlgorithm(const GeneratorOptions& options)
@@ -26,12 +33,20 @@ GeneticAlgorithm::GeneticAlgorithm(const GeneratorOptions& options)
 }
 
 bool GeneticAlgorithm::evaluate(Individual* individual) {
-  const Grid grid = decodeGrid(individual->problem);
-  const DpaResult& dpa = dpa_.solve(grid, individual->problem.start, individual->problem.goal);
+  individual->grid = decodeGrid(individual->problem);
+  individual->grid_hash = hashCells(individual->grid);
+  const DpaResult& dpa = dpa_.solve(individual->grid, individual->problem.start, individual->problem.goal);
   if (!dpa.reachable) return false;
-  individual->value = fitness_.value(individual->problem, grid, dpa);
+  individual->value = fitness_.value(individual->problem, individual->grid, dpa);
   individual->score = fitness_.score(individual->value);
   return true;
+}
+
+bool GeneticAlgorithm::inPool(const std::vector<Individual>& pool, const Individual& candidate) const {
+  for (const Individual& member : pool) {
+    if (member.grid_hash == candidate.grid_hash && member.grid == candidate.grid) return true;
+  }
+  return false;
 }
 
 Problem GeneticAlgorithm::randomChromosome() {
@@ -85,13 +100,15 @@ std::vector<Individual> GeneticAlgorithm::run(const ProgressCallback& progress, 
   std::vector<Individual> pool;
   pool.reserve(static_cast<std::size_t>(options_.population));
   while (static_cast<int>(pool.size()) < options_.population) {
-    Individual individual{randomChromosome(), 0, 0};
-    if (evaluate(&individual)) {
+    Individual individual;
+    individual.problem = randomChromosome();
+    if (evaluate(&individual) && !inPool(pool, individual)) {
       pool.push_back(std::move(individual));
     } else if (++stats_.initial_redraws > kMaxInitialRedraws) {
-      throw InvalidArgument("max_obstacles", "no solvable random chromosome in " +
-                                                 std::to_string(kMaxInitialRedraws) +
-                                                 " draws; lower the budget or the obstacle sizes");
+      throw InvalidArgument("population", "only " + std::to_string(pool.size()) + " distinct solvable PPPs in " +
+                                              std::to_string(kMaxInitialRedraws) +
+                                              " random draws; lower the population, the obstacle budget or sizes, "
+                                              "or enlarge the grid");
     }
   }
   const int tournament_size = std::min(options_.tournament_size, options_.population);
@@ -125,6 +142,10 @@ std::vector<Individual> GeneticAlgorithm::run(const ProgressCallback& progress, 
       mutate(&child.problem);
       if (!evaluate(&child)) {
         ++stats_.children_pruned;  // Wei's pruning: an unsolvable child never enters the pool
+        continue;
+      }
+      if (inPool(pool, child)) {
+        ++stats_.children_duplicate;
         continue;
       }
       ++stats_.children_accepted;

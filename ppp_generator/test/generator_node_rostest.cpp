@@ -7,6 +7,7 @@
 #include <nav_msgs/OccupancyGrid.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "generator_parameters.hpp"
@@ -79,6 +80,24 @@ TEST(GeneratorNodeTest, ServiceEvolvesANewSet) {
   bool differs = false;
   for (std::size_t i = 0; i < after->problems.size(); ++i) differs |= after->problems[i].map.data != before->problems[i].map.data;
   EXPECT_TRUE(differs) << "seed 7 gave the same set as seed 42";
+}
+
+TEST(GeneratorNodeTest, CommandLineWritesTheSameSetDirectory) {
+  // Regenerate with the launch file's seed first: another test may have asked for a different one.
+  ASSERT_TRUE(ros::service::waitForService("/generator/generate", kWait));
+  ppp_msgs::Generate call;
+  call.request.seed = 42;
+  ASSERT_TRUE(ros::service::call("/generator/generate", call));
+  ASSERT_TRUE(call.response.success) << call.response.message;
+  const NodeParameters parameters = generatorParameters();
+  const std::string cli_dir = parameters.output_dir + "_cli";
+  // The same options as generator_node.test's parameters; everything else is config/generator.yaml's.
+  const std::string command = std::string(PPP_CLI) +
+                              " generate --quiet --fitness turns --population 8 --matings 200 --size 12x9"
+                              " --max-obstacles 6 --seed 42 -o " + cli_dir;
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  const std::string diff = "diff -r " + parameters.output_dir + " " + cli_dir;
+  EXPECT_EQ(std::system(diff.c_str()), 0) << "the node and ppp generate wrote different sets";
 }
 
 /// Runs the node with one bad private parameter; returns its exit status and output.

@@ -70,7 +70,8 @@ void runGenerate(const CLI::App& command, const GenerateFlags& flags) {
   const auto& stats = ga.stats();
   std::cout << "wrote " << set.problems.size() << " PPPs, set.csv, generator.yaml and tree.{nwk,json,html} to "
             << flags.output << " (" << stats.matings << " matings, " << stats.children_accepted
-            << " children accepted, " << stats.children_pruned << " pruned as unsolvable)\n";
+            << " children accepted, " << stats.children_pruned << " pruned as unsolvable, "
+            << stats.children_duplicate << " dropped as duplicates)\n";
 }
 
 }  // namespace

@@ -23,7 +23,7 @@ expect_error() {
   if grep -qF -- "$text" "$work/err"; then pass; else fail "$name: error lacks '$text': $(cat "$work/err")"; fi
 }
 
-for sub in random evaluate convert; do
+for sub in random evaluate convert generate tree select; do
   expect_ok "help $sub" "$ppp" "$sub" --help
   grep -q "Usage" "$work/out" && pass || fail "help $sub has no usage"
 done
@@ -73,6 +73,56 @@ expect_error "bad extension" "cannot write '.txt' files" "$ppp" convert "$work/a
 expect_error "bad height" "height" "$ppp" convert "$work/a.ppp" "$work/z.bt" --height -1
 [ ! -e "$work/x.ppp" ] && pass || fail "a failed command left an output file"
 expect_error "no subcommand" "A subcommand is required" "$ppp"
+
+# --- generate, tree, select
+gen=(generate --population 12 --matings 300 --size 14x10 --max-obstacles 6 --quiet)
+expect_ok "generate" "$ppp" "${gen[@]}" --seed 5 -o "$work/set_a"
+expect_ok "generate same seed" "$ppp" "${gen[@]}" --seed 5 -o "$work/set_b"
+diff -r "$work/set_a" "$work/set_b" > /dev/null && pass || fail "same seed gave different set directories"
+expect_ok "generate other seed" "$ppp" "${gen[@]}" --seed 6 -o "$work/set_c"
+diff -r "$work/set_a" "$work/set_c" > /dev/null && fail "different seeds gave the same set" || pass
+[ "$(ls "$work/set_a"/*.ppp | wc -l)" -eq 12 ] && pass || fail "generate did not write 12 .ppp files"
+for f in set.csv generator.yaml tree.nwk tree.json tree.html; do
+  [ -s "$work/set_a/$f" ] && pass || fail "generate did not write $f"
+done
+[ "$(wc -l < "$work/set_a/set.csv")" -eq 13 ] && pass || fail "set.csv rows"
+grep -q "^meta fitness turns$" "$work/set_a/ppp_000.ppp" && pass || fail "PPP lacks its fitness metadata"
+expect_ok "generate over an old set" "$ppp" "${gen[@]}" --seed 6 -o "$work/set_a"
+diff -r "$work/set_a" "$work/set_c" > /dev/null && pass || fail "regenerating into a set directory did not replace it"
+expect_ok "generate difficulty" "$ppp" "${gen[@]}" --fitness difficulty --weight goal=3 --seed 1 -o "$work/set_d"
+grep -q "^  goal: 3$" "$work/set_d/generator.yaml" && pass || fail "weight override not recorded"
+
+expect_ok "tree wei" "$ppp" tree "$work/set_a" --characters wei
+grep -q ";$" "$work/out" && pass || fail "tree printed no Newick"
+expect_ok "select" "$ppp" select "$work/set_a" -k 4
+[ "$(sort -u "$work/out" | wc -l)" -eq 4 ] && pass || fail "select -k 4 did not print 4 distinct PPPs"
+expect_ok "select hardest" "$ppp" select "$work/set_a" -k 3 --prefer hardest --copy-to "$work/picked"
+[ "$(ls "$work/picked" | wc -l)" -eq 3 ] && pass || fail "select --copy-to did not copy 3 files"
+
+# Bad options fail validation before any work, so these runs use the shipped defaults otherwise.
+expect_error "unknown fitness" "fitness: unknown fitness 'hardness'; valid: turns, advances" \
+  "$ppp" generate --quiet --fitness hardness -o "$work/bad1"
+expect_error "population 1" "population: expected at least 2" "$ppp" generate --quiet --population 1 -o "$work/bad1"
+expect_error "negative matings" "matings: expected a count >= 0" "$ppp" generate --quiet --matings -1 -o "$work/bad1"
+expect_error "tiny size" "--size: expected width and height in [2, 4096], got 1x1" \
+  "$ppp" generate --quiet --size 1x1 -o "$work/bad1"
+expect_error "huge size" "--size: expected width and height in [2, 4096]" "$ppp" generate --quiet --size 9000x9 -o "$work/bad1"
+expect_error "negative budget" "max_obstacles: expected a budget" "$ppp" generate --quiet --max-obstacles -1 -o "$work/bad1"
+expect_error "goal outside" "goal: cell (14, 0) is outside the 14x10 grid" "$ppp" generate --quiet --size 14x10 --goal 14,0 -o "$work/bad1"
+expect_error "start is goal" "goal: must differ from start" "$ppp" generate --quiet --size 14x10 --start 13,9 -o "$work/bad1"
+expect_error "unknown characters" "characters: unknown character set 'all'" \
+  "$ppp" generate --quiet --characters all -o "$work/bad1"
+expect_error "bad config key" "generator.yaml:1: populaton: unknown key" \
+  "$ppp" generate --quiet --config "$(printf 'populaton: 3\n' > "$work/generator.yaml"; echo "$work/generator.yaml")" -o "$work/bad1"
+[ ! -e "$work/bad1" ] && pass || fail "a failed generate left an output directory"
+mkdir -p "$work/not_a_set" && touch "$work/not_a_set/notes.txt"
+expect_error "foreign directory" "holds files but no set.csv" "$ppp" "${gen[@]}" -o "$work/not_a_set"
+[ -e "$work/not_a_set/notes.txt" ] && pass || fail "generate touched a directory that was not a set"
+expect_error "unwritable output" "/proc/ppp_set" "$ppp" "${gen[@]}" -o /proc/ppp_set
+expect_error "k too large" "k: " "$ppp" select "$work/set_a" -k 13
+expect_error "k zero" "k: " "$ppp" select "$work/set_a" -k 0
+expect_error "select bad characters" "characters: unknown character set" "$ppp" select "$work/set_a" -k 2 --characters x
+expect_error "tree of a non-set" "set.csv" "$ppp" tree "$work/not_a_set"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

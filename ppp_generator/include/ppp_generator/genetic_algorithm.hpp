@@ -15,6 +15,8 @@ namespace generator {
 /// One member of the pool: a valid PPP and its fitness.
 struct Individual {
   Problem problem;     ///< Always valid (goal reachable).
+  Grid grid;           ///< The decoded grid.
+  std::uint64_t grid_hash = 0;  ///< Hash of the grid's cells, to find duplicates quickly.
   double value = 0;    ///< Raw fitness value.
   double score = 0;    ///< Fitness oriented so that larger is fitter.
 };
@@ -24,6 +26,7 @@ struct GenerationStats {
   long matings = 0;            ///< Mating events performed.
   long children_accepted = 0;  ///< Valid children that entered the pool.
   long children_pruned = 0;    ///< Children discarded by Wei's pruning (goal unreachable).
+  long children_duplicate = 0; ///< Valid children discarded because their grid is already in the pool.
   long initial_redraws = 0;    ///< Unsolvable random chromosomes redrawn for the initial pool.
 };
 
@@ -33,7 +36,9 @@ using ProgressCallback = std::function<void(long done, long total, double best_v
 /// Ashlock's steady-state genetic algorithm over obstacle chromosomes with Wei's pruning.
 /// Each mating event draws a tournament, the two fittest mate (one-point crossover of descriptor lists,
 /// then with probability `mutation_rate` one mutation: change, add or remove a descriptor), and the valid
-/// children replace the least fit of the tournament. Deterministic for a seed.
+/// children replace the least fit of the tournament. A child whose decoded grid equals one already in the
+/// pool is discarded too, so the pool keeps distinct PPPs (a set of copies is useless to a test engineer).
+/// Deterministic for a seed.
 class GeneticAlgorithm {
  public:
   /// Prepares a run. @throws InvalidArgument for bad options.
@@ -47,6 +52,7 @@ class GeneticAlgorithm {
 
  private:
   bool evaluate(Individual* individual);
+  bool inPool(const std::vector<Individual>& pool, const Individual& candidate) const;
   Problem randomChromosome();
   void crossover(const Problem& a, const Problem& b, Problem* child_a, Problem* child_b);
   void mutate(Problem* problem);
