@@ -17,6 +17,14 @@ void addGenerateCommand(CLI::App& app);
 void addTreeCommand(CLI::App& app);
 /// Adds `ppp select`: pick k diverse PPPs of a set.
 void addSelectCommand(CLI::App& app);
+/// Adds `ppp simulate`: one agent, many runs, one PPP.
+void addSimulateCommand(CLI::App& app);
+/// Adds `ppp replay`: one episode drawn as a picture.
+void addReplayCommand(CLI::App& app);
+/// Adds `ppp experiment`: the full experiment with resume and report.
+void addExperimentCommand(CLI::App& app);
+/// Adds `ppp compare`: Mann-Whitney comparison of two sets' pass rates.
+void addCompareCommand(CLI::App& app);
 
 }  // namespace cli
 }  // namespace ppp

@@ -15,6 +15,10 @@ int main(int argc, char** argv) {
   ppp::cli::addGenerateCommand(app);
   ppp::cli::addTreeCommand(app);
   ppp::cli::addSelectCommand(app);
+  ppp::cli::addSimulateCommand(app);
+  ppp::cli::addReplayCommand(app);
+  ppp::cli::addExperimentCommand(app);
+  ppp::cli::addCompareCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -23,7 +23,12 @@ inline bool less(std::int64_t a, std::int64_t b, std::int64_t c, std::int64_t d)
 
 }  // namespace
 
-bool lineOfSight(const Grid& grid, Cell from, Cell to) {
+namespace {
+
+/// Calls `visit(cell)` for every cell whose interior the open segment between the centres of `from` and `to`
+/// crosses (ends excluded, cells off the grid included), nearest first; stops early when `visit` returns false.
+template <typename Visit>
+bool forEachCellCrossed(Cell from, Cell to, Visit visit) {
   const int dx = to.x - from.x;
   const int dy = to.y - from.y;
   const bool x_major = std::abs(dx) >= std::abs(dy);
@@ -39,14 +44,30 @@ bool lineOfSight(const Grid& grid, Cell from, Cell to) {
     const int centre = static_cast<int>((static_cast<std::int64_t>(m) * k) / d);
     for (int mm = centre - 1; mm <= centre + 1; ++mm) {
       // Open interval (lo, hi)/d meets the cell's open band (2mm-1, 2mm+1); lo == hi means a line at lo/d.
-      const bool crosses = lo < static_cast<std::int64_t>(2 * mm + 1) * d && hi > static_cast<std::int64_t>(2 * mm - 1) * d;
+      const bool crosses =
+          lo < static_cast<std::int64_t>(2 * mm + 1) * d && hi > static_cast<std::int64_t>(2 * mm - 1) * d;
       if (!crosses) continue;
       const int major_offset = k * major_sign;
       const Cell c = x_major ? Cell{from.x + major_offset, from.y + mm} : Cell{from.x + mm, from.y + major_offset};
-      if (grid.contains(c) && grid.isObstacle(c)) return false;
+      if (!visit(c)) return false;
     }
   }
   return true;
+}
+
+}  // namespace
+
+bool lineOfSight(const Grid& grid, Cell from, Cell to) {
+  return forEachCellCrossed(from, to, [&](Cell c) { return !(grid.contains(c) && grid.isObstacle(c)); });
+}
+
+std::vector<Cell> cellsCrossed(Cell from, Cell to) {
+  std::vector<Cell> cells;
+  forEachCellCrossed(from, to, [&](Cell c) {
+    cells.push_back(c);
+    return true;
+  });
+  return cells;
 }
 
 void VisibilitySolver::sweepCone(const Grid& grid, Cell v, int cone_index) {

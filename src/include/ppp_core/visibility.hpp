@@ -12,6 +12,10 @@ namespace ppp {
 /// Grazing a corner or running along an edge does not block. Both cells must be on the grid.
 bool lineOfSight(const Grid& grid, Cell from, Cell to);
 
+/// The cells whose interior the open segment between the centres of `from` and `to` crosses, nearest first,
+/// ends excluded (they may lie off the grid): `to` is in line of sight iff none of them is an obstacle.
+std::vector<Cell> cellsCrossed(Cell from, Cell to);
+
 /// Everything a perfect sensor sees from one cell, computed by sweeping four 90-degree cones row by row
 /// and keeping the obstacles' angular shadows as exact rational intervals: each cell is visited about once,
 /// and the answer equals lineOfSight() for every cell. Keeps its buffers between calls.

@@ -1,0 +1,37 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "ppp_agents/action.hpp"
+#include "ppp_core/grid.hpp"
+#include "ppp_core/sensor.hpp"
+
+namespace ppp {
+namespace agents {
+
+/// What an agent is told when an episode starts. Like a robot given a navigation goal, it knows its start,
+/// the goal and the size of the area, never the map (the prior map is given only to agents that plan on it).
+struct EpisodeInfo {
+  int width = 0;                    ///< Map columns.
+  int height = 0;                   ///< Map rows.
+  Cell start;                       ///< Start cell.
+  Cell goal;                        ///< Goal cell.
+  std::uint64_t seed = 0;           ///< Seed of the agent's own random choices in this episode.
+  const Grid* prior_map = nullptr;  ///< The true map, for agents with prior knowledge (astar); else null.
+};
+
+/// A test agent: each step it gets a scan (its cell, the goal, a bump flag and the window of cells) and returns
+/// an action. One instance runs one episode at a time; reset() starts the next.
+class Agent {
+ public:
+  virtual ~Agent() = default;
+  /// Forgets everything and prepares for a new episode.
+  virtual void reset(const EpisodeInfo& info) = 0;
+  /// The action for this step.
+  virtual Action act(const Scan& scan) = 0;
+};
+
+}  // namespace agents
+}  // namespace ppp

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ppp_agents/agent.hpp"
+#include "ppp_core/yaml_reader.hpp"
+
+namespace ppp {
+namespace agents {
+
+/// One agent configuration of an experiment: a type plus handicaps, under a name of its own.
+struct AgentConfig {
+  std::string name;            ///< Name in results and reports (e.g. "explorer_memory_5x5"); defaults to type.
+  std::string type;            ///< One of agentTypeNames().
+  int memory_window = 0;       ///< Limited memory: keep only a k x k window around the agent (odd k); 0 = full.
+  double sensor_noise = 0.0;   ///< Probability that a sensed cell is reported flipped (applied by the sensor).
+  /// @throws InvalidArgument naming "type" (listing the valid ones), "memory" or "sensor_noise".
+  void validate() const;
+};
+
+/// The agent types: astar, random, wall_follower_left, wall_follower_right, explorer, long_term_explorer,
+/// bumper, decision_bumper.
+const std::vector<std::string>& agentTypeNames();
+
+/// Builds an agent for a configuration (validated first). @throws InvalidArgument.
+std::unique_ptr<Agent> makeAgent(const AgentConfig& config);
+
+/// Parses a memory window "KxK" (e.g. "5x5"; "full" means 0). @throws InvalidArgument naming `option`.
+int parseMemoryWindow(const std::string& text, const std::string& option);
+
+/// Reads a list of agent configurations (each a mapping with name, type, memory, sensor_noise) from the
+/// sequence under `key` of `reader`. @throws ParseError naming file, line and key.
+std::vector<AgentConfig> readAgentConfigs(YamlMapReader& reader, const std::string& key);
+
+/// Loads config/agents.yaml-style files: a mapping with the key `agents`. @throws IoError, ParseError.
+std::vector<AgentConfig> loadAgentConfigs(const std::string& path);
+
+}  // namespace agents
+}  // namespace ppp

@@ -1,0 +1,61 @@
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "ppp_agents/agent.hpp"
+#include "ppp_agents/agent_memory.hpp"
+#include "ppp_agents/navigation.hpp"
+#include "ppp_core/rng.hpp"
+
+namespace ppp {
+namespace agents {
+
+/// `explorer` and `long_term_explorer`. Both remember what they see and, each step, move to the 4-neighbour
+/// (free in memory) whose sensor window holds the most unknown cells that could be seen from it (cells behind
+/// a remembered obstacle do not count: they stay hidden, and counting them would make the agent shuttle
+/// between two cells forever), ties broken at random.
+/// - explorer: when no neighbour would reveal anything it moves to a random free neighbour; fault: it wanders
+///   in explored areas.
+/// - long_term_explorer: then it follows a shortest path on its memory (known-free cells) to the nearest
+///   frontier (a known-free cell with an unknown 4-neighbour), re-planning when a cell of the path turns out
+///   blocked or the frontier is gone; fault: it may travel far for single unknown cells.
+/// Once either has seen the goal it takes a shortest path to it on its memory (unknown cells passable).
+class ExplorerAgent final : public Agent {
+ public:
+  /// An explorer; `long_term` selects the frontier-seeking variant; `memory_window` 0 is full memory.
+  ExplorerAgent(bool long_term, int memory_window);
+  /// Forgets the map and reseeds the tie-breaking generator.
+  void reset(const EpisodeInfo& info) override;
+  /// One greedy (or frontier, or goal) step.
+  Action act(const Scan& scan) override;
+
+ private:
+  /// Collects the unknown cells within range + 1 of `position` (all that any neighbour's window can hold).
+  void collectUnknown(Cell position, int range);
+  /// Collected unknown cells within the sensor window around `centre` not hidden by a remembered obstacle.
+  int unknownAround(Cell centre) const;
+  /// Builds the line-of-sight table of a sensor range (once per range; not per step).
+  void prepareSight(int range);
+  /// True when a cell is known free and has an unknown on-map 4-neighbour.
+  bool isFrontier(Cell c) const;
+  /// The next move along the frontier path (re-planned when needed), or false when there is no frontier.
+  bool frontierStep(Cell position, Action* action);
+
+  bool long_term_;
+  int memory_window_;
+  AgentMemory memory_;
+  Navigator navigator_;
+  Rng rng_{0};
+  bool goal_seen_ = false;
+  int sight_range_ = -1;              // range the table below is built for
+  std::vector<int> sight_begin_;      // per window index: its blockers are sight_blockers_[begin[i], begin[i+1])
+  std::vector<Cell> sight_blockers_;  // offsets of the cells a line of sight to the window cell crosses
+  std::array<Cell, (2 * kMaxSensorRange + 3) * (2 * kMaxSensorRange + 3)> unknown_{};
+  int unknown_count_ = 0;
+  std::vector<Cell> path_;    // long_term: cells still to visit, the frontier last
+  std::size_t path_next_ = 0;
+};
+
+}  // namespace agents
+}  // namespace ppp

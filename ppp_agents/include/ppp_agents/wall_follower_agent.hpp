@@ -1,0 +1,38 @@
+#pragma once
+
+#include "ppp_agents/agent.hpp"
+#include "ppp_agents/agent_memory.hpp"
+#include "ppp_agents/navigation.hpp"
+
+namespace ppp {
+namespace agents {
+
+/// `wall_follower_left` / `wall_follower_right`: keeps a wall (an obstacle or the map edge, as the scan reports
+/// the four neighbours) on one side with the hand-on-wall rule: with an internal heading, it turns towards the
+/// wall side if it can, else goes straight, else turns away, else turns back. Before touching any wall it goes
+/// straight along the goal's larger axis difference until blocked, then turns so the wall is on its side.
+/// Fault: around a free-standing cycle of walls (an island) it circles forever when the goal is not on that loop.
+/// Once it sees the goal it leaves the wall and takes a shortest path on its memory (kept for this alone).
+class WallFollowerAgent final : public Agent {
+ public:
+  /// Which hand stays on the wall.
+  enum class Side { Left, Right };
+  /// A follower keeping the wall on `side`, with a memory of `memory_window` (0: full) for the goal.
+  WallFollowerAgent(Side side, int memory_window);
+  /// Forgets the map and the wall; sets the initial heading towards the goal.
+  void reset(const EpisodeInfo& info) override;
+  /// One step of the hand-on-wall rule, or towards the goal once seen.
+  Action act(const Scan& scan) override;
+
+ private:
+  Side side_;
+  int memory_window_;
+  AgentMemory memory_;
+  Navigator navigator_;
+  bool goal_seen_ = false;
+  bool engaged_ = false;  // touched a wall: the hand-on-wall rule is in force
+  int heading_ = 0;       // index into kMoves
+};
+
+}  // namespace agents
+}  // namespace ppp

@@ -1,0 +1,18 @@
+#include "ppp_agents/action.hpp"
+
+namespace ppp {
+namespace agents {
+
+const char* actionName(Action action) {
+  switch (action) {
+    case Action::Stay: return "stay";
+    case Action::North: return "north";
+    case Action::East: return "east";
+    case Action::South: return "south";
+    case Action::West: return "west";
+  }
+  return "unknown";
+}
+
+}  // namespace agents
+}  // namespace ppp

@@ -1,0 +1,150 @@
+#include "ppp_agents/agent_config.hpp"
+
+#include <charconv>
+#include <map>
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/grid.hpp"
+
+namespace ppp {
+namespace agents {
+
+namespace {
+
+/// Largest memory window side: centred anywhere on the largest map, it covers the whole map.
+constexpr int kMaxMemoryWindow = 2 * kMaxGridSide - 1;
+
+std::string typeList() {
+  std::string list;
+  for (const std::string& name : agentTypeNames()) list += (list.empty() ? "" : ", ") + name;
+  return list;
+}
+
+bool isAgentType(const std::string& type) {
+  for (const std::string& name : agentTypeNames()) {
+    if (name == type) return true;
+  }
+  return false;
+}
+
+void validateType(const std::string& type) {
+  if (!isAgentType(type)) throw InvalidArgument("type", "unknown agent type '" + type + "'; valid: " + typeList());
+}
+
+void validateMemoryWindow(int window) {
+  if (window != 0 && (window < 1 || window % 2 == 0 || window > kMaxMemoryWindow)) {
+    throw InvalidArgument("memory", "expected an odd window side in [1, " + std::to_string(kMaxMemoryWindow) +
+                                        "] (5 for 5x5) or 0 for full memory, got " + std::to_string(window));
+  }
+}
+
+/// What is wrong with a sensor noise, or "" when nothing is.
+std::string sensorNoiseProblem(double noise) {
+  if (noise >= 0.0 && noise <= 1.0) return "";
+  return "expected a probability in [0, 1], got " + std::to_string(noise);
+}
+
+/// Parses a whole string of decimal digits; false on anything else or overflow.
+bool parseSide(const std::string& text, int* value) {
+  if (text.empty() || text[0] == '-' || text[0] == '+') return false;
+  const char* end = text.data() + text.size();
+  const auto result = std::from_chars(text.data(), end, *value);
+  return result.ec == std::errc() && result.ptr == end;
+}
+
+/// Parses "KxK" or "full" into `window`; returns what is wrong, or "" when nothing is.
+std::string memoryWindowProblem(const std::string& text, int* window) {
+  if (text == "full") {
+    *window = 0;
+    return "";
+  }
+  const std::size_t x = text.find('x');
+  int width = 0;
+  int height = 0;
+  if (x == std::string::npos || !parseSide(text.substr(0, x), &width) || !parseSide(text.substr(x + 1), &height)) {
+    return "expected KxK with odd K (e.g. 5x5) or 'full', got '" + text + "'";
+  }
+  if (width != height) return "the window must be square (KxK), got '" + text + "'";
+  if (width < 1 || width % 2 == 0 || width > kMaxMemoryWindow) {
+    return "the window side must be odd and in [1, " + std::to_string(kMaxMemoryWindow) +
+           "] (the window is centred on the agent), got '" + text + "'";
+  }
+  *window = width;
+  return "";
+}
+
+}  // namespace
+
+void AgentConfig::validate() const {
+  validateType(type);
+  validateMemoryWindow(memory_window);
+  const std::string noise_problem = sensorNoiseProblem(sensor_noise);
+  if (!noise_problem.empty()) throw InvalidArgument("sensor_noise", noise_problem);
+}
+
+const std::vector<std::string>& agentTypeNames() {
+  static const std::vector<std::string> names = {
+      "astar",    "random",           "wall_follower_left", "wall_follower_right", "explorer", "long_term_explorer",
+      "bumper",   "decision_bumper",
+  };
+  return names;
+}
+
+int parseMemoryWindow(const std::string& text, const std::string& option) {
+  int window = 0;
+  const std::string problem = memoryWindowProblem(text, &window);
+  if (!problem.empty()) throw InvalidArgument(option, problem);
+  return window;
+}
+
+std::vector<AgentConfig> readAgentConfigs(YamlMapReader& reader, const std::string& key) {
+  const YAML::Node list = reader.lookup(key);
+  if (!list) throw ParseError(reader.source(), 0, reader.fieldName(key), "missing; expected a list of agents");
+  if (!list.IsSequence()) reader.fail(list, key, "expected a list of agents, each a mapping with a type");
+  if (list.size() == 0) reader.fail(list, key, "expected at least one agent");
+  std::vector<AgentConfig> configs;
+  std::map<std::string, std::size_t> names;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const YAML::Node node = list[i];
+    YamlMapReader item(node, reader.source(), reader.fieldName(key) + "[" + std::to_string(i) + "]");
+    AgentConfig config;
+    const bool has_type = item.read("type", &config.type);
+    const bool has_name = item.read("name", &config.name);
+    std::string memory;
+    const bool has_memory = item.read("memory", &memory);
+    item.read("sensor_noise", &config.sensor_noise);
+    item.rejectUnknownKeys();
+
+    if (!has_type) item.fail(node, "type", "missing; valid: " + typeList());
+    if (!isAgentType(config.type)) {
+      item.fail(item.lookup("type"), "type", "unknown agent type '" + config.type + "'; valid: " + typeList());
+    }
+    if (!has_name) config.name = config.type;
+    if (config.name.empty()) item.fail(item.lookup("name"), "name", "expected a non-empty name");
+    if (has_memory) {
+      const std::string problem = memoryWindowProblem(memory, &config.memory_window);
+      if (!problem.empty()) item.fail(item.lookup("memory"), "memory", problem);
+    }
+    const std::string noise_problem = sensorNoiseProblem(config.sensor_noise);
+    if (!noise_problem.empty()) item.fail(item.lookup("sensor_noise"), "sensor_noise", noise_problem);
+    const auto inserted = names.emplace(config.name, i);
+    if (!inserted.second) {
+      item.fail(has_name ? item.lookup("name") : node, "name",
+                "duplicate agent name '" + config.name + "' (also " + reader.fieldName(key) + "[" +
+                    std::to_string(inserted.first->second) + "]); give each configuration its own name");
+    }
+    configs.push_back(config);
+  }
+  return configs;
+}
+
+std::vector<AgentConfig> loadAgentConfigs(const std::string& path) {
+  const YAML::Node root = loadYamlFile(path);
+  YamlMapReader reader(root, path);
+  std::vector<AgentConfig> configs = readAgentConfigs(reader, "agents");
+  reader.rejectUnknownKeys();
+  return configs;
+}
+
+}  // namespace agents
+}  // namespace ppp

@@ -1,0 +1,67 @@
+#include "ppp_agents/bumper_agent.hpp"
+
+namespace ppp {
+namespace agents {
+
+namespace {
+
+int moveIndex(Action action) { return static_cast<int>(action) - 1; }
+
+}  // namespace
+
+BumperAgent::BumperAgent(bool decision, int memory_window) : decision_(decision), memory_window_(memory_window) {}
+
+void BumperAgent::reset(const EpisodeInfo& info) {
+  width_ = info.width;
+  memory_.reset(info.width, info.height, memory_window_);
+  navigator_.reset(info.width, info.height);
+  rng_ = Rng(info.seed);
+  goal_seen_ = false;
+  direction_ = static_cast<int>(rng_.below(4));
+  last_ = direction_;
+  if (decision_) tried_.assign(static_cast<std::size_t>(info.width) * static_cast<std::size_t>(info.height), 0);
+}
+
+int BumperAgent::turn(Cell position, int bumped) {
+  if (decision_) {
+    std::uint8_t& tried = tried_[static_cast<std::size_t>(position.y) * width_ + position.x];
+    tried = static_cast<std::uint8_t>(tried | (1u << bumped));
+    const unsigned untried = ~static_cast<unsigned>(tried) & 0xFu;
+    int chosen;
+    if (untried != 0) {
+      const int count = __builtin_popcount(untried);
+      int k = count == 1 ? 0 : static_cast<int>(rng_.below(static_cast<std::uint64_t>(count)));
+      chosen = 0;
+      for (unsigned bits = untried;; bits &= bits - 1) {
+        if (k-- == 0) {
+          chosen = __builtin_ctz(bits);
+          break;
+        }
+      }
+    } else {
+      chosen = (bumped + 1 + static_cast<int>(rng_.below(3))) % 4;
+    }
+    tried = static_cast<std::uint8_t>(tried | (1u << chosen));
+    return chosen;
+  }
+  return (bumped + 1 + static_cast<int>(rng_.below(3))) % 4;
+}
+
+Action BumperAgent::act(const Scan& scan) {
+  const Cell position = scan.position();
+  if (goal_seen_ || goalInWindow(scan)) {
+    memory_.update(scan);
+    if (!goal_seen_) goal_seen_ = goalSeen(scan);
+    Action action;
+    if (goal_seen_ && navigator_.towardsGoal(memory_, position, scan.goal(), &action)) {
+      last_ = moveIndex(action);
+      return action;
+    }
+  }
+  if (scan.bumped() && last_ >= 0) direction_ = turn(position, last_);
+  last_ = direction_;
+  return kMoves[direction_];
+}
+
+}  // namespace agents
+}  // namespace ppp

@@ -1,0 +1,56 @@
+#include "ppp_agents/wall_follower_agent.hpp"
+
+#include <cstdlib>
+
+namespace ppp {
+namespace agents {
+
+WallFollowerAgent::WallFollowerAgent(Side side, int memory_window) : side_(side), memory_window_(memory_window) {}
+
+void WallFollowerAgent::reset(const EpisodeInfo& info) {
+  memory_.reset(info.width, info.height, memory_window_);
+  navigator_.reset(info.width, info.height);
+  goal_seen_ = false;
+  engaged_ = false;
+  const int dx = info.goal.x - info.start.x;
+  const int dy = info.goal.y - info.start.y;
+  if (std::abs(dx) >= std::abs(dy)) {
+    heading_ = dx >= 0 ? 1 : 3;  // East or West
+  } else {
+    heading_ = dy >= 0 ? 2 : 0;  // South or North
+  }
+}
+
+Action WallFollowerAgent::act(const Scan& scan) {
+  const Cell position = scan.position();
+  memory_.update(scan);
+  if (!goal_seen_) goal_seen_ = goalSeen(scan);
+  if (goal_seen_) {
+    Action action;
+    if (navigator_.towardsGoal(memory_, position, scan.goal(), &action)) return action;
+  }
+  // The four neighbours are always in line of sight, so the scan reports them (noise may misreport them).
+  const auto wall = [&](int direction) {
+    const Cell n = target(Cell{0, 0}, kMoves[direction]);
+    const std::int8_t value = scan.at(n.x, n.y);
+    return value == kScanObstacle || value == kScanOutOfBounds;
+  };
+  const int towards_wall = side_ == Side::Left ? 3 : 1;  // quarter turns clockwise: left = 3, right = 1
+  const int away_from_wall = 4 - towards_wall;
+  if (!engaged_) {
+    if (!wall(heading_)) return kMoves[heading_];
+    engaged_ = true;
+    heading_ = (heading_ + away_from_wall) % 4;  // the wall just hit is now on the agent's side
+  }
+  const int order[4] = {(heading_ + towards_wall) % 4, heading_, (heading_ + away_from_wall) % 4, (heading_ + 2) % 4};
+  for (int direction : order) {
+    if (!wall(direction)) {
+      heading_ = direction;
+      return kMoves[direction];
+    }
+  }
+  return Action::Stay;
+}
+
+}  // namespace agents
+}  // namespace ppp

@@ -1,0 +1,202 @@
+// The agents' rules step by step, on received scans and small drawn maps.
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "ppp_agents/agent_config.hpp"
+#include "ppp_agents/bumper_agent.hpp"
+#include "ppp_agents/explorer_agent.hpp"
+#include "ppp_agents/random_agent.hpp"
+#include "ppp_agents/wall_follower_agent.hpp"
+#include "ppp_core/problem.hpp"
+#include "ppp_core/random_problem.hpp"
+#include "test_world.hpp"
+
+namespace ppp {
+namespace agents {
+namespace {
+
+EpisodeInfo info(int width, int height, Cell start, Cell goal, std::uint64_t seed) {
+  EpisodeInfo i;
+  i.width = width;
+  i.height = height;
+  i.start = start;
+  i.goal = goal;
+  i.seed = seed;
+  return i;
+}
+
+/// A received range-2 scan whose 25 cells all hold `value` (the agent's own cell free).
+Scan uniformScan(std::int8_t value, Cell position, Cell goal, bool bumped, int step) {
+  std::vector<std::int8_t> cells(25, value);
+  cells[12] = kScanFree;
+  return Scan(2, cells, position, goal, bumped, step);
+}
+
+TEST(AgentBehaviourTest, RandomIgnoresTheScanAndUsesAllFiveActions) {
+  RandomAgent a;
+  RandomAgent b;
+  a.reset(info(20, 20, Cell{0, 0}, Cell{1, 1}, 42));
+  b.reset(info(20, 20, Cell{0, 0}, Cell{1, 1}, 42));
+  std::set<Action> seen;
+  for (int step = 0; step < 200; ++step) {
+    // Same seed, entirely different scans (one even shows the goal next to it): the same actions.
+    const Action x = a.act(uniformScan(kScanObstacle, Cell{5, 5}, Cell{19, 19}, step % 2 == 0, step));
+    const Action y = b.act(uniformScan(kScanFree, Cell{step % 20, 3}, Cell{step % 20 + 1, 3}, false, step));
+    ASSERT_EQ(x, y) << step;
+    seen.insert(x);
+  }
+  EXPECT_EQ(seen.size(), 5u);
+}
+
+TEST(AgentBehaviourTest, BumperGoesStraightUntilABumpThenTurnsToAnotherDirection) {
+  BumperAgent bumper(false, 0);
+  for (std::uint64_t seed = 0; seed < 30; ++seed) {
+    bumper.reset(info(50, 50, Cell{25, 25}, Cell{0, 0}, seed));
+    const Action first = bumper.act(uniformScan(kScanFree, Cell{25, 25}, Cell{0, 0}, false, 0));
+    ASSERT_NE(first, Action::Stay);
+    for (int step = 1; step < 10; ++step) {
+      // The window's contents never matter while the goal is out of it: all-obstacle scans, same straight line.
+      ASSERT_EQ(bumper.act(uniformScan(kScanObstacle, Cell{25, 25}, Cell{0, 0}, false, step)), first);
+    }
+    const Action turned = bumper.act(uniformScan(kScanFree, Cell{25, 25}, Cell{0, 0}, true, 10));
+    EXPECT_NE(turned, first);
+    EXPECT_NE(turned, Action::Stay);
+    EXPECT_EQ(bumper.act(uniformScan(kScanFree, Cell{25, 25}, Cell{0, 0}, false, 11)), turned);
+  }
+}
+
+TEST(AgentBehaviourTest, DecisionBumperTriesEveryDirectionAtACellBeforeRepeatingOne) {
+  // Bumping again and again at the same cell: decision_bumper's first four directions are all different;
+  // the plain bumper only avoids the direction it just bumped in, so some seeds repeat one.
+  int bumper_repeats = 0;
+  for (bool decision : {true, false}) {
+    BumperAgent agent(decision, 0);
+    for (std::uint64_t seed = 0; seed < 100; ++seed) {
+      agent.reset(info(9, 9, Cell{4, 4}, Cell{0, 0}, seed));
+      std::vector<Action> directions;
+      for (int step = 0; step < 4; ++step) {
+        directions.push_back(agent.act(uniformScan(kScanFree, Cell{4, 4}, Cell{0, 0}, step > 0, step)));
+      }
+      const std::set<Action> distinct(directions.begin(), directions.end());
+      if (decision) {
+        EXPECT_EQ(distinct.size(), 4u) << seed;
+      } else {
+        bumper_repeats += distinct.size() < 4 ? 1 : 0;
+      }
+      for (int i = 1; i < 4; ++i) EXPECT_NE(directions[i], directions[i - 1]);
+    }
+  }
+  // Three consecutive turns, each uniform over three directions, use all four with probability 2/9 only.
+  std::printf("[ measured ] bumper repeated a direction within its first four in %d of 100 seeds\n", bumper_repeats);
+  EXPECT_GT(bumper_repeats, 50);
+}
+
+TEST(AgentBehaviourTest, WallFollowersKeepTheWallOnTheirSide) {
+  const test::World w = test::world({
+      "....#.......",
+      ".S..#.......",
+      "....#.......",
+      "....#.......",
+      "............",
+      "............",
+      "............",
+      "...........G",
+  });
+  // Heading east (the goal's larger difference) until the wall at x = 4, then the left follower turns right
+  // to keep it on its left: down its west face, round its end and up its east face, then east along the edge.
+  WallFollowerAgent left(WallFollowerAgent::Side::Left, 0);
+  const auto l = test::runEpisode(left, w, 0, 0.0, 13);
+  const std::vector<Cell> expected_left = {{1, 1}, {2, 1}, {3, 1}, {3, 2}, {3, 3}, {3, 4}, {4, 4},
+                                           {5, 4}, {5, 3}, {5, 2}, {5, 1}, {5, 0}, {6, 0}, {7, 0}};
+  EXPECT_EQ(l.path, expected_left);
+  // The right follower turns left at the wall: up to the top edge, west along it, down the west edge.
+  WallFollowerAgent right(WallFollowerAgent::Side::Right, 0);
+  const auto r = test::runEpisode(right, w, 0, 0.0, 9);
+  const std::vector<Cell> expected_right = {{1, 1}, {2, 1}, {3, 1}, {3, 0}, {2, 0},
+                                            {1, 0}, {0, 0}, {0, 1}, {0, 2}, {0, 3}};
+  EXPECT_EQ(r.path, expected_right);
+  // Both get there in the end: the goal lies on the loop they follow (the map's edge).
+  EXPECT_TRUE(test::runEpisode(left, w, 0).passed);
+  EXPECT_TRUE(test::runEpisode(right, w, 0).passed);
+}
+
+TEST(AgentBehaviourTest, ExplorerMovesTowardsTheUnknown) {
+  // In a corridor explored behind it the explorer keeps moving east, where the unknown cells are.
+  const test::World w = test::world({
+      "##############",
+      "S............G",
+      "##############",
+  });
+  for (std::uint64_t seed = 0; seed < 10; ++seed) {
+    for (bool long_term : {false, true}) {
+      ExplorerAgent agent(long_term, 0);
+      const auto out = test::runEpisode(agent, w, seed);
+      EXPECT_TRUE(out.passed);
+      EXPECT_EQ(out.moves, 13) << long_term;
+    }
+  }
+}
+
+TEST(AgentBehaviourTest, LongTermExplorerGoesBackForTheNearestFrontier) {
+  // A corridor whose east end is a dead end; the way on is a side branch at its west end, out of sight from the
+  // east end. Once the east end is explored there is nothing new near: the long-term explorer walks straight
+  // back to the frontier at the branch (no random wandering), and finds the goal.
+  const test::World w = test::world({
+      "#.##########",
+      "#S.........#",
+      "#.##########",
+      "#.##########",
+      "#.##########",
+      "#G##########",
+  });
+  for (std::uint64_t seed = 0; seed < 20; ++seed) {
+    ExplorerAgent agent(true, 0);
+    const auto out = test::runEpisode(agent, w, seed);
+    EXPECT_TRUE(out.passed) << seed;
+    EXPECT_LE(out.moves, 2 * 9 + 4) << seed;  // at worst: east to the end and back, then down the branch
+  }
+}
+
+TEST(AgentBehaviourTest, EveryAgentRunsOnRandomProblemsWithEveryHandicapAndSensorRange) {
+  // Robustness: every type, memory window, noise level and sensor range on random valid problems, odd sizes
+  // included; actions must always be valid and the deterministic agents must repeat themselves.
+  int episodes = 0;
+  int passes = 0;
+  for (const std::string& type : agentTypeNames()) {
+    for (const int memory : {0, 1, 3, 5}) {
+      for (const double noise : {0.0, 0.2}) {
+        AgentConfig c;
+        c.type = type;
+        c.memory_window = memory;
+        c.sensor_noise = noise;
+        auto agent = makeAgent(c);
+        Rng rng(deriveSeed(5, {static_cast<std::uint64_t>(memory), noise > 0 ? 1u : 0u}));
+        for (int i = 0; i < 6; ++i) {
+          const int width = 2 + static_cast<int>(rng.below(20));
+          const int height = 2 + static_cast<int>(rng.below(20));
+          const Problem problem = randomProblem(rng, Problem::empty(width, height, 8), 8);
+          const test::World w{decodeGrid(problem), problem.start, problem.goal};
+          const int range = 1 + i % 3;
+          const auto out = test::runEpisode(*agent, w, rng.next(), noise, 120, type == "astar", range);
+          const auto again = test::runEpisode(*agent, w, 77, noise, 120, type == "astar", range);
+          const auto third = test::runEpisode(*agent, w, 77, noise, 120, type == "astar", range);
+          EXPECT_EQ(again.path, third.path) << type;
+          EXPECT_LE(out.steps, 120);
+          ++episodes;
+          passes += out.passed ? 1 : 0;
+        }
+      }
+    }
+  }
+  std::printf("[ measured ] %d of %d robustness episodes passed\n", passes, episodes);
+  EXPECT_EQ(episodes, 8 * 4 * 2 * 6);
+}
+
+}  // namespace
+}  // namespace agents
+}  // namespace ppp

@@ -1,0 +1,244 @@
+#include "ppp_agents/agent_config.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "ppp_core/error.hpp"
+#include "test_world.hpp"
+
+namespace ppp {
+namespace agents {
+namespace {
+
+const char* const kTypes =
+    "astar, random, wall_follower_left, wall_follower_right, explorer, long_term_explorer, bumper, decision_bumper";
+
+/// The message of the InvalidArgument that `f` throws ("" when it throws none).
+template <class F>
+std::string invalidArgument(F f) {
+  try {
+    f();
+  } catch (const InvalidArgument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// The message of the ParseError that reading `yaml` (as file "agents.yaml") throws ("" when none).
+std::string parseError(const std::string& yaml) {
+  try {
+    const YAML::Node root = YAML::Load(yaml);
+    YamlMapReader reader(root, "agents.yaml");
+    readAgentConfigs(reader, "agents");
+    reader.rejectUnknownKeys();
+  } catch (const ParseError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::vector<AgentConfig> read(const std::string& yaml) {
+  const YAML::Node root = YAML::Load(yaml);
+  YamlMapReader reader(root, "agents.yaml");
+  return readAgentConfigs(reader, "agents");
+}
+
+AgentConfig config(const std::string& type, int memory = 0, double noise = 0.0) {
+  AgentConfig c;
+  c.name = type;
+  c.type = type;
+  c.memory_window = memory;
+  c.sensor_noise = noise;
+  return c;
+}
+
+TEST(AgentConfigTest, TypeNamesAreTheEightAgents) {
+  std::string list;
+  for (const std::string& name : agentTypeNames()) list += (list.empty() ? "" : ", ") + name;
+  EXPECT_EQ(list, kTypes);
+}
+
+TEST(AgentConfigTest, ValidateAcceptsEveryTypeAndTheHandicaps) {
+  for (const std::string& type : agentTypeNames()) EXPECT_NO_THROW(config(type).validate()) << type;
+  EXPECT_NO_THROW(config("explorer", 5, 0.1).validate());
+  EXPECT_NO_THROW(config("explorer", 1, 1.0).validate());
+  EXPECT_NO_THROW(config("explorer", 0, 0.0).validate());
+}
+
+TEST(AgentConfigTest, ValidateNamesTheBadOption) {
+  EXPECT_EQ(invalidArgument([] { config("robot").validate(); }),
+            std::string("type: unknown agent type 'robot'; valid: ") + kTypes);
+  EXPECT_EQ(invalidArgument([] { config("").validate(); }), std::string("type: unknown agent type ''; valid: ") + kTypes);
+  EXPECT_EQ(invalidArgument([] { config("explorer", 4).validate(); }),
+            "memory: expected an odd window side in [1, 8191] (5 for 5x5) or 0 for full memory, got 4");
+  EXPECT_EQ(invalidArgument([] { config("explorer", -3).validate(); }),
+            "memory: expected an odd window side in [1, 8191] (5 for 5x5) or 0 for full memory, got -3");
+  EXPECT_EQ(invalidArgument([] { config("explorer", 8193).validate(); }),
+            "memory: expected an odd window side in [1, 8191] (5 for 5x5) or 0 for full memory, got 8193");
+  EXPECT_EQ(invalidArgument([] { config("explorer", 0, 1.5).validate(); }),
+            "sensor_noise: expected a probability in [0, 1], got 1.500000");
+  EXPECT_EQ(invalidArgument([] { config("explorer", 0, -0.1).validate(); }),
+            "sensor_noise: expected a probability in [0, 1], got -0.100000");
+  EXPECT_EQ(invalidArgument([] { config("explorer", 0, std::nan("")).validate(); }),
+            "sensor_noise: expected a probability in [0, 1], got nan");
+}
+
+TEST(AgentConfigTest, ParsesMemoryWindows) {
+  EXPECT_EQ(parseMemoryWindow("5x5", "memory"), 5);
+  EXPECT_EQ(parseMemoryWindow("1x1", "memory"), 1);
+  EXPECT_EQ(parseMemoryWindow("21x21", "memory"), 21);
+  EXPECT_EQ(parseMemoryWindow("full", "memory"), 0);
+}
+
+TEST(AgentConfigTest, RejectsBadMemoryWindowsNamingTheOption) {
+  const std::string odd = "the window side must be odd and in [1, 8191] (the window is centred on the agent), got ";
+  const std::string form = "expected KxK with odd K (e.g. 5x5) or 'full', got ";
+  EXPECT_EQ(invalidArgument([] { parseMemoryWindow("4x4", "memory"); }), "memory: " + odd + "'4x4'");
+  EXPECT_EQ(invalidArgument([] { parseMemoryWindow("0x0", "memory"); }), "memory: " + odd + "'0x0'");
+  EXPECT_EQ(invalidArgument([] { parseMemoryWindow("8193x8193", "memory"); }), "memory: " + odd + "'8193x8193'");
+  EXPECT_EQ(invalidArgument([] { parseMemoryWindow("5x3", "memory"); }),
+            "memory: the window must be square (KxK), got '5x3'");
+  EXPECT_EQ(invalidArgument([] { parseMemoryWindow("x", "memory"); }), "memory: " + form + "'x'");
+  for (const char* bad : {"", "5", "5x", "x5", "5x5x5", " 5x5", "5X5", "-5x-5", "+5x+5", "fullx", "99999999999x1"}) {
+    EXPECT_EQ(invalidArgument([&] { parseMemoryWindow(bad, "agents[2].memory"); }),
+              "agents[2].memory: " + form + "'" + bad + "'");
+  }
+}
+
+TEST(AgentConfigTest, ReadsConfigurationsWithDefaults) {
+  const auto configs = read(
+      "agents:\n"
+      "  - {type: explorer}\n"
+      "  - {name: tiny, type: explorer, memory: 3x3, sensor_noise: 0.25}\n"
+      "  - name: whole\n"
+      "    type: long_term_explorer\n"
+      "    memory: full\n");
+  ASSERT_EQ(configs.size(), 3u);
+  EXPECT_EQ(configs[0].name, "explorer");
+  EXPECT_EQ(configs[0].type, "explorer");
+  EXPECT_EQ(configs[0].memory_window, 0);
+  EXPECT_EQ(configs[0].sensor_noise, 0.0);
+  EXPECT_EQ(configs[1].name, "tiny");
+  EXPECT_EQ(configs[1].memory_window, 3);
+  EXPECT_EQ(configs[1].sensor_noise, 0.25);
+  EXPECT_EQ(configs[2].name, "whole");
+  EXPECT_EQ(configs[2].type, "long_term_explorer");
+  EXPECT_EQ(configs[2].memory_window, 0);
+}
+
+TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
+  EXPECT_EQ(parseError("agents:\n  - {type: explorer, colour: red}\n"),
+            "agents.yaml:2: agents[0].colour: unknown key; valid keys: memory, name, sensor_noise, type");
+  EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),
+            std::string("agents.yaml:3: agents[1].type: missing; valid: ") + kTypes);
+  EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - name: x\n    type: robot\n"),
+            std::string("agents.yaml:4: agents[1].type: unknown agent type 'robot'; valid: ") + kTypes);
+  EXPECT_EQ(parseError("agents:\n  - {type: explorer, memory: 4x4}\n"),
+            "agents.yaml:2: agents[0].memory: the window side must be odd and in [1, 8191] (the window is centred "
+            "on the agent), got '4x4'");
+  EXPECT_EQ(parseError("agents:\n  - {type: explorer, memory: 5x3}\n"),
+            "agents.yaml:2: agents[0].memory: the window must be square (KxK), got '5x3'");
+  EXPECT_EQ(parseError("agents:\n  - {type: explorer, memory: 5}\n"),
+            "agents.yaml:2: agents[0].memory: expected KxK with odd K (e.g. 5x5) or 'full', got '5'");
+  EXPECT_EQ(parseError("agents:\n  - {type: explorer, sensor_noise: 2}\n"),
+            "agents.yaml:2: agents[0].sensor_noise: expected a probability in [0, 1], got 2.000000");
+  EXPECT_EQ(parseError("agents:\n  - {type: explorer, sensor_noise: lots}\n"),
+            "agents.yaml:2: agents[0].sensor_noise: expected a number, got 'lots'");
+  EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {type: bumper}\n  - {type: explorer}\n"),
+            "agents.yaml:4: agents[2].name: duplicate agent name 'explorer' (also agents[0]); give each "
+            "configuration its own name");
+  EXPECT_EQ(parseError("agents:\n  - {name: a, type: explorer}\n  - {name: a, type: bumper}\n"),
+            "agents.yaml:3: agents[1].name: duplicate agent name 'a' (also agents[0]); give each configuration "
+            "its own name");
+  EXPECT_EQ(parseError("agents:\n  - {name: '', type: explorer}\n"),
+            "agents.yaml:2: agents[0].name: expected a non-empty name");
+  EXPECT_EQ(parseError("agents:\n  - explorer\n"), "agents.yaml:2: agents[0]: expected a mapping of key: value");
+  EXPECT_EQ(parseError("agents: explorer\n"),
+            "agents.yaml:1: agents: expected a list of agents, each a mapping with a type");
+  EXPECT_EQ(parseError("agents: []\n"), "agents.yaml:1: agents: expected at least one agent");
+  EXPECT_EQ(parseError("other: 1\n"), "agents.yaml:0: agents: missing; expected a list of agents");
+}
+
+TEST(AgentConfigTest, LoadRejectsUnknownTopLevelKeysAndMissingFiles) {
+  const std::string path = ::testing::TempDir() + "agent_config_test_agents.yaml";
+  {
+    std::ofstream out(path);
+    out << "agents:\n  - {type: astar}\nagent:\n  - {type: random}\n";
+  }
+  try {
+    loadAgentConfigs(path);
+    ADD_FAILURE() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ":3: agent: unknown key; valid keys: agents");
+  }
+  EXPECT_THROW(loadAgentConfigs(path + ".missing"), IoError);
+}
+
+TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgents) {
+  const auto configs = loadAgentConfigs(std::string(PPP_CONFIG_DIR) + "/agents.yaml");
+  struct Expected {
+    const char* name;
+    const char* type;
+    int memory;
+    double noise;
+  };
+  const std::vector<Expected> expected = {
+      {"astar", "astar", 0, 0.0},
+      {"random", "random", 0, 0.0},
+      {"wall_follower_left", "wall_follower_left", 0, 0.0},
+      {"wall_follower_right", "wall_follower_right", 0, 0.0},
+      {"explorer", "explorer", 0, 0.0},
+      {"long_term_explorer", "long_term_explorer", 0, 0.0},
+      {"explorer_memory_5x5", "explorer", 5, 0.0},
+      {"explorer_noise_0.1", "explorer", 0, 0.1},
+      {"bumper", "bumper", 0, 0.0},
+      {"decision_bumper", "decision_bumper", 0, 0.0},
+  };
+  ASSERT_EQ(configs.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(configs[i].name, expected[i].name) << i;
+    EXPECT_EQ(configs[i].type, expected[i].type) << i;
+    EXPECT_EQ(configs[i].memory_window, expected[i].memory) << i;
+    EXPECT_EQ(configs[i].sensor_noise, expected[i].noise) << i;
+    EXPECT_NO_THROW(configs[i].validate()) << i;
+  }
+}
+
+TEST(AgentConfigTest, MakeAgentBuildsEveryTypeAndEachPassesATinyMap) {
+  const auto w = test::world({
+      "S..",
+      ".#.",
+      "..G",
+  });
+  for (const std::string& type : agentTypeNames()) {
+    for (int memory : {0, 5}) {
+      std::unique_ptr<Agent> agent = makeAgent(config(type, memory));
+      ASSERT_NE(agent, nullptr) << type;
+      // The random agent needs luck; a budget of 2000 makes missing the goal of a 3x3 map vanishingly rare.
+      const auto out = test::runEpisode(*agent, w, 7, 0.0, 2000, type == "astar");
+      EXPECT_TRUE(out.passed) << type << " memory " << memory;
+    }
+  }
+}
+
+TEST(AgentConfigTest, MakeAgentValidatesFirst) {
+  EXPECT_EQ(invalidArgument([] { makeAgent(config("robot")); }),
+            std::string("type: unknown agent type 'robot'; valid: ") + kTypes);
+  EXPECT_EQ(invalidArgument([] { makeAgent(config("explorer", 2)); }),
+            "memory: expected an odd window side in [1, 8191] (5 for 5x5) or 0 for full memory, got 2");
+}
+
+TEST(AgentConfigTest, AstarWithoutPriorMapIsAnError) {
+  const auto w = test::world({"S.", ".G"});
+  auto agent = makeAgent(config("astar"));
+  EXPECT_EQ(invalidArgument([&] { test::runEpisode(*agent, w, 1); }), "prior_map: the astar agent needs the prior map");
+}
+
+}  // namespace
+}  // namespace agents
+}  // namespace ppp

@@ -1,0 +1,141 @@
+#include "ppp_agents/navigation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace ppp {
+namespace agents {
+namespace {
+
+/// Memory filled from a drawing ('.' free, '#' obstacle, '?' unknown) through one received full-map scan.
+AgentMemory drawnMemory(const std::vector<std::string>& rows) {
+  const int height = static_cast<int>(rows.size());
+  const int width = static_cast<int>(rows[0].size());
+  const int range = 7;
+  std::vector<std::int8_t> cells;
+  for (int dy = -range; dy <= range; ++dy) {
+    for (int dx = -range; dx <= range; ++dx) {
+      const int x = dx + range;
+      const int y = dy + range;
+      if (x >= width || y >= height) {
+        cells.push_back(kScanOutOfBounds);
+        continue;
+      }
+      const char c = rows[y][x];
+      cells.push_back(c == '.' ? kScanFree : c == '#' ? kScanObstacle : kScanUnknown);
+    }
+  }
+  AgentMemory memory;
+  memory.reset(width, height, 0);
+  memory.update(Scan(range, cells, Cell{range, range}, Cell{0, 0}, false, 0));
+  return memory;
+}
+
+TEST(NavigationTest, GoalSeenOnlyWhenInTheWindowAndReportedFree) {
+  std::vector<std::int8_t> cells(25, kScanFree);
+  EXPECT_TRUE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{7, 3}, false, 0)));
+  EXPECT_FALSE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{8, 5}, false, 0)));
+  EXPECT_TRUE(goalInWindow(Scan(2, cells, Cell{5, 5}, Cell{3, 7}, false, 0)));
+  EXPECT_FALSE(goalInWindow(Scan(2, cells, Cell{5, 5}, Cell{5, 8}, false, 0)));
+  cells[0] = kScanUnknown;  // offset (-2, -2): hidden
+  EXPECT_FALSE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{3, 3}, false, 0)));
+  cells[0] = kScanObstacle;  // misreported by noise
+  EXPECT_FALSE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{3, 3}, false, 0)));
+}
+
+TEST(NavigationTest, TowardsGoalTakesAShortestPathTreatingUnknownAsPassable) {
+  // (0,0) to (2,0): the wall at x = 1 is known in rows 0-1 and row 2 is unknown, so the optimistic path
+  // goes round the end of the wall through the unknown row: south first.
+  const AgentMemory memory = drawnMemory({
+      ".#..",
+      ".#..",
+      "????",
+  });
+  Navigator navigator;
+  navigator.reset(4, 3);
+  Action action = Action::Stay;
+  ASSERT_TRUE(navigator.towardsGoal(memory, Cell{0, 0}, Cell{2, 0}, &action));
+  EXPECT_EQ(action, Action::South);
+  // Walled off by known obstacles: no path.
+  const AgentMemory closed = drawnMemory({
+      ".#..",
+      ".#..",
+      ".#..",
+  });
+  EXPECT_FALSE(navigator.towardsGoal(closed, Cell{0, 0}, Cell{2, 0}, &action));
+  // The goal itself counts as passable even when (mis)remembered as an obstacle.
+  const AgentMemory goal_misread = drawnMemory({
+      "..#",
+      "...",
+  });
+  navigator.reset(3, 2);
+  ASSERT_TRUE(navigator.towardsGoal(goal_misread, Cell{1, 0}, Cell{2, 0}, &action));
+  EXPECT_EQ(action, Action::East);
+}
+
+TEST(NavigationTest, SearchFindsTheNearestFrontierAndItsPath) {
+  const AgentMemory memory = drawnMemory({
+      ".....#",
+      ".###.#",
+      ".#...#",
+      ".#.?.#",
+  });
+  Navigator navigator;
+  navigator.reset(6, 4);
+  const auto frontier = [&](Cell c) {
+    if (!memory.isFree(c)) return false;
+    for (Action move : kMoves) {
+      if (memory.isUnknown(target(c, move))) return true;
+    }
+    return false;
+  };
+  // The only unknown cell is (3,3); its free neighbours (3,2), (4,3) and (2,3) are the frontier. From (0,3)
+  // the way is up column 0, along row 0 and down column 4 to (4,2) (9 moves); (4,3) and (3,2) are both 10
+  // moves away, and (4,2) expands S before W, so (4,3) is found.
+  const int found = navigator.search(
+      Cell{0, 3}, [&](Cell c) { return memory.isFree(c); }, frontier);
+  ASSERT_GE(found, 0);
+  const Cell target_cell{found % 6, found / 6};
+  EXPECT_EQ(target_cell, (Cell{4, 3}));
+  std::vector<Cell> path;
+  navigator.path(found, &path);
+  EXPECT_EQ(path.size(), 10u);
+  EXPECT_EQ(path.back(), target_cell);
+  EXPECT_TRUE(frontier(target_cell));
+  EXPECT_EQ(navigator.firstAction(found), Action::North);
+  Cell c{0, 3};
+  for (Cell next : path) {
+    EXPECT_EQ(std::abs(next.x - c.x) + std::abs(next.y - c.y), 1);
+    EXPECT_TRUE(memory.isFree(next));
+    c = next;
+  }
+  // Nothing matching: -1.
+  EXPECT_EQ(navigator.search(
+                Cell{0, 3}, [&](Cell cell) { return memory.isFree(cell); }, [](Cell) { return false; }),
+            -1);
+}
+
+TEST(NavigationTest, ReusedNavigatorGivesTheSameAnswers) {
+  const AgentMemory memory = drawnMemory({
+      "....",
+      ".##.",
+      "....",
+  });
+  Navigator navigator;
+  navigator.reset(4, 3);
+  Action first = Action::Stay;
+  ASSERT_TRUE(navigator.towardsGoal(memory, Cell{0, 1}, Cell{3, 1}, &first));
+  for (int i = 0; i < 1000; ++i) {
+    Action again = Action::Stay;
+    ASSERT_TRUE(navigator.towardsGoal(memory, Cell{0, 1}, Cell{3, 1}, &again));
+    ASSERT_EQ(again, first);
+  }
+  EXPECT_EQ(first, Action::North);  // N is expanded first, and both ways round are 5 moves
+}
+
+}  // namespace
+}  // namespace agents
+}  // namespace ppp

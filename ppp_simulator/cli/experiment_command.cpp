@@ -1,0 +1,72 @@
+#include <csignal>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+#include "ppp_core/csv.hpp"
+#include "ppp_core/error.hpp"
+#include "ppp_core/text_file.hpp"
+#include "ppp_simulator/experiment_runner.hpp"
+#include "progress.hpp"
+
+namespace ppp {
+namespace cli {
+
+namespace {
+
+std::atomic<bool> stop_requested{false};
+
+extern "C" void requestStop(int) { stop_requested.store(true); }
+
+struct ExperimentFlags {
+  std::string config;
+  std::string output;
+  int threads = -1;
+  bool quiet = false;
+};
+
+int runExperimentCommand(const ExperimentFlags& f) {
+  simulator::ExperimentConfig config = simulator::loadExperimentConfig(f.config);
+  if (f.threads >= 0) config.threads = f.threads;
+  config.validate();
+  simulator::checkExperimentDirectory(config, f.output);
+  const std::string config_text = readTextFile(f.config, 1u << 20);
+  std::signal(SIGINT, requestStop);
+  std::signal(SIGTERM, requestStop);
+  Progress progress("episodes", f.quiet);
+  const auto report = simulator::runExperiment(
+      config, config_text, f.output, [&](long done, long total) { progress.update(done, total, f.output); },
+      &stop_requested, [&](const std::string& line) {
+        if (!f.quiet) std::cerr << line << "\n";
+      });
+  if (report.interrupted) {
+    std::cerr << "ppp: interrupted after " << report.episodes_run
+              << " new runs; every finished run is in results.csv. Rerun the same command to resume.\n";
+    return 130;
+  }
+  std::cout << "experiment done: " << report.episodes_run << " runs simulated"
+            << (report.episodes_resumed > 0 ? ", " + std::to_string(report.episodes_resumed) + " resumed" : "")
+            << "\n  results:  " << f.output << "/results.csv\n  summary:  " << f.output
+            << "/summary.csv\n  report:   " << f.output << "/report.html (and report.md)\n";
+  return 0;
+}
+
+}  // namespace
+
+void addExperimentCommand(CLI::App& app) {
+  auto flags = std::make_shared<ExperimentFlags>();
+  CLI::App* command = app.add_subcommand(
+      "experiment", "Evolve the PPP sets, run every agent on every PPP many times, write results and the report");
+  command->add_option("config", flags->config, "Experiment YAML (e.g. config/experiment.yaml)")->required();
+  command->add_option("-o,--output", flags->output, "Output directory (rerun on it to resume)")->required();
+  command->add_option("--threads", flags->threads, "Worker threads (default: the config's; 0 = every core)");
+  command->add_flag("--quiet", flags->quiet, "No progress output");
+  command->callback([flags] {
+    const int status = runExperimentCommand(*flags);
+    if (status != 0) throw CLI::RuntimeError(status);
+  });
+}
+
+}  // namespace cli
+}  // namespace ppp

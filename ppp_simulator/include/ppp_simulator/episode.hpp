@@ -1,0 +1,56 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "ppp_agents/agent.hpp"
+#include "ppp_agents/agent_config.hpp"
+#include "ppp_core/problem.hpp"
+#include "ppp_core/sensor.hpp"
+
+namespace ppp {
+namespace simulator {
+
+/// Rules of one episode besides the agent's own handicaps.
+struct EpisodeOptions {
+  int budget = 300;       ///< Most actions before the episode fails.
+  int sensor_range = 2;   ///< Scan radius (2: a 5x5 window).
+  /// @throws InvalidArgument("budget" or "sensor_range", ...).
+  void validate() const;
+};
+
+/// How one episode went.
+struct EpisodeOutcome {
+  bool passed = false;      ///< The agent stood on the goal within the budget.
+  int steps = 0;            ///< Actions taken.
+  int bumps = 0;            ///< Actions that hit an obstacle or the edge.
+  int path_length = 0;      ///< Cells actually moved.
+  const char* reason = "";  ///< reason::kGoalReached or reason::kBudgetExhausted.
+  std::vector<Cell> path;   ///< Cells visited, start first (only when asked for).
+};
+
+/// The seed of the agent's own choices in a run with `run_seed`.
+std::uint64_t agentSeed(std::uint64_t run_seed);
+/// The seed of the sensor noise in a run with `run_seed`.
+std::uint64_t noiseSeed(std::uint64_t run_seed);
+
+/// Runs episodes in process: the move model (4-connected; a move into an obstacle or off the map leaves the
+/// agent in place and the next scan reports a bump), scans by SensorModel with the agent's noise, the budget.
+/// Holds the sensor and buffers, so reuse one runner for many episodes of one agent configuration.
+class EpisodeRunner {
+ public:
+  /// A runner for one agent configuration. @throws InvalidArgument for bad options.
+  EpisodeRunner(const agents::AgentConfig& config, const EpisodeOptions& options);
+  /// Runs `agent` from the start of `problem` (whose decoded grid is `grid`) with the given run seed.
+  EpisodeOutcome run(const Problem& problem, const Grid& grid, agents::Agent& agent, std::uint64_t run_seed,
+                     bool record_path = false);
+
+ private:
+  agents::AgentConfig config_;
+  EpisodeOptions options_;
+  SensorModel sensor_;
+  bool prior_map_;
+};
+
+}  // namespace simulator
+}  // namespace ppp

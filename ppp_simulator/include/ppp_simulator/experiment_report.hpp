@@ -1,0 +1,25 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ppp_simulator/episode_result.hpp"
+#include "ppp_simulator/experiment_config.hpp"
+#include "ppp_simulator/experiment_runner.hpp"
+#include "ppp_simulator/report.hpp"
+
+namespace ppp {
+namespace simulator {
+
+/// The hardest PPPs of an experiment (lowest mean pass rate over every agent but the astar control), each with
+/// the first failing run of the agent that failed it most, replayed to recover its path.
+std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
+                                            const std::vector<EpisodeResult>& rows, int count);
+
+/// Writes summary.csv and report.{md,html} (with plots and pictures) of a finished experiment into `dir`.
+/// @throws IoError.
+void writeExperimentReport(const std::string& dir, const ExperimentConfig& config, const std::string& config_text,
+                           const std::vector<PreparedSet>& sets, const std::vector<EpisodeResult>& rows);
+
+}  // namespace simulator
+}  // namespace ppp

@@ -1,0 +1,55 @@
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ppp_generator/problem_set.hpp"
+#include "ppp_simulator/experiment_config.hpp"
+
+namespace ppp {
+namespace simulator {
+
+/// A PPP set ready to run: its PPPs, decoded grids and optimal lengths.
+struct PreparedSet {
+  std::string name;              ///< Set name.
+  generator::ProblemSet set;     ///< The PPPs and their evaluations.
+  std::vector<Grid> grids;       ///< Decoded grid of each PPP.
+  std::vector<int> optimal;      ///< Fewest moves from start to goal of each PPP.
+};
+
+/// The seed of one run, derived from the experiment seed and the run's names (not positions), so adding
+/// an agent or a set leaves every other run's seed unchanged.
+std::uint64_t runSeed(std::uint64_t experiment_seed, const std::string& set, const std::string& problem,
+                      const std::string& agent, int run);
+
+/// Generates (or reads) every set of the experiment into `dir`/sets/<name>/, reusing sets already there.
+/// @throws IoError, ParseError, InvalidArgument.
+std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::string& dir,
+                                     const std::function<void(const std::string&)>& log = {});
+
+/// What runExperiment() did.
+struct ExperimentReport {
+  long episodes_run = 0;      ///< Episodes simulated by this call.
+  long episodes_resumed = 0;  ///< Episodes found already done in results.csv.
+  bool interrupted = false;   ///< Stopped early on request; rerun to resume.
+};
+
+/// Runs an experiment into `dir`: experiment.yaml (the fingerprint), sets/, results.csv (rows streamed as
+/// runs finish), then summary.csv and report.{md,html}. Rerunning on the same directory resumes: finished runs
+/// are skipped and nothing is lost. A directory holding a different experiment is refused.
+/// `progress` is called with (episodes done, total); setting `*stop` makes workers finish their current
+/// batch and return with interrupted = true. @throws IoError, ParseError, InvalidArgument.
+ExperimentReport runExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
+                               const std::function<void(long, long)>& progress = {},
+                               const std::atomic<bool>* stop = nullptr,
+                               const std::function<void(const std::string&)>& log = {});
+
+/// Checks before any work that `dir` is new, empty, or holds this same experiment.
+/// @throws IoError naming the directory and what it holds.
+void checkExperimentDirectory(const ExperimentConfig& config, const std::string& dir);
+
+}  // namespace simulator
+}  // namespace ppp

@@ -1,0 +1,52 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ppp_core/grid.hpp"
+#include "ppp_core/problem.hpp"
+#include "ppp_simulator/pass_rates.hpp"
+
+namespace ppp {
+namespace simulator {
+
+/// A failed run on one of the hardest PPPs (the runner chooses them), with what a test engineer needs to
+/// see the failure and replay it.
+struct FailureExample {
+  std::string set;              ///< PPP set name.
+  std::string problem;          ///< PPP id within the set.
+  std::string agent;            ///< Agent configuration name.
+  int run = 0;                  ///< Run number, 0-based.
+  std::uint64_t seed = 0;       ///< Seed of that run.
+  ppp::Problem ppp;             ///< The PPP itself.
+  std::vector<ppp::Cell> path;  ///< Cells the agent stood on, in order, from the start (may be empty).
+  std::string reason;           ///< Why the episode ended (a reason:: constant).
+  std::string replay_flags;     ///< `ppp replay` flags recreating the agent configuration (e.g. "--agent explorer
+                                ///< --memory 5x5"); empty means "--agent <agent>".
+};
+
+/// Everything the report shows.
+struct ReportInput {
+  std::string title;        ///< Report heading.
+  std::string config_text;  ///< The experiment YAML, shown verbatim.
+  PassRateTable rates;      ///< Pass rates of every agent on every PPP and set.
+  std::vector<std::pair<std::string, std::string>> comparisons;  ///< Set pairs to compare, usually the first two.
+  std::vector<FailureExample> failures;                          ///< Hardest PPPs with a failing path each.
+};
+
+/// Writes the experiment report into `dir` (created if missing), replacing files of the same names:
+/// `report.md` (Markdown, referring to the files below by relative path), `report.html` (self-contained: the
+/// same content with inline SVG charts and base64 PNG pictures, nothing fetched), `plots/pass_rate_by_agent.svg`,
+/// `plots/pass_rate_by_ppp_<set>.svg` per set, and per failure example `pictures/<set>_<problem>_<agent>.png`
+/// (the PPP with the agent's path) and `ppps/<set>_<problem>.ppp` (the PPP, for `ppp replay`). Names are
+/// reduced to letters, digits, '.', '-' and '_' in file names. Every file is written atomically.
+/// Everything is checked and rendered before the first file is written.
+/// @throws InvalidArgument naming "comparisons" for a pair naming a set the table does not have, and
+/// "failures" (with the example's index and the renderer's message) for an invalid PPP or a path cell off
+/// its grid; IoError naming the file or directory that cannot be written.
+void writeReport(const std::string& dir, const ReportInput& input);
+
+}  // namespace simulator
+}  // namespace ppp

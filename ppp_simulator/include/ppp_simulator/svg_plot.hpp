@@ -1,0 +1,45 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace ppp {
+namespace simulator {
+
+/// Escapes `& < > " '` so text can go into HTML or SVG, as element text or inside a quoted attribute.
+std::string escapeMarkup(const std::string& text);
+
+/// One coloured series of a chart: a legend name and one value per category.
+struct PlotSeries {
+  std::string name;            ///< Legend text.
+  std::vector<double> values;  ///< One value per category; NaN where the series has none.
+};
+
+/// What a chart shows: categories along x, values from 0 to `y_max` along y, one colour per series.
+struct Chart {
+  std::string title;                    ///< Drawn above the plot.
+  std::string x_label;                  ///< Caption under the x axis (may be empty).
+  std::string y_label;                  ///< Caption along the y axis (may be empty).
+  std::vector<std::string> categories;  ///< x axis labels, left to right.
+  std::vector<PlotSeries> series;       ///< Drawn in order; colours and marker shapes follow the order.
+  double y_max = 100;                   ///< Top of the y axis; values are clamped to [0, y_max].
+  std::string value_suffix = "%";       ///< Appended to values in tick labels and tooltips.
+
+  /// Checks that y_max is positive and finite and every series has one value per category.
+  /// @throws InvalidArgument naming "y_max" or "series".
+  void validate() const;
+};
+
+/// Grouped bar chart as an `<svg>` element: per category, one bar per series side by side, a legend on the
+/// right, each bar with a tooltip. `standalone` adds the XML declaration and SVG namespace a `.svg` file
+/// needs; without it the element is meant to be inlined in HTML (and has no URL in it at all).
+/// @throws InvalidArgument as Chart::validate().
+std::string groupedBarChartSvg(const Chart& chart, bool standalone);
+
+/// Line chart as an `<svg>` element: per series, a marker at every category joined by a line (broken where a
+/// value is missing); markers of different series are nudged apart sideways so equal values stay visible.
+/// `standalone` as for groupedBarChartSvg(). @throws InvalidArgument as Chart::validate().
+std::string lineChartSvg(const Chart& chart, bool standalone);
+
+}  // namespace simulator
+}  // namespace ppp

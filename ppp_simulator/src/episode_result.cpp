@@ -1,0 +1,93 @@
+#include "ppp_simulator/episode_result.hpp"
+
+#include <charconv>
+
+#include "ppp_core/error.hpp"
+
+namespace ppp {
+namespace simulator {
+
+namespace {
+
+template <typename T>
+T parseNumber(const std::string& text, const std::string& source, int line, const char* field) {
+  T value{};
+  const char* end = text.data() + text.size();
+  const auto result = std::from_chars(text.data(), end, value);
+  if (text.empty() || result.ec != std::errc() || result.ptr != end) {
+    throw ParseError(source, line, field, "expected a whole number, got '" + text + "'");
+  }
+  return value;
+}
+
+}  // namespace
+
+const std::vector<std::string>& resultCsvHeader() {
+  static const std::vector<std::string> header = {"set",   "problem", "agent", "run",         "seed",          "pass",
+                                                  "steps", "bumps",   "path_length", "optimal_length", "reason"};
+  return header;
+}
+
+std::vector<std::string> toCsvFields(const EpisodeResult& r) {
+  return {r.set,
+          r.problem,
+          r.agent,
+          std::to_string(r.run),
+          std::to_string(r.seed),
+          r.passed ? "1" : "0",
+          std::to_string(r.steps),
+          std::to_string(r.bumps),
+          std::to_string(r.path_length),
+          std::to_string(r.optimal_length),
+          r.reason};
+}
+
+EpisodeResult fromCsvFields(const std::vector<std::string>& f, const std::string& source, int line) {
+  if (f.size() != resultCsvHeader().size()) {
+    throw ParseError(source, line, "row", "expected " + std::to_string(resultCsvHeader().size()) + " fields, got " +
+                                              std::to_string(f.size()));
+  }
+  EpisodeResult r;
+  r.set = f[0];
+  r.problem = f[1];
+  r.agent = f[2];
+  r.run = parseNumber<int>(f[3], source, line, "run");
+  r.seed = parseNumber<std::uint64_t>(f[4], source, line, "seed");
+  if (f[5] != "0" && f[5] != "1") throw ParseError(source, line, "pass", "expected 0 or 1, got '" + f[5] + "'");
+  r.passed = f[5] == "1";
+  r.steps = parseNumber<int>(f[6], source, line, "steps");
+  r.bumps = parseNumber<int>(f[7], source, line, "bumps");
+  r.path_length = parseNumber<int>(f[8], source, line, "path_length");
+  r.optimal_length = parseNumber<int>(f[9], source, line, "optimal_length");
+  r.reason = f[10];
+  return r;
+}
+
+std::vector<std::string> splitCsvLine(const std::string& line, const std::string& source, int line_number) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        fields.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        fields.back() += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  if (quoted) throw ParseError(source, line_number, "row", "unterminated quoted field");
+  return fields;
+}
+
+}  // namespace simulator
+}  // namespace ppp

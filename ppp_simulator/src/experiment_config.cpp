@@ -1,0 +1,150 @@
+#include "ppp_simulator/experiment_config.hpp"
+
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/text_file.hpp"
+#include "ppp_core/yaml_reader.hpp"
+
+namespace ppp {
+namespace simulator {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kMaxRuns = 100000000;
+constexpr int kMaxThreads = 1024;
+
+std::string resolve(const fs::path& base, const std::string& path) {
+  const fs::path p(path);
+  return (p.is_absolute() ? p : base / p).lexically_normal().string();
+}
+
+std::vector<SetSpec> readSets(YamlMapReader& reader, const fs::path& base) {
+  const YAML::Node list = reader.lookup("sets");
+  if (!list) return {};
+  if (!list.IsSequence()) reader.fail(list, "sets", "expected a list of sets");
+  const std::string generator_defaults = (base / "generator.yaml").string();
+  std::vector<SetSpec> sets;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string context = "sets[" + std::to_string(i) + "]";
+    YamlMapReader item(list[i], reader.source(), context);
+    SetSpec spec;
+    if (!item.read("name", &spec.name)) item.fail(list[i], "name", "missing; every set needs a name");
+    const YAML::Node generator = item.lookup("generator");
+    std::string directory;
+    const bool has_directory = item.read("directory", &directory);
+    if (generator && has_directory) item.fail(list[i], "directory", "give either generator or directory, not both");
+    if (has_directory) {
+      spec.directory = resolve(base, directory);
+    } else {
+      generator::GeneratorOptions options;
+      if (fs::exists(generator_defaults)) options = generator::loadGeneratorOptions(generator_defaults);
+      if (generator) {
+        YamlMapReader generator_reader(generator, reader.source(), context + ".generator");
+        generator::applyGeneratorYaml(generator_reader, &options);
+        generator_reader.rejectUnknownKeys();
+      }
+      spec.generator = options;
+    }
+    item.rejectUnknownKeys();
+    sets.push_back(spec);
+  }
+  return sets;
+}
+
+}  // namespace
+
+void ExperimentConfig::validate() const {
+  if (runs < 1 || runs > kMaxRuns) {
+    throw InvalidArgument("runs", "expected runs per agent per PPP in [1, " + std::to_string(kMaxRuns) + "], got " +
+                                      std::to_string(runs));
+  }
+  episode.validate();
+  if (threads < 0 || threads > kMaxThreads) {
+    throw InvalidArgument("threads", "expected 0 (every core) or a count up to " + std::to_string(kMaxThreads));
+  }
+  if (hardest < 0) throw InvalidArgument("hardest", "expected a count >= 0");
+  if (sets.empty()) throw InvalidArgument("sets", "an experiment needs at least one PPP set");
+  if (agents.empty()) throw InvalidArgument("agents", "an experiment needs at least one agent");
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < sets.size(); ++i) {
+    const SetSpec& s = sets[i];
+    if (s.name.empty() || s.name.find_first_of(",\"/\n") != std::string::npos) {
+      throw InvalidArgument("sets", "set name '" + s.name + "' must be non-empty without , \" / or newlines");
+    }
+    if (!names.insert(s.name).second) throw InvalidArgument("sets", "duplicate set name '" + s.name + "'");
+    if (!s.generator) continue;
+    try {
+      s.generator->validate();
+    } catch (const InvalidArgument& e) {
+      const std::string field = "sets[" + std::to_string(i) + "].generator." + e.name();
+      throw InvalidArgument(field, std::string(e.what()).substr(e.name().size() + 2));
+    }
+  }
+  names.clear();
+  for (const agents::AgentConfig& a : agents) {
+    a.validate();
+    if (!names.insert(a.name).second) throw InvalidArgument("agents", "duplicate agent name '" + a.name + "'");
+  }
+}
+
+ExperimentConfig loadExperimentConfig(const std::string& path) {
+  const YAML::Node root = loadYamlFile(path);
+  const fs::path base = fs::absolute(fs::path(path)).parent_path();
+  YamlMapReader reader(root, path);
+  ExperimentConfig config;
+  unsigned long seed = config.seed;
+  if (reader.read("seed", &seed)) config.seed = seed;
+  reader.read("runs", &config.runs);
+  reader.read("budget", &config.episode.budget);
+  reader.read("sensor_range", &config.episode.sensor_range);
+  reader.read("threads", &config.threads);
+  reader.read("hardest", &config.hardest);
+  config.sets = readSets(reader, base);
+  const YAML::Node agents = reader.lookup("agents");
+  if (agents && agents.IsScalar()) {
+    config.agents = agents::loadAgentConfigs(resolve(base, agents.Scalar()));
+  } else if (agents) {
+    config.agents = agents::readAgentConfigs(reader, "agents");
+  }
+  reader.rejectUnknownKeys();
+  try {
+    config.validate();
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(path + ": " + e.name(), std::string(e.what()).substr(e.name().size() + 2));
+  }
+  return config;
+}
+
+std::string experimentFingerprint(const ExperimentConfig& c) {
+  std::ostringstream out;
+  out << "# PPP Lab experiment: everything that decides its results. A rerun on this directory resumes only\n"
+      << "# if this text is unchanged.\n"
+      << "seed: " << c.seed << "\nruns: " << c.runs << "\nbudget: " << c.episode.budget
+      << "\nsensor_range: " << c.episode.sensor_range << "\nsets:\n";
+  for (const SetSpec& s : c.sets) {
+    out << "  - name: " << s.name << "\n";
+    if (s.generator) {
+      out << "    generator:\n";
+      std::istringstream lines(generator::generatorOptionsYaml(*s.generator));
+      for (std::string line; std::getline(lines, line);) out << "      " << line << "\n";
+    } else {
+      out << "    directory: " << s.directory << "\n";
+    }
+  }
+  out << "agents:\n";
+  for (const agents::AgentConfig& a : c.agents) {
+    out << "  - {name: " << a.name << ", type: " << a.type << ", memory: "
+        << (a.memory_window == 0 ? std::string("full")
+                                 : std::to_string(a.memory_window) + "x" + std::to_string(a.memory_window))
+        << ", sensor_noise: " << a.sensor_noise << "}\n";
+  }
+  return out.str();
+}
+
+}  // namespace simulator
+}  // namespace ppp

@@ -1,0 +1,116 @@
+#include "ppp_simulator/experiment_report.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+
+#include "ppp_core/csv.hpp"
+#include "ppp_simulator/episode.hpp"
+#include "ppp_simulator/pass_rates.hpp"
+
+namespace ppp {
+namespace simulator {
+
+namespace {
+
+/// The control agent type, left out when ranking PPPs by difficulty (it always passes a valid PPP).
+constexpr const char* kControlType = "astar";
+
+}  // namespace
+
+std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
+                                            const std::vector<EpisodeResult>& rows, int count) {
+  std::map<std::string, const agents::AgentConfig*> agent_by_name;
+  for (const auto& a : config.agents) agent_by_name[a.name] = &a;
+  // Pass counts per (set, problem, agent), over the agents that are not the control.
+  std::map<std::tuple<std::string, std::string, std::string>, std::pair<int, int>> counts;
+  for (const EpisodeResult& r : rows) {
+    if (agent_by_name.at(r.agent)->type == kControlType) continue;
+    auto& c = counts[{r.set, r.problem, r.agent}];
+    c.first += r.passed ? 1 : 0;
+    ++c.second;
+  }
+  struct Candidate {
+    double mean_rate;
+    int set;
+    int problem;
+    std::string worst_agent;
+  };
+  std::vector<Candidate> candidates;
+  for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
+    for (int p = 0; p < static_cast<int>(sets[s].set.ids.size()); ++p) {
+      double total = 0;
+      int agents = 0;
+      double worst = 2.0;
+      std::string worst_agent;
+      for (const auto& a : config.agents) {
+        const auto it = counts.find({sets[s].name, sets[s].set.ids[p], a.name});
+        if (it == counts.end() || it->second.second == 0) continue;
+        const double rate = static_cast<double>(it->second.first) / it->second.second;
+        total += rate;
+        ++agents;
+        if (rate < worst) worst = rate, worst_agent = a.name;
+      }
+      if (agents > 0 && worst < 1.0) candidates.push_back({total / agents, s, p, worst_agent});
+    }
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.mean_rate < b.mean_rate; });
+  if (static_cast<int>(candidates.size()) > count) candidates.resize(static_cast<std::size_t>(count));
+  std::vector<FailureExample> failures;
+  for (const Candidate& c : candidates) {
+    const PreparedSet& set = sets[c.set];
+    const EpisodeResult* first_fail = nullptr;
+    for (const EpisodeResult& r : rows) {
+      if (r.set == set.name && r.problem == set.set.ids[c.problem] && r.agent == c.worst_agent && !r.passed &&
+          (first_fail == nullptr || r.run < first_fail->run)) {
+        first_fail = &r;
+      }
+    }
+    const agents::AgentConfig& agent_config = *agent_by_name.at(c.worst_agent);
+    EpisodeRunner runner(agent_config, config.episode);
+    auto agent = agents::makeAgent(agent_config);
+    const EpisodeOutcome outcome =
+        runner.run(set.set.problems[c.problem], set.grids[c.problem], *agent, first_fail->seed, true);
+    FailureExample example;
+    example.set = set.name;
+    example.problem = set.set.ids[c.problem];
+    example.agent = c.worst_agent;
+    example.run = first_fail->run;
+    example.seed = first_fail->seed;
+    example.ppp = set.set.problems[c.problem];
+    example.path = outcome.path;
+    example.reason = outcome.reason;
+    example.replay_flags = "--agent " + agent_config.type + " --memory " +
+                           (agent_config.memory_window == 0 ? std::string("full")
+                                                            : std::to_string(agent_config.memory_window) + "x" +
+                                                                  std::to_string(agent_config.memory_window)) +
+                           " --sensor-noise " + formatNumber(agent_config.sensor_noise) + " --budget " +
+                           std::to_string(config.episode.budget) + " --sensor-range " +
+                           std::to_string(config.episode.sensor_range);
+    failures.push_back(std::move(example));
+  }
+  return failures;
+}
+
+void writeExperimentReport(const std::string& dir, const ExperimentConfig& config, const std::string& config_text,
+                           const std::vector<PreparedSet>& sets, const std::vector<EpisodeResult>& rows) {
+  std::vector<std::string> set_names, agent_names;
+  for (const PreparedSet& s : sets) set_names.push_back(s.name);
+  for (const auto& a : config.agents) agent_names.push_back(a.name);
+  ReportInput input;
+  input.title = "PPP Lab experiment: " + std::to_string(sets.size()) + " sets, " +
+                std::to_string(config.agents.size()) + " agents, " + std::to_string(config.runs) + " runs each";
+  input.config_text = config_text;
+  input.rates = computePassRates(rows, set_names, agent_names);
+  for (std::size_t a = 0; a < sets.size(); ++a) {
+    for (std::size_t b = a + 1; b < sets.size(); ++b) input.comparisons.emplace_back(sets[a].name, sets[b].name);
+  }
+  input.failures = hardestFailures(config, sets, rows, config.hardest);
+  std::filesystem::create_directories(dir);
+  writeSummaryCsv((std::filesystem::path(dir) / "summary.csv").string(), input.rates);
+  writeReport(dir, input);
+}
+
+}  // namespace simulator
+}  // namespace ppp

@@ -1,0 +1,219 @@
+#include "ppp_simulator/experiment_runner.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "ppp_core/dpa.hpp"
+#include "ppp_core/error.hpp"
+#include "ppp_core/rng.hpp"
+#include "ppp_core/text_file.hpp"
+#include "ppp_generator/genetic_algorithm.hpp"
+#include "ppp_simulator/episode.hpp"
+#include "ppp_simulator/experiment_report.hpp"
+#include "ppp_simulator/results_file.hpp"
+
+namespace ppp {
+namespace simulator {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kFingerprintFile = "experiment.yaml";
+constexpr const char* kResultsFile = "results.csv";
+
+std::uint64_t hashName(const std::string& name) {
+  std::uint64_t hash = 0xcbf29ce484222325ULL;
+  for (unsigned char c : name) hash = (hash ^ c) * 0x100000001b3ULL;
+  return hash;
+}
+
+/// One batch of work: every remaining run of one agent on one PPP.
+struct Unit {
+  int set;
+  int problem;
+  int agent;
+  std::vector<int> runs;
+};
+
+void say(const std::function<void(const std::string&)>& log, const std::string& text) {
+  if (log) log(text);
+}
+
+}  // namespace
+
+std::uint64_t runSeed(std::uint64_t experiment_seed, const std::string& set, const std::string& problem,
+                      const std::string& agent, int run) {
+  return deriveSeed(experiment_seed,
+                    {hashName(set), hashName(problem), hashName(agent), static_cast<std::uint64_t>(run)});
+}
+
+void checkExperimentDirectory(const ExperimentConfig& config, const std::string& dir) {
+  const fs::path root(dir);
+  std::error_code error;
+  if (!fs::exists(root, error)) return;
+  if (!fs::is_directory(root)) throw IoError(dir, "exists and is not a directory");
+  if (fs::is_empty(root, error)) return;
+  const fs::path fingerprint = root / kFingerprintFile;
+  if (!fs::exists(fingerprint)) {
+    throw IoError(dir, "holds files but no " + std::string(kFingerprintFile) +
+                           "; refusing to write an experiment over something else");
+  }
+  const std::string stored = readTextFile(fingerprint.string(), 1u << 20);
+  const std::string wanted = experimentFingerprint(config);
+  if (stored == wanted) return;
+  std::size_t line = 1;
+  std::size_t i = 0;
+  for (; i < std::min(stored.size(), wanted.size()) && stored[i] == wanted[i]; ++i) line += stored[i] == '\n';
+  throw IoError(dir, "holds a different experiment (" + fingerprint.string() + " differs from this configuration at line " +
+                         std::to_string(line) + "); use another output directory");
+}
+
+std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::string& dir,
+                                     const std::function<void(const std::string&)>& log) {
+  std::vector<PreparedSet> prepared;
+  for (const SetSpec& spec : config.sets) {
+    PreparedSet p;
+    p.name = spec.name;
+    std::string set_dir = spec.directory;
+    if (spec.generator) {
+      set_dir = (fs::path(dir) / "sets" / spec.name).string();
+      if (!fs::exists(fs::path(set_dir) / "set.csv")) {
+        say(log, "generating set '" + spec.name + "' (" + spec.generator->fitness + ", " +
+                     std::to_string(spec.generator->matings) + " matings)");
+        generator::GeneticAlgorithm ga(*spec.generator);
+        generator::writeProblemSetDirectory(set_dir, generator::makeProblemSet(*spec.generator, ga.run()),
+                                            *spec.generator);
+      }
+    }
+    p.set = generator::readProblemSetDirectory(set_dir);
+    DpaSolver dpa;
+    for (const Problem& problem : p.set.problems) {
+      p.grids.push_back(decodeGrid(problem));
+      const DpaResult& result = dpa.solve(p.grids.back(), problem.start, problem.goal);
+      if (!result.reachable) throw InvalidArgument("sets", "set '" + spec.name + "' holds an unsolvable PPP");
+      p.optimal.push_back(result.advances);
+    }
+    prepared.push_back(std::move(p));
+  }
+  return prepared;
+}
+
+ExperimentReport runExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
+                               const std::function<void(long, long)>& progress, const std::atomic<bool>* stop,
+                               const std::function<void(const std::string&)>& log) {
+  config.validate();
+  checkExperimentDirectory(config, dir);
+  fs::create_directories(dir);
+  writeFileAtomically((fs::path(dir) / kFingerprintFile).string(), experimentFingerprint(config));
+  const std::vector<PreparedSet> sets = prepareSets(config, dir, log);
+
+  ResultsFile results((fs::path(dir) / kResultsFile).string());
+  ExperimentReport report;
+  report.episodes_resumed = static_cast<long>(results.done().size());
+  std::vector<Unit> units;
+  long total = 0;
+  for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
+    for (int p = 0; p < static_cast<int>(sets[s].set.problems.size()); ++p) {
+      for (int a = 0; a < static_cast<int>(config.agents.size()); ++a) {
+        Unit unit{s, p, a, {}};
+        for (int run = 0; run < config.runs; ++run) {
+          ++total;
+          if (results.done().count(RunKey{sets[s].name, sets[s].set.ids[p], config.agents[a].name, run}) == 0) {
+            unit.runs.push_back(run);
+          }
+        }
+        if (!unit.runs.empty()) units.push_back(std::move(unit));
+      }
+    }
+  }
+  if (report.episodes_resumed > 0) say(log, "resuming: " + std::to_string(report.episodes_resumed) + " runs already done");
+
+  std::atomic<std::size_t> next_unit{0};
+  std::atomic<long> done{report.episodes_resumed};
+  std::mutex progress_mutex;
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  auto worker = [&]() {
+    try {
+      std::map<int, std::pair<std::unique_ptr<agents::Agent>, std::unique_ptr<EpisodeRunner>>> agents;
+      std::vector<EpisodeResult> rows;
+      for (;;) {
+        if (stop != nullptr && stop->load()) return;
+        const std::size_t u = next_unit.fetch_add(1);
+        if (u >= units.size()) return;
+        const Unit& unit = units[u];
+        auto& slot = agents[unit.agent];
+        if (!slot.first) {
+          slot.first = agents::makeAgent(config.agents[unit.agent]);
+          slot.second = std::make_unique<EpisodeRunner>(config.agents[unit.agent], config.episode);
+        }
+        const PreparedSet& set = sets[unit.set];
+        rows.clear();
+        for (int run : unit.runs) {
+          EpisodeResult r;
+          r.set = set.name;
+          r.problem = set.set.ids[unit.problem];
+          r.agent = config.agents[unit.agent].name;
+          r.run = run;
+          r.seed = runSeed(config.seed, r.set, r.problem, r.agent, run);
+          const EpisodeOutcome outcome =
+              slot.second->run(set.set.problems[unit.problem], set.grids[unit.problem], *slot.first, r.seed);
+          r.passed = outcome.passed;
+          r.steps = outcome.steps;
+          r.bumps = outcome.bumps;
+          r.path_length = outcome.path_length;
+          r.optimal_length = set.optimal[unit.problem];
+          r.reason = outcome.reason;
+          rows.push_back(std::move(r));
+        }
+        results.append(rows);
+        const long now = done.fetch_add(static_cast<long>(rows.size())) + static_cast<long>(rows.size());
+        if (progress) {
+          std::lock_guard<std::mutex> lock(progress_mutex);
+          progress(now, total);
+        }
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+    }
+  };
+  const int thread_count =
+      config.threads > 0 ? config.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  std::vector<std::thread> threads;
+  for (int t = 0; t < thread_count; ++t) threads.emplace_back(worker);
+  for (std::thread& t : threads) t.join();
+  if (failure) std::rethrow_exception(failure);
+  report.episodes_run = done.load() - report.episodes_resumed;
+  if (stop != nullptr && stop->load() && done.load() < total) {
+    report.interrupted = true;
+    return report;
+  }
+
+  // Canonical order, so the finished file does not depend on threads or interruptions.
+  std::vector<EpisodeResult> rows = readResultsFile((fs::path(dir) / kResultsFile).string());
+  std::map<std::string, int> set_order, agent_order;
+  for (std::size_t i = 0; i < sets.size(); ++i) set_order[sets[i].name] = static_cast<int>(i);
+  for (std::size_t i = 0; i < config.agents.size(); ++i) agent_order[config.agents[i].name] = static_cast<int>(i);
+  for (const EpisodeResult& r : rows) {
+    if (set_order.count(r.set) == 0 || agent_order.count(r.agent) == 0) {
+      throw ParseError((fs::path(dir) / kResultsFile).string(), 0, "row",
+                       "run of set '" + r.set + "', agent '" + r.agent + "' is not part of this experiment");
+    }
+  }
+  std::sort(rows.begin(), rows.end(), [&](const EpisodeResult& a, const EpisodeResult& b) {
+    return std::make_tuple(set_order[a.set], a.problem, agent_order[a.agent], a.run) <
+           std::make_tuple(set_order[b.set], b.problem, agent_order[b.agent], b.run);
+  });
+  results.rewrite(rows);
+  writeExperimentReport(dir, config, config_text, sets, rows);
+  return report;
+}
+
+}  // namespace simulator
+}  // namespace ppp

@@ -1,0 +1,602 @@
+#include "ppp_simulator/report.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <set>
+#include <system_error>
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/picture.hpp"
+#include "ppp_core/ppp_file.hpp"
+#include "ppp_core/text_file.hpp"
+#include "ppp_generator/tree_html.hpp"
+#include "ppp_simulator/episode_result.hpp"
+#include "ppp_simulator/statistics.hpp"
+#include "ppp_simulator/svg_plot.hpp"
+
+namespace ppp {
+namespace simulator {
+
+namespace {
+
+constexpr double kSignificance = 0.05;
+constexpr int kPictureTargetPixels = 480;  // longer side of a failure picture, roughly
+
+// ---------------------------------------------------------------------------------------------------------
+// Numbers, independent of the C locale.
+
+std::string fixed(double value, int decimals) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, decimals);
+  return std::string(buffer, result.ptr);
+}
+
+/// A rate in [0, 1] as a percentage with two decimals: 0.755 → "75.50%".
+std::string percent(double rate) { return fixed(rate * 100, 2) + "%"; }
+
+std::string pValue(double p) { return p < 0.0001 ? "< 0.0001" : fixed(p, 4); }
+
+std::string uValue(double u) { return std::floor(u) == u ? fixed(u, 0) : fixed(u, 1); }
+
+/// "n" or "lo–hi".
+std::string range(int lo, int hi) {
+  return lo == hi ? std::to_string(lo) : std::to_string(lo) + "\xE2\x80\x93" + std::to_string(hi);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Markdown and shell quoting.
+
+/// Free text in Markdown: backslash-escapes the characters that could start markup; line breaks become spaces.
+std::string mdText(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '\n' || c == '\r') {
+      out += ' ';
+    } else {
+      if (std::string("\\`*_[]<>#|!~&").find(c) != std::string::npos) out += '\\';
+      out += c;
+    }
+  }
+  return out;
+}
+
+/// A name as a Markdown code span (fence longer than any backtick run inside); `in_table` escapes '|'.
+std::string mdCode(const std::string& text, bool in_table) {
+  std::string body;
+  std::size_t run = 0;
+  std::size_t longest = 0;
+  for (const char c : text) {
+    run = c == '`' ? run + 1 : 0;
+    longest = std::max(longest, run);
+    if (c == '\n' || c == '\r') {
+      body += ' ';
+    } else if (c == '|' && in_table) {
+      body += "\\|";
+    } else {
+      body += c;
+    }
+  }
+  const std::string fence(longest + 1, '`');
+  const bool pad = !body.empty() && (body.front() == '`' || body.back() == '`');
+  return fence + (pad ? " " : "") + body + (pad ? " " : "") + fence;
+}
+
+/// A fenced code block holding `text` verbatim.
+std::string mdFence(const std::string& text, const std::string& info) {
+  std::size_t run = 0;
+  std::size_t longest = 0;
+  for (const char c : text) {
+    run = c == '`' ? run + 1 : 0;
+    longest = std::max(longest, run);
+  }
+  const std::string fence(std::max<std::size_t>(3, longest + 1), '`');
+  std::string body = text;
+  if (!body.empty() && body.back() != '\n') body += '\n';
+  return fence + info + "\n" + body + fence + "\n";
+}
+
+/// One shell word: kept as is when made of safe characters, single-quoted otherwise.
+std::string shellWord(const std::string& word) {
+  const bool safe = !word.empty() && std::all_of(word.begin(), word.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || std::string("._-/+=:,@").find(c) != std::string::npos;
+  });
+  if (safe) return word;
+  std::string quoted = "'";
+  for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// File names.
+
+/// Keeps letters, digits, '.', '-' and '_'; everything else becomes '_'. Never empty, never starts with '.'.
+std::string safeStem(const std::string& name) {
+  std::string stem;
+  for (const char c : name) {
+    const bool keep = std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '.' || c == '-' || c == '_';
+    stem += keep ? c : '_';
+  }
+  if (stem.empty() || stem.front() == '.') stem.insert(stem.begin(), '_');
+  return stem;
+}
+
+/// Hands out distinct file names within one directory of the report.
+class FileNames {
+ public:
+  /// `stem` + `extension`, or with "-2", "-3"… appended to the stem when that name is taken.
+  std::string claim(const std::string& stem, const std::string& extension) {
+    std::string name = stem + extension;
+    for (int k = 2; !used_.insert(name).second; ++k) name = stem + "-" + std::to_string(k) + extension;
+    return name;
+  }
+
+ private:
+  std::set<std::string> used_;
+};
+
+// ---------------------------------------------------------------------------------------------------------
+// What the report is made of, prepared before anything is written.
+
+struct Plot {
+  std::string file;        // relative to the report directory
+  std::string caption;     // plain text
+  std::string file_svg;    // standalone document
+  std::string inline_svg;  // for the HTML
+};
+
+struct Picture {
+  std::string png_file;  // relative to the report directory
+  std::string ppp_file;  // relative to the report directory
+  std::string png;       // PNG bytes
+  int width = 0;
+  int height = 0;
+};
+
+struct SetSummary {
+  int problems = 0;       // distinct PPPs with any result
+  int min_runs = 0;       // per PPP and agent
+  int max_runs = 0;
+  long long runs = 0;     // all agents
+};
+
+std::vector<std::string> problemsOf(const PassRateTable& rates, const std::string& set) {
+  std::vector<std::string> problems;
+  for (const ProblemPassRate& row : rates.per_problem) {
+    if (row.set == set && (problems.empty() || problems.back() != row.problem)) problems.push_back(row.problem);
+  }
+  return problems;  // per_problem is sorted by set, then problem: no repeats
+}
+
+SetSummary summarise(const PassRateTable& rates, const std::string& set) {
+  SetSummary summary;
+  summary.problems = static_cast<int>(problemsOf(rates, set).size());
+  summary.min_runs = std::numeric_limits<int>::max();
+  for (const ProblemPassRate& row : rates.per_problem) {
+    if (row.set != set) continue;
+    summary.min_runs = std::min(summary.min_runs, row.runs);
+    summary.max_runs = std::max(summary.max_runs, row.runs);
+    summary.runs += row.runs;
+  }
+  if (summary.problems == 0) summary.min_runs = 0;
+  return summary;
+}
+
+std::vector<Plot> makePlots(const PassRateTable& rates) {
+  std::vector<Plot> plots;
+  const double missing = std::numeric_limits<double>::quiet_NaN();
+
+  Chart by_agent;
+  by_agent.title = "Mean pass rate per agent and PPP set";
+  by_agent.x_label = "agent";
+  by_agent.y_label = "mean pass rate over the set's PPPs (%)";
+  by_agent.categories = rates.agents;
+  for (const std::string& set : rates.sets) {
+    PlotSeries series{set, {}};
+    for (const std::string& agent : rates.agents) {
+      const SetPassRate* row = rates.find(set, agent);
+      series.values.push_back(row != nullptr ? row->mean_rate * 100 : missing);
+    }
+    by_agent.series.push_back(std::move(series));
+  }
+  plots.push_back(Plot{"plots/pass_rate_by_agent.svg",
+                       "Mean pass rate (%) of every agent on every PPP set: one bar per set.",
+                       groupedBarChartSvg(by_agent, true), groupedBarChartSvg(by_agent, false)});
+
+  FileNames names;
+  names.claim("pass_rate_by_agent", ".svg");
+  for (const std::string& set : rates.sets) {
+    Chart by_ppp;
+    by_ppp.title = "Pass rate per PPP of set " + set;
+    by_ppp.x_label = "PPP";
+    by_ppp.y_label = "pass rate over the runs (%)";
+    by_ppp.categories = problemsOf(rates, set);
+    std::map<std::string, std::size_t> column;
+    for (std::size_t c = 0; c < by_ppp.categories.size(); ++c) column[by_ppp.categories[c]] = c;
+    for (const std::string& agent : rates.agents) {
+      PlotSeries series{agent, std::vector<double>(by_ppp.categories.size(), missing)};
+      for (const ProblemPassRate& row : rates.per_problem) {
+        if (row.set == set && row.agent == agent) series.values[column.at(row.problem)] = row.rate() * 100;
+      }
+      by_ppp.series.push_back(std::move(series));
+    }
+    plots.push_back(Plot{"plots/" + names.claim("pass_rate_by_ppp_" + safeStem(set), ".svg"),
+                         "Pass rate (%) of every agent on each PPP of set " + set + ".", lineChartSvg(by_ppp, true),
+                         lineChartSvg(by_ppp, false)});
+  }
+  return plots;
+}
+
+PictureOptions pictureOptions(const Problem& problem) {
+  PictureOptions options;
+  const int side = std::max({problem.width, problem.height, 1});
+  options.cell_pixels = std::clamp(kPictureTargetPixels / side, 2, 40);
+  options.grid_lines = options.cell_pixels >= 6;
+  return options;
+}
+
+std::vector<Picture> makePictures(const std::vector<FailureExample>& failures) {
+  std::vector<Picture> pictures;
+  FileNames png_names;
+  FileNames ppp_names;
+  std::map<std::pair<std::string, std::string>, std::pair<std::string, Problem>> ppp_files;  // (set, problem)
+  for (std::size_t i = 0; i < failures.size(); ++i) {
+    const FailureExample& failure = failures[i];
+    Picture picture;
+    try {
+      const PictureOptions options = pictureOptions(failure.ppp);
+      const std::vector<std::uint8_t> rgb = renderProblemRgb(failure.ppp, failure.path, options);
+      picture.width = pictureWidth(failure.ppp.width, options);
+      picture.height = pictureHeight(failure.ppp.height, options);
+      picture.png = encodePng(rgb, picture.width, picture.height);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument("failures", "example " + std::to_string(i) + " (" + failure.set + " / " +
+                                            failure.problem + " / " + failure.agent + "): " + e.what());
+    }
+    picture.png_file = "pictures/" + png_names.claim(safeStem(failure.set) + "_" + safeStem(failure.problem) + "_" +
+                                                         safeStem(failure.agent),
+                                                     ".png");
+    const auto key = std::make_pair(failure.set, failure.problem);
+    const auto known = ppp_files.find(key);
+    if (known != ppp_files.end() && known->second.second == failure.ppp) {
+      picture.ppp_file = known->second.first;
+    } else {
+      picture.ppp_file =
+          "ppps/" + ppp_names.claim(safeStem(failure.set) + "_" + safeStem(failure.problem), ".ppp");
+      if (known == ppp_files.end()) ppp_files.emplace(key, std::make_pair(picture.ppp_file, failure.ppp));
+    }
+    pictures.push_back(std::move(picture));
+  }
+  return pictures;
+}
+
+std::string reasonText(const std::string& reason) {
+  if (reason == reason::kGoalReached) return "the agent reached the goal";
+  if (reason == reason::kBudgetExhausted) return "the move budget ran out before the agent reached the goal";
+  if (reason == reason::kTimeout) return "the agent did not answer in time";
+  if (reason == reason::kAgentLost) return "the agent process went away";
+  if (reason == reason::kInvalidAction) return "the agent sent an unusable action";
+  return "";
+}
+
+std::string cellText(Cell c) { return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")"; }
+
+std::string pathText(const FailureExample& failure) {
+  if (failure.path.empty()) return "no path recorded";
+  std::size_t moves = 0;
+  for (std::size_t i = 1; i < failure.path.size(); ++i) {
+    if (failure.path[i] != failure.path[i - 1]) ++moves;
+  }
+  std::string text = std::to_string(failure.path.size()) + " cells in order (" + std::to_string(moves) +
+                     (moves == 1 ? " move" : " moves") + "), ending at " + cellText(failure.path.back());
+  if (failure.path.back() == failure.ppp.goal) text += ", the goal";
+  return text;
+}
+
+std::string replayCommand(const FailureExample& failure, const Picture& picture) {
+  const std::string flags = failure.replay_flags.empty() ? "--agent " + shellWord(failure.agent) : failure.replay_flags;
+  return "ppp replay " + shellWord(picture.ppp_file) + " " + flags + " --seed " + std::to_string(failure.seed) +
+         " -o path.png";
+}
+
+std::string readingGuide(const ReportInput& input) {
+  std::string guide =
+      "Every agent ran many times, each run with its own seed, on every PPP (path-planning problem) of every set. "
+      "A PPP's pass rate is the share of its runs in which the agent reached the goal within the move budget; "
+      "a set's pass rate is the mean of its PPPs' pass rates (each PPP weighs the same, whatever its number of "
+      "runs). Low pass rates point at faults: the PPP plots show which PPPs an agent fails on. The Mann\xE2\x80\x93"
+      "Whitney U test compares, per agent, the per-PPP pass rates of two sets: p below 0.05 says the agent "
+      "finds one set harder than the other, and z > 0 means higher pass rates on the first set.";
+  if (std::find(input.rates.agents.begin(), input.rates.agents.end(), "astar") != input.rates.agents.end()) {
+    guide += " The astar agent knows the map and is the control: it should pass every valid PPP.";
+  }
+  guide +=
+      " The hardest PPPs are shown with a failed run's path (blue; start green, goal red, obstacles grey) and "
+      "the agent, run and seed that replay it.";
+  return guide;
+}
+
+constexpr const char* kStyle =
+    "body{font-family:sans-serif;margin:20px auto;max-width:1150px;padding:0 16px;color:#222;background:#fff;"
+    "line-height:1.4}"
+    "h1{font-size:24px;margin:0 0 8px}h2{font-size:19px;margin:28px 0 8px;border-bottom:1px solid #ddd;"
+    "padding-bottom:3px}h3{font-size:16px;margin:18px 0 6px}"
+    "p{margin:0 0 10px}p.guide{color:#444;max-width:900px}"
+    "table{border-collapse:collapse;margin:6px 0 12px;font-size:14px}"
+    "th,td{border:1px solid #ccc;padding:4px 10px}th{background:#f3f3f3;text-align:left}"
+    "td.num,th.num{text-align:right;font-variant-numeric:tabular-nums}"
+    "tr.foot td{background:#fafafa;color:#555}"
+    "td.sig{font-weight:bold;color:#a11}"
+    "code{font-family:monospace;font-size:13px;background:#f4f4f4;padding:0 3px;border-radius:3px}"
+    "pre{background:#f6f6f6;border:1px solid #ddd;padding:10px;overflow-x:auto;font-size:13px}"
+    "pre code{padding:0;background:none}"
+    "figure{margin:10px 0 18px}figcaption{color:#555;font-size:13px;margin-top:4px}"
+    "svg{max-width:100%;height:auto}"
+    ".failure{display:flex;gap:18px;align-items:flex-start;flex-wrap:wrap;margin-bottom:16px}"
+    ".failure img{image-rendering:pixelated;border:1px solid #999;max-width:100%;height:auto}"
+    ".failure ul{margin:0;padding-left:18px;flex:1 1 360px}.failure li{margin-bottom:4px}"
+    ".muted{color:#777}";
+
+/// A faint red behind low pass rates, so failures stand out in the table.
+std::string rateCellStyle(double rate) {
+  const double alpha = 0.45 * (1 - std::clamp(rate, 0.0, 1.0));
+  return "background:rgba(225,87,89," + fixed(alpha, 2) + ")";
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Sections, each as Markdown and HTML.
+
+struct Text {
+  std::string md;
+  std::string html;
+};
+
+void passRateSection(const ReportInput& input, Text* out) {
+  const PassRateTable& rates = input.rates;
+  out->md += "## Pass rates\n\n";
+  out->html += "<h2>Pass rates</h2>\n";
+  const std::string caption =
+      "Mean pass rate over each set's PPPs (rows: agents, columns: PPP sets); \xE2\x80\x94 marks an agent "
+      "without results on a set.";
+  out->md += mdText(caption) + "\n\n";
+  out->html += "<p>" + escapeMarkup(caption) + "</p>\n";
+
+  out->md += "| Agent |";
+  std::string align = "|:---|";
+  out->html += "<table class=\"rates\">\n<thead><tr><th>Agent</th>";
+  for (const std::string& set : rates.sets) {
+    out->md += " " + mdCode(set, true) + " |";
+    align += "---:|";
+    out->html += "<th class=\"num\"><code>" + escapeMarkup(set) + "</code></th>";
+  }
+  out->md += "\n" + align + "\n";
+  out->html += "</tr></thead>\n<tbody>\n";
+  for (const std::string& agent : rates.agents) {
+    out->md += "| " + mdCode(agent, true) + " |";
+    out->html += "<tr><td><code>" + escapeMarkup(agent) + "</code></td>";
+    for (const std::string& set : rates.sets) {
+      const SetPassRate* row = rates.find(set, agent);
+      if (row == nullptr) {
+        out->md += " \xE2\x80\x94 |";
+        out->html += "<td class=\"num muted\">\xE2\x80\x94</td>";
+      } else {
+        out->md += " " + percent(row->mean_rate) + " |";
+        out->html += "<td class=\"num\" style=\"" + rateCellStyle(row->mean_rate) + "\" title=\"" +
+                     std::to_string(row->passes) + " of " + std::to_string(row->runs) + " runs passed on " +
+                     std::to_string(row->problems) + " PPPs\">" + percent(row->mean_rate) + "</td>";
+      }
+    }
+    out->md += "\n";
+    out->html += "</tr>\n";
+  }
+  std::vector<SetSummary> summaries;
+  for (const std::string& set : rates.sets) summaries.push_back(summarise(rates, set));
+  const auto footer = [&](const std::string& label, auto cell) {
+    out->md += "| *" + label + "* |";
+    out->html += "<tr class=\"foot\"><td>" + escapeMarkup(label) + "</td>";
+    for (const SetSummary& summary : summaries) {
+      const std::string value = cell(summary);
+      out->md += " " + value + " |";
+      out->html += "<td class=\"num\">" + escapeMarkup(value) + "</td>";
+    }
+    out->md += "\n";
+    out->html += "</tr>\n";
+  };
+  out->html += "</tbody>\n<tfoot>\n";
+  footer("PPPs", [](const SetSummary& s) { return std::to_string(s.problems); });
+  footer("runs per PPP and agent", [](const SetSummary& s) { return range(s.min_runs, s.max_runs); });
+  footer("runs in total", [](const SetSummary& s) { return std::to_string(s.runs); });
+  out->html += "</tfoot>\n</table>\n";
+  out->md += "\n";
+}
+
+void comparisonSection(const ReportInput& input, Text* out) {
+  out->md += "## Mann\xE2\x80\x93Whitney U tests\n\n";
+  out->html += "<h2>Mann\xE2\x80\x93Whitney U tests</h2>\n";
+  const std::string method =
+      "Per agent, the per-PPP pass rates on set A against those on set B: two-sided test, normal approximation "
+      "with the tie-corrected variance and no continuity correction; U is the smaller of U_A and U_B; z > 0 means "
+      "higher pass rates on A.";
+  out->md += mdText(method) + "\n\n";
+  out->html += "<p>" + escapeMarkup(method) + "</p>\n";
+  if (input.comparisons.empty()) {
+    out->md += "No set pairs were compared.\n\n";
+    out->html += "<p class=\"muted\">No set pairs were compared.</p>\n";
+    return;
+  }
+  for (const auto& [set_a, set_b] : input.comparisons) {
+    const std::vector<AgentComparison> rows = compareSets(input.rates, set_a, set_b);
+    out->md += "### " + mdCode(set_a, false) + " (A) vs " + mdCode(set_b, false) + " (B)\n\n";
+    out->html += "<h3><code>" + escapeMarkup(set_a) + "</code> (A) vs <code>" + escapeMarkup(set_b) +
+                 "</code> (B)</h3>\n";
+    if (rows.empty()) {
+      out->md += "No agent has results on both sets.\n\n";
+      out->html += "<p class=\"muted\">No agent has results on both sets.</p>\n";
+      continue;
+    }
+    out->md += "| Agent | mean A | mean B | n A | n B | U | z | p | significant at 0.05 |\n"
+               "|:---|---:|---:|---:|---:|---:|---:|---:|:---:|\n";
+    out->html += "<table>\n<thead><tr><th>Agent</th><th class=\"num\">mean A</th><th class=\"num\">mean B</th>"
+                 "<th class=\"num\">n A</th><th class=\"num\">n B</th><th class=\"num\">U</th>"
+                 "<th class=\"num\">z</th><th class=\"num\">p</th><th>significant at 0.05</th></tr></thead>\n"
+                 "<tbody>\n";
+    for (const AgentComparison& row : rows) {
+      const bool significant = row.test.p < kSignificance;
+      const std::vector<std::string> cells = {percent(row.mean_a),      percent(row.mean_b),
+                                              std::to_string(row.test.n_a), std::to_string(row.test.n_b),
+                                              uValue(row.test.u),       fixed(row.test.z, 3),
+                                              pValue(row.test.p)};
+      out->md += "| " + mdCode(row.agent, true) + " |";
+      out->html += "<tr><td><code>" + escapeMarkup(row.agent) + "</code></td>";
+      for (const std::string& cell : cells) {
+        out->md += " " + cell + " |";
+        out->html += "<td class=\"num\">" + escapeMarkup(cell) + "</td>";
+      }
+      out->md += significant ? " **yes** |\n" : " no |\n";
+      out->html += significant ? "<td class=\"sig\">yes</td></tr>\n" : "<td>no</td></tr>\n";
+    }
+    out->md += "\n";
+    out->html += "</tbody>\n</table>\n";
+  }
+}
+
+void plotSection(const std::vector<Plot>& plots, Text* out) {
+  out->md += "## Plots\n\n";
+  out->html += "<h2>Plots</h2>\n";
+  for (const Plot& plot : plots) {
+    out->md += "![" + mdText(plot.caption) + "](" + plot.file + ")\n\n" + mdText(plot.caption) + "\n\n";
+    out->html += "<figure>\n" + plot.inline_svg + "<figcaption>" + escapeMarkup(plot.caption) + " (file <code>" +
+                 escapeMarkup(plot.file) + "</code>)</figcaption>\n</figure>\n";
+  }
+}
+
+void failureSection(const ReportInput& input, const std::vector<Picture>& pictures, Text* out) {
+  out->md += "## Hardest PPPs\n\n";
+  out->html += "<h2>Hardest PPPs</h2>\n";
+  if (input.failures.empty()) {
+    out->md += "No failed runs on the hardest PPPs were recorded.\n\n";
+    out->html += "<p class=\"muted\">No failed runs on the hardest PPPs were recorded.</p>\n";
+    return;
+  }
+  const std::string intro =
+      "A failed run on each of the hardest PPPs: the agent's path in blue (dots on the cells it stood on), start "
+      "green, goal red, obstacles dark grey. Run the replay command from this report's directory to reproduce it.";
+  out->md += mdText(intro) + "\n\n";
+  out->html += "<p>" + escapeMarkup(intro) + "</p>\n";
+  for (std::size_t i = 0; i < input.failures.size(); ++i) {
+    const FailureExample& failure = input.failures[i];
+    const Picture& picture = pictures[i];
+    const std::string number = std::to_string(i + 1) + ". ";
+    const std::string alt = "PPP " + failure.problem + " of set " + failure.set + " with the path of " +
+                            failure.agent + " in run " + std::to_string(failure.run);
+    const std::string reason = reasonText(failure.reason);
+    const std::string grid = std::to_string(failure.ppp.width) + "\xC3\x97" + std::to_string(failure.ppp.height) +
+                             ", start " + cellText(failure.ppp.start) + ", goal " + cellText(failure.ppp.goal) +
+                             ", " + std::to_string(decodeGrid(failure.ppp).obstacleCount()) + " obstacle cells";
+    const std::string command = replayCommand(failure, picture);
+
+    out->md += "### " + number + mdCode(failure.set, false) + " / " + mdCode(failure.problem, false) +
+               " \xE2\x80\x94 " + mdCode(failure.agent, false) + "\n\n";
+    out->md += "![" + mdText(alt) + "](" + picture.png_file + ")\n\n";
+    out->md += "- agent " + mdCode(failure.agent, false) + ", run " + std::to_string(failure.run) + ", seed " +
+               mdCode(std::to_string(failure.seed), false) + "\n";
+    out->md += "- reason " + mdCode(failure.reason, false) + (reason.empty() ? "" : ": " + mdText(reason)) + "\n";
+    out->md += "- grid " + mdText(grid) + "\n";
+    out->md += "- path " + mdText(pathText(failure)) + "\n";
+    out->md += "- replay: " + mdCode(command, false) + "\n\n";
+
+    out->html += "<h3>" + escapeMarkup(number) + "<code>" + escapeMarkup(failure.set) + "</code> / <code>" +
+                 escapeMarkup(failure.problem) + "</code> \xE2\x80\x94 <code>" + escapeMarkup(failure.agent) +
+                 "</code></h3>\n<div class=\"failure\">\n";
+    out->html += "<img src=\"data:image/png;base64," + generator::base64Encode(picture.png) + "\" width=\"" +
+                 std::to_string(picture.width) + "\" height=\"" + std::to_string(picture.height) + "\" alt=\"" +
+                 escapeMarkup(alt) + "\">\n<ul>\n";
+    out->html += "<li>agent <code>" + escapeMarkup(failure.agent) + "</code>, run " + std::to_string(failure.run) +
+                 ", seed <code>" + std::to_string(failure.seed) + "</code></li>\n";
+    out->html += "<li>reason <code>" + escapeMarkup(failure.reason) + "</code>" +
+                 (reason.empty() ? "" : ": " + escapeMarkup(reason)) + "</li>\n";
+    out->html += "<li>grid " + escapeMarkup(grid) + "</li>\n";
+    out->html += "<li>path " + escapeMarkup(pathText(failure)) + "</li>\n";
+    out->html += "<li>picture <code>" + escapeMarkup(picture.png_file) + "</code>, PPP file <code>" +
+                 escapeMarkup(picture.ppp_file) + "</code></li>\n";
+    out->html += "<li>replay: <code>" + escapeMarkup(command) + "</code></li>\n</ul>\n</div>\n";
+  }
+}
+
+void configurationSection(const ReportInput& input, Text* out) {
+  out->md += "## Configuration\n\n";
+  out->html += "<h2>Configuration</h2>\n";
+  if (input.config_text.empty()) {
+    out->md += "No configuration was given.\n";
+    out->html += "<p class=\"muted\">No configuration was given.</p>\n";
+    return;
+  }
+  out->md += "The experiment configuration, verbatim:\n\n" + mdFence(input.config_text, "yaml");
+  out->html += "<p>The experiment configuration, verbatim:</p>\n<pre><code>" + escapeMarkup(input.config_text) +
+               "</code></pre>\n";
+}
+
+void checkComparisons(const ReportInput& input) {
+  for (std::size_t i = 0; i < input.comparisons.size(); ++i) {
+    for (const std::string* set : {&input.comparisons[i].first, &input.comparisons[i].second}) {
+      if (std::find(input.rates.sets.begin(), input.rates.sets.end(), *set) == input.rates.sets.end()) {
+        throw InvalidArgument("comparisons", "pair " + std::to_string(i) + " names set '" + *set +
+                                                 "', which the pass-rate table does not have");
+      }
+    }
+  }
+}
+
+void makeDirectory(const std::string& path) {
+  std::error_code error;
+  std::filesystem::create_directories(path, error);
+  if (error) throw IoError(path, "cannot create directory: " + error.message());
+}
+
+}  // namespace
+
+void writeReport(const std::string& dir, const ReportInput& input) {
+  checkComparisons(input);
+  const std::vector<Plot> plots = makePlots(input.rates);
+  const std::vector<Picture> pictures = makePictures(input.failures);
+
+  Text text;
+  const std::string title = input.title.empty() ? "PPP experiment report" : input.title;
+  const std::string guide = readingGuide(input);
+  text.md = "# " + mdText(title) + "\n\n" + mdText(guide) + "\n\n";
+  text.html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + escapeMarkup(title) +
+              "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n<h1>" + escapeMarkup(title) +
+              "</h1>\n<p class=\"guide\">" + escapeMarkup(guide) + "</p>\n";
+  passRateSection(input, &text);
+  comparisonSection(input, &text);
+  plotSection(plots, &text);
+  failureSection(input, pictures, &text);
+  configurationSection(input, &text);
+  text.html += "</body>\n</html>\n";
+
+  const std::filesystem::path root(dir);
+  makeDirectory(dir);
+  makeDirectory((root / "plots").string());
+  if (!input.failures.empty()) {
+    makeDirectory((root / "pictures").string());
+    makeDirectory((root / "ppps").string());
+  }
+  for (const Plot& plot : plots) writeFileAtomically((root / plot.file).string(), plot.file_svg);
+  std::set<std::string> written_ppps;
+  for (std::size_t i = 0; i < pictures.size(); ++i) {
+    writeFileAtomically((root / pictures[i].png_file).string(), pictures[i].png);
+    if (written_ppps.insert(pictures[i].ppp_file).second) {
+      writePppFile(input.failures[i].ppp, (root / pictures[i].ppp_file).string());
+    }
+  }
+  writeFileAtomically((root / "report.md").string(), text.md);
+  writeFileAtomically((root / "report.html").string(), text.html);
+}
+
+}  // namespace simulator
+}  // namespace ppp

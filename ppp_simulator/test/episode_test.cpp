@@ -1,0 +1,144 @@
+#include "ppp_simulator/episode.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/random_problem.hpp"
+#include "ppp_core/reachability.hpp"
+#include "ppp_core/rng.hpp"
+
+namespace ppp {
+namespace simulator {
+namespace {
+
+agents::AgentConfig config(const std::string& type) {
+  agents::AgentConfig c;
+  c.type = type;
+  c.name = type;
+  return c;
+}
+
+/// Exact probability that a uniform random walk over {stay, N, E, S, W} on an empty W x H grid, where moves off
+/// the grid leave it in place, stands on the goal within `budget` actions: the distribution over cells is
+/// pushed forward one action at a time with the goal absorbing.
+double exactRandomPassProbability(int width, int height, Cell start, Cell goal, int budget) {
+  std::vector<double> p(static_cast<std::size_t>(width) * height, 0.0), next;
+  p[start.y * width + start.x] = 1.0;
+  double absorbed = 0.0;
+  const int dx[5] = {0, 0, 1, 0, -1};
+  const int dy[5] = {0, -1, 0, 1, 0};
+  for (int step = 0; step < budget; ++step) {
+    next.assign(p.size(), 0.0);
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        const double mass = p[y * width + x];
+        if (mass == 0.0) continue;
+        for (int a = 0; a < 5; ++a) {
+          int nx = x + dx[a], ny = y + dy[a];
+          if (nx < 0 || ny < 0 || nx >= width || ny >= height) nx = x, ny = y;
+          next[ny * width + nx] += mass / 5.0;
+        }
+      }
+    }
+    absorbed += next[goal.y * width + goal.x];
+    next[goal.y * width + goal.x] = 0.0;
+    p.swap(next);
+  }
+  return absorbed;
+}
+
+/// Pass rate of the random agent over `runs` runs, with its standard error.
+void expectRandomMatchesExact(int width, int height, int budget, int runs) {
+  const Problem problem = Problem::empty(width, height, 0);
+  const Grid grid = decodeGrid(problem);
+  EpisodeOptions options;
+  options.budget = budget;
+  EpisodeRunner runner(config("random"), options);
+  auto agent = agents::makeAgent(config("random"));
+  int passes = 0;
+  for (int run = 0; run < runs; ++run) {
+    const auto outcome = runner.run(problem, grid, *agent, deriveSeed(2024, {static_cast<std::uint64_t>(run)}));
+    passes += outcome.passed ? 1 : 0;
+    if (outcome.passed) EXPECT_LE(outcome.steps, budget);
+  }
+  const double exact = exactRandomPassProbability(width, height, problem.start, problem.goal, budget);
+  const double observed = static_cast<double>(passes) / runs;
+  const double standard_error = std::sqrt(exact * (1 - exact) / runs);
+  std::printf("random on empty %dx%d, budget %d: exact %.5f, observed %.5f over %d runs (SE %.5f)\n", width, height,
+              budget, exact, observed, runs, standard_error);
+  EXPECT_NEAR(observed, exact, 3 * standard_error);
+}
+
+TEST(EpisodeTest, RandomAgentMatchesTheExactMarkovChainOn20x20) { expectRandomMatchesExact(20, 20, 300, 40000); }
+
+TEST(EpisodeTest, RandomAgentMatchesTheExactMarkovChainOn5x5) { expectRandomMatchesExact(5, 5, 40, 20000); }
+
+TEST(EpisodeTest, AstarPassesInTheFewestMovesAndCountsAreConsistent) {
+  Rng rng(11);
+  EpisodeRunner runner(config("astar"), EpisodeOptions{});
+  auto agent = agents::makeAgent(config("astar"));
+  for (int i = 0; i < 100; ++i) {
+    const Problem problem = randomProblem(rng, Problem::empty(16, 12, 12), 12);
+    const Grid grid = decodeGrid(problem);
+    const auto outcome = runner.run(problem, grid, *agent, i, true);
+    const int optimal = stepDistances(grid, problem.start)[grid.index(problem.goal)];
+    EXPECT_TRUE(outcome.passed);
+    EXPECT_STREQ(outcome.reason, "goal_reached");
+    EXPECT_EQ(outcome.path_length, optimal);
+    EXPECT_EQ(outcome.steps, optimal);
+    EXPECT_EQ(outcome.bumps, 0);
+    ASSERT_EQ(outcome.path.size(), static_cast<std::size_t>(optimal) + 1);
+    EXPECT_EQ(outcome.path.front(), problem.start);
+    EXPECT_EQ(outcome.path.back(), problem.goal);
+  }
+}
+
+TEST(EpisodeTest, BudgetEndsAnEpisodeAndBumpsAreCounted) {
+  // The bumper on a 3x3 grid whose goal is walled off by a diagonal can only bump and wander: it must stop at the budget.
+  Problem problem = Problem::empty(3, 3, 1);
+  problem.obstacles.push_back(Obstacle{Shape::DiagonalUp, 0, 2, 3, 1});  // (0,2),(1,1),(2,0): cuts the goal off
+  const Grid grid = decodeGrid(problem);
+  EpisodeOptions options;
+  options.budget = 25;
+  EpisodeRunner runner(config("bumper"), options);
+  auto agent = agents::makeAgent(config("bumper"));
+  const auto outcome = runner.run(problem, grid, *agent, 3);
+  EXPECT_FALSE(outcome.passed);
+  EXPECT_STREQ(outcome.reason, "budget_exhausted");
+  EXPECT_EQ(outcome.steps, 25);
+  EXPECT_GT(outcome.bumps, 0);
+  EXPECT_LE(outcome.bumps + outcome.path_length, outcome.steps);
+}
+
+TEST(EpisodeTest, SameSeedSameEpisode) {
+  Rng rng(5);
+  const Problem problem = randomProblem(rng, Problem::empty(20, 20, 10), 10);
+  const Grid grid = decodeGrid(problem);
+  for (const char* type : {"random", "explorer", "bumper", "decision_bumper", "long_term_explorer"}) {
+    agents::AgentConfig c = config(type);
+    c.sensor_noise = 0.05;
+    EpisodeRunner runner(c, EpisodeOptions{});
+    auto a = agents::makeAgent(c);
+    auto b = agents::makeAgent(c);
+    const auto first = runner.run(problem, grid, *a, 77, true);
+    const auto second = runner.run(problem, grid, *b, 77, true);
+    EXPECT_EQ(first.path, second.path) << type;
+    EXPECT_EQ(first.steps, second.steps) << type;
+  }
+}
+
+TEST(EpisodeTest, BadOptions) {
+  EpisodeOptions options;
+  options.budget = 0;
+  EXPECT_THROW(EpisodeRunner(config("random"), options), InvalidArgument);
+  options.budget = 300;
+  options.sensor_range = 0;
+  EXPECT_THROW(EpisodeRunner(config("random"), options), InvalidArgument);
+  EXPECT_THROW(EpisodeRunner(config("flier"), EpisodeOptions{}), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace simulator
+}  // namespace ppp

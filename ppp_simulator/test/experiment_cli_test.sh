@@ -1,0 +1,118 @@
+#!/usr/bin/env bash
+# `ppp experiment`, `simulate`, `replay` and `compare` as a user runs them, including a real SIGKILL and
+# SIGTERM part-way through an experiment and the resume. Usage: experiment_cli_test.sh PATH_TO_PPP
+set -u
+ppp="$1"
+work="$(mktemp -d)"
+trap 'kill -9 $(jobs -p) 2>/dev/null; rm -rf "$work"' EXIT
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
+expect_ok() {
+  local name="$1"; shift
+  if "$@" > "$work/out" 2> "$work/err"; then pass; else fail "$name: exit $? $(tail -5 "$work/err")"; fi
+}
+expect_error() {
+  local name="$1" text="$2"; shift 2
+  if "$@" > "$work/out" 2> "$work/err"; then fail "$name: succeeded, expected an error"; return; fi
+  if grep -qF -- "$text" "$work/err"; then pass; else fail "$name: error lacks '$text': $(cat "$work/err")"; fi
+}
+rows() { if [ -f "$1" ]; then wc -l < "$1"; else echo 0; fi; }
+
+# A small experiment: 2 sets x 6 PPPs x 3 agents x 1500 runs = 54,000 runs.
+cat > "$work/agents.yaml" <<'YAML'
+agents:
+  - {name: random, type: random}
+  - {name: explorer_memory_5x5, type: explorer, memory: 5x5}
+  - {name: long_term_explorer, type: long_term_explorer}
+YAML
+cat > "$work/experiment.yaml" <<'YAML'
+seed: 9
+runs: 1500
+threads: 2
+hardest: 2
+agents: agents.yaml
+sets:
+  - name: turns
+    generator: {fitness: turns, population: 6, matings: 200, width: 14, height: 14, seed: 3}
+  - name: difficulty
+    generator: {fitness: difficulty, population: 6, matings: 200, width: 14, height: 14, seed: 4}
+YAML
+total=$((2 * 6 * 3 * 1500 + 1))
+
+expect_ok "uninterrupted experiment" "$ppp" experiment "$work/experiment.yaml" -o "$work/a" --quiet
+[ "$(rows "$work/a/results.csv")" -eq "$total" ] && pass || fail "results.csv has $(rows "$work/a/results.csv") lines, expected $total"
+for f in experiment.yaml summary.csv report.md report.html sets/turns/set.csv sets/difficulty/tree.html; do
+  [ -s "$work/a/$f" ] && pass || fail "experiment did not write $f"
+done
+ls "$work/a/pictures/"*.png > /dev/null 2>&1 && pass || fail "report has no pictures"
+expect_ok "rerun of a finished experiment" "$ppp" experiment "$work/experiment.yaml" -o "$work/a" --quiet
+grep -q "0 runs simulated, 54000 resumed" "$work/out" && pass || fail "rerun did work again: $(cat "$work/out")"
+
+# interrupt: wait (bounded) until some rows are written, then signal
+interrupt() {
+  local dir="$1" signal="$2"
+  "$ppp" experiment "$work/experiment.yaml" -o "$dir" --quiet > "$work/int.out" 2> "$work/int.err" &
+  local pid=$!
+  for _ in $(seq 1 600); do
+    [ "$(rows "$dir/results.csv")" -gt 3000 ] && break
+    sleep 0.02
+  done
+  kill "-$signal" "$pid" 2>/dev/null
+  wait "$pid"
+  echo $?
+}
+status=$(interrupt "$work/b" KILL)
+[ "$status" -eq 137 ] && pass || fail "SIGKILL: exit status $status (the experiment finished before the signal?)"
+[ "$(rows "$work/b/results.csv")" -lt "$total" ] && pass || fail "SIGKILL came too late to test resuming"
+expect_ok "resume after SIGKILL" "$ppp" experiment "$work/experiment.yaml" -o "$work/b" --quiet
+grep -q "resumed" "$work/out" && pass || fail "no resume reported: $(cat "$work/out")"
+cmp -s "$work/a/results.csv" "$work/b/results.csv" && pass || fail "results after SIGKILL + resume differ from an uninterrupted run"
+cmp -s "$work/a/summary.csv" "$work/b/summary.csv" && pass || fail "summary after SIGKILL + resume differs"
+
+status=$(interrupt "$work/c" TERM)
+[ "$status" -eq 130 ] && pass || fail "SIGTERM: exit status $status, expected 130"
+grep -q "Rerun the same command to resume" "$work/int.err" && pass || fail "SIGTERM message: $(cat "$work/int.err")"
+expect_ok "resume after SIGTERM" "$ppp" experiment "$work/experiment.yaml" -o "$work/c" --quiet
+cmp -s "$work/a/results.csv" "$work/c/results.csv" && pass || fail "results after SIGTERM + resume differ"
+
+# simulate and replay
+ppp_file="$work/a/sets/turns/ppp_000.ppp"
+expect_ok "simulate json" "$ppp" simulate --agent astar --problem "$ppp_file" --runs 20 --seed 1 --json
+/usr/bin/python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["runs"]==20 and d["passes"]==20 and d["pass_rate"]==1.0 and d["mean_steps"]>0, d' \
+  "$work/out" && pass || fail "simulate --json: $(cat "$work/out")"
+expect_ok "simulate empty grid" "$ppp" simulate --agent random --problem empty:5x5 --runs 200 --seed 2
+expect_ok "replay" "$ppp" replay "$ppp_file" --agent explorer --memory 5x5 --seed 12345 -o "$work/replay.png"
+[ -s "$work/replay.png" ] && pass || fail "replay wrote no picture"
+expect_ok "compare" "$ppp" compare "$work/a" "$work/a" --set-a turns --set-b difficulty
+grep -q "long_term_explorer" "$work/out" && pass || fail "compare lacks an agent row: $(cat "$work/out")"
+
+# bad input: clear errors, non-zero exits, nothing half-written
+expect_error "unknown agent" "type: unknown agent type 'flier'; valid: astar, random" \
+  "$ppp" simulate --agent flier --problem empty:5x5
+expect_error "budget 0" "budget: expected a move budget" "$ppp" simulate --agent random --problem empty:5x5 --budget 0
+expect_error "runs 0" "--runs: expected a number of runs >= 1" "$ppp" simulate --agent random --problem empty:5x5 --runs 0
+expect_error "even memory" "--memory" "$ppp" simulate --agent explorer --problem empty:5x5 --memory 4x4
+expect_error "memory 0" "--memory" "$ppp" simulate --agent explorer --problem empty:5x5 --memory 0x0
+expect_error "noise" "sensor_noise: expected a probability in [0, 1]" \
+  "$ppp" simulate --agent explorer --problem empty:5x5 --sensor-noise 1.5
+expect_error "range 0" "sensor_range: expected an integer in [1, 7]" \
+  "$ppp" simulate --agent explorer --problem empty:5x5 --sensor-range 0
+expect_error "missing ppp" "$work/none.ppp: cannot open" "$ppp" simulate --agent random --problem "$work/none.ppp"
+printf 'ppp 1\nsize 5 5\nstart 9 9\n' > "$work/bad.ppp"
+expect_error "invalid ppp" "bad.ppp:3: start: cell (9, 9) is outside the 5x5 grid" \
+  "$ppp" simulate --agent random --problem "$work/bad.ppp"
+printf 'agents: agents.yaml\nrusn: 5\nsets:\n  - {name: a}\n' > "$work/typo.yaml"
+expect_error "unknown yaml key" "typo.yaml:2: rusn: unknown key" "$ppp" experiment "$work/typo.yaml" -o "$work/typo"
+printf 'agents: agents.yaml\nruns: lots\nsets:\n  - {name: a}\n' > "$work/type.yaml"
+expect_error "wrong yaml type" "type.yaml:2: runs: expected an integer, got 'lots'" \
+  "$ppp" experiment "$work/type.yaml" -o "$work/typo"
+[ ! -e "$work/typo" ] && pass || fail "a refused experiment left an output directory"
+sed 's/runs: 1500/runs: 1400/' "$work/experiment.yaml" > "$work/other.yaml"
+cp "$work/agents.yaml" "$work/other_agents.yaml"
+expect_error "different experiment" "holds a different experiment" "$ppp" experiment "$work/other.yaml" -o "$work/a"
+cmp -s "$work/a/results.csv" "$work/b/results.csv" && pass || fail "a refused experiment touched the results"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

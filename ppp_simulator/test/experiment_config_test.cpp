@@ -1,0 +1,103 @@
+#include "ppp_simulator/experiment_config.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/text_file.hpp"
+#include "ppp_simulator/experiment_runner.hpp"
+
+namespace ppp {
+namespace simulator {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(ExperimentConfigTest, ShippedDefaultExperiment) {
+  const ExperimentConfig c = loadExperimentConfig(PPP_CONFIG_DIR "/experiment.yaml");
+  EXPECT_EQ(c.runs, 1000);
+  EXPECT_EQ(c.episode.budget, 300);
+  EXPECT_EQ(c.episode.sensor_range, 2);
+  ASSERT_EQ(c.sets.size(), 2u);
+  EXPECT_EQ(c.sets[0].name, "turns");
+  EXPECT_EQ(c.sets[0].generator->fitness, "turns");
+  EXPECT_EQ(c.sets[1].generator->fitness, "difficulty");
+  EXPECT_EQ(c.sets[1].generator->population, 60);
+  EXPECT_EQ(c.sets[1].generator->matings, 10000);
+  ASSERT_EQ(c.agents.size(), 10u);
+  EXPECT_EQ(c.agents[6].name, "explorer_memory_5x5");
+  EXPECT_EQ(c.agents[6].memory_window, 5);
+  EXPECT_EQ(c.agents[7].sensor_noise, 0.1);
+}
+
+class ExperimentYaml : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    fs::create_directories(dir_);
+    std::ofstream(dir_ / "agents.yaml") << "agents:\n  - {name: random, type: random}\n";
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string errorOf(const std::string& text) {
+    const std::string path = (dir_ / "experiment.yaml").string();
+    std::ofstream(path) << text;
+    try {
+      loadExperimentConfig(path);
+    } catch (const Error& e) {
+      const std::string message = e.what();
+      return message.rfind(path + ":", 0) == 0 ? message.substr(path.size() + 1) : message;
+    }
+    return "no error";
+  }
+  fs::path dir_ = fs::temp_directory_path() / "experiment_config_test";
+};
+
+TEST_F(ExperimentYaml, BadInputNamesKeyAndLine) {
+  const std::string sets = "sets:\n  - {name: a, generator: {matings: 5}}\n";
+  EXPECT_EQ(errorOf("agents: agents.yaml\n" + sets), "no error");
+  EXPECT_EQ(errorOf("agents: agents.yaml\nrusn: 3\n" + sets).rfind("2: rusn: unknown key; valid keys: ", 0), 0u);
+  EXPECT_EQ(errorOf("agents: agents.yaml\nruns: many\n" + sets), "2: runs: expected an integer, got 'many'");
+  EXPECT_EQ(errorOf("agents: agents.yaml\nruns: 0\n" + sets).rfind(" runs: expected runs per agent per PPP", 0), 0u);
+  EXPECT_EQ(errorOf("agents: agents.yaml\nbudget: 0\n" + sets).rfind(" budget: expected a move budget", 0), 0u);
+  EXPECT_EQ(errorOf("agents: agents.yaml\nsensor_range: 0\n" + sets).rfind(" sensor_range: expected", 0), 0u);
+  EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - {generator: {matings: 5}}\n"),
+            "3: sets[0].name: missing; every set needs a name");
+  EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - name: a\n    generator: {fitnes: turns}\n")
+                .rfind("4: sets[0].generator.fitnes: unknown key", 0),
+            0u);
+  EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - name: a\n    generator: {fitness: hardest}\n")
+                .rfind(" sets[0].generator.fitness: unknown fitness 'hardest'", 0),
+            0u);
+  EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - {name: a}\n  - {name: a}\n").rfind(" sets: duplicate set name", 0),
+            0u);
+  // The agents file is named with its full path (the message starts with it, not with experiment.yaml's).
+  EXPECT_NE(errorOf("agents: missing.yaml\n" + sets).find("missing.yaml: cannot open"), std::string::npos);
+  EXPECT_EQ(errorOf("agents: agents.yaml\n").rfind(" sets: an experiment needs at least one PPP set", 0), 0u);
+}
+
+TEST_F(ExperimentYaml, DirectoryHoldingAnotherExperimentIsRefused) {
+  ExperimentConfig c;
+  c.sets.push_back(SetSpec{"a", generator::GeneratorOptions{}, ""});
+  c.agents.push_back(agents::AgentConfig{"random", "random", 0, 0.0});
+  const std::string out = (dir_ / "out").string();
+  EXPECT_NO_THROW(checkExperimentDirectory(c, out));  // does not exist yet
+  fs::create_directories(out);
+  writeFileAtomically(out + "/experiment.yaml", experimentFingerprint(c));
+  EXPECT_NO_THROW(checkExperimentDirectory(c, out));  // the same experiment: resume
+  c.runs = 5;
+  try {
+    checkExperimentDirectory(c, out);
+    FAIL();
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("holds a different experiment"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("line 4"), std::string::npos) << e.what();
+  }
+  fs::remove(out + "/experiment.yaml");
+  std::ofstream(out + "/notes.txt") << "mine";
+  EXPECT_THROW(checkExperimentDirectory(c, out), IoError);
+}
+
+}  // namespace
+}  // namespace simulator
+}  // namespace ppp

@@ -1,0 +1,256 @@
+#include "ppp_simulator/report.hpp"
+
+#include <gtest/gtest.h>
+#include <png.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/picture.hpp"
+#include "ppp_core/ppp_file.hpp"
+#include "ppp_core/text_file.hpp"
+#include "ppp_generator/tree_html.hpp"
+
+namespace ppp::simulator {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A fresh directory under the system temp directory, removed at the end of the test.
+class ReportTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = (fs::temp_directory_path() / ("report_test_" + std::to_string(::getpid()) + "_" +
+                                         ::testing::UnitTest::GetInstance()->current_test_info()->name()))
+               .string();
+    fs::remove_all(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string read(const std::string& relative) const { return readTextFile(dir_ + "/" + relative, 16 << 20); }
+
+  std::string dir_;
+};
+
+/// `passes` of 4 runs of `agent` on one PPP.
+void addRuns(std::vector<EpisodeResult>* results, const std::string& set, const std::string& problem,
+             const std::string& agent, int passes) {
+  for (int run = 0; run < 4; ++run) {
+    EpisodeResult r;
+    r.set = set;
+    r.problem = problem;
+    r.agent = agent;
+    r.run = run;
+    r.seed = 1000 + static_cast<std::uint64_t>(run);
+    r.passed = run < passes;
+    r.steps = r.passed ? 10 : 300;
+    r.reason = r.passed ? reason::kGoalReached : reason::kBudgetExhausted;
+    results->push_back(r);
+  }
+}
+
+/// A 5×5 PPP with a wall at x = 2 from the top (rows 0–3), start top-left, goal bottom-right.
+Problem walledProblem() {
+  Problem problem = Problem::empty(5, 5, 4);
+  problem.obstacles.push_back(Obstacle{Shape::VerticalBar, 2, 0, 4, 1});
+  return problem;
+}
+
+// 2 sets × 2 PPPs × 3 agents, 4 runs each. Mean pass rates over the PPPs, by hand:
+//   alpha: astar (4 + 4)/8 → 100.00%, explorer (3/4 + 2/4)/2 → 62.50%, random (1/4 + 0)/2 → 12.50%
+//   beta:  astar 100.00%,             explorer (2/4 + 1/4)/2 → 37.50%, random 0.00%
+ReportInput handMadeInput() {
+  std::vector<EpisodeResult> results;
+  addRuns(&results, "alpha", "p1", "astar", 4);
+  addRuns(&results, "alpha", "p2", "astar", 4);
+  addRuns(&results, "alpha", "p1", "explorer", 3);
+  addRuns(&results, "alpha", "p2", "explorer", 2);
+  addRuns(&results, "alpha", "p1", "random", 1);
+  addRuns(&results, "alpha", "p2", "random", 0);
+  addRuns(&results, "beta", "q1", "astar", 4);
+  addRuns(&results, "beta", "q2", "astar", 4);
+  addRuns(&results, "beta", "q1", "explorer", 2);
+  addRuns(&results, "beta", "q2", "explorer", 1);
+  addRuns(&results, "beta", "q1", "random", 0);
+  addRuns(&results, "beta", "q2", "random", 0);
+
+  ReportInput input;
+  input.title = "Faults <&> of agents";
+  input.config_text = "# experiment\nruns: 4\nseed: 7\nnote: \"<script>alert(1)</script>\"\n";
+  input.rates = computePassRates(results, {"alpha", "beta"}, {"astar", "explorer", "random"});
+  input.comparisons = {{"alpha", "beta"}};
+  FailureExample failure;
+  failure.set = "beta";
+  failure.problem = "q1";
+  failure.agent = "random";
+  failure.run = 3;
+  failure.seed = 12345;
+  failure.ppp = walledProblem();
+  failure.path = {{0, 0}, {1, 0}, {1, 1}, {1, 2}, {1, 3}, {1, 4}, {2, 4}};
+  failure.reason = reason::kBudgetExhausted;
+  input.failures.push_back(failure);
+  return input;
+}
+
+TEST_F(ReportTest, WritesEveryFile) {
+  writeReport(dir_, handMadeInput());
+  for (const char* file : {"report.md", "report.html", "plots/pass_rate_by_agent.svg",
+                           "plots/pass_rate_by_ppp_alpha.svg", "plots/pass_rate_by_ppp_beta.svg",
+                           "pictures/beta_q1_random.png", "ppps/beta_q1.ppp"}) {
+    EXPECT_TRUE(fs::is_regular_file(dir_ + "/" + file)) << file;
+  }
+  for (const auto& entry : fs::recursive_directory_iterator(dir_)) {
+    EXPECT_NE(entry.path().extension(), ".tmp") << entry.path();
+  }
+  EXPECT_EQ(readPppFile(dir_ + "/ppps/beta_q1.ppp"), walledProblem());
+}
+
+TEST_F(ReportTest, MarkdownHasTheHandComputedPercentagesAndSectionsInOrder) {
+  writeReport(dir_, handMadeInput());
+  const std::string md = read("report.md");
+  EXPECT_NE(md.find("| Agent | `alpha` | `beta` |\n|:---|---:|---:|\n"), std::string::npos) << md;
+  EXPECT_NE(md.find("| `astar` | 100.00% | 100.00% |\n"), std::string::npos) << md;
+  EXPECT_NE(md.find("| `explorer` | 62.50% | 37.50% |\n"), std::string::npos) << md;
+  EXPECT_NE(md.find("| `random` | 12.50% | 0.00% |\n"), std::string::npos) << md;
+  EXPECT_NE(md.find("| *PPPs* | 2 | 2 |\n"), std::string::npos) << md;
+  EXPECT_NE(md.find("| *runs per PPP and agent* | 4 | 4 |\n"), std::string::npos) << md;
+  EXPECT_NE(md.find("| *runs in total* | 24 | 24 |\n"), std::string::npos) << md;
+
+  // Mann–Whitney, explorer: A = {0.75, 0.5}, B = {0.5, 0.25}: ranks 0.25→1, 0.5→2.5 (twice), 0.75→4;
+  // R_A = 6.5, U_A = 6.5 − 3 = 3.5, U_B = 0.5, U = 0.5; σ² = 4/12·(5 − 6/12) = 1.5, z = 1.5/√1.5 = 1.225,
+  // p = erfc(1.2247/√2) = 0.2207.
+  EXPECT_NE(md.find("| `explorer` | 62.50% | 37.50% | 2 | 2 | 0.5 | 1.225 | 0.2207 | no |\n"), std::string::npos)
+      << md;
+  // astar: all four rates 1 → σ = 0, z = 0, p = 1.
+  EXPECT_NE(md.find("| `astar` | 100.00% | 100.00% | 2 | 2 | 2 | 0.000 | 1.0000 | no |\n"), std::string::npos) << md;
+
+  EXPECT_NE(md.find("](plots/pass_rate_by_agent.svg)"), std::string::npos);
+  EXPECT_NE(md.find("](plots/pass_rate_by_ppp_alpha.svg)"), std::string::npos);
+  EXPECT_NE(md.find("](plots/pass_rate_by_ppp_beta.svg)"), std::string::npos);
+  EXPECT_NE(md.find("](pictures/beta_q1_random.png)"), std::string::npos);
+  EXPECT_NE(md.find("`ppp replay ppps/beta_q1.ppp --agent random --seed 12345 -o path.png`"), std::string::npos);
+  EXPECT_NE(md.find("run 3, seed `12345`"), std::string::npos);
+  EXPECT_NE(md.find("```yaml\n# experiment\nruns: 4\nseed: 7\nnote: \"<script>alert(1)</script>\"\n```\n"),
+            std::string::npos);  // verbatim in a fence
+
+  const std::size_t title = md.find("# Faults \\<\\&\\> of agents\n");
+  const std::size_t rates = md.find("## Pass rates");
+  const std::size_t tests = md.find("## Mann");
+  const std::size_t plots = md.find("## Plots");
+  const std::size_t hardest = md.find("## Hardest PPPs");
+  const std::size_t config = md.find("## Configuration");
+  EXPECT_EQ(title, 0u);
+  EXPECT_LT(title, rates);
+  EXPECT_LT(rates, tests);
+  EXPECT_LT(tests, plots);
+  EXPECT_LT(plots, hardest);
+  EXPECT_LT(hardest, config);
+  EXPECT_NE(config, std::string::npos);
+}
+
+TEST_F(ReportTest, HtmlIsSelfContainedAndEscaped) {
+  writeReport(dir_, handMadeInput());
+  const std::string html = read("report.html");
+  EXPECT_EQ(html.find("http://"), std::string::npos);
+  EXPECT_EQ(html.find("https://"), std::string::npos);
+  EXPECT_EQ(html.find("src=\"/"), std::string::npos);
+  EXPECT_EQ(html.find("<link"), std::string::npos);
+  EXPECT_NE(html.find("<svg"), std::string::npos);
+  EXPECT_NE(html.find("data:image/png;base64,"), std::string::npos);
+  // The embedded picture is the PNG file.
+  const std::string png = read("pictures/beta_q1_random.png");
+  EXPECT_NE(html.find("data:image/png;base64," + generator::base64Encode(png) + "\""), std::string::npos);
+  // Escaping: title and configuration.
+  EXPECT_NE(html.find("<title>Faults &lt;&amp;&gt; of agents</title>"), std::string::npos);
+  EXPECT_EQ(html.find("<script>"), std::string::npos);
+  EXPECT_NE(html.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
+  EXPECT_NE(html.find(">62.50%</td>"), std::string::npos);
+  EXPECT_NE(html.find("ppp replay ppps/beta_q1.ppp --agent random --seed 12345 -o path.png"), std::string::npos);
+}
+
+TEST_F(ReportTest, PictureIsAPngOfTheProblemWithThePath) {
+  const ReportInput input = handMadeInput();
+  writeReport(dir_, input);
+  const std::string png = read("pictures/beta_q1_random.png");
+  ASSERT_GT(png.size(), 8u);
+  EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  ASSERT_TRUE(png_image_begin_read_from_memory(&image, png.data(), png.size())) << image.message;
+  image.format = PNG_FORMAT_RGB;
+  // 5 cells of 40 pixels plus the closing grid line.
+  EXPECT_EQ(image.width, 201u);
+  EXPECT_EQ(image.height, 201u);
+  std::vector<std::uint8_t> rgb(PNG_IMAGE_SIZE(image));
+  ASSERT_TRUE(png_image_finish_read(&image, nullptr, rgb.data(), 0, nullptr)) << image.message;
+
+  PictureOptions options;
+  options.cell_pixels = 40;
+  EXPECT_EQ(rgb, renderProblemRgb(input.failures[0].ppp, input.failures[0].path, options));
+  // The path is drawn: the centre of cell (1, 2) is path blue.
+  const Pixel centre = cellCentre(Cell{1, 2}, options);
+  const std::size_t at = (static_cast<std::size_t>(centre.y) * 201 + static_cast<std::size_t>(centre.x)) * 3;
+  EXPECT_EQ((Rgb{rgb[at], rgb[at + 1], rgb[at + 2]}), kPathColour);
+}
+
+TEST_F(ReportTest, UnsafeNamesAreSanitisedInFileNamesButShownInFull) {
+  ReportInput input = handMadeInput();
+  input.failures[0].set = "../be ta";
+  input.failures[0].agent = "wall|follower";
+  writeReport(dir_, input);
+  // '/' and ' ' become '_'; a leading '.' gets a '_' in front so no name is hidden or climbs out.
+  EXPECT_TRUE(fs::is_regular_file(dir_ + "/pictures/_.._be_ta_q1_wall_follower.png"));
+  EXPECT_TRUE(fs::is_regular_file(dir_ + "/ppps/_.._be_ta_q1.ppp"));
+  const std::string md = read("report.md");
+  EXPECT_NE(md.find("`../be ta`"), std::string::npos);
+  EXPECT_NE(md.find("--agent 'wall|follower'"), std::string::npos);
+}
+
+TEST_F(ReportTest, NoFailuresAndNoComparisonsStillMakeAReport) {
+  ReportInput input = handMadeInput();
+  input.failures.clear();
+  input.comparisons.clear();
+  input.config_text.clear();
+  writeReport(dir_, input);
+  const std::string md = read("report.md");
+  EXPECT_NE(md.find("No set pairs were compared."), std::string::npos);
+  EXPECT_NE(md.find("No failed runs on the hardest PPPs were recorded."), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir_ + "/pictures"));
+}
+
+TEST_F(ReportTest, UnknownComparedSetIsRejectedBeforeWritingAnything) {
+  ReportInput input = handMadeInput();
+  input.comparisons = {{"alpha", "gamma"}};
+  try {
+    writeReport(dir_, input);
+    FAIL() << "expected InvalidArgument";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.name(), "comparisons");
+    EXPECT_NE(std::string(e.what()).find("'gamma'"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir_));
+}
+
+TEST_F(ReportTest, PathOffTheGridIsRejectedNamingTheFailure) {
+  ReportInput input = handMadeInput();
+  input.failures[0].path.push_back(Cell{5, 4});
+  try {
+    writeReport(dir_, input);
+    FAIL() << "expected InvalidArgument";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.name(), "failures");
+    EXPECT_NE(std::string(e.what()).find("beta / q1 / random"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir_));
+}
+
+TEST_F(ReportTest, UnwritableDirectoryThrowsIoError) {
+  EXPECT_THROW(writeReport("/proc/report-test-cannot-exist", handMadeInput()), IoError);
+}
+
+}  // namespace
+}  // namespace ppp::simulator

@@ -1,0 +1,85 @@
+#include "ppp_simulator/results_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "ppp_core/error.hpp"
+
+namespace ppp {
+namespace simulator {
+namespace {
+
+namespace fs = std::filesystem;
+
+EpisodeResult row(int run, bool passed) {
+  EpisodeResult r;
+  r.set = "turns";
+  r.problem = "ppp_000";
+  r.agent = "random";
+  r.run = run;
+  r.seed = 1000 + run;
+  r.passed = passed;
+  r.steps = 10 + run;
+  r.reason = passed ? "goal_reached" : "budget_exhausted";
+  return r;
+}
+
+class ResultsFileTest : public ::testing::Test {
+ protected:
+  void TearDown() override { fs::remove(path_); }
+  std::string path_ = (fs::temp_directory_path() / "results_file_test.csv").string();
+};
+
+TEST_F(ResultsFileTest, AppendsAndResumes) {
+  {
+    ResultsFile file(path_);
+    EXPECT_TRUE(file.existing().empty());
+    file.append({row(0, true), row(1, false)});
+  }
+  ResultsFile again(path_);
+  ASSERT_EQ(again.existing().size(), 2u);
+  EXPECT_EQ(again.existing()[1].steps, 11);
+  EXPECT_EQ(again.done().count(RunKey{"turns", "ppp_000", "random", 1}), 1u);
+  again.append({row(2, true)});
+  EXPECT_EQ(readResultsFile(path_).size(), 3u);
+}
+
+TEST_F(ResultsFileTest, AHalfWrittenLastLineIsCutOff) {
+  { ResultsFile(path_).append({row(0, true), row(1, true)}); }
+  std::ofstream(path_, std::ios::app) << "turns,ppp_000,random,2,10";  // the process died mid-write
+  ResultsFile file(path_);
+  EXPECT_EQ(file.existing().size(), 2u);
+  file.append({row(2, false)});
+  const auto rows = readResultsFile(path_);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[2].run, 2);
+  EXPECT_FALSE(rows[2].passed);
+}
+
+TEST_F(ResultsFileTest, ForeignFilesAreRefused) {
+  std::ofstream(path_) << "a,b,c\n1,2,3\n";
+  EXPECT_THROW(ResultsFile{path_}, ParseError);
+  std::ofstream(path_) << "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason\n"
+                       << "turns,ppp_000,random,zero,1,1,1,0,1,1,goal_reached\n";
+  try {
+    ResultsFile file(path_);
+    FAIL();
+  } catch (const ParseError& e) {
+    EXPECT_EQ(std::string(e.what()), path_ + ":2: run: expected a whole number, got 'zero'");
+  }
+}
+
+TEST_F(ResultsFileTest, RewriteKeepsTheGivenOrder) {
+  ResultsFile file(path_);
+  file.append({row(1, true), row(0, true)});
+  file.rewrite({row(0, true), row(1, true)});
+  const auto rows = readResultsFile(path_);
+  EXPECT_EQ(rows[0].run, 0);
+  EXPECT_EQ(rows[1].run, 1);
+}
+
+}  // namespace
+}  // namespace simulator
+}  // namespace ppp

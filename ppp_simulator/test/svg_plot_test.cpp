@@ -1,0 +1,107 @@
+#include "ppp_simulator/svg_plot.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "ppp_core/error.hpp"
+
+namespace ppp::simulator {
+namespace {
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
+  return n;
+}
+
+Chart twoByThree() {
+  Chart chart;
+  chart.title = "Pass <rates> & more";
+  chart.x_label = "agent";
+  chart.y_label = "pass rate (%)";
+  chart.categories = {"astar", "random", "explorer"};
+  chart.series = {{"set \"A\"", {100, 12.5, 50}}, {"set B", {100, std::nan(""), 0}}};
+  return chart;
+}
+
+TEST(EscapeMarkup, EscapesTheFiveSpecialCharacters) {
+  EXPECT_EQ(escapeMarkup("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&#39;");
+  EXPECT_EQ(escapeMarkup("plain"), "plain");
+}
+
+TEST(GroupedBarChartSvg, DrawsOneBarPerValueWithTooltipsAndEscapedText) {
+  const std::string svg = groupedBarChartSvg(twoByThree(), false);
+  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+  EXPECT_EQ(count(svg, "</svg>"), 1u);
+  // Five values (one missing) → five bars, each with its tooltip.
+  EXPECT_EQ(count(svg, "<title>set &quot;A&quot; on "), 3u);
+  EXPECT_EQ(count(svg, "<title>set B on "), 2u);
+  EXPECT_NE(svg.find("set &quot;A&quot; on random: 12.50%"), std::string::npos);
+  EXPECT_NE(svg.find("Pass &lt;rates&gt; &amp; more"), std::string::npos);
+  EXPECT_EQ(svg.find("<rates>"), std::string::npos);
+  EXPECT_EQ(svg.find("http"), std::string::npos);  // inline: no namespace URL, nothing to fetch
+}
+
+TEST(GroupedBarChartSvg, StandaloneHasTheXmlDeclarationAndNamespace) {
+  const std::string svg = groupedBarChartSvg(twoByThree(), true);
+  EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
+  EXPECT_NE(svg.find("xmlns=\"http://www.w3.org/2000/svg\""), std::string::npos);
+}
+
+TEST(LineChartSvg, DrawsAMarkerPerValueAndBreaksLinesAtMissingValues) {
+  Chart chart = twoByThree();
+  chart.series[1].values = {100, std::nan(""), 0};
+  const std::string svg = lineChartSvg(chart, false);
+  EXPECT_EQ(count(svg, "<title>set B on "), 2u);
+  // Series B is two separate pieces: two "M" moves in its path, no "L".
+  const std::size_t path = svg.find("stroke=\"#f28e2b\" stroke-width=\"1.6\" stroke-opacity");
+  ASSERT_NE(path, std::string::npos);
+  const std::size_t d = svg.rfind("<path d=\"", path);
+  const std::string data = svg.substr(d, path - d);
+  EXPECT_EQ(count(data, "M"), 2u) << data;
+  EXPECT_EQ(count(data, "L"), 0u) << data;
+}
+
+TEST(Charts, EmptyChartsStillRender) {
+  Chart chart;
+  chart.title = "nothing";
+  EXPECT_NE(groupedBarChartSvg(chart, false).find("no data"), std::string::npos);
+  EXPECT_NE(lineChartSvg(chart, false).find("no data"), std::string::npos);
+}
+
+TEST(Charts, ManyLongCategoriesAreSlantedAndShortened) {
+  Chart chart;
+  chart.title = "many";
+  for (int i = 0; i < 40; ++i) {
+    chart.categories.push_back("a_rather_long_problem_identifier_number_" + std::to_string(i));
+  }
+  chart.series = {{"x", std::vector<double>(40, 50.0)}};
+  const std::string svg = lineChartSvg(chart, false);
+  EXPECT_NE(svg.find("rotate(-40)"), std::string::npos);
+  EXPECT_NE(svg.find("\xE2\x80\xA6"), std::string::npos);  // ellipsis in the shortened label
+  EXPECT_NE(svg.find("<title>a_rather_long_problem_identifier_number_39</title>"), std::string::npos);
+}
+
+TEST(Chart, ValidateRejectsMismatchedSeriesAndBadScale) {
+  Chart chart = twoByThree();
+  chart.series[0].values.pop_back();
+  try {
+    groupedBarChartSvg(chart, false);
+    FAIL() << "expected InvalidArgument";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.name(), "series");
+  }
+  chart = twoByThree();
+  chart.y_max = 0;
+  try {
+    lineChartSvg(chart, false);
+    FAIL() << "expected InvalidArgument";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.name(), "y_max");
+  }
+}
+
+}  // namespace
+}  // namespace ppp::simulator

@@ -1,0 +1,94 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "ppp_core/grid.hpp"
+
+namespace ppp {
+
+/// Scan cell values (the same numbers as ppp_msgs/EpisodeScan).
+constexpr std::int8_t kScanUnknown = -1;      ///< Not in line of sight.
+constexpr std::int8_t kScanFree = 0;          ///< Seen free.
+constexpr std::int8_t kScanObstacle = 100;    ///< Seen obstacle.
+constexpr std::int8_t kScanOutOfBounds = -2;  ///< Beyond the edge of the map.
+
+/// Largest sensor range: a (2*7+1)^2 = 225-cell window.
+constexpr int kMaxSensorRange = 7;
+/// Cells in the largest window.
+constexpr int kMaxScanCells = (2 * kMaxSensorRange + 1) * (2 * kMaxSensorRange + 1);
+
+/// The robot's range sensor: which cells it reports and how reliably.
+struct SensorOptions {
+  int range = 2;       ///< Chebyshev radius of the square window (2: 5x5).
+  double noise = 0.0;  ///< Probability that a sensed free/obstacle cell is reported flipped.
+  /// @throws InvalidArgument("sensor_range" or "sensor_noise", ...) when out of range.
+  void validate() const;
+};
+
+/// Computes scans: cells within the window that are in line of sight of the robot's cell (the perfect-sensor
+/// rule of lineOfSight()), each free / obstacle / out of bounds, others unknown. Noise flips a sensed on-grid
+/// cell (never the robot's own) with probability `noise`, decided by a hash of (noise seed, step, cell), so
+/// a scan does not depend on the order in which cells are read or on where it is computed.
+class SensorModel {
+ public:
+  /// Precomputes the line-of-sight blockers of every window offset. @throws InvalidArgument for bad options.
+  explicit SensorModel(const SensorOptions& options);
+  /// The options in effect.
+  const SensorOptions& options() const { return options_; }
+  /// Side of the window, 2 * range + 1.
+  int side() const { return 2 * options_.range + 1; }
+  /// Fills `window` (side*side cells, row-major from (-range, -range), x fastest) as seen from `position`.
+  void scan(const Grid& grid, Cell position, std::uint64_t noise_seed, int step, std::int8_t* window) const;
+
+ private:
+  SensorOptions options_;
+  std::vector<std::vector<int>> blockers_;  // per window index: window indices that must be free
+};
+
+/// What an agent receives each step: its cell, the goal, whether its last move bumped, and the scan window.
+/// In-process the window is computed on first read (agents that never look cost nothing); from a message it
+/// is filled in advance. Either way the values are the same.
+class Scan {
+ public:
+  /// A scan computed lazily by `sensor` from `grid` (both must outlive the scan).
+  Scan(const SensorModel& sensor, const Grid& grid, Cell position, Cell goal, bool bumped, int step,
+       std::uint64_t noise_seed);
+  /// A scan from received window cells. @throws InvalidArgument when the count is not (2*range+1)^2.
+  Scan(int range, const std::vector<std::int8_t>& cells, Cell position, Cell goal, bool bumped, int step);
+
+  Cell position() const { return position_; }  ///< The agent's cell (grid coordinates, y down).
+  Cell goal() const { return goal_; }          ///< The goal cell.
+  bool bumped() const { return bumped_; }      ///< True when the previous action hit an obstacle or the edge.
+  int step() const { return step_; }           ///< Steps taken so far in the episode.
+  int range() const { return range_; }         ///< Window radius.
+  /// The reported value at offset (dx, dy) from the agent, |dx|, |dy| <= range.
+  std::int8_t at(int dx, int dy) const {
+    if (!filled_) fill();
+    return cells_[(dy + range_) * (2 * range_ + 1) + (dx + range_)];
+  }
+  /// The reported value of an absolute cell, or kScanUnknown outside the window.
+  std::int8_t atCell(Cell c) const;
+  /// All window cells, row-major.
+  const std::int8_t* cells() const {
+    if (!filled_) fill();
+    return cells_.data();
+  }
+
+ private:
+  void fill() const;
+
+  const SensorModel* sensor_ = nullptr;
+  const Grid* grid_ = nullptr;
+  std::uint64_t noise_seed_ = 0;
+  Cell position_;
+  Cell goal_;
+  bool bumped_ = false;
+  int step_ = 0;
+  int range_ = 0;
+  mutable bool filled_ = false;
+  mutable std::array<std::int8_t, kMaxScanCells> cells_{};
+};
+
+}  // namespace ppp

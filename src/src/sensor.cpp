@@ -1,0 +1,114 @@
+#include "ppp_core/sensor.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/visibility.hpp"
+
+namespace ppp {
+
+namespace {
+
+/// A uniform number in [0, 1) from (seed, step, index), independent of any call order.
+double noiseDraw(std::uint64_t seed, int step, int index) {
+  std::uint64_t z = seed ^ (static_cast<std::uint64_t>(step) * 0x9E3779B97F4A7C15ULL) ^
+                    (static_cast<std::uint64_t>(index) * 0xD1B54A32D192ED03ULL);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  z ^= z >> 31;
+  return static_cast<double>(z >> 11) * 0x1.0p-53;
+}
+
+}  // namespace
+
+void SensorOptions::validate() const {
+  if (range < 1 || range > kMaxSensorRange) {
+    throw InvalidArgument("sensor_range", "expected an integer in [1, " + std::to_string(kMaxSensorRange) +
+                                              "], got " + std::to_string(range));
+  }
+  if (!(noise >= 0.0 && noise <= 1.0)) {
+    throw InvalidArgument("sensor_noise", "expected a probability in [0, 1], got " + std::to_string(noise));
+  }
+}
+
+SensorModel::SensorModel(const SensorOptions& options) : options_(options) {
+  options_.validate();
+  const int r = options_.range;
+  const int s = side();
+  blockers_.resize(static_cast<std::size_t>(s) * s);
+  for (int dy = -r; dy <= r; ++dy) {
+    for (int dx = -r; dx <= r; ++dx) {
+      for (Cell c : cellsCrossed(Cell{0, 0}, Cell{dx, dy})) {
+        blockers_[(dy + r) * s + (dx + r)].push_back((c.y + r) * s + (c.x + r));
+      }
+    }
+  }
+}
+
+void SensorModel::scan(const Grid& grid, Cell position, std::uint64_t noise_seed, int step,
+                       std::int8_t* window) const {
+  const int r = options_.range;
+  const int s = side();
+  // Physical truth first: the line of sight depends on the real obstacles, not on what noise reports.
+  std::array<std::int8_t, kMaxScanCells> truth;
+  for (int dy = -r; dy <= r; ++dy) {
+    for (int dx = -r; dx <= r; ++dx) {
+      const Cell c{position.x + dx, position.y + dy};
+      truth[(dy + r) * s + (dx + r)] =
+          !grid.contains(c) ? kScanOutOfBounds : grid.isObstacle(c) ? kScanObstacle : kScanFree;
+    }
+  }
+  const int centre = r * s + r;
+  for (int i = 0; i < s * s; ++i) {
+    bool visible = true;
+    for (int blocker : blockers_[i]) {
+      if (truth[blocker] == kScanObstacle) {
+        visible = false;
+        break;
+      }
+    }
+    std::int8_t value = visible ? truth[i] : kScanUnknown;
+    if (options_.noise > 0.0 && i != centre && (value == kScanFree || value == kScanObstacle) &&
+        noiseDraw(noise_seed, step, i) < options_.noise) {
+      value = value == kScanFree ? kScanObstacle : kScanFree;
+    }
+    window[i] = value;
+  }
+}
+
+Scan::Scan(const SensorModel& sensor, const Grid& grid, Cell position, Cell goal, bool bumped, int step,
+           std::uint64_t noise_seed)
+    : sensor_(&sensor),
+      grid_(&grid),
+      noise_seed_(noise_seed),
+      position_(position),
+      goal_(goal),
+      bumped_(bumped),
+      step_(step),
+      range_(sensor.options().range) {}
+
+Scan::Scan(int range, const std::vector<std::int8_t>& cells, Cell position, Cell goal, bool bumped, int step)
+    : position_(position), goal_(goal), bumped_(bumped), step_(step), range_(range), filled_(true) {
+  if (range < 1 || range > kMaxSensorRange) throw InvalidArgument("range", "outside [1, 7]: " + std::to_string(range));
+  const std::size_t expected = static_cast<std::size_t>(2 * range + 1) * (2 * range + 1);
+  if (cells.size() != expected) {
+    throw InvalidArgument("cells", "expected " + std::to_string(expected) + " window cells for range " +
+                                       std::to_string(range) + ", got " + std::to_string(cells.size()));
+  }
+  std::copy(cells.begin(), cells.end(), cells_.begin());
+}
+
+std::int8_t Scan::atCell(Cell c) const {
+  const int dx = c.x - position_.x;
+  const int dy = c.y - position_.y;
+  if (dx < -range_ || dx > range_ || dy < -range_ || dy > range_) return kScanUnknown;
+  return at(dx, dy);
+}
+
+void Scan::fill() const {
+  sensor_->scan(*grid_, position_, noise_seed_, step_, cells_.data());
+  filled_ = true;
+}
+
+}  // namespace ppp
