@@ -31,14 +31,25 @@ for bench in "${benchmarks[@]}"; do
 done
 # Generator benchmarks live in the catkin workspace (package ppp_generator).
 PATH="/usr/bin:$PATH" scripts/build.sh > /dev/null
-for bench in upgma_bench generator_bench; do
+for bench in ppp_generator/upgma_bench ppp_generator/generator_bench ppp_agents/agent_step_bench \
+  ppp_simulator/episode_bench; do
   echo "== ${bench}"
-  "build/devel/lib/ppp_generator/${bench}" \
+  "build/devel/lib/${bench}" \
     --benchmark_repetitions=3 \
     --benchmark_report_aggregates_only=true \
     --benchmark_format=console \
-    --benchmark_out="${results_dir}/${bench}.json" \
+    --benchmark_out="${results_dir}/$(basename "${bench}").json" \
     --benchmark_out_format=json \
     "$@"
+done
+
+# The default experiment end to end (generation included), on 1 and on 2 worker threads.
+for threads in 1 2; do
+  out="$(mktemp -d)"
+  start=$(date +%s.%N)
+  scripts/ppp experiment config/experiment.yaml -o "${out}/experiment" --threads "${threads}" --quiet > /dev/null
+  end=$(date +%s.%N)
+  echo "== default experiment (2 x 60 PPPs x 10 agents x 1000 runs), ${threads} thread(s): $(awk "BEGIN { printf \"%.1f\", ${end} - ${start} }") s"
+  rm -rf "${out}"
 done
 echo "JSON results: ${repo}/${results_dir}/"

@@ -51,9 +51,8 @@ Action BumperAgent::act(const Scan& scan) {
   const Cell position = scan.position();
   if (goal_seen_ || goalInWindow(scan)) {
     memory_.update(scan);
-    if (!goal_seen_) goal_seen_ = goalSeen(scan);
     Action action;
-    if (goal_seen_ && navigator_.towardsGoal(memory_, position, scan.goal(), &action)) {
+    if (navigator_.towardsSeenGoal(scan, memory_, &goal_seen_, &action)) {
       last_ = moveIndex(action);
       return action;
     }

@@ -103,11 +103,8 @@ bool ExplorerAgent::frontierStep(Cell position, Action* action) {
 Action ExplorerAgent::act(const Scan& scan) {
   const Cell position = scan.position();
   memory_.update(scan);
-  if (!goal_seen_) goal_seen_ = goalSeen(scan);
-  if (goal_seen_) {
-    Action action;
-    if (navigator_.towardsGoal(memory_, position, scan.goal(), &action)) return action;
-  }
+  Action action;
+  if (navigator_.towardsSeenGoal(scan, memory_, &goal_seen_, &action)) return action;
   if (scan.range() != sight_range_) prepareSight(scan.range());
   collectUnknown(position, sight_range_);
   Action best[4];
@@ -131,10 +128,7 @@ Action ExplorerAgent::act(const Scan& scan) {
     path_next_ = 0;
     return best[best_count == 1 ? 0 : rng_.below(static_cast<std::uint64_t>(best_count))];
   }
-  if (long_term_) {
-    Action action;
-    if (frontierStep(position, &action)) return action;
-  }
+  if (long_term_ && frontierStep(position, &action)) return action;
   if (free_count > 0) return free[free_count == 1 ? 0 : rng_.below(static_cast<std::uint64_t>(free_count))];
   return kMoves[rng_.below(4)];
 }

@@ -33,5 +33,10 @@ bool Navigator::towardsGoal(const AgentMemory& memory, Cell from, Cell goal, Act
   return true;
 }
 
+bool Navigator::towardsSeenGoal(const Scan& scan, const AgentMemory& memory, bool* goal_seen, Action* action) {
+  if (!*goal_seen) *goal_seen = goalSeen(scan);
+  return *goal_seen && towardsGoal(memory, scan.position(), scan.goal(), action);
+}
+
 }  // namespace agents
 }  // namespace ppp

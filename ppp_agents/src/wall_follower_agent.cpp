@@ -22,13 +22,9 @@ void WallFollowerAgent::reset(const EpisodeInfo& info) {
 }
 
 Action WallFollowerAgent::act(const Scan& scan) {
-  const Cell position = scan.position();
   memory_.update(scan);
-  if (!goal_seen_) goal_seen_ = goalSeen(scan);
-  if (goal_seen_) {
-    Action action;
-    if (navigator_.towardsGoal(memory_, position, scan.goal(), &action)) return action;
-  }
+  Action action;
+  if (navigator_.towardsSeenGoal(scan, memory_, &goal_seen_, &action)) return action;
   // The four neighbours are always in line of sight, so the scan reports them (noise may misreport them).
   const auto wall = [&](int direction) {
     const Cell n = target(Cell{0, 0}, kMoves[direction]);

@@ -15,6 +15,8 @@ namespace ppp {
 namespace agents {
 namespace {
 
+using test::config;
+
 const char* const kTypes =
     "astar, random, wall_follower_left, wall_follower_right, explorer, long_term_explorer, bumper, decision_bumper";
 
@@ -46,15 +48,6 @@ std::vector<AgentConfig> read(const std::string& yaml) {
   const YAML::Node root = YAML::Load(yaml);
   YamlMapReader reader(root, "agents.yaml");
   return readAgentConfigs(reader, "agents");
-}
-
-AgentConfig config(const std::string& type, int memory = 0, double noise = 0.0) {
-  AgentConfig c;
-  c.name = type;
-  c.type = type;
-  c.memory_window = memory;
-  c.sensor_noise = noise;
-  return c;
 }
 
 TEST(AgentConfigTest, TypeNamesAreTheEightAgents) {

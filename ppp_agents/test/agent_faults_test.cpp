@@ -17,17 +17,9 @@ namespace ppp {
 namespace agents {
 namespace {
 
+using test::config;
 using test::World;
 using test::world;
-
-AgentConfig config(const std::string& type, int memory = 0, double noise = 0.0) {
-  AgentConfig c;
-  c.name = type;
-  c.type = type;
-  c.memory_window = memory;
-  c.sensor_noise = noise;
-  return c;
-}
 
 struct Rate {
   double pass = 0.0;        ///< Fraction of episodes passed.

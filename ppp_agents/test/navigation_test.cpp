@@ -76,6 +76,32 @@ TEST(NavigationTest, TowardsGoalTakesAShortestPathTreatingUnknownAsPassable) {
   EXPECT_EQ(action, Action::East);
 }
 
+TEST(NavigationTest, TowardsSeenGoalHeadsForTheGoalFromTheFirstScanShowingIt) {
+  const AgentMemory memory = drawnMemory({
+      "....",
+      "....",
+      "....",
+  });
+  Navigator navigator;
+  navigator.reset(4, 3);
+  const Cell goal{3, 0};
+  std::vector<std::int8_t> cells(25, kScanFree);
+  bool goal_seen = false;
+  Action action = Action::Stay;
+  // From (0,2) the goal is outside the range-2 window: not seen, no move.
+  EXPECT_FALSE(navigator.towardsSeenGoal(Scan(2, cells, Cell{0, 2}, goal, false, 0), memory, &goal_seen, &action));
+  EXPECT_FALSE(goal_seen);
+  // From (1,1) it is in the window and reported free: seen; N, E, E is the first of the 3-move paths found.
+  ASSERT_TRUE(navigator.towardsSeenGoal(Scan(2, cells, Cell{1, 1}, goal, false, 1), memory, &goal_seen, &action));
+  EXPECT_TRUE(goal_seen);
+  EXPECT_EQ(action, Action::North);
+  // Hidden in a later scan (offset (2, -1)): still heading for it.
+  cells[1 * 5 + 4] = kScanUnknown;
+  action = Action::Stay;
+  ASSERT_TRUE(navigator.towardsSeenGoal(Scan(2, cells, Cell{1, 1}, goal, false, 2), memory, &goal_seen, &action));
+  EXPECT_EQ(action, Action::North);
+}
+
 TEST(NavigationTest, SearchFindsTheNearestFrontierAndItsPath) {
   const AgentMemory memory = drawnMemory({
       ".....#",

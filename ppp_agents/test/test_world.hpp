@@ -1,12 +1,13 @@
 #pragma once
 
-// Test helpers: maps drawn as ASCII and a tiny episode loop applying the move model (the real engine lives in
-// ppp_simulator, which depends on this package).
+// Test helpers: maps drawn as ASCII, agent configurations by type and a tiny episode loop applying the move
+// model (the real engine lives in ppp_simulator, which depends on this package).
 
 #include <string>
 #include <vector>
 
 #include "ppp_agents/agent.hpp"
+#include "ppp_agents/agent_config.hpp"
 #include "ppp_core/grid.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_core/sensor.hpp"
@@ -34,6 +35,16 @@ inline World world(const std::vector<std::string>& rows) {
     }
   }
   return w;
+}
+
+/// The configuration of agent `type`, named after it, with the given handicaps.
+inline AgentConfig config(const std::string& type, int memory = 0, double noise = 0.0) {
+  AgentConfig c;
+  c.name = type;
+  c.type = type;
+  c.memory_window = memory;
+  c.sensor_noise = noise;
+  return c;
 }
 
 /// What one episode did.

@@ -1,12 +1,12 @@
 #include "ppp_generator/generator_options.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <sstream>
 #include <vector>
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/problem.hpp"
+#include "ppp_core/text_format.hpp"
 #include "ppp_generator/fitness.hpp"
 #include "ppp_generator/taxonomy.hpp"
 
@@ -36,13 +36,6 @@ void readWeights(YamlMapReader& parent, DifficultyWeights* w) {
   reader.read("vertical_openness", &w->vertical_openness);
   reader.read("one_turn_penalty", &w->one_turn_penalty);
   reader.rejectUnknownKeys();
-}
-
-/// The shortest text that reads back as the same double.
-std::string shortest(double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
 }
 
 }  // namespace
@@ -106,7 +99,7 @@ std::string generatorOptionsYaml(const GeneratorOptions& o) {
       << "population: " << o.population << "\n"
       << "matings: " << o.matings << "\n"
       << "tournament_size: " << o.tournament_size << "\n"
-      << "mutation_rate: " << shortest(o.mutation_rate) << "\n"
+      << "mutation_rate: " << formatShortest(o.mutation_rate) << "\n"
       << "width: " << o.width << "\n"
       << "height: " << o.height << "\n"
       << "start: [" << o.startCell().x << ", " << o.startCell().y << "]\n"
@@ -117,15 +110,15 @@ std::string generatorOptionsYaml(const GeneratorOptions& o) {
       << "seed: " << o.seed << "\n"
       << "characters: " << o.characters << "\n"
       << "weights:\n"
-      << "  start: " << shortest(o.weights.start) << "\n"
-      << "  centre: " << shortest(o.weights.centre) << "\n"
-      << "  top_right: " << shortest(o.weights.top_right) << "\n"
-      << "  bottom_left: " << shortest(o.weights.bottom_left) << "\n"
-      << "  goal: " << shortest(o.weights.goal) << "\n"
-      << "  unused_obstacles: " << shortest(o.weights.unused_obstacles) << "\n"
-      << "  horizontal_openness: " << shortest(o.weights.horizontal_openness) << "\n"
-      << "  vertical_openness: " << shortest(o.weights.vertical_openness) << "\n"
-      << "  one_turn_penalty: " << shortest(o.weights.one_turn_penalty) << "\n";
+      << "  start: " << formatShortest(o.weights.start) << "\n"
+      << "  centre: " << formatShortest(o.weights.centre) << "\n"
+      << "  top_right: " << formatShortest(o.weights.top_right) << "\n"
+      << "  bottom_left: " << formatShortest(o.weights.bottom_left) << "\n"
+      << "  goal: " << formatShortest(o.weights.goal) << "\n"
+      << "  unused_obstacles: " << formatShortest(o.weights.unused_obstacles) << "\n"
+      << "  horizontal_openness: " << formatShortest(o.weights.horizontal_openness) << "\n"
+      << "  vertical_openness: " << formatShortest(o.weights.vertical_openness) << "\n"
+      << "  one_turn_penalty: " << formatShortest(o.weights.one_turn_penalty) << "\n";
   return out.str();
 }
 

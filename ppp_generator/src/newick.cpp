@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/text_format.hpp"
 
 namespace ppp::generator {
 
@@ -35,12 +36,7 @@ void appendLabel(std::string* out, const std::string& label) {
   *out += '\'';
 }
 
-void appendLength(std::string* out, double length) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, length, std::chars_format::general, 10);
-  *out += ':';
-  out->append(buffer, result.ptr);
-}
+void appendLength(std::string* out, double length) { *out += ':' + formatGeneral(length, 10); }
 
 /// A node as read, before leaves and merges are renumbered.
 struct RawNode {

@@ -1,7 +1,6 @@
 #include "ppp_generator/taxonomy.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -9,16 +8,13 @@
 #include <vector>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/text_format.hpp"
 
 namespace ppp::generator {
 
 namespace {
 
-std::string numberText(double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 15);
-  return std::string(buffer, result.ptr);
-}
+std::string numberText(double value) { return formatGeneral(value, 15); }
 
 std::string cellText(Eigen::Index row, Eigen::Index col) {
   return "(" + std::to_string(row) + ", " + std::to_string(col) + ")";
@@ -72,8 +68,8 @@ Eigen::MatrixXd checkedDistances(const Eigen::MatrixXd& d) {
   return s;
 }
 
-/// The leaf indices below `top`, ascending.
-std::vector<int> leavesBelow(const Tree& tree, int top) {
+/// The leaf indices below `top`, left to right (left subtree first).
+std::vector<int> leavesLeftToRight(const Tree& tree, int top) {
   std::vector<int> leaves;
   std::vector<int> stack{top};
   while (!stack.empty()) {
@@ -87,6 +83,12 @@ std::vector<int> leavesBelow(const Tree& tree, int top) {
       stack.push_back(node.left);
     }
   }
+  return leaves;
+}
+
+/// The leaf indices below `top`, ascending.
+std::vector<int> leavesBelow(const Tree& tree, int top) {
+  std::vector<int> leaves = leavesLeftToRight(tree, top);
   std::sort(leaves.begin(), leaves.end());
   return leaves;
 }
@@ -373,21 +375,7 @@ std::vector<std::vector<int>> cutIntoClusters(const Tree& tree, int k) {
 
 std::vector<int> leafOrder(const Tree& tree) {
   validateTree(tree);
-  std::vector<int> order;
-  order.reserve(static_cast<std::size_t>(tree.leafCount()));
-  std::vector<int> stack{tree.root()};
-  while (!stack.empty()) {
-    const int i = stack.back();
-    stack.pop_back();
-    const TreeNode& node = tree.nodes[static_cast<std::size_t>(i)];
-    if (node.left < 0) {
-      order.push_back(i);
-    } else {
-      stack.push_back(node.right);
-      stack.push_back(node.left);
-    }
-  }
-  return order;
+  return leavesLeftToRight(tree, tree.root());
 }
 
 }  // namespace ppp::generator

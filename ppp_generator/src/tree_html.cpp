@@ -1,13 +1,12 @@
 #include "ppp_generator/tree_html.hpp"
 
 #include <algorithm>
-#include <charconv>
-#include <cmath>
 #include <string>
 #include <vector>
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/picture.hpp"
+#include "ppp_core/text_format.hpp"
 
 namespace ppp::generator {
 
@@ -22,50 +21,8 @@ constexpr double kLabelCharWidth = 7.8;  // 13px monospace
 constexpr double kTreeWidth = 640;
 constexpr double kAxisHeight = 56;
 
-std::string escapeHtml(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-/// A coordinate with one decimal, independent of the C locale.
-std::string px(double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, 1);
-  return std::string(buffer, result.ptr);
-}
-
-/// A value for people to read (up to 6 significant digits), independent of the C locale.
-std::string readable(double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 6);
-  return std::string(buffer, result.ptr);
-}
-
-/// Characters as displayed (UTF-8 continuation bytes not counted).
-std::size_t displayLength(const std::string& text) {
-  return static_cast<std::size_t>(
-      std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
-}
-
-/// A 1-2-5 step giving about five ticks up to `top`.
-double tickStep(double top) {
-  const double raw = top / 5;
-  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-  const double scaled = raw / magnitude;
-  const double nice = scaled < 1.5 ? 1 : scaled < 3.5 ? 2 : scaled < 7.5 ? 5 : 10;
-  return nice * magnitude;
-}
+/// A coordinate with one decimal.
+std::string px(double value) { return formatFixed(value, 1); }
 
 constexpr const char* kStyle =
     "body{font-family:sans-serif;margin:16px;color:#222;background:#fff}"
@@ -159,7 +116,7 @@ std::string treeHtml(const Tree& tree, const std::vector<std::string>& labels,
            px(axis_y) + "\"/>\n";
     ticks += "<line class=\"axis\" x1=\"" + px(x) + "\" y1=\"" + px(axis_y) + "\" x2=\"" + px(x) + "\" y2=\"" +
              px(axis_y + 5) + "\"/><text class=\"tick\" x=\"" + px(x) + "\" y=\"" + px(axis_y + 18) +
-             "\" text-anchor=\"middle\">" + readable(t * step) + "</text>\n";
+             "\" text-anchor=\"middle\">" + formatGeneral(t * step, 6) + "</text>\n";
   }
 
   std::string branches;
@@ -174,14 +131,14 @@ std::string treeHtml(const Tree& tree, const std::vector<std::string>& labels,
     branches += "M" + px(x) + " " + px(y[static_cast<std::size_t>(node.left)]) + "V" +
                 px(y[static_cast<std::size_t>(node.right)]);
     nodes += "<circle class=\"node\" cx=\"" + px(x) + "\" cy=\"" + px(y[i]) + "\" r=\"2.5\"><title>height " +
-             readable(node.height) + ", " + std::to_string(node.size) + " PPPs</title></circle>\n";
+             formatGeneral(node.height, 6) + ", " + std::to_string(node.size) + " PPPs</title></circle>\n";
   }
   if (!branches.empty()) svg += "<path class=\"branch\" d=\"" + branches + "\"/>\n";
   svg += nodes;
 
   for (std::size_t r = 0; r < n; ++r) {
     const std::size_t leaf = static_cast<std::size_t>(order[r]);
-    const std::string label = escapeHtml(labels[leaf]);
+    const std::string label = escapeMarkup(labels[leaf]);
     const double label_end = label_x + static_cast<double>(displayLength(labels[leaf])) * kLabelCharWidth + 4;
     svg += "<g><title>" + label + " (PPP " + std::to_string(leaf) + ")</title>";
     if (!thumbnail_pngs.empty() && !thumbnail_pngs[leaf].empty()) {
@@ -206,11 +163,11 @@ std::string treeHtml(const Tree& tree, const std::vector<std::string>& labels,
          "\" text-anchor=\"middle\">merge height (half the average distance between the merged groups)</text>\n";
   svg += "</svg>\n";
 
-  const std::string escaped_title = escapeHtml(title);
+  const std::string escaped_title = escapeMarkup(title);
   std::string html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" +
                      escaped_title + "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n<h1>" +
                      escaped_title + "</h1>\n<p>" + std::to_string(n) +
-                     " PPPs; root height " + readable(root_height) +
+                     " PPPs; root height " + formatGeneral(root_height, 6) +
                      ". Hover over a node for its height and size, over a PPP for its index.</p>\n";
   html += svg;
   html += "</body>\n</html>\n";

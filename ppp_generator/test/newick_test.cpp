@@ -9,20 +9,12 @@
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/rng.hpp"
+#include "hand_tree.hpp"
 
 namespace ppp::generator {
 namespace {
 
-/// The five-taxon example of taxonomy_test.cpp: merges (a,b) at 8.5, ((a,b),e) at 11, (c,d) at 14, root 16.5.
-Tree handTree() {
-  Eigen::MatrixXd d(5, 5);
-  d << 0, 17, 21, 31, 23,  //
-      17, 0, 30, 34, 21,   //
-      21, 30, 0, 28, 39,   //
-      31, 34, 28, 0, 43,   //
-      23, 21, 39, 43, 0;
-  return upgma(d);
-}
+using test::handTree;
 
 const std::vector<std::string> kHandLabels{"a", "b", "c", "d", "e"};
 

@@ -8,24 +8,17 @@
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/picture.hpp"
+#include "hand_tree.hpp"
 
 namespace ppp::generator {
 namespace {
+
+using test::handTree;
 
 std::size_t countOf(const std::string& text, const std::string& part) {
   std::size_t count = 0;
   for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++count;
   return count;
-}
-
-Tree handTree() {
-  Eigen::MatrixXd d(5, 5);
-  d << 0, 17, 21, 31, 23,  //
-      17, 0, 30, 34, 21,   //
-      21, 30, 0, 28, 39,   //
-      31, 34, 28, 0, 43,   //
-      23, 21, 39, 43, 0;
-  return upgma(d);
 }
 
 TEST(TreeHtmlTest, Base64Rfc4648Vectors) {

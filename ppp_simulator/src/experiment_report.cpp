@@ -30,6 +30,14 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
     c.first += r.passed ? 1 : 0;
     ++c.second;
   }
+  // Each agent's mean pass rate over every PPP, so the failure shown for a PPP is the agent it hurts most
+  // relative to that agent's usual performance (the random baseline fails everywhere and would say little).
+  std::map<std::string, std::pair<double, int>> agent_means;
+  for (const auto& entry : counts) {
+    auto& mean = agent_means[std::get<2>(entry.first)];
+    mean.first += static_cast<double>(entry.second.first) / entry.second.second;
+    ++mean.second;
+  }
   struct Candidate {
     double mean_rate;
     int set;
@@ -41,7 +49,7 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
     for (int p = 0; p < static_cast<int>(sets[s].set.ids.size()); ++p) {
       double total = 0;
       int agents = 0;
-      double worst = 2.0;
+      double largest_drop = -2.0;
       std::string worst_agent;
       for (const auto& a : config.agents) {
         const auto it = counts.find({sets[s].name, sets[s].set.ids[p], a.name});
@@ -49,9 +57,11 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
         const double rate = static_cast<double>(it->second.first) / it->second.second;
         total += rate;
         ++agents;
-        if (rate < worst) worst = rate, worst_agent = a.name;
+        const auto& mean = agent_means[a.name];
+        const double drop = mean.first / mean.second - rate;
+        if (rate < 1.0 && drop > largest_drop) largest_drop = drop, worst_agent = a.name;
       }
-      if (agents > 0 && worst < 1.0) candidates.push_back({total / agents, s, p, worst_agent});
+      if (agents > 0 && !worst_agent.empty()) candidates.push_back({total / agents, s, p, worst_agent});
     }
   }
   std::stable_sort(candidates.begin(), candidates.end(),

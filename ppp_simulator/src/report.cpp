@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
@@ -15,6 +14,7 @@
 #include "ppp_core/picture.hpp"
 #include "ppp_core/ppp_file.hpp"
 #include "ppp_core/text_file.hpp"
+#include "ppp_core/text_format.hpp"
 #include "ppp_generator/tree_html.hpp"
 #include "ppp_simulator/episode_result.hpp"
 #include "ppp_simulator/statistics.hpp"
@@ -31,18 +31,12 @@ constexpr int kPictureTargetPixels = 480;  // longer side of a failure picture, 
 // ---------------------------------------------------------------------------------------------------------
 // Numbers, independent of the C locale.
 
-std::string fixed(double value, int decimals) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, decimals);
-  return std::string(buffer, result.ptr);
-}
-
 /// A rate in [0, 1] as a percentage with two decimals: 0.755 → "75.50%".
-std::string percent(double rate) { return fixed(rate * 100, 2) + "%"; }
+std::string percent(double rate) { return formatFixed(rate * 100, 2) + "%"; }
 
-std::string pValue(double p) { return p < 0.0001 ? "< 0.0001" : fixed(p, 4); }
+std::string pValue(double p) { return p < 0.0001 ? "< 0.0001" : formatFixed(p, 4); }
 
-std::string uValue(double u) { return std::floor(u) == u ? fixed(u, 0) : fixed(u, 1); }
+std::string uValue(double u) { return std::floor(u) == u ? formatFixed(u, 0) : formatFixed(u, 1); }
 
 /// "n" or "lo–hi".
 std::string range(int lo, int hi) {
@@ -345,7 +339,7 @@ constexpr const char* kStyle =
 /// A faint red behind low pass rates, so failures stand out in the table.
 std::string rateCellStyle(double rate) {
   const double alpha = 0.45 * (1 - std::clamp(rate, 0.0, 1.0));
-  return "background:rgba(225,87,89," + fixed(alpha, 2) + ")";
+  return "background:rgba(225,87,89," + formatFixed(alpha, 2) + ")";
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -449,7 +443,7 @@ void comparisonSection(const ReportInput& input, Text* out) {
       const bool significant = row.test.p < kSignificance;
       const std::vector<std::string> cells = {percent(row.mean_a),      percent(row.mean_b),
                                               std::to_string(row.test.n_a), std::to_string(row.test.n_b),
-                                              uValue(row.test.u),       fixed(row.test.z, 3),
+                                              uValue(row.test.u),       formatFixed(row.test.z, 3),
                                               pValue(row.test.p)};
       out->md += "| " + mdCode(row.agent, true) + " |";
       out->html += "<tr><td><code>" + escapeMarkup(row.agent) + "</code></td>";

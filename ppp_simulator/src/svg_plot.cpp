@@ -1,11 +1,11 @@
 #include "ppp_simulator/svg_plot.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstddef>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/text_format.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -30,55 +30,8 @@ constexpr std::size_t kPaletteSize = sizeof kPalette / sizeof kPalette[0];
 
 const char* colour(std::size_t series) { return kPalette[series % kPaletteSize]; }
 
-/// A coordinate with one decimal, independent of the C locale.
-std::string px(double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, 1);
-  return std::string(buffer, result.ptr);
-}
-
-/// A tick value for people to read (up to 6 significant digits), independent of the C locale.
-std::string readable(double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 6);
-  return std::string(buffer, result.ptr);
-}
-
-/// A data value with two decimals, independent of the C locale.
-std::string twoDecimals(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, 2);
-  return std::string(buffer, result.ptr);
-}
-
-/// Characters as displayed (UTF-8 continuation bytes not counted).
-std::size_t displayLength(const std::string& text) {
-  return static_cast<std::size_t>(
-      std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
-}
-
-/// The text cut to `limit` displayed characters, with an ellipsis when cut.
-std::string shorten(const std::string& text, std::size_t limit) {
-  if (displayLength(text) <= limit) return text;
-  std::size_t kept = 0;
-  std::size_t i = 0;
-  for (; i < text.size(); ++i) {
-    if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) {
-      if (kept == limit - 1) break;
-      ++kept;
-    }
-  }
-  return text.substr(0, i) + "\xE2\x80\xA6";  // U+2026 HORIZONTAL ELLIPSIS
-}
-
-/// A 1-2-5 step giving about five ticks up to `top`.
-double tickStep(double top) {
-  const double raw = top / 5;
-  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-  const double scaled = raw / magnitude;
-  const double nice = scaled < 1.5 ? 1 : scaled < 3.5 ? 2 : scaled < 7.5 ? 5 : 10;
-  return nice * magnitude;
-}
+/// A coordinate with one decimal.
+std::string px(double value) { return formatFixed(value, 1); }
 
 /// Where everything goes; computed once from the chart and the width each category needs.
 struct Layout {
@@ -144,7 +97,7 @@ std::string axes(const Chart& chart, const Layout& layout) {
     svg += "<line x1=\"" + px(kLeft) + "\" y1=\"" + px(y) + "\" x2=\"" + px(layout.plotRight()) + "\" y2=\"" +
            px(y) + "\" stroke=\"" + (t == 0 ? "#444" : "#e4e4e4") + "\"/>\n";
     svg += "<text x=\"" + px(kLeft - 6) + "\" y=\"" + px(y) + "\" dy=\"0.35em\" text-anchor=\"end\" fill=\"#444\">" +
-           readable(t * step) + escapeMarkup(chart.value_suffix) + "</text>\n";
+           formatGeneral(t * step, 6) + escapeMarkup(chart.value_suffix) + "</text>\n";
   }
   svg += "<line x1=\"" + px(kLeft) + "\" y1=\"" + px(kTop) + "\" x2=\"" + px(kLeft) + "\" y2=\"" +
          px(layout.plotBottom()) + "\" stroke=\"#444\"/>\n";
@@ -156,7 +109,7 @@ std::string axes(const Chart& chart, const Layout& layout) {
   for (std::size_t c = 0; c < chart.categories.size(); ++c) {
     const double x = kLeft + (static_cast<double>(c) + 0.5) * layout.band;
     const double y = layout.plotBottom() + 14;
-    const std::string label = escapeMarkup(shorten(chart.categories[c], kMaxLabelChars));
+    const std::string label = escapeMarkup(shortenText(chart.categories[c], kMaxLabelChars));
     const std::string full = escapeMarkup(chart.categories[c]);
     if (layout.rotate) {
       svg += "<text transform=\"translate(" + px(x + 3) + " " + px(y - 4) +
@@ -214,7 +167,7 @@ std::string legend(const Chart& chart, const Layout& layout, bool lines) {
              colour(s) + "\"/>\n";
     }
     svg += "<text x=\"" + px(layout.legend_x + 26) + "\" y=\"" + px(y) + "\" dy=\"0.35em\" fill=\"#222\"><title>" +
-           name + "</title>" + escapeMarkup(shorten(chart.series[s].name, kMaxLegendChars)) + "</text>\n";
+           name + "</title>" + escapeMarkup(shortenText(chart.series[s].name, kMaxLegendChars)) + "</text>\n";
   }
   return svg;
 }
@@ -226,30 +179,14 @@ double valueY(const Chart& chart, double value) {
 
 std::string tooltip(const Chart& chart, std::size_t s, std::size_t c) {
   return escapeMarkup(chart.series[s].name + " on " + chart.categories[c] + ": " +
-                      twoDecimals(chart.series[s].values[c]) + chart.value_suffix);
+                      formatFixed(chart.series[s].values[c], 2) + chart.value_suffix);
 }
 
 }  // namespace
 
-std::string escapeMarkup(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 void Chart::validate() const {
   if (!std::isfinite(y_max) || y_max <= 0) {
-    throw InvalidArgument("y_max", "expected a positive finite number, got " + readable(y_max));
+    throw InvalidArgument("y_max", "expected a positive finite number, got " + formatGeneral(y_max, 6));
   }
   for (const PlotSeries& s : series) {
     if (s.values.size() != categories.size()) {

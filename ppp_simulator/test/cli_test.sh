@@ -2,26 +2,7 @@
 # Behaviour of the `ppp` command line, run as a user would. Usage: cli_test.sh PATH_TO_PPP
 set -u
 ppp="$1"
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
-passed=0
-failed=0
-
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
-
-# expect_ok NAME COMMAND...: the command exits 0.
-expect_ok() {
-  local name="$1"; shift
-  if "$@" > "$work/out" 2> "$work/err"; then pass; else fail "$name: exit $? $(cat "$work/err")"; fi
-}
-
-# expect_error NAME TEXT COMMAND...: the command exits non-zero and stderr contains TEXT.
-expect_error() {
-  local name="$1" text="$2"; shift 2
-  if "$@" > "$work/out" 2> "$work/err"; then fail "$name: succeeded, expected an error"; return; fi
-  if grep -qF -- "$text" "$work/err"; then pass; else fail "$name: error lacks '$text': $(cat "$work/err")"; fi
-}
+source "$(dirname "${BASH_SOURCE[0]}")/cli_harness.sh"
 
 for sub in random evaluate convert generate tree select; do
   expect_ok "help $sub" "$ppp" "$sub" --help
@@ -124,5 +105,4 @@ expect_error "k zero" "k: " "$ppp" select "$work/set_a" -k 0
 expect_error "select bad characters" "characters: unknown character set" "$ppp" select "$work/set_a" -k 2 --characters x
 expect_error "tree of a non-set" "set.csv" "$ppp" tree "$work/not_a_set"
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

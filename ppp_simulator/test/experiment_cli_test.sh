@@ -3,21 +3,7 @@
 # SIGTERM part-way through an experiment and the resume. Usage: experiment_cli_test.sh PATH_TO_PPP
 set -u
 ppp="$1"
-work="$(mktemp -d)"
-trap 'kill -9 $(jobs -p) 2>/dev/null; rm -rf "$work"' EXIT
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
-expect_ok() {
-  local name="$1"; shift
-  if "$@" > "$work/out" 2> "$work/err"; then pass; else fail "$name: exit $? $(tail -5 "$work/err")"; fi
-}
-expect_error() {
-  local name="$1" text="$2"; shift 2
-  if "$@" > "$work/out" 2> "$work/err"; then fail "$name: succeeded, expected an error"; return; fi
-  if grep -qF -- "$text" "$work/err"; then pass; else fail "$name: error lacks '$text': $(cat "$work/err")"; fi
-}
+source "$(dirname "${BASH_SOURCE[0]}")/cli_harness.sh"
 rows() { if [ -f "$1" ]; then wc -l < "$1"; else echo 0; fi; }
 
 # A small experiment: 2 sets x 6 PPPs x 3 agents x 1500 runs = 54,000 runs.
@@ -114,5 +100,4 @@ cp "$work/agents.yaml" "$work/other_agents.yaml"
 expect_error "different experiment" "holds a different experiment" "$ppp" experiment "$work/other.yaml" -o "$work/a"
 cmp -s "$work/a/results.csv" "$work/b/results.csv" && pass || fail "a refused experiment touched the results"
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -158,11 +158,15 @@ TEST(NaturalLess, ComparesDigitRunsAsNumbers) {
   EXPECT_NE(naturalLess("p01", "p1"), naturalLess("p1", "p01"));
 }
 
-TEST(WriteSummaryCsv, WritesProblemRowsThenSetRows) {
-  const std::string dir = (std::filesystem::temp_directory_path() /
-                           ("pass_rates_test_" + std::to_string(::getpid())))
-                              .string();
+/// A directory `<name>_<process id>` under the system temporary directory, created.
+std::string tempDir(const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+TEST(WriteSummaryCsv, WritesProblemRowsThenSetRows) {
+  const std::string dir = tempDir("pass_rates_test");
   const std::string path = dir + "/summary.csv";
   writeSummaryCsv(path, handMadeTable());
   EXPECT_EQ(readTextFile(path, 1 << 20),
@@ -183,10 +187,7 @@ TEST(WriteSummaryCsv, WritesProblemRowsThenSetRows) {
 }
 
 TEST(WriteSummaryCsv, QuotesNamesWithCommas) {
-  const std::string dir = (std::filesystem::temp_directory_path() /
-                           ("pass_rates_quote_test_" + std::to_string(::getpid())))
-                              .string();
-  std::filesystem::create_directories(dir);
+  const std::string dir = tempDir("pass_rates_quote_test");
   const std::string path = dir + "/summary.csv";
   writeSummaryCsv(path, computePassRates({run("a,b", "p", "x", true, 1)}, {"a,b"}, {"x"}));
   const std::string text = readTextFile(path, 1 << 20);

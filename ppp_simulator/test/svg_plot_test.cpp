@@ -26,11 +26,6 @@ Chart twoByThree() {
   return chart;
 }
 
-TEST(EscapeMarkup, EscapesTheFiveSpecialCharacters) {
-  EXPECT_EQ(escapeMarkup("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&#39;");
-  EXPECT_EQ(escapeMarkup("plain"), "plain");
-}
-
 TEST(GroupedBarChartSvg, DrawsOneBarPerValueWithTooltipsAndEscapedText) {
   const std::string svg = groupedBarChartSvg(twoByThree(), false);
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);

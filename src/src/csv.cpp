@@ -1,10 +1,10 @@
 #include "ppp_core/csv.hpp"
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/text_format.hpp"
 
 namespace ppp {
 
@@ -43,10 +43,6 @@ void CsvWriter::write(const std::vector<std::string>& row) {
   if (!out_) throw IoError(path_, "write failed");
 }
 
-std::string formatNumber(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", value);
-  return buffer;
-}
+std::string formatNumber(double value) { return formatGeneral(value, 6); }
 
 }  // namespace ppp

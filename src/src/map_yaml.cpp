@@ -15,6 +15,7 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/ppp_file.hpp"
 #include "ppp_core/text_file.hpp"
+#include "ppp_core/text_format.hpp"
 
 namespace ppp {
 
@@ -27,13 +28,6 @@ const char* const kPppKeys[] = {"ppp_size",          "ppp_start",     "ppp_goal"
                                 "ppp_max_obstacles", "ppp_obstacles", "ppp_metadata"};
 
 std::string cellText(Cell c) { return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")"; }
-
-/// Shortest decimal text that reads back as exactly `value` (the emitter would print 17 digits).
-std::string shortestDouble(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
 
 /// The text after "<name>: " in an InvalidArgument message, so it can be re-homed in a ParseError.
 std::string reasonOf(const InvalidArgument& e) {
@@ -60,12 +54,12 @@ std::string encodeYaml(const Problem& p, const std::string& image_name, const Ma
   YAML::Emitter out;
   out << YAML::BeginMap;
   out << YAML::Key << "image" << YAML::Value << image_name;
-  out << YAML::Key << "resolution" << YAML::Value << shortestDouble(options.resolution);
-  out << YAML::Key << "origin" << YAML::Value << YAML::Flow << YAML::BeginSeq << shortestDouble(options.origin_x)
-      << shortestDouble(options.origin_y) << shortestDouble(options.origin_yaw) << YAML::EndSeq;
+  out << YAML::Key << "resolution" << YAML::Value << formatShortest(options.resolution);
+  out << YAML::Key << "origin" << YAML::Value << YAML::Flow << YAML::BeginSeq << formatShortest(options.origin_x)
+      << formatShortest(options.origin_y) << formatShortest(options.origin_yaw) << YAML::EndSeq;
   out << YAML::Key << "negate" << YAML::Value << 0;
-  out << YAML::Key << "occupied_thresh" << YAML::Value << shortestDouble(kDefaultOccupiedThresh);
-  out << YAML::Key << "free_thresh" << YAML::Value << shortestDouble(kDefaultFreeThresh);
+  out << YAML::Key << "occupied_thresh" << YAML::Value << formatShortest(kDefaultOccupiedThresh);
+  out << YAML::Key << "free_thresh" << YAML::Value << formatShortest(kDefaultFreeThresh);
   out << YAML::Key << "ppp_size" << YAML::Value << YAML::Flow << YAML::BeginSeq << p.width << p.height << YAML::EndSeq;
   out << YAML::Key << "ppp_start" << YAML::Value << YAML::Flow << YAML::BeginSeq << p.start.x << p.start.y
       << YAML::EndSeq;
@@ -236,8 +230,8 @@ MapHeader readHeader(const YamlReader& r, const YAML::Node& root, const std::str
   }
   if (h.free_thresh >= h.occupied_thresh) {
     r.fail(free, "free_thresh",
-           "must be below occupied_thresh " + shortestDouble(h.occupied_thresh) + ", got " +
-               shortestDouble(h.free_thresh));
+           "must be below occupied_thresh " + formatShortest(h.occupied_thresh) + ", got " +
+               formatShortest(h.free_thresh));
   }
   if (const YAML::Node mode = root["mode"]) {
     const std::string value = r.string(mode, "mode");
@@ -576,7 +570,7 @@ void checkAgainstImage(const Problem& p, const Pgm& pgm, const MapHeader& h, con
 
 void MapYamlOptions::validate() const {
   if (!std::isfinite(resolution) || resolution <= 0.0) {
-    throw InvalidArgument("resolution", "expected metres per cell > 0, got " + shortestDouble(resolution));
+    throw InvalidArgument("resolution", "expected metres per cell > 0, got " + formatShortest(resolution));
   }
   if (!std::isfinite(origin_x)) throw InvalidArgument("origin_x", "expected a finite number");
   if (!std::isfinite(origin_y)) throw InvalidArgument("origin_y", "expected a finite number");

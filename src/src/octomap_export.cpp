@@ -3,7 +3,6 @@
 #include <octomap/OcTree.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -11,16 +10,11 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/map_frame.hpp"
 #include "ppp_core/text_file.hpp"
+#include "ppp_core/text_format.hpp"
 
 namespace ppp {
 
 namespace {
-
-std::string numberText(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
 
 /// Whole voxel layers covering [0, height]; a hair of tolerance keeps 1.0 / 0.1 from becoming 11 layers.
 long long layerCount(const OctomapOptions& options) {
@@ -31,15 +25,15 @@ long long layerCount(const OctomapOptions& options) {
 
 void OctomapOptions::validate() const {
   if (!std::isfinite(resolution) || resolution <= 0.0) {
-    throw InvalidArgument("resolution", "expected metres per cell > 0, got " + numberText(resolution));
+    throw InvalidArgument("resolution", "expected metres per cell > 0, got " + formatShortest(resolution));
   }
   if (!std::isfinite(height) || height <= 0.0) {
-    throw InvalidArgument("height", "expected an extrusion height in metres > 0, got " + numberText(height));
+    throw InvalidArgument("height", "expected an extrusion height in metres > 0, got " + formatShortest(height));
   }
   // OctoMap keys are 16 bits centred on the origin: coordinates must stay below 32768 voxels.
   if (height / resolution > kMaxOctomapLayers) {
-    throw InvalidArgument("height", "height " + numberText(height) + " m is more than " +
-                                        std::to_string(kMaxOctomapLayers) + " voxels of " + numberText(resolution) +
+    throw InvalidArgument("height", "height " + formatShortest(height) + " m is more than " +
+                                        std::to_string(kMaxOctomapLayers) + " voxels of " + formatShortest(resolution) +
                                         " m, beyond the reach of OctoMap keys");
   }
 }

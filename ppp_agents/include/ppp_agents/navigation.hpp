@@ -55,6 +55,10 @@ class Navigator {
   /// shows no such path.
   bool towardsGoal(const AgentMemory& memory, Cell from, Cell goal, Action* action);
 
+  /// towardsGoal() from the scan's position once the goal has been seen: sets `*goal_seen` when this scan
+  /// shows the goal (it stays set), and returns false while the goal is unseen or memory shows no path.
+  bool towardsSeenGoal(const Scan& scan, const AgentMemory& memory, bool* goal_seen, Action* action);
+
   /// Map columns the buffers are sized for.
   int width() const { return width_; }
 

@@ -12,7 +12,8 @@ namespace ppp {
 namespace simulator {
 
 /// The hardest PPPs of an experiment (lowest mean pass rate over every agent but the astar control), each with
-/// the first failing run of the agent that failed it most, replayed to recover its path.
+/// the first failing run of the agent it hurts most (largest drop below that agent's mean pass rate over all
+/// PPPs), replayed to recover its path.
 std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
                                             const std::vector<EpisodeResult>& rows, int count);
 

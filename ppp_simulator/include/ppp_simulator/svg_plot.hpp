@@ -6,9 +6,6 @@
 namespace ppp {
 namespace simulator {
 
-/// Escapes `& < > " '` so text can go into HTML or SVG, as element text or inside a quoted attribute.
-std::string escapeMarkup(const std::string& text);
-
 /// One coloured series of a chart: a legend name and one value per category.
 struct PlotSeries {
   std::string name;            ///< Legend text.

@@ -26,7 +26,7 @@ class CsvWriter {
   std::ofstream out_;
 };
 
-/// Formats a double with up to 6 significant digits, no trailing zeros ("0.5625").
+/// Formats a double with up to 6 significant digits, no trailing zeros ("0.5625"), whatever the C locale.
 std::string formatNumber(double value);
 
 }  // namespace ppp

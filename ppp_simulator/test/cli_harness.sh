@@ -1,0 +1,29 @@
+# Shared harness of the `ppp` command-line tests; source it from a test script. It makes $work, a temporary
+# directory removed on exit (background jobs still running then are killed), and counts checks:
+#   pass / fail MESSAGE        count one check (fail prints MESSAGE)
+#   expect_ok NAME COMMAND...  the command exits 0 (its output is in $work/out and $work/err)
+#   expect_error NAME TEXT COMMAND...  the command exits non-zero and stderr contains TEXT
+#   finish                     prints "N passed, N failed"; its status is the script's result
+work="$(mktemp -d)"
+trap 'kill -9 $(jobs -p) 2>/dev/null; rm -rf "$work"' EXIT
+passed=0
+failed=0
+
+pass() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
+
+expect_ok() {
+  local name="$1"; shift
+  if "$@" > "$work/out" 2> "$work/err"; then pass; else fail "$name: exit $? $(tail -5 "$work/err")"; fi
+}
+
+expect_error() {
+  local name="$1" text="$2"; shift 2
+  if "$@" > "$work/out" 2> "$work/err"; then fail "$name: succeeded, expected an error"; return; fi
+  if grep -qF -- "$text" "$work/err"; then pass; else fail "$name: error lacks '$text': $(cat "$work/err")"; fi
+}
+
+finish() {
+  echo "$passed passed, $failed failed"
+  [ "$failed" -eq 0 ]
+}
