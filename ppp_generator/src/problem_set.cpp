@@ -34,10 +34,9 @@ std::vector<std::string> setCsvHeader() {
 }
 
 std::string idOf(std::size_t index, std::size_t count) {
-  const int digits = std::max(3, static_cast<int>(std::to_string(count > 0 ? count - 1 : 0).size()));
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "ppp_%0*zu", digits, index);
-  return buffer;
+  const std::size_t digits = std::max<std::size_t>(3, std::to_string(count > 0 ? count - 1 : 0).size());
+  const std::string number = std::to_string(index);
+  return "ppp_" + std::string(digits > number.size() ? digits - number.size() : 0, '0') + number;
 }
 
 std::string readRequiredMetadata(const Problem& p, const std::string& key, const std::string& file) {
