@@ -27,51 +27,77 @@ std::uint64_t agentSeed(std::uint64_t run_seed) { return deriveSeed(run_seed, {1
 
 std::uint64_t noiseSeed(std::uint64_t run_seed) { return deriveSeed(run_seed, {2}); }
 
-EpisodeRunner::EpisodeRunner(const agents::AgentConfig& config, const EpisodeOptions& options)
-    : config_((config.validate(), config)),
-      options_((options.validate(), options)),
-      sensor_(SensorOptions{options.sensor_range, config.sensor_noise}),
-      prior_map_(config.type == "astar") {}
+Episode::Episode(const Problem& problem, const Grid& grid, const SensorModel& sensor, std::uint64_t run_seed,
+                 int budget, bool record_path)
+    : problem_(&problem),
+      grid_(&grid),
+      sensor_(&sensor),
+      noise_seed_(noiseSeed(run_seed)),
+      budget_(budget),
+      record_path_(record_path),
+      position_(problem.start) {
+  if (record_path_) outcome_.path.push_back(position_);
+}
 
-EpisodeOutcome EpisodeRunner::run(const Problem& problem, const Grid& grid, agents::Agent& agent,
-                                  std::uint64_t run_seed, bool record_path) {
+Scan Episode::scan() const {
+  return Scan(*sensor_, *grid_, position_, problem_->goal, bumped_, outcome_.steps, noise_seed_);
+}
+
+void Episode::apply(agents::Action action) {
+  if (done_) return;
+  ++outcome_.steps;
+  bumped_ = false;
+  if (action != agents::Action::Stay) {
+    const Cell next = agents::target(position_, action);
+    if (grid_->isFree(next)) {
+      position_ = next;
+      ++outcome_.path_length;
+      if (record_path_) outcome_.path.push_back(position_);
+    } else {
+      bumped_ = true;
+      ++outcome_.bumps;
+    }
+  }
+  if (position_ == problem_->goal) {
+    outcome_.passed = true;
+    outcome_.reason = reason::kGoalReached;
+    done_ = true;
+  } else if (outcome_.steps >= budget_) {
+    outcome_.reason = reason::kBudgetExhausted;
+    done_ = true;
+  }
+}
+
+void Episode::fail(const char* why) {
+  if (done_) return;
+  outcome_.passed = false;
+  outcome_.reason = why;
+  done_ = true;
+}
+
+agents::EpisodeInfo episodeInfo(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
+                                std::uint64_t run_seed) {
   agents::EpisodeInfo info;
   info.width = grid.width();
   info.height = grid.height();
   info.start = problem.start;
   info.goal = problem.goal;
   info.seed = agentSeed(run_seed);
-  info.prior_map = prior_map_ ? &grid : nullptr;
-  agent.reset(info);
-  const std::uint64_t noise = noiseSeed(run_seed);
-  EpisodeOutcome outcome;
-  Cell position = problem.start;
-  bool bumped = false;
-  if (record_path) outcome.path.push_back(position);
-  while (outcome.steps < options_.budget) {
-    const Scan scan(sensor_, grid, position, problem.goal, bumped, outcome.steps, noise);
-    const agents::Action action = agent.act(scan);
-    ++outcome.steps;
-    bumped = false;
-    if (action != agents::Action::Stay) {
-      const Cell next = agents::target(position, action);
-      if (grid.isFree(next)) {
-        position = next;
-        ++outcome.path_length;
-        if (record_path) outcome.path.push_back(position);
-      } else {
-        bumped = true;
-        ++outcome.bumps;
-      }
-    }
-    if (position == problem.goal) {
-      outcome.passed = true;
-      outcome.reason = reason::kGoalReached;
-      return outcome;
-    }
-  }
-  outcome.reason = reason::kBudgetExhausted;
-  return outcome;
+  info.prior_map = config.type == "astar" ? &grid : nullptr;
+  return info;
+}
+
+EpisodeRunner::EpisodeRunner(const agents::AgentConfig& config, const EpisodeOptions& options)
+    : config_((config.validate(), config)),
+      options_((options.validate(), options)),
+      sensor_(SensorOptions{options.sensor_range, config.sensor_noise}) {}
+
+EpisodeOutcome EpisodeRunner::run(const Problem& problem, const Grid& grid, agents::Agent& agent,
+                                  std::uint64_t run_seed, bool record_path) {
+  agent.reset(episodeInfo(problem, grid, config_, run_seed));
+  Episode episode(problem, grid, sensor_, run_seed, options_.budget, record_path);
+  while (!episode.done()) episode.apply(agent.act(episode.scan()));
+  return episode.outcome();
 }
 
 }  // namespace simulator

@@ -59,6 +59,10 @@ void checkExperimentDirectory(const ExperimentConfig& config, const std::string&
   if (!fs::is_directory(root)) throw IoError(dir, "exists and is not a directory");
   if (fs::is_empty(root, error)) return;
   const fs::path fingerprint = root / kFingerprintFile;
+  // A new experiment may find only sets/ (written by generator nodes started beside the simulator).
+  const bool only_sets = std::all_of(fs::directory_iterator(root), fs::directory_iterator(),
+                                     [](const fs::directory_entry& e) { return e.path().filename() == "sets"; });
+  if (!fs::exists(fingerprint) && only_sets) return;
   if (!fs::exists(fingerprint)) {
     throw IoError(dir, "holds files but no " + std::string(kFingerprintFile) +
                            "; refusing to write an experiment over something else");
@@ -103,16 +107,43 @@ std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::
   return prepared;
 }
 
-ExperimentReport runExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
-                               const std::function<void(long, long)>& progress, const std::atomic<bool>* stop,
-                               const std::function<void(const std::string&)>& log) {
+std::vector<PreparedSet> beginExperiment(const ExperimentConfig& config, const std::string& dir,
+                                         const std::function<void(const std::string&)>& log) {
   config.validate();
   checkExperimentDirectory(config, dir);
   fs::create_directories(dir);
   writeFileAtomically((fs::path(dir) / kFingerprintFile).string(), experimentFingerprint(config));
-  const std::vector<PreparedSet> sets = prepareSets(config, dir, log);
+  return prepareSets(config, dir, log);
+}
 
-  ResultsFile results((fs::path(dir) / kResultsFile).string());
+std::string resultsPath(const std::string& dir) { return (fs::path(dir) / kResultsFile).string(); }
+
+void finishExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
+                      const std::vector<PreparedSet>& sets, ResultsFile* results) {
+  // Canonical order, so the finished file does not depend on threads, batches or interruptions.
+  std::vector<EpisodeResult> rows = readResultsFile(resultsPath(dir));
+  std::map<std::string, int> set_order, agent_order;
+  for (std::size_t i = 0; i < sets.size(); ++i) set_order[sets[i].name] = static_cast<int>(i);
+  for (std::size_t i = 0; i < config.agents.size(); ++i) agent_order[config.agents[i].name] = static_cast<int>(i);
+  for (const EpisodeResult& r : rows) {
+    if (set_order.count(r.set) == 0 || agent_order.count(r.agent) == 0) {
+      throw ParseError(resultsPath(dir), 0, "row",
+                       "run of set '" + r.set + "', agent '" + r.agent + "' is not part of this experiment");
+    }
+  }
+  std::sort(rows.begin(), rows.end(), [&](const EpisodeResult& a, const EpisodeResult& b) {
+    return std::make_tuple(set_order[a.set], a.problem, agent_order[a.agent], a.run) <
+           std::make_tuple(set_order[b.set], b.problem, agent_order[b.agent], b.run);
+  });
+  results->rewrite(rows);
+  writeExperimentReport(dir, config, config_text, sets, rows);
+}
+
+ExperimentReport runExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
+                               const std::function<void(long, long)>& progress, const std::atomic<bool>* stop,
+                               const std::function<void(const std::string&)>& log) {
+  const std::vector<PreparedSet> sets = beginExperiment(config, dir, log);
+  ResultsFile results(resultsPath(dir));
   ExperimentReport report;
   report.episodes_resumed = static_cast<long>(results.done().size());
   std::vector<Unit> units;
@@ -195,23 +226,7 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
     return report;
   }
 
-  // Canonical order, so the finished file does not depend on threads or interruptions.
-  std::vector<EpisodeResult> rows = readResultsFile((fs::path(dir) / kResultsFile).string());
-  std::map<std::string, int> set_order, agent_order;
-  for (std::size_t i = 0; i < sets.size(); ++i) set_order[sets[i].name] = static_cast<int>(i);
-  for (std::size_t i = 0; i < config.agents.size(); ++i) agent_order[config.agents[i].name] = static_cast<int>(i);
-  for (const EpisodeResult& r : rows) {
-    if (set_order.count(r.set) == 0 || agent_order.count(r.agent) == 0) {
-      throw ParseError((fs::path(dir) / kResultsFile).string(), 0, "row",
-                       "run of set '" + r.set + "', agent '" + r.agent + "' is not part of this experiment");
-    }
-  }
-  std::sort(rows.begin(), rows.end(), [&](const EpisodeResult& a, const EpisodeResult& b) {
-    return std::make_tuple(set_order[a.set], a.problem, agent_order[a.agent], a.run) <
-           std::make_tuple(set_order[b.set], b.problem, agent_order[b.agent], b.run);
-  });
-  results.rewrite(rows);
-  writeExperimentReport(dir, config, config_text, sets, rows);
+  finishExperiment(config, config_text, dir, sets, &results);
   return report;
 }
 

@@ -34,6 +34,44 @@ std::uint64_t agentSeed(std::uint64_t run_seed);
 /// The seed of the sensor noise in a run with `run_seed`.
 std::uint64_t noiseSeed(std::uint64_t run_seed);
 
+/// One episode advanced a step at a time: the move model (4-connected; a move into an obstacle or off the map
+/// leaves the agent in place and the next scan reports a bump), the scans and the budget. The in-process
+/// runner and the ROS simulator node both drive episodes through this class.
+class Episode {
+ public:
+  /// Starts at the problem's start. `grid` and `sensor` must outlive the episode.
+  Episode(const Problem& problem, const Grid& grid, const SensorModel& sensor, std::uint64_t run_seed, int budget,
+          bool record_path = false);
+  /// True once the agent stood on the goal, the budget was spent or fail() was called.
+  bool done() const { return done_; }
+  /// What the agent senses now (computed on first read).
+  Scan scan() const;
+  /// Applies the agent's action for this step.
+  void apply(agents::Action action);
+  /// Ends the episode as failed for `reason` (e.g. reason::kTimeout).
+  void fail(const char* reason);
+  /// The outcome so far (final once done()).
+  const EpisodeOutcome& outcome() const { return outcome_; }
+  /// Steps taken so far.
+  int step() const { return outcome_.steps; }
+
+ private:
+  const Problem* problem_;
+  const Grid* grid_;
+  const SensorModel* sensor_;
+  std::uint64_t noise_seed_;
+  int budget_;
+  bool record_path_;
+  Cell position_;
+  bool bumped_ = false;
+  bool done_ = false;
+  EpisodeOutcome outcome_;
+};
+
+/// The EpisodeInfo an agent is given at the start of a run of `problem` (prior map only for astar).
+agents::EpisodeInfo episodeInfo(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
+                                std::uint64_t run_seed);
+
 /// Runs episodes in process: the move model (4-connected; a move into an obstacle or off the map leaves the
 /// agent in place and the next scan reports a bump), scans by SensorModel with the agent's noise, the budget.
 /// Holds the sensor and buffers, so reuse one runner for many episodes of one agent configuration.
@@ -44,12 +82,13 @@ class EpisodeRunner {
   /// Runs `agent` from the start of `problem` (whose decoded grid is `grid`) with the given run seed.
   EpisodeOutcome run(const Problem& problem, const Grid& grid, agents::Agent& agent, std::uint64_t run_seed,
                      bool record_path = false);
+  /// The sensor of this configuration (range from the options, noise from the agent).
+  const SensorModel& sensor() const { return sensor_; }
 
  private:
   agents::AgentConfig config_;
   EpisodeOptions options_;
   SensorModel sensor_;
-  bool prior_map_;
 };
 
 }  // namespace simulator

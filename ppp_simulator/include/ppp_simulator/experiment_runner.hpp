@@ -8,6 +8,7 @@
 
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_simulator/experiment_config.hpp"
+#include "ppp_simulator/results_file.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -29,6 +30,19 @@ std::uint64_t runSeed(std::uint64_t experiment_seed, const std::string& set, con
 /// @throws IoError, ParseError, InvalidArgument.
 std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::string& dir,
                                      const std::function<void(const std::string&)>& log = {});
+
+/// Checks `dir`, records the experiment's fingerprint in it and prepares its sets (the first half of an
+/// experiment, shared by runExperiment() and the ROS simulator node). @throws IoError, ParseError, InvalidArgument.
+std::vector<PreparedSet> beginExperiment(const ExperimentConfig& config, const std::string& dir,
+                                         const std::function<void(const std::string&)>& log = {});
+
+/// The path of an experiment directory's results.csv.
+std::string resultsPath(const std::string& dir);
+
+/// Puts every row of results.csv in canonical order and writes summary.csv and the report (the second half).
+/// @throws IoError, ParseError.
+void finishExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
+                      const std::vector<PreparedSet>& sets, ResultsFile* results);
 
 /// What runExperiment() did.
 struct ExperimentReport {

@@ -1,0 +1,98 @@
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <set>
+#include <vector>
+
+#include "ppp_agents/agent_config.hpp"
+#include "ppp_simulator/episode.hpp"
+#include "ppp_simulator/episode_result.hpp"
+#include "ppp_simulator/experiment_runner.hpp"
+#include "ppp_simulator/results_file.hpp"
+
+namespace ppp {
+namespace simulator {
+
+/// What an agent is told when an episode starts (sent with its first scan).
+struct EpisodeStart {
+  int width = 0;                    ///< Map columns.
+  int height = 0;                   ///< Map rows.
+  Cell start;                       ///< Start cell.
+  std::uint64_t agent_seed = 0;     ///< Seed of the agent's own choices.
+  std::vector<std::int8_t> prior_map;  ///< The true map (kScanFree / kScanObstacle per cell) for astar; else empty.
+};
+
+/// One scan of a batch, for one episode and step.
+struct ScanRequest {
+  std::uint32_t episode = 0;         ///< Episode id, unique within the lane.
+  int step = 0;                      ///< Steps taken so far.
+  Cell position;                     ///< The agent's cell.
+  Cell goal;                         ///< The goal cell.
+  bool bumped = false;               ///< The last move bumped.
+  int range = 0;                     ///< Window radius.
+  std::vector<std::int8_t> cells;    ///< The window, row-major.
+  std::optional<EpisodeStart> start;  ///< Set on step 0.
+};
+
+/// One move of a batch, as received from an agent.
+struct MoveReply {
+  std::uint32_t episode = 0;  ///< The episode answered.
+  std::uint32_t step = 0;     ///< The step answered.
+  int action = 0;             ///< An agents::Action number (anything else is invalid).
+};
+
+/// All the runs of one agent configuration in an experiment, played in lockstep batches: up to `batch_size`
+/// episodes are active at once; each round the lane hands out one scan per active episode and takes one move
+/// per episode back. Episodes that finish are replaced from the queue of remaining runs. The moves applied
+/// are the agent's own, so the results equal the in-process runner's for the same seeds.
+class AgentLane {
+ public:
+  /// Queues every run of `config` on every PPP of `sets` not in `done`. @throws InvalidArgument.
+  AgentLane(const agents::AgentConfig& config, const EpisodeOptions& options, const std::vector<PreparedSet>& sets,
+            std::uint64_t experiment_seed, int runs, const std::set<RunKey>& done, int batch_size);
+  /// True when no run is waiting or active.
+  bool finished() const { return queue_.empty() && active_.empty(); }
+  /// Runs not yet finished (active or queued).
+  long remaining() const { return static_cast<long>(queue_.size() + active_.size()); }
+  /// Fills the batch from the queue and returns the scans of every active episode.
+  std::vector<ScanRequest> scans();
+  /// Applies a batch of moves. An active episode with no move gets `missing_reason`; a move for the wrong step
+  /// or with an unknown action fails its episode with reason::kInvalidAction; moves for unknown episodes are
+  /// ignored. Returns the results of the episodes that ended.
+  std::vector<EpisodeResult> answer(const std::vector<MoveReply>& moves, const char* missing_reason);
+  /// Fails every active and queued run with `reason` (the agent is gone) and returns their results.
+  std::vector<EpisodeResult> failAll(const char* reason);
+  /// The configuration served.
+  const agents::AgentConfig& config() const { return config_; }
+
+ private:
+  struct Work {
+    int set;
+    int problem;
+    int run;
+  };
+  struct Active {
+    std::uint32_t id;
+    Work work;
+    std::uint64_t seed;
+    std::unique_ptr<Episode> episode;
+    bool started;
+  };
+  EpisodeResult result(const Work& work, std::uint64_t seed, const EpisodeOutcome& outcome) const;
+
+  agents::AgentConfig config_;
+  EpisodeOptions options_;
+  const std::vector<PreparedSet>& sets_;
+  std::uint64_t experiment_seed_;
+  int batch_size_;
+  SensorModel sensor_;
+  std::deque<Work> queue_;
+  std::vector<Active> active_;
+  std::uint32_t next_id_ = 0;
+};
+
+}  // namespace simulator
+}  // namespace ppp

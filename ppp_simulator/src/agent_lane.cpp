@@ -1,0 +1,131 @@
+#include "ppp_simulator/agent_lane.hpp"
+
+#include <string>
+#include <unordered_map>
+
+#include "ppp_core/error.hpp"
+
+namespace ppp {
+namespace simulator {
+
+AgentLane::AgentLane(const agents::AgentConfig& config, const EpisodeOptions& options,
+                     const std::vector<PreparedSet>& sets, std::uint64_t experiment_seed, int runs,
+                     const std::set<RunKey>& done, int batch_size)
+    : config_((config.validate(), config)),
+      options_((options.validate(), options)),
+      sets_(sets),
+      experiment_seed_(experiment_seed),
+      batch_size_(batch_size),
+      sensor_(SensorOptions{options.sensor_range, config.sensor_noise}) {
+  if (batch_size < 1) throw InvalidArgument("batch_size", "expected at least 1, got " + std::to_string(batch_size));
+  for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
+    for (int p = 0; p < static_cast<int>(sets[s].set.ids.size()); ++p) {
+      for (int run = 0; run < runs; ++run) {
+        if (done.count(RunKey{sets[s].name, sets[s].set.ids[p], config.name, run}) == 0) queue_.push_back({s, p, run});
+      }
+    }
+  }
+}
+
+std::vector<ScanRequest> AgentLane::scans() {
+  while (static_cast<int>(active_.size()) < batch_size_ && !queue_.empty()) {
+    const Work work = queue_.front();
+    queue_.pop_front();
+    const PreparedSet& set = sets_[work.set];
+    const std::uint64_t seed =
+        runSeed(experiment_seed_, set.name, set.set.ids[work.problem], config_.name, work.run);
+    active_.push_back({next_id_++, work, seed,
+                       std::make_unique<Episode>(set.set.problems[work.problem], set.grids[work.problem], sensor_,
+                                                 seed, options_.budget),
+                       false});
+  }
+  std::vector<ScanRequest> requests;
+  requests.reserve(active_.size());
+  for (Active& a : active_) {
+    const Scan scan = a.episode->scan();
+    ScanRequest r;
+    r.episode = a.id;
+    r.step = scan.step();
+    r.position = scan.position();
+    r.goal = scan.goal();
+    r.bumped = scan.bumped();
+    r.range = scan.range();
+    const int cells = (2 * r.range + 1) * (2 * r.range + 1);
+    r.cells.assign(scan.cells(), scan.cells() + cells);
+    if (!a.started) {
+      const PreparedSet& set = sets_[a.work.set];
+      const Grid& grid = set.grids[a.work.problem];
+      const agents::EpisodeInfo info = episodeInfo(set.set.problems[a.work.problem], grid, config_, a.seed);
+      EpisodeStart start{info.width, info.height, info.start, info.seed, {}};
+      if (info.prior_map != nullptr) {
+        for (std::uint8_t cell : grid.cells()) start.prior_map.push_back(cell != 0 ? kScanObstacle : kScanFree);
+      }
+      r.start = std::move(start);
+      a.started = true;
+    }
+    requests.push_back(std::move(r));
+  }
+  return requests;
+}
+
+EpisodeResult AgentLane::result(const Work& work, std::uint64_t seed, const EpisodeOutcome& outcome) const {
+  const PreparedSet& set = sets_[work.set];
+  EpisodeResult r;
+  r.set = set.name;
+  r.problem = set.set.ids[work.problem];
+  r.agent = config_.name;
+  r.run = work.run;
+  r.seed = seed;
+  r.passed = outcome.passed;
+  r.steps = outcome.steps;
+  r.bumps = outcome.bumps;
+  r.path_length = outcome.path_length;
+  r.optimal_length = set.optimal[work.problem];
+  r.reason = outcome.reason;
+  return r;
+}
+
+std::vector<EpisodeResult> AgentLane::answer(const std::vector<MoveReply>& moves, const char* missing_reason) {
+  std::unordered_map<std::uint32_t, const MoveReply*> by_episode;
+  for (const MoveReply& m : moves) by_episode.emplace(m.episode, &m);
+  std::vector<EpisodeResult> finished;
+  std::vector<Active> still_active;
+  for (Active& a : active_) {
+    const auto it = by_episode.find(a.id);
+    if (it == by_episode.end()) {
+      a.episode->fail(missing_reason);
+    } else if (static_cast<int>(it->second->step) != a.episode->step() || !agents::isAction(it->second->action)) {
+      a.episode->fail(reason::kInvalidAction);
+    } else {
+      a.episode->apply(static_cast<agents::Action>(it->second->action));
+    }
+    if (a.episode->done()) {
+      finished.push_back(result(a.work, a.seed, a.episode->outcome()));
+    } else {
+      still_active.push_back(std::move(a));
+    }
+  }
+  active_ = std::move(still_active);
+  return finished;
+}
+
+std::vector<EpisodeResult> AgentLane::failAll(const char* why) {
+  std::vector<EpisodeResult> failed;
+  for (Active& a : active_) {
+    a.episode->fail(why);
+    failed.push_back(result(a.work, a.seed, a.episode->outcome()));
+  }
+  active_.clear();
+  for (const Work& work : queue_) {
+    const PreparedSet& set = sets_[work.set];
+    EpisodeOutcome outcome;
+    outcome.reason = why;
+    failed.push_back(
+        result(work, runSeed(experiment_seed_, set.name, set.set.ids[work.problem], config_.name, work.run), outcome));
+  }
+  queue_.clear();
+  return failed;
+}
+
+}  // namespace simulator
+}  // namespace ppp

@@ -1,0 +1,142 @@
+#include "ppp_simulator/agent_lane.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "ppp_agents/agent_host.hpp"
+#include "ppp_core/error.hpp"
+
+namespace ppp {
+namespace simulator {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Two small evolved sets, prepared once for every test.
+const std::vector<PreparedSet>& smallSets() {
+  static const std::vector<PreparedSet> sets = [] {
+    ExperimentConfig config;
+    for (const char* name : {"turns", "difficulty"}) {
+      generator::GeneratorOptions g;
+      g.fitness = name;
+      g.population = 4;
+      g.matings = 50;
+      g.width = g.height = 12;
+      config.sets.push_back(SetSpec{name, g, ""});
+    }
+    const std::string dir = (fs::temp_directory_path() / "agent_lane_test_sets").string();
+    fs::remove_all(dir);
+    return prepareSets(config, dir);
+  }();
+  return sets;
+}
+
+agents::AgentConfig config(const std::string& type, int memory = 0, double noise = 0.0) {
+  return agents::AgentConfig{type + "_" + std::to_string(memory), type, memory, noise};
+}
+
+/// Plays a lane to the end the way the agent node does: an AgentHost answers every scan batch.
+std::vector<EpisodeResult> playLane(AgentLane& lane) {
+  agents::AgentHost host(lane.config());
+  std::vector<EpisodeResult> results;
+  while (!lane.finished()) {
+    std::vector<MoveReply> moves;
+    for (const ScanRequest& s : lane.scans()) {
+      if (s.start) {
+        agents::EpisodeInfo info{s.start->width, s.start->height, s.start->start, s.goal, s.start->agent_seed, nullptr};
+        Grid prior(s.start->width, s.start->height);
+        for (int i = 0; i < prior.size(); ++i) prior.setObstacle(prior.cellAt(i), s.start->prior_map.size() > 0 &&
+                                                                                      s.start->prior_map[i] == kScanObstacle);
+        host.start(s.episode, info, s.start->prior_map.empty() ? nullptr : &prior);
+      }
+      const Scan scan(s.range, s.cells, s.position, s.goal, s.bumped, s.step);
+      moves.push_back({s.episode, static_cast<std::uint32_t>(s.step), static_cast<int>(host.act(s.episode, scan))});
+    }
+    for (EpisodeResult& r : lane.answer(moves, reason::kTimeout)) results.push_back(std::move(r));
+  }
+  return results;
+}
+
+/// The in-process runner's results for the same runs.
+std::vector<EpisodeResult> inProcess(const agents::AgentConfig& c, int runs) {
+  std::vector<EpisodeResult> results;
+  EpisodeRunner runner(c, EpisodeOptions{});
+  auto agent = agents::makeAgent(c);
+  for (const PreparedSet& set : smallSets()) {
+    for (std::size_t p = 0; p < set.set.problems.size(); ++p) {
+      for (int run = 0; run < runs; ++run) {
+        EpisodeResult r;
+        r.set = set.name;
+        r.problem = set.set.ids[p];
+        r.agent = c.name;
+        r.run = run;
+        r.seed = runSeed(5, r.set, r.problem, r.agent, run);
+        const auto o = runner.run(set.set.problems[p], set.grids[p], *agent, r.seed);
+        r.passed = o.passed;
+        r.steps = o.steps;
+        r.bumps = o.bumps;
+        r.path_length = o.path_length;
+        r.optimal_length = set.optimal[p];
+        r.reason = o.reason;
+        results.push_back(r);
+      }
+    }
+  }
+  return results;
+}
+
+void sortRows(std::vector<EpisodeResult>* rows) {
+  std::sort(rows->begin(), rows->end(), [](const EpisodeResult& a, const EpisodeResult& b) {
+    return std::tie(a.set, a.problem, a.run) < std::tie(b.set, b.problem, b.run);
+  });
+}
+
+TEST(AgentLaneTest, BatchedPlayEqualsTheInProcessRunnerForEveryAgentAndBatchSize) {
+  for (const agents::AgentConfig& c : {config("astar"), config("random"), config("explorer", 5), config("explorer", 0, 0.1),
+                                       config("long_term_explorer"), config("wall_follower_right"),
+                                       config("decision_bumper")}) {
+    auto expected = inProcess(c, 6);
+    sortRows(&expected);
+    for (int batch : {1, 7, 100}) {
+      AgentLane lane(c, EpisodeOptions{}, smallSets(), 5, 6, {}, batch);
+      auto got = playLane(lane);
+      sortRows(&got);
+      ASSERT_EQ(got.size(), expected.size());
+      for (std::size_t i = 0; i < got.size(); ++i) {
+        EXPECT_EQ(toCsvFields(got[i]), toCsvFields(expected[i])) << c.name << " batch " << batch << " row " << i;
+      }
+    }
+  }
+}
+
+TEST(AgentLaneTest, FaultsFailOnlyTheirEpisodes) {
+  AgentLane lane(config("random"), EpisodeOptions{}, smallSets(), 5, 2, {}, 4);
+  const auto scans = lane.scans();
+  ASSERT_EQ(scans.size(), 4u);
+  // Episode 0 answered well, 1 for the wrong step, 2 with an unknown action, 3 not at all.
+  const std::vector<MoveReply> moves{{scans[0].episode, 0, 0}, {scans[1].episode, 5, 0}, {scans[2].episode, 0, 9},
+                                     {999, 0, 1}};
+  const auto ended = lane.answer(moves, reason::kTimeout);
+  ASSERT_EQ(ended.size(), 3u);
+  EXPECT_EQ(ended[0].reason, reason::kInvalidAction);
+  EXPECT_EQ(ended[1].reason, reason::kInvalidAction);
+  EXPECT_EQ(ended[2].reason, reason::kTimeout);
+  EXPECT_EQ(lane.remaining(), 2 * 4 * 2 - 3);
+  const auto lost = lane.failAll(reason::kAgentLost);
+  EXPECT_EQ(lost.size(), static_cast<std::size_t>(2 * 4 * 2 - 3));
+  for (const auto& r : lost) EXPECT_EQ(r.reason, reason::kAgentLost);
+  EXPECT_TRUE(lane.finished());
+}
+
+TEST(AgentLaneTest, DoneRunsAreSkippedAndBadBatchSizeRefused) {
+  std::set<RunKey> done{{"turns", smallSets()[0].set.ids[0], "random_0", 0}};
+  AgentLane lane(config("random"), EpisodeOptions{}, smallSets(), 5, 2, done, 3);
+  EXPECT_EQ(lane.remaining(), 2 * 4 * 2 - 1);
+  EXPECT_THROW(AgentLane(config("random"), EpisodeOptions{}, smallSets(), 5, 2, {}, 0), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace simulator
+}  // namespace ppp
