@@ -9,6 +9,9 @@ packages=(
   # ROS 1 as Debian ships it: catkin, roscpp, rospy, rosbag, roslaunch, message generation
   ros-core-dev python3-rostest rosbash libtf2-ros-dev
   python3-diagnostic-msgs python3-nav-msgs python3-geometry-msgs python3-sensor-msgs
+  python3-visualization-msgs python3-tf2-msgs
+  # rviz, headless under a virtual X server, screenshots and their check
+  rviz xvfb xauth imagemagick python3-pil
   # libraries the core and the tools use
   libpng-dev libyaml-cpp-dev liboctomap-dev libeigen3-dev nlohmann-json3-dev libcli11-dev
   # tests, benchmarks and the fuzzer

@@ -146,5 +146,14 @@ std::vector<AgentConfig> loadAgentConfigs(const std::string& path) {
   return configs;
 }
 
+std::string agentGraphName(const std::string& name) {
+  const auto is_letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); };
+  std::string graph_name = name.empty() || !is_letter(name[0]) ? "agent_" + name : name;
+  for (char& c : graph_name) {
+    if (!is_letter(c) && !(c >= '0' && c <= '9')) c = '_';
+  }
+  return graph_name;
+}
+
 }  // namespace agents
 }  // namespace ppp

@@ -202,6 +202,16 @@ TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgents) {
   }
 }
 
+TEST(AgentConfigTest, GraphNamesAreLegalRosNames) {
+  EXPECT_EQ(agentGraphName("explorer"), "explorer");
+  EXPECT_EQ(agentGraphName("explorer_memory_5x5"), "explorer_memory_5x5");
+  EXPECT_EQ(agentGraphName("explorer_noise_0.1"), "explorer_noise_0_1");
+  EXPECT_EQ(agentGraphName("my-agent/2 b"), "my_agent_2_b");
+  EXPECT_EQ(agentGraphName("5x5"), "agent_5x5");
+  EXPECT_EQ(agentGraphName("_x"), "agent__x");
+  EXPECT_EQ(agentGraphName(""), "agent_");
+}
+
 TEST(AgentConfigTest, MakeAgentBuildsEveryTypeAndEachPassesATinyMap) {
   const auto w = test::world({
       "S..",

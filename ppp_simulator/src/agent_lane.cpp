@@ -50,6 +50,9 @@ std::vector<ScanRequest> AgentLane::scans() {
     r.goal = scan.goal();
     r.bumped = scan.bumped();
     r.range = scan.range();
+    r.set = a.work.set;
+    r.problem = a.work.problem;
+    r.run = a.work.run;
     const int cells = (2 * r.range + 1) * (2 * r.range + 1);
     r.cells.assign(scan.cells(), scan.cells() + cells);
     if (!a.started) {

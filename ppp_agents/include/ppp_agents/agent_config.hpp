@@ -37,5 +37,11 @@ std::vector<AgentConfig> readAgentConfigs(YamlMapReader& reader, const std::stri
 /// Loads config/agents.yaml-style files: a mapping with the key `agents`. @throws IoError, ParseError.
 std::vector<AgentConfig> loadAgentConfigs(const std::string& path);
 
+/// The agent name as a legal ROS graph name (agent node name, topic namespace /NAME/..., tf prefix NAME/):
+/// every character other than a letter, digit or '_' becomes '_', and a name not starting with a letter gets
+/// the prefix "agent_" ("explorer_noise_0.1" -> "explorer_noise_0_1"). ROS-free, so that the simulator and
+/// the launch files agree with the agent node on topic names.
+std::string agentGraphName(const std::string& name);
+
 }  // namespace agents
 }  // namespace ppp

@@ -35,6 +35,9 @@ struct ScanRequest {
   int range = 0;                     ///< Window radius.
   std::vector<std::int8_t> cells;    ///< The window, row-major.
   std::optional<EpisodeStart> start;  ///< Set on step 0.
+  int set = 0;                       ///< Index of the PPP's set.
+  int problem = 0;                   ///< Index of the PPP in its set.
+  int run = 0;                       ///< Run number.
 };
 
 /// One move of a batch, as received from an agent.

@@ -1,0 +1,66 @@
+// agent_node: one agent configuration serving many episodes at once for the simulator node.
+//   subscribes  scans (ppp_msgs/ScanBatch)  one scan per active episode of this agent
+//   publishes   moves (ppp_msgs/MoveBatch)  one move per scan, sent as soon as the batch is answered
+//   parameters  ~type (required), ~name (default: the node's name), ~memory ("KxK" or "full"),
+//               ~sensor_noise (validated and logged; the simulator applies the noise)
+// Topics are relative: start the node as <node name="NAME" ...> (or with ns/remapping) to get /NAME/scans.
+#include <ros/ros.h>
+
+#include "agent_node_parameters.hpp"
+#include "batch_responder.hpp"
+#include "ppp_core/error.hpp"
+
+namespace ppp {
+namespace agents {
+
+/// Answers every ScanBatch at once with one MoveBatch, through the agents library.
+class AgentNode {
+ public:
+  /// Subscribes and advertises in the node's namespace. @throws InvalidArgument for a bad configuration.
+  AgentNode(ros::NodeHandle& nh, const AgentConfig& config)
+      : responder_(config),
+        moves_(nh.advertise<ppp_msgs::MoveBatch>("moves", 10)),
+        scans_(nh.subscribe("scans", 10, &AgentNode::onScans, this, ros::TransportHints().tcpNoDelay())) {}
+
+  /// The resolved topic names, for the log.
+  std::string topics() const { return scans_.getTopic() + " -> " + moves_.getTopic(); }
+
+ private:
+  void onScans(const ppp_msgs::ScanBatch::ConstPtr& batch) {
+    ppp_msgs::MoveBatch moves = responder_.answer(*batch);
+    moves.header.stamp = ros::Time::now();
+    moves_.publish(moves);
+  }
+
+  BatchResponder responder_;
+  ros::Publisher moves_;
+  ros::Subscriber scans_;
+};
+
+}  // namespace agents
+}  // namespace ppp
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "agent");
+  ros::NodeHandle nh;
+  ros::NodeHandle private_nh("~");
+  try {
+    const ppp::agents::AgentConfig config =
+        ppp::agents::readAgentNodeParameters(private_nh, ppp::agents::baseName(ros::this_node::getName()));
+    ppp::agents::AgentNode node(nh, config);
+    const std::string side = std::to_string(config.memory_window);
+    const std::string memory = config.memory_window == 0 ? "full" : side + "x" + side;
+    ROS_INFO("agent '%s': type %s, memory %s, sensor noise %g (applied by the simulator); %s", config.name.c_str(),
+             config.type.c_str(), memory.c_str(), config.sensor_noise, node.topics().c_str());
+    const std::string expected = "/" + ppp::agents::agentGraphName(config.name) + "/scans";
+    if (node.topics().rfind(expected + " ", 0) != 0) {
+      ROS_WARN("agent '%s' listens on %s, but the simulator sends its scans to %s: remap scans/moves or rename "
+               "the node", config.name.c_str(), node.topics().c_str(), expected.c_str());
+    }
+    ros::spin();
+  } catch (const ppp::Error& e) {
+    ROS_FATAL("%s", e.what());
+    return 1;
+  }
+  return 0;
+}

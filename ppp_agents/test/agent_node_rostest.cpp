@@ -1,0 +1,206 @@
+// Wiring of agent_node and faulty_agent_node: topics under the node's name, one MoveBatch per ScanBatch with the
+// batch number and agent name, the prior map reaching astar, rejected scans, the faulty modes, bad parameters.
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+
+#include <condition_variable>
+#include <cstdio>
+#include <deque>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include "batch_responder.hpp"
+#include "ppp_core/sensor.hpp"
+#include "ppp_msgs/MoveBatch.h"
+#include "ppp_msgs/ScanBatch.h"
+
+namespace ppp {
+namespace agents {
+namespace {
+
+/// The simulator's side of the conversation with one agent node: /NAME/scans out, /NAME/moves in.
+class Conversation {
+ public:
+  explicit Conversation(const std::string& name) {
+    ros::NodeHandle nh;
+    scans_ = nh.advertise<ppp_msgs::ScanBatch>("/" + name + "/scans", 10);
+    moves_ = nh.subscribe("/" + name + "/moves", 10, &Conversation::onMoves, this);
+    const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(30.0);
+    while (ros::ok() && ros::WallTime::now() < deadline &&
+           (scans_.getNumSubscribers() == 0 || moves_.getNumPublishers() == 0)) {
+      ros::WallDuration(0.02).sleep();  // a connection count has no event to wait on
+    }
+  }
+  /// True when the node is connected both ways.
+  bool connected() const { return scans_.getNumSubscribers() > 0 && moves_.getNumPublishers() > 0; }
+  /// Sends a batch and returns the answer, if one comes within `timeout` seconds.
+  std::optional<ppp_msgs::MoveBatch> exchange(const ppp_msgs::ScanBatch& batch, double timeout = 10.0) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    received_.clear();
+    scans_.publish(batch);
+    if (!arrived_.wait_for(lock, std::chrono::duration<double>(timeout), [&] { return !received_.empty(); })) {
+      return std::nullopt;
+    }
+    return received_.front();
+  }
+
+ private:
+  void onMoves(const ppp_msgs::MoveBatch::ConstPtr& moves) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    received_.push_back(*moves);
+    arrived_.notify_one();
+  }
+
+  ros::Publisher scans_;
+  ros::Subscriber moves_;
+  std::mutex mutex_;
+  std::condition_variable arrived_;
+  std::deque<ppp_msgs::MoveBatch> received_;
+};
+
+ppp_msgs::GridCell cell(int x, int y) {
+  ppp_msgs::GridCell c;
+  c.x = x;
+  c.y = y;
+  return c;
+}
+
+/// Step 0 of an episode on a 2x2 map whose top-right cell is an obstacle: start top-left, goal bottom-right.
+/// Window values follow that map (range 1).
+ppp_msgs::EpisodeScan cornerScan(std::uint32_t episode, bool prior_map) {
+  ppp_msgs::EpisodeScan s;
+  s.episode = episode;
+  s.step = 0;
+  s.position = cell(0, 0);
+  s.goal = cell(1, 1);
+  s.range = 1;
+  const std::int8_t o = kScanOutOfBounds;
+  s.cells = {o, o, o, o, kScanFree, kScanObstacle, o, kScanFree, kScanFree};
+  s.width = 2;
+  s.height = 2;
+  s.start = cell(0, 0);
+  s.agent_seed = 3;
+  if (prior_map) s.prior_map = {kScanFree, kScanObstacle, kScanFree, kScanFree};
+  return s;
+}
+
+ppp_msgs::ScanBatch batchOf(std::uint32_t number, const std::vector<ppp_msgs::EpisodeScan>& scans) {
+  ppp_msgs::ScanBatch batch;
+  batch.header.stamp = ros::Time::now();
+  batch.batch = number;
+  batch.scans = scans;
+  return batch;
+}
+
+TEST(AgentNodeTest, AnswersEachBatchUnderItsNameAndRejectsMalformedScans) {
+  Conversation agent("explorer_noise_0_1");
+  ASSERT_TRUE(agent.connected()) << "no agent node on /explorer_noise_0_1/{scans,moves}";
+  ppp_msgs::EpisodeScan short_cells = cornerScan(2, false);
+  short_cells.cells.pop_back();
+  const auto moves = agent.exchange(batchOf(17, {cornerScan(1, false), short_cells, cornerScan(3, false)}));
+  ASSERT_TRUE(moves) << "no answer";
+  EXPECT_EQ(moves->agent, "explorer_noise_0.1");
+  EXPECT_EQ(moves->batch, 17u);
+  EXPECT_FALSE(moves->header.stamp.isZero());
+  ASSERT_EQ(moves->moves.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(moves->moves[i].episode, i + 1);
+    EXPECT_EQ(moves->moves[i].step, 0u);
+  }
+  EXPECT_TRUE(isAction(moves->moves[0].action));
+  EXPECT_EQ(moves->moves[1].action, kRejectedAction);
+  EXPECT_TRUE(isAction(moves->moves[2].action));
+
+  ppp_msgs::EpisodeScan next = cornerScan(1, false);
+  next.step = 1;
+  const auto again = agent.exchange(batchOf(18, {next}));
+  ASSERT_TRUE(again) << "the node stopped answering after a malformed scan";
+  ASSERT_EQ(again->moves.size(), 1u);
+  EXPECT_EQ(again->batch, 18u);
+  EXPECT_EQ(again->moves[0].step, 1u);
+  EXPECT_TRUE(isAction(again->moves[0].action));
+}
+
+TEST(AgentNodeTest, AstarPlansOnThePriorMap) {
+  Conversation agent("astar");
+  ASSERT_TRUE(agent.connected());
+  const auto moves = agent.exchange(batchOf(1, {cornerScan(5, true), cornerScan(6, false)}));
+  ASSERT_TRUE(moves);
+  ASSERT_EQ(moves->moves.size(), 2u);
+  EXPECT_EQ(moves->agent, "astar");
+  EXPECT_EQ(moves->moves[0].action, static_cast<std::uint8_t>(Action::South));  // east is the obstacle
+  EXPECT_EQ(moves->moves[1].action, kRejectedAction);                           // astar without its map
+}
+
+TEST(FaultyAgentNodeTest, SilentGarbageAndStopAfter) {
+  Conversation silent("silent");
+  Conversation garbage("garbage");
+  Conversation stop_after("stop_after");
+  ASSERT_TRUE(silent.connected() && garbage.connected() && stop_after.connected());
+  EXPECT_FALSE(silent.exchange(batchOf(1, {cornerScan(1, false)}), 1.0));
+
+  const auto bad = garbage.exchange(batchOf(4, {cornerScan(1, false), cornerScan(2, false)}));
+  ASSERT_TRUE(bad);
+  EXPECT_EQ(bad->batch, 4u);
+  ASSERT_EQ(bad->moves.size(), 2u);
+  for (const auto& m : bad->moves) {
+    EXPECT_EQ(m.action, 200);
+    EXPECT_NE(m.step, 0u);
+  }
+
+  ppp_msgs::EpisodeScan scan = cornerScan(9, false);
+  for (std::uint32_t b = 1; b <= 2; ++b) {
+    const auto moves = stop_after.exchange(batchOf(b, {scan}));
+    ASSERT_TRUE(moves) << "batch " << b;
+    ASSERT_EQ(moves->moves.size(), 1u);
+    EXPECT_TRUE(isAction(moves->moves[0].action));
+    ++scan.step;
+  }
+  EXPECT_FALSE(stop_after.exchange(batchOf(3, {scan}), 1.0));
+}
+
+/// Runs agent_node with private parameters `assignments`; returns its exit status and output.
+int runAgentNode(const std::string& assignments, int index, std::string* output) {
+  // A fresh node name per run, so no parameter of an earlier run is still set.
+  const std::string command =
+      std::string(AGENT_NODE) + " __name:=bad_agent_" + std::to_string(index) + " " + assignments + " 2>&1";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  char buffer[512];
+  while (pipe != nullptr && std::fgets(buffer, sizeof buffer, pipe) != nullptr) *output += buffer;
+  return pipe == nullptr ? -1 : ::pclose(pipe);
+}
+
+TEST(AgentNodeTest, BadParametersStopTheNodeNamingThem) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"", "~type: required; valid: astar, random,"},
+      {"_type:=x", "~type: unknown agent type 'x'; valid: astar, random, wall_follower_left"},
+      {"_type:=7", "~type: expected a string"},
+      {"_type:=explorer _memory:=4x4", "~memory: the window side must be odd"},
+      {"_type:=explorer _memory:=big", "~memory: expected KxK with odd K"},
+      {"_type:=explorer _memory:=5", "~memory: expected a string"},
+      {"_type:=explorer _sensor_noise:=1.5", "~sensor_noise: expected a probability in [0, 1]"},
+      {"_type:=explorer _sensor_noise:=high", "~sensor_noise: expected a number"},
+      {"_type:=explorer _name:=''", "~name: expected a non-empty agent name"},
+  };
+  int index = 0;
+  for (const auto& c : cases) {
+    std::string output;
+    const int status = runAgentNode(c.first, index++, &output);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << c.first << " exit status " << status;
+    EXPECT_NE(output.find(c.second), std::string::npos) << c.first << " printed:\n" << output;
+  }
+}
+
+}  // namespace
+}  // namespace agents
+}  // namespace ppp
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "agent_node_rostest");
+  ros::NodeHandle nh;
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  return RUN_ALL_TESTS();
+}

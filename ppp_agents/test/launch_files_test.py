@@ -1,0 +1,113 @@
+#!/usr/bin/python3
+"""The shipped launch files agree with the shipped configuration.
+
+launch/experiment.launch must start one agent node per entry of config/agents.yaml (node name = the agent's
+ROS name, ~type/~memory/~sensor_noise as in the file, topics /NAME/scans and /NAME/moves), one generator node
+per set of config/experiment.yaml with that set's options, and the simulator waiting for their sets.
+launch/inspect.launch must load with and without a bag. Loads the files with roslaunch's own parser; starts
+nothing. Usage: launch_files_test.py REPOSITORY_ROOT
+"""
+import os
+import re
+import sys
+import unittest
+
+import roslaunch.config
+import yaml
+
+ROOT = os.path.abspath(sys.argv.pop(1) if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), '..', '..'))
+
+
+def graph_name(name):
+    """ppp::agents::agentGraphName: the agent name as a legal ROS name."""
+    prefixed = name if re.match('[A-Za-z]', name) else 'agent_' + name
+    return re.sub('[^A-Za-z0-9_]', '_', prefixed)
+
+
+def load(launch, *args):
+    # The launch files resolve relative paths against $PWD, as a shell keeps it; ctest changes directory without.
+    os.environ['PWD'] = os.getcwd()
+    path = os.path.join(ROOT, 'launch', launch)
+    return roslaunch.config.load_config_default([(path, list(args))], None, assign_machines=False)
+
+
+class ExperimentLaunchTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.config = load('experiment.launch', 'output_dir:=relative/out')
+        cls.nodes = {n.name: n for n in cls.config.nodes}
+        cls.params = {k: p.value for k, p in cls.config.params.items()}
+        with open(os.path.join(ROOT, 'config', 'experiment.yaml')) as f:
+            cls.experiment = yaml.safe_load(f)
+        with open(os.path.join(ROOT, 'config', cls.experiment['agents'])) as f:
+            cls.agents = yaml.safe_load(f)['agents']
+
+    def test_one_agent_node_per_configured_agent(self):
+        agent_nodes = sorted(n.name for n in self.config.nodes if n.type == 'agent_node')
+        self.assertEqual(agent_nodes, sorted(graph_name(a['name']) for a in self.agents))
+        for agent in self.agents:
+            node_name = graph_name(agent['name'])
+            node = self.nodes[node_name]
+            self.assertEqual(node.package, 'ppp_agents')
+            self.assertEqual(node.namespace, '/')
+            self.assertEqual(node.machine_name, 'local')
+            self.assertIn(['scans', '~scans'], [list(r) for r in node.remap_args])
+            self.assertIn(['moves', '~moves'], [list(r) for r in node.remap_args])
+            prefix = '/%s/' % node_name
+            self.assertEqual(self.params[prefix + 'type'], agent['type'], node_name)
+            self.assertEqual(self.params[prefix + 'memory'], agent.get('memory', 'full'), node_name)
+            self.assertEqual(self.params[prefix + 'sensor_noise'], agent.get('sensor_noise', 0.0), node_name)
+            self.assertEqual(self.params.get(prefix + 'name', node_name), agent['name'], node_name)
+
+    def test_generator_nodes_make_the_configured_sets(self):
+        with open(os.path.join(ROOT, 'config', 'generator.yaml')) as f:
+            defaults = yaml.safe_load(f)
+        topics = []
+        for s in self.experiment['sets']:
+            node_name = 'gen_' + s['name']
+            self.assertIn(node_name, self.nodes)
+            self.assertIn(['problem_set', '~problem_set'], [list(r) for r in self.nodes[node_name].remap_args])
+            options = dict(defaults, **s['generator'])
+            for key in ('fitness', 'seed', 'matings', 'population', 'width', 'height', 'max_obstacles'):
+                self.assertEqual(self.params['/%s/%s' % (node_name, key)], options[key], node_name + ' ' + key)
+            self.assertEqual(self.params['/%s/output_dir' % node_name],
+                             os.path.join(os.getcwd(), 'relative', 'out', 'sets', s['name']))
+            topics.append(node_name + '/problem_set')
+        self.assertEqual(self.params['/simulator/wait_for_sets'], topics)
+
+    def test_simulator_is_required_and_gets_absolute_paths(self):
+        simulator = self.nodes['simulator']
+        self.assertTrue(simulator.required)
+        self.assertEqual(self.params['/simulator/output_dir'], os.path.join(os.getcwd(), 'relative', 'out'))
+        self.assertTrue(os.path.isfile(self.params['/simulator/config']))
+        self.assertEqual(self.params['/simulator/batch_size'], 200)
+        self.assertEqual(self.params['/simulator/step_timeout'], 5.0)
+        self.assertIs(self.params['/simulator/record'], True)
+
+    def test_arguments_reach_the_simulator_with_their_types(self):
+        config = load('experiment.launch', 'output_dir:=/abs/out', 'step_timeout:=2', 'batch_size:=7',
+                      'record:=false', 'agent_machine:=other')
+        params = {k: p.value for k, p in config.params.items()}
+        self.assertEqual(params['/simulator/output_dir'], '/abs/out')
+        self.assertEqual(params['/simulator/step_timeout'], 2.0)
+        self.assertIsInstance(params['/simulator/step_timeout'], float)
+        self.assertEqual(params['/simulator/batch_size'], 7)
+        self.assertIs(params['/simulator/record'], False)
+        self.assertEqual({n.machine_name for n in config.nodes if n.type == 'agent_node'}, {'other'})
+
+
+class InspectLaunchTest(unittest.TestCase):
+    def test_rviz_alone_or_with_a_bag(self):
+        config = load('inspect.launch')
+        self.assertEqual([(n.package, n.type) for n in config.nodes], [('rviz', 'rviz')])
+        self.assertEqual(os.path.normpath(config.nodes[0].args.split()[-1]), os.path.join(ROOT, 'launch', 'ppp.rviz'))
+        config = load('inspect.launch', 'bag:=/data/x.bag')
+        players = [n for n in config.nodes if n.package == 'rosbag']
+        self.assertEqual(len(players), 1)
+        self.assertIn('--clock', players[0].args)
+        self.assertIn('/data/x.bag', players[0].args)
+        self.assertIs(config.params['/use_sim_time'].value, True)
+
+
+if __name__ == '__main__':
+    unittest.main()

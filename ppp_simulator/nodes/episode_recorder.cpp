@@ -1,0 +1,224 @@
+#include "episode_recorder.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include <sensor_msgs/LaserScan.h>
+#include <tf2_msgs/TFMessage.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include "ppp_agents/agent_config.hpp"
+#include "ppp_core/error.hpp"
+#include "ppp_core/map_frame.hpp"
+#include "ppp_msgs/conversions.h"
+#include "ppp_simulator/scan_rays.hpp"
+
+namespace ppp {
+namespace simulator {
+
+namespace {
+
+constexpr int kLaserRays = 72;
+constexpr double kSecondsPerStep = 0.1;     // bag time of one recorded step
+constexpr int kPathEveryStep = 10;          // a recorded path is written every this many steps (and at step 0)
+
+visualization_msgs::Marker cellMarker(const MapFrame& frame, Cell cell, int id, float r, float g, float b,
+                                      const std::string& ns) {
+  visualization_msgs::Marker m;
+  m.header.frame_id = "map";
+  m.header.stamp = ros::Time::now();
+  m.ns = ns;
+  m.id = id;
+  m.type = visualization_msgs::Marker::CUBE;
+  m.action = visualization_msgs::Marker::ADD;
+  m.pose.position.x = frame.centreX(cell);
+  m.pose.position.y = frame.centreY(cell);
+  m.pose.position.z = 0.1 * frame.resolution;
+  m.pose.orientation.w = 1.0;
+  m.scale.x = m.scale.y = 0.8 * frame.resolution;
+  m.scale.z = 0.2 * frame.resolution;
+  m.color.r = r;
+  m.color.g = g;
+  m.color.b = b;
+  m.color.a = 1.0;
+  return m;
+}
+
+}  // namespace
+
+EpisodeRecorder::EpisodeRecorder(ros::NodeHandle& nh, const SimulatorParameters& parameters,
+                                 const std::vector<PreparedSet>& sets, const std::vector<std::string>& agent_names,
+                                 int budget)
+    : parameters_(parameters), sets_(sets), budget_(budget) {
+  map_publisher_ = nh.advertise<nav_msgs::OccupancyGrid>("/map", 1, true);
+  markers_publisher_ = nh.advertise<visualization_msgs::MarkerArray>("/ppp/markers", 1, true);
+  results_publisher_ = nh.advertise<ppp_msgs::EpisodeResult>("/ppp/results", 1000);
+  for (const PreparedSet& set : sets) {
+    set_publishers_[set.name] = nh.advertise<ppp_msgs::ProblemSet>("/ppp/sets/" + set.name, 1, true);
+  }
+  for (const std::string& agent : agent_names) {
+    const std::string graph_name = agents::agentGraphName(agent);
+    path_publishers_[agent] = nh.advertise<nav_msgs::Path>("/" + graph_name + "/path", 10, true);
+    scan_publishers_[agent] = nh.advertise<sensor_msgs::LaserScan>("/" + graph_name + "/scan", 10);
+  }
+  bag_start_ = ros::Time::now();
+  if (parameters.record) {
+    const std::string path = (std::filesystem::path(parameters.output_dir) / "experiment.bag").string();
+    try {
+      bag_.open(path, rosbag::bagmode::Write);
+    } catch (const rosbag::BagException& e) {
+      throw IoError(path, std::string("cannot write the bag: ") + e.what());
+    }
+    bag_open_ = true;
+  }
+}
+
+template <typename M>
+void EpisodeRecorder::write(const std::string& topic, const ros::Time& time, const M& message, bool latched) {
+  if (!bag_open_) return;
+  if (!latched) {
+    bag_.write(topic, time, message);
+    return;
+  }
+  // A latching connection header, so that `rosbag play` latches the topic again for late subscribers (rviz).
+  auto header = boost::make_shared<ros::M_string>();
+  (*header)["type"] = ros::message_traits::datatype<M>();
+  (*header)["md5sum"] = ros::message_traits::md5sum<M>();
+  (*header)["message_definition"] = ros::message_traits::definition<M>();
+  (*header)["callerid"] = ros::this_node::getName();
+  (*header)["latching"] = "1";
+  bag_.write(topic, time, message, header);
+}
+
+bool EpisodeRecorder::sampled(const ScanRequest& scan) const {
+  return scan.run < parameters_.record_runs && scan.problem < parameters_.record_problems;
+}
+
+ros::Time EpisodeRecorder::slotTime(int slot, int step) const {
+  const double slot_seconds = (budget_ + 10) * kSecondsPerStep;
+  return bag_start_ + ros::Duration(slot * slot_seconds + step * kSecondsPerStep);
+}
+
+void EpisodeRecorder::recordSets(const std::vector<ppp_msgs::ProblemSet>& sets) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (const auto& set : sets) {
+    set_publishers_.at(set.name).publish(set);
+    write("/ppp/sets/" + set.name, bag_start_, set, true);
+  }
+}
+
+void EpisodeRecorder::recordScans(const std::string& agent, const std::vector<ScanRequest>& scans) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (const ScanRequest& s : scans) {
+    if (!sampled(s)) continue;
+    // One recorded episode per agent at a time; sampled episodes starting meanwhile are not drawn.
+    Recording& recording = recordings_[agent];
+    if (s.start && recording.done) {
+      recording = Recording{s.episode, sets_[s.set].name, sets_[s.set].set.ids[s.problem], s.run,
+                            slots_used_[agent]++, false};
+    } else if (recording.done || recording.episode != s.episode) {
+      continue;
+    }
+    const int slot = recording.slot;
+    const PreparedSet& set = sets_[s.set];
+    const Problem& problem = set.set.problems[s.problem];
+    const MapFrame frame{problem.width, problem.height, parameters_.resolution};
+    const ros::Time stamp = slotTime(slot, s.step);
+    const std::string base_link = agents::agentGraphName(agent) + "/base_link";
+    if (s.start) {
+      nav_msgs::OccupancyGrid map = ppp_msgs::toOccupancyGrid(set.grids[s.problem], parameters_.resolution);
+      map.header.stamp = stamp;
+      visualization_msgs::MarkerArray markers;
+      markers.markers.push_back(cellMarker(frame, problem.start, 0, 0.1f, 0.8f, 0.1f, "start"));
+      markers.markers.push_back(cellMarker(frame, problem.goal, 1, 0.9f, 0.1f, 0.1f, "goal"));
+      if (slot >= maps_written_) {
+        // The first agent to start a slot publishes its map; every agent's slot runs on the same PPP.
+        map_publisher_.publish(map);
+        markers_publisher_.publish(markers);
+        write("/map", stamp, map, true);
+        write("/ppp/markers", stamp, markers, true);
+        maps_written_ = slot + 1;
+      }
+      paths_[agent] = nav_msgs::Path();
+      paths_[agent].header.frame_id = "map";
+    }
+    geometry_msgs::TransformStamped transform;
+    transform.header.stamp = stamp;
+    transform.header.frame_id = "map";
+    transform.child_frame_id = base_link;
+    transform.transform.translation.x = frame.centreX(s.position);
+    transform.transform.translation.y = frame.centreY(s.position);
+    transform.transform.rotation.w = 1.0;
+    transform.header.stamp = ros::Time::now();
+    broadcaster_.sendTransform(transform);
+    transform.header.stamp = stamp;
+    tf2_msgs::TFMessage tf;
+    tf.transforms.push_back(transform);
+    write("/tf", stamp, tf);
+
+    nav_msgs::Path& path = paths_[agent];
+    geometry_msgs::PoseStamped pose;
+    pose.header = transform.header;
+    pose.pose.position.x = transform.transform.translation.x;
+    pose.pose.position.y = transform.transform.translation.y;
+    pose.pose.orientation.w = 1.0;
+    path.header.stamp = stamp;
+    path.poses.push_back(pose);
+    if (s.step % kPathEveryStep == 0) {
+      path_publishers_.at(agent).publish(path);
+      write("/" + agents::agentGraphName(agent) + "/path", stamp, path);
+    }
+
+    sensor_msgs::LaserScan laser;
+    laser.header.stamp = stamp;
+    laser.header.frame_id = base_link;
+    laser.angle_min = 0.0f;
+    laser.angle_increment = static_cast<float>(2.0 * M_PI / kLaserRays);
+    laser.angle_max = laser.angle_increment * (kLaserRays - 1);
+    laser.range_min = 0.0f;
+    laser.range_max = static_cast<float>((s.range + 0.5) * std::sqrt(2.0) * parameters_.resolution);
+    for (float r : windowRanges(s.cells.data(), s.range, kLaserRays)) {
+      laser.ranges.push_back(std::isinf(r) ? r : r * static_cast<float>(parameters_.resolution));
+    }
+    scan_publishers_.at(agent).publish(laser);
+    write("/" + agents::agentGraphName(agent) + "/scan", stamp, laser);
+  }
+}
+
+void EpisodeRecorder::recordResults(const std::vector<EpisodeResult>& results) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (const EpisodeResult& r : results) {
+    // The recorded episode of this agent ended: write its whole path and free the agent for the next one.
+    const auto recording = recordings_.find(r.agent);
+    if (recording != recordings_.end() && !recording->second.done && recording->second.set == r.set &&
+        recording->second.problem == r.problem && recording->second.run == r.run) {
+      recording->second.done = true;
+      const nav_msgs::Path& path = paths_[r.agent];
+      path_publishers_.at(r.agent).publish(path);
+      write("/" + agents::agentGraphName(r.agent) + "/path", path.header.stamp, path);
+    }
+    ppp_msgs::EpisodeResult m;
+    m.set = r.set;
+    m.problem = r.problem;
+    m.agent = r.agent;
+    m.run = static_cast<std::uint32_t>(r.run);
+    m.seed = r.seed;
+    m.passed = r.passed;
+    m.steps = static_cast<std::uint32_t>(r.steps);
+    m.bumps = static_cast<std::uint32_t>(r.bumps);
+    m.path_length = static_cast<std::uint32_t>(r.path_length);
+    m.optimal_length = r.optimal_length;
+    m.reason = r.reason;
+    results_publisher_.publish(m);
+    write("/ppp/results", bag_start_, m);
+  }
+}
+
+void EpisodeRecorder::close() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (bag_open_) bag_.close();
+  bag_open_ = false;
+}
+
+}  // namespace simulator
+}  // namespace ppp

@@ -1,0 +1,77 @@
+#pragma once
+
+#include <map>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <nav_msgs/Path.h>
+#include <ros/ros.h>
+#include <rosbag/bag.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include "ppp_msgs/EpisodeResult.h"
+#include "ppp_msgs/ProblemSet.h"
+#include "ppp_simulator/agent_lane.hpp"
+#include "simulator_parameters.hpp"
+
+namespace ppp {
+namespace simulator {
+
+/// Publishes what standard ROS tools understand about a sample of episodes (the map, tf map -> G/base_link,
+/// G/path, G/scan as sensor_msgs/LaserScan, start/goal markers; G = the agent's graph name) and every result on
+/// /ppp/results, and writes all of it to <output_dir>/experiment.bag. In the bag, step k of a recorded episode
+/// is stamped 0.1 s * k after the start of that episode's slot, and every agent's n-th recorded episode shares
+/// slot n (they all run on the same PPP), so `rosbag play` shows the agents moving side by side on their map.
+/// Thread-safe: every lane thread reports to it.
+class EpisodeRecorder {
+ public:
+  /// Opens the bag (when recording) and advertises the topics. @throws IoError when the bag cannot be opened.
+  EpisodeRecorder(ros::NodeHandle& nh, const SimulatorParameters& parameters, const std::vector<PreparedSet>& sets,
+                  const std::vector<std::string>& agent_names, int budget);
+  /// Publishes and records the PPP sets (latched /ppp/sets/<name>).
+  void recordSets(const std::vector<ppp_msgs::ProblemSet>& sets);
+  /// Publishes and records the sampled episodes among a batch of scans of `agent`.
+  void recordScans(const std::string& agent, const std::vector<ScanRequest>& scans);
+  /// Publishes and records finished episodes.
+  void recordResults(const std::vector<EpisodeResult>& results);
+  /// Closes the bag.
+  void close();
+
+ private:
+  /// The episode an agent is being recorded in.
+  struct Recording {
+    std::uint32_t episode = 0;
+    std::string set;
+    std::string problem;
+    int run = 0;
+    int slot = 0;
+    bool done = true;
+  };
+  bool sampled(const ScanRequest& scan) const;
+  ros::Time slotTime(int slot, int step) const;
+  template <typename M>
+  void write(const std::string& topic, const ros::Time& time, const M& message, bool latched = false);
+
+  SimulatorParameters parameters_;
+  const std::vector<PreparedSet>& sets_;
+  std::mutex mutex_;
+  rosbag::Bag bag_;
+  bool bag_open_ = false;
+  ros::Publisher map_publisher_;
+  ros::Publisher markers_publisher_;
+  ros::Publisher results_publisher_;
+  std::map<std::string, ros::Publisher> set_publishers_;
+  std::map<std::string, ros::Publisher> path_publishers_;
+  std::map<std::string, ros::Publisher> scan_publishers_;
+  std::map<std::string, nav_msgs::Path> paths_;
+  std::map<std::string, Recording> recordings_;    // per agent: the episode being (or last) recorded
+  std::map<std::string, int> slots_used_;          // per agent: recorded episodes started so far
+  int maps_written_ = 0;                           // slots whose map is in the bag
+  int budget_;
+  ros::Time bag_start_;
+  tf2_ros::TransformBroadcaster broadcaster_;
+};
+
+}  // namespace simulator
+}  // namespace ppp

@@ -1,0 +1,260 @@
+// simulator_node: runs an experiment with every agent in its own process. For each agent configuration NAME
+// of the experiment it publishes ppp_msgs/ScanBatch on /NAME/scans (one scan per active episode) and takes
+// ppp_msgs/MoveBatch from /NAME/moves, in lockstep, through the same AgentLane and episode code as the
+// in-process runner, so the results equal `ppp experiment`'s. Results go to results.csv as episodes end;
+// summary.csv and the report are written when all runs are done; a sample of episodes and every result are
+// recorded in experiment.bag. The node exits when the experiment is finished.
+#include <ros/ros.h>
+#include <ros/network.h>
+#include <ros/topic.h>
+#include <xmlrpcpp/XmlRpcClient.h>
+
+#include <atomic>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "episode_recorder.hpp"
+#include "ppp_core/error.hpp"
+#include "ppp_core/text_file.hpp"
+#include "ppp_msgs/MoveBatch.h"
+#include "ppp_msgs/ProblemSet.h"
+#include "ppp_msgs/ScanBatch.h"
+#include "ppp_msgs/conversions.h"
+#include "ppp_simulator/agent_lane.hpp"
+#include "ppp_simulator/experiment_runner.hpp"
+#include "simulator_parameters.hpp"
+
+namespace ppp {
+namespace simulator {
+
+namespace {
+
+ppp_msgs::GridCell toCell(Cell c) {
+  ppp_msgs::GridCell m;
+  m.x = c.x;
+  m.y = c.y;
+  return m;
+}
+
+ppp_msgs::EpisodeScan toMessage(const ScanRequest& r) {
+  ppp_msgs::EpisodeScan m;
+  m.episode = r.episode;
+  m.step = static_cast<std::uint32_t>(r.step);
+  m.position = toCell(r.position);
+  m.goal = toCell(r.goal);
+  m.bumped = r.bumped;
+  m.range = static_cast<std::uint8_t>(r.range);
+  m.cells = r.cells;
+  if (r.start) {
+    m.width = static_cast<std::uint32_t>(r.start->width);
+    m.height = static_cast<std::uint32_t>(r.start->height);
+    m.start = toCell(r.start->start);
+    m.agent_seed = r.start->agent_seed;
+    m.prior_map = r.start->prior_map;
+  }
+  return m;
+}
+
+}  // namespace
+
+/// The batched conversation with one agent node.
+class LaneRunner {
+ public:
+  LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameters, AgentLane* lane, ResultsFile* results,
+             EpisodeRecorder* recorder)
+      : parameters_(parameters), lane_(lane), results_(results), recorder_(recorder) {
+    const std::string graph_name = agents::agentGraphName(lane->config().name);
+    scans_ = nh.advertise<ppp_msgs::ScanBatch>("/" + graph_name + "/scans", 2);
+    moves_ = nh.subscribe("/" + graph_name + "/moves", 2, &LaneRunner::onMoves, this,
+                          ros::TransportHints().tcpNoDelay());
+  }
+
+  /// Plays every run of the lane; returns when it is finished or ROS shuts down.
+  void run() {
+    const std::string& name = lane_->config().name;
+    if (!waitForAgent()) {
+      ROS_ERROR("agent '%s' never connected within %.0f s: its %ld runs fail as agent_lost", name.c_str(),
+                parameters_.connect_timeout, lane_->remaining());
+      report(lane_->failAll(reason::kAgentLost));
+      return;
+    }
+    int silent_batches = 0;
+    for (std::uint32_t batch = 1; !lane_->finished() && ros::ok(); ++batch) {
+      const std::vector<ScanRequest> scans = lane_->scans();
+      ppp_msgs::ScanBatch message;
+      message.header.stamp = ros::Time::now();
+      message.agent = name;
+      message.batch = batch;
+      for (const ScanRequest& s : scans) message.scans.push_back(toMessage(s));
+      recorder_->recordScans(name, scans);
+      std::unique_lock<std::mutex> lock(mutex_);
+      expected_batch_ = batch;
+      reply_.reset();
+      scans_.publish(message);
+      const bool answered = reply_ready_.wait_for(lock, std::chrono::duration<double>(parameters_.step_timeout),
+                                                  [&] { return reply_.has_value() || !ros::ok(); });
+      std::vector<MoveReply> moves;
+      if (answered && reply_) moves = std::move(*reply_);
+      lock.unlock();
+      if (answered && reply_) {
+        silent_batches = 0;
+        report(lane_->answer(moves, reason::kTimeout));
+      } else if (!agentAlive()) {
+        ROS_ERROR("agent '%s' is gone: its %ld unfinished runs fail as agent_lost", name.c_str(), lane_->remaining());
+        report(lane_->failAll(reason::kAgentLost));
+      } else if (++silent_batches >= parameters_.timeouts_before_giving_up) {
+        ROS_ERROR("agent '%s' did not answer %d batches in a row: its %ld unfinished runs fail as timeout",
+                  name.c_str(), silent_batches, lane_->remaining());
+        report(lane_->failAll(reason::kTimeout));
+      } else {
+        ROS_WARN("agent '%s' did not answer batch %u within %.1f s: its episodes fail as timeout", name.c_str(), batch,
+                 parameters_.step_timeout);
+        report(lane_->answer({}, reason::kTimeout));
+      }
+    }
+  }
+
+ private:
+  bool waitForAgent() {
+    const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(parameters_.connect_timeout);
+    while (ros::ok() && ros::WallTime::now() < deadline) {
+      if (scans_.getNumSubscribers() > 0 && moves_.getNumPublishers() > 0) return true;
+      ros::WallDuration(0.05).sleep();  // polling a connection count: there is no event to wait on
+    }
+    return false;
+  }
+
+  /// True while some process that publishes the agent's moves answers on its XML-RPC API (a killed node's
+  /// registration stays with the master, so the registration alone says nothing).
+  bool agentAlive() {
+    XmlRpc::XmlRpcValue args, result, state;
+    args[0] = ros::this_node::getName();
+    if (!ros::master::execute("getSystemState", args, result, state, false)) return true;  // cannot tell
+    const std::string topic = moves_.getTopic();
+    for (int i = 0; i < state[0].size(); ++i) {
+      if (static_cast<std::string>(state[0][i][0]) != topic) continue;
+      for (int j = 0; j < state[0][i][1].size(); ++j) {
+        XmlRpc::XmlRpcValue lookup_args, lookup_result, uri;
+        lookup_args[0] = ros::this_node::getName();
+        lookup_args[1] = state[0][i][1][j];
+        if (!ros::master::execute("lookupNode", lookup_args, lookup_result, uri, false)) continue;
+        std::string host;
+        std::uint32_t port = 0;
+        if (!ros::network::splitURI(static_cast<std::string>(uri), host, port)) continue;
+        XmlRpc::XmlRpcClient client(host.c_str(), static_cast<int>(port), "/");
+        XmlRpc::XmlRpcValue pid_args, pid;
+        pid_args[0] = ros::this_node::getName();
+        if (client.execute("getPid", pid_args, pid) && !client.isFault()) return true;
+      }
+    }
+    return false;
+  }
+
+  void onMoves(const ppp_msgs::MoveBatch::ConstPtr& message) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (message->batch != expected_batch_ || reply_) return;  // late answer to an earlier batch
+    std::vector<MoveReply> moves;
+    moves.reserve(message->moves.size());
+    for (const auto& m : message->moves) moves.push_back({m.episode, m.step, m.action});
+    reply_ = std::move(moves);
+    reply_ready_.notify_one();
+  }
+
+  void report(const std::vector<EpisodeResult>& results) {
+    if (results.empty()) return;
+    results_->append(results);
+    recorder_->recordResults(results);
+  }
+
+  SimulatorParameters parameters_;
+  AgentLane* lane_;
+  ResultsFile* results_;
+  EpisodeRecorder* recorder_;
+  ros::Publisher scans_;
+  ros::Subscriber moves_;
+  std::mutex mutex_;
+  std::condition_variable reply_ready_;
+  std::uint32_t expected_batch_ = 0;
+  std::optional<std::vector<MoveReply>> reply_;
+};
+
+/// Waits for the generator nodes' sets, then runs the experiment.
+int runSimulator(ros::NodeHandle& nh, const SimulatorParameters& parameters) {
+  const ExperimentConfig config = loadExperimentConfig(parameters.config);
+  const std::string config_text = readTextFile(parameters.config, 1u << 20);
+  checkExperimentDirectory(config, parameters.output_dir);
+  for (const std::string& topic : parameters.wait_for_sets) {
+    ROS_INFO("waiting for the PPP set on %s", topic.c_str());
+    if (!ros::topic::waitForMessage<ppp_msgs::ProblemSet>(topic, nh, ros::Duration(parameters.set_timeout))) {
+      throw InvalidArgument("~wait_for_sets", "no ppp_msgs/ProblemSet on " + topic + " within " +
+                                                  std::to_string(parameters.set_timeout) + " s");
+    }
+  }
+  const std::vector<PreparedSet> sets = beginExperiment(config, parameters.output_dir, [](const std::string& line) {
+    ROS_INFO("%s", line.c_str());
+  });
+  ResultsFile results(resultsPath(parameters.output_dir));
+  std::vector<std::string> agent_names;
+  for (const auto& a : config.agents) agent_names.push_back(a.name);
+  EpisodeRecorder recorder(nh, parameters, sets, agent_names, config.episode.budget);
+  std::vector<ppp_msgs::ProblemSet> set_messages;
+  for (const PreparedSet& set : sets) {
+    ppp_msgs::ProblemSet m;
+    m.header.stamp = ros::Time::now();
+    m.header.frame_id = "map";
+    m.name = set.name;
+    for (std::size_t i = 0; i < set.set.problems.size(); ++i) {
+      m.problems.push_back(ppp_msgs::toMessage(set.set.problems[i], set.set.ids[i], parameters.resolution));
+    }
+    set_messages.push_back(std::move(m));
+  }
+  recorder.recordSets(set_messages);
+
+  std::vector<std::unique_ptr<AgentLane>> lanes;
+  std::vector<std::unique_ptr<LaneRunner>> runners;
+  long remaining = 0;
+  for (const auto& agent : config.agents) {
+    lanes.push_back(std::make_unique<AgentLane>(agent, config.episode, sets, config.seed, config.runs, results.done(),
+                                                parameters.batch_size));
+    remaining += lanes.back()->remaining();
+    runners.push_back(std::make_unique<LaneRunner>(nh, parameters, lanes.back().get(), &results, &recorder));
+  }
+  ROS_INFO("running %ld episodes (%zu already done) with %zu agent nodes, batches of %d", remaining,
+           results.done().size(), lanes.size(), parameters.batch_size);
+  std::vector<std::thread> threads;
+  for (auto& runner : runners) threads.emplace_back([&runner] { runner->run(); });
+  for (std::thread& t : threads) t.join();
+  recorder.close();
+  if (!ros::ok()) {
+    ROS_WARN("interrupted: every finished run is in results.csv; restart on the same output_dir to resume");
+    return 130;
+  }
+  finishExperiment(config, config_text, parameters.output_dir, sets, &results);
+  ROS_INFO("experiment done: report in %s/report.html", parameters.output_dir.c_str());
+  return 0;
+}
+
+}  // namespace simulator
+}  // namespace ppp
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "simulator");
+  ros::NodeHandle nh;
+  ros::NodeHandle private_nh("~");
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+  int status = 1;
+  try {
+    status = ppp::simulator::runSimulator(nh, ppp::simulator::readSimulatorParameters(private_nh));
+  } catch (const ppp::Error& e) {
+    ROS_FATAL("simulator: %s", e.what());
+  } catch (const std::exception& e) {
+    ROS_FATAL("simulator: unexpected failure: %s", e.what());
+  }
+  spinner.stop();
+  ros::shutdown();
+  return status;
+}

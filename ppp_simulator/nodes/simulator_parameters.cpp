@@ -1,0 +1,60 @@
+#include "simulator_parameters.hpp"
+
+#include <sstream>
+
+#include "ppp_core/error.hpp"
+
+namespace ppp {
+namespace simulator {
+
+namespace {
+
+template <typename T>
+void readParameter(const ros::NodeHandle& nh, const std::string& name, T* value, const char* expected) {
+  if (!nh.hasParam(name)) return;
+  if (!nh.getParam(name, *value)) throw InvalidArgument("~" + name, std::string("expected ") + expected);
+}
+
+void requirePositive(double value, const char* name) {
+  if (!(value > 0)) throw InvalidArgument(name, "expected a positive number, got " + std::to_string(value));
+}
+
+}  // namespace
+
+SimulatorParameters readSimulatorParameters(const ros::NodeHandle& nh) {
+  SimulatorParameters p;
+  readParameter(nh, "config", &p.config, "the path of an experiment YAML");
+  readParameter(nh, "output_dir", &p.output_dir, "a directory path");
+  readParameter(nh, "batch_size", &p.batch_size, "an integer");
+  readParameter(nh, "step_timeout", &p.step_timeout, "a number of seconds");
+  readParameter(nh, "timeouts_before_giving_up", &p.timeouts_before_giving_up, "an integer");
+  readParameter(nh, "connect_timeout", &p.connect_timeout, "a number of seconds");
+  if (nh.hasParam("wait_for_sets") && !nh.getParam("wait_for_sets", p.wait_for_sets)) {
+    // Also accepted as one comma-separated string (what `_wait_for_sets:=a,b` gives on a command line).
+    std::string topics;
+    if (!nh.getParam("wait_for_sets", topics)) throw InvalidArgument("~wait_for_sets", "expected a list of topics");
+    std::stringstream stream(topics);
+    for (std::string topic; std::getline(stream, topic, ',');) {
+      if (!topic.empty()) p.wait_for_sets.push_back(topic);
+    }
+  }
+  readParameter(nh, "set_timeout", &p.set_timeout, "a number of seconds");
+  readParameter(nh, "record", &p.record, "true or false");
+  readParameter(nh, "record_runs", &p.record_runs, "an integer");
+  readParameter(nh, "record_problems", &p.record_problems, "an integer");
+  readParameter(nh, "resolution", &p.resolution, "a number of metres per cell");
+  if (p.config.empty()) throw InvalidArgument("~config", "required: the experiment YAML (e.g. config/experiment.yaml)");
+  if (p.output_dir.empty()) throw InvalidArgument("~output_dir", "required: where results, report and bag go");
+  if (p.batch_size < 1) throw InvalidArgument("~batch_size", "expected at least 1, got " + std::to_string(p.batch_size));
+  requirePositive(p.step_timeout, "~step_timeout");
+  requirePositive(p.connect_timeout, "~connect_timeout");
+  requirePositive(p.set_timeout, "~set_timeout");
+  requirePositive(p.resolution, "~resolution");
+  if (p.timeouts_before_giving_up < 1) throw InvalidArgument("~timeouts_before_giving_up", "expected at least 1");
+  if (p.record_runs < 0) throw InvalidArgument("~record_runs", "expected >= 0");
+  if (p.record_problems < 0) throw InvalidArgument("~record_problems", "expected >= 0");
+  return p;
+}
+
+}  // namespace simulator
+}  // namespace ppp

@@ -1,0 +1,31 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <ros/node_handle.h>
+
+namespace ppp {
+namespace simulator {
+
+/// The simulator node's `~` parameters.
+struct SimulatorParameters {
+  std::string config;                       ///< Experiment YAML (required), as for `ppp experiment`.
+  std::string output_dir;                   ///< Output directory (required); rerun on it to resume.
+  int batch_size = 200;                     ///< Episodes per agent per message, >= 1.
+  double step_timeout = 5.0;                ///< Seconds an agent has to answer a batch.
+  int timeouts_before_giving_up = 3;        ///< Consecutive unanswered batches after which an agent's runs all fail.
+  double connect_timeout = 60.0;            ///< Seconds to wait for each agent node to connect.
+  std::vector<std::string> wait_for_sets;   ///< ppp_msgs/ProblemSet topics to wait for (a list, or "a,b").
+  double set_timeout = 900.0;               ///< Seconds to wait for each of them.
+  bool record = true;                       ///< Write <output_dir>/experiment.bag.
+  int record_runs = 1;                      ///< Runs 0 .. record_runs-1 of ...
+  int record_problems = 1;                  ///< ... the first record_problems PPPs of each set are recorded in detail.
+  double resolution = 1.0;                  ///< Metres per cell in the map frame.
+};
+
+/// Reads and checks the parameters. @throws InvalidArgument naming the parameter ("~batch_size").
+SimulatorParameters readSimulatorParameters(const ros::NodeHandle& private_nh);
+
+}  // namespace simulator
+}  // namespace ppp

@@ -1,0 +1,244 @@
+// The ROS experiment end to end: simulator_node (started here as a child process) with agent nodes from
+// ros_experiment.test. Checks the results equal `ppp experiment`'s, the bag, a resume after SIGKILL,
+// faulty and killed agents, and bad parameters.
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+#include <xmlrpcpp/XmlRpcClient.h>
+
+#include <nav_msgs/OccupancyGrid.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <condition_variable>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "ppp_core/ppp_file.hpp"
+#include "ppp_core/text_file.hpp"
+#include "ppp_msgs/EpisodeResult.h"
+#include "ppp_msgs/conversions.h"
+#include "ppp_simulator/results_file.hpp"
+
+namespace ppp {
+namespace simulator {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kTestDir = PPP_ROS_TEST_DIR;
+
+/// A shell command run as a child process, its output captured in a file.
+class Child {
+ public:
+  Child(const std::string& command, const std::string& log) : log_(log) {
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      ::execl("/bin/sh", "sh", "-c", (command + " > " + log + " 2>&1").c_str(), static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+  }
+  /// Waits for the exit; returns the exit status (128 + signal when killed).
+  int wait() {
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  }
+  /// Sends a signal to the shell's child (the node) and the shell.
+  void kill(int signal) {
+    const std::string command = "pkill -" + std::to_string(signal) + " -P " + std::to_string(pid_);
+    if (std::system(command.c_str()) != 0) ::kill(pid_, signal);
+  }
+  /// What the command printed.
+  std::string output() const { return readTextFile(log_, 1u << 24); }
+
+ private:
+  pid_t pid_;
+  std::string log_;
+};
+
+/// Counts the results published on /ppp/results, per agent.
+class ResultCounter {
+ public:
+  ResultCounter() { subscriber_ = nh_.subscribe("/ppp/results", 10000, &ResultCounter::onResult, this); }
+  /// Waits (up to `seconds`) until `agent` has at least `count` results; false on time-out.
+  bool waitFor(const std::string& agent, int count, double seconds) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    return changed_.wait_for(lock, std::chrono::duration<double>(seconds), [&] { return counts_[agent] >= count; });
+  }
+
+ private:
+  void onResult(const ppp_msgs::EpisodeResult::ConstPtr& result) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++counts_[result->agent];
+    changed_.notify_all();
+  }
+  ros::NodeHandle nh_;
+  ros::Subscriber subscriber_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::map<std::string, int> counts_;
+};
+
+std::string scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("ros_experiment_test_" + std::to_string(::getpid())) / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir.parent_path());
+  return dir.string();
+}
+
+std::string simulatorCommand(const std::string& name, const std::string& config, const std::string& out,
+                             const std::string& extra = "") {
+  return std::string(SIMULATOR_NODE) + " __name:=" + name + " _config:=" + config + " _output_dir:=" + out +
+         " _batch_size:=7 _connect_timeout:=30 " + extra;
+}
+
+/// The reference: the same experiment run in process by `ppp experiment` (once per test binary).
+const std::string& referenceRun() {
+  static const std::string out = [] {
+    const std::string dir = scratch("cli");
+    const std::string command = std::string(PPP_CLI) + " experiment " + kTestDir + "/experiment.yaml -o " + dir +
+                                " --quiet > /dev/null";
+    EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    return dir;
+  }();
+  return out;
+}
+
+TEST(RosExperimentTest, ResultsEqualTheInProcessRunAndTheBagHoldsTheMaps) {
+  const std::string out = scratch("ros");
+  Child simulator(simulatorCommand("sim_normal", kTestDir + "/experiment.yaml", out, "_record_problems:=1"),
+                  out + ".log");
+  ASSERT_EQ(simulator.wait(), 0) << simulator.output();
+  EXPECT_EQ(readResultsFile(out + "/results.csv").size(), 2u * 3 * 3 * 40);
+  EXPECT_EQ(readTextFile(out + "/results.csv", 1u << 26), readTextFile(referenceRun() + "/results.csv", 1u << 26))
+      << "the ROS experiment's results differ from ppp experiment's";
+  EXPECT_EQ(readTextFile(out + "/summary.csv", 1u << 26), readTextFile(referenceRun() + "/summary.csv", 1u << 26));
+  EXPECT_TRUE(fs::exists(out + "/report.html"));
+
+  // rosbag info shows the expected topics and types.
+  const std::string info = out + "/bag_info.txt";
+  ASSERT_EQ(std::system(("rosbag info " + out + "/experiment.bag > " + info).c_str()), 0);
+  const std::string text = readTextFile(info, 1u << 20);
+  for (const char* expected :
+       {"/map ", "nav_msgs/OccupancyGrid", "/tf ", "tf2_msgs/TFMessage", "/astar/path", "nav_msgs/Path",
+        "/random/scan", "sensor_msgs/LaserScan", "/ppp/markers", "visualization_msgs/MarkerArray", "/ppp/results",
+        "ppp_msgs/EpisodeResult", "/ppp/sets/turns", "ppp_msgs/ProblemSet"}) {
+    EXPECT_NE(text.find(expected), std::string::npos) << "rosbag info lacks " << expected << ":\n" << text;
+  }
+  // The first map in the bag is the first recorded PPP: set turns, ppp_000; compare cell by cell.
+  rosbag::Bag bag(out + "/experiment.bag");
+  rosbag::View maps(bag, rosbag::TopicQuery("/map"));
+  ASSERT_GT(maps.size(), 0u);
+  const auto map = maps.begin()->instantiate<nav_msgs::OccupancyGrid>();
+  ASSERT_TRUE(map);
+  const Grid grid = decodeGrid(readPppFile(out + "/sets/turns/ppp_000.ppp"));
+  ASSERT_EQ(static_cast<int>(map->info.width), grid.width());
+  ASSERT_EQ(static_cast<int>(map->info.height), grid.height());
+  for (int y = 0; y < grid.height(); ++y) {
+    for (int x = 0; x < grid.width(); ++x) {
+      EXPECT_EQ(map->data[(grid.height() - 1 - y) * grid.width() + x], grid.isObstacle(Cell{x, y}) ? 100 : 0);
+    }
+  }
+  rosbag::View results(bag, rosbag::TopicQuery("/ppp/results"));
+  EXPECT_EQ(results.size(), 2u * 3 * 3 * 40);
+}
+
+TEST(RosExperimentTest, RestartedSimulatorResumesAfterSigkill) {
+  const std::string out = scratch("resume");
+  ResultCounter counter;
+  Child first(simulatorCommand("sim_resume_1", kTestDir + "/experiment.yaml", out, "_record:=false"), out + ".1.log");
+  ASSERT_TRUE(counter.waitFor("random", 30, 120)) << "no progress: " << first.output();
+  first.kill(SIGKILL);
+  first.wait();
+  const auto partial = readResultsFile(out + "/results.csv");
+  EXPECT_LT(partial.size(), 2u * 3 * 3 * 40) << "the simulator finished before it was killed";
+  Child second(simulatorCommand("sim_resume_2", kTestDir + "/experiment.yaml", out, "_record:=false"),
+               out + ".2.log");
+  ASSERT_EQ(second.wait(), 0) << second.output();
+  EXPECT_NE(second.output().find("already done"), std::string::npos) << second.output();
+  EXPECT_EQ(readTextFile(out + "/results.csv", 1u << 26), readTextFile(referenceRun() + "/results.csv", 1u << 26));
+}
+
+/// The pid of a running node, asked through its XML-RPC API.
+int nodePid(const std::string& node) {
+  XmlRpc::XmlRpcValue args, result, payload;
+  args[0] = ros::this_node::getName();
+  args[1] = node;
+  if (!ros::master::execute("lookupNode", args, result, payload, true)) return -1;
+  const std::string uri = payload;  // http://host:port/
+  const auto host_start = uri.find("://") + 3;
+  const auto colon = uri.find(':', host_start);
+  const auto slash = uri.find('/', colon);
+  XmlRpc::XmlRpcClient client(uri.substr(host_start, colon - host_start).c_str(),
+                              std::stoi(uri.substr(colon + 1, slash - colon - 1)), "/");
+  XmlRpc::XmlRpcValue pid_args, pid_result;
+  pid_args[0] = ros::this_node::getName();
+  if (!client.execute("getPid", pid_args, pid_result)) return -1;
+  return static_cast<int>(pid_result[2]);
+}
+
+TEST(RosExperimentTest, SilentGarbageAndKilledAgentsFailWithReasonsAndTheRestCompletes) {
+  const std::string out = scratch("faults");
+  ResultCounter counter;
+  Child simulator(simulatorCommand("sim_faults", kTestDir + "/fault_experiment.yaml", out,
+                                   "_record:=false _step_timeout:=1.0 _timeouts_before_giving_up:=2"),
+                  out + ".log");
+  ASSERT_TRUE(counter.waitFor("doomed", 10, 120)) << "the doomed agent never finished a run: " << simulator.output();
+  const int pid = nodePid("/doomed");
+  ASSERT_GT(pid, 0);
+  ASSERT_EQ(::kill(pid, SIGKILL), 0);
+  ASSERT_EQ(simulator.wait(), 0) << simulator.output();
+  const auto rows = readResultsFile(out + "/results.csv");
+  ASSERT_EQ(rows.size(), 2u * 3 * 4 * 40);
+  std::map<std::string, std::map<std::string, int>> reasons;
+  for (const auto& r : rows) ++reasons[r.agent][r.reason];
+  EXPECT_EQ(reasons["silent"]["timeout"], 240);
+  EXPECT_EQ(reasons["garbage"]["invalid_action"], 240);
+  EXPECT_GT(reasons["doomed"]["agent_lost"], 0);
+  EXPECT_GT(reasons["doomed"]["budget_exhausted"] + reasons["doomed"]["goal_reached"], 0);
+  EXPECT_EQ(reasons["healthy"]["budget_exhausted"] + reasons["healthy"]["goal_reached"], 240)
+      << "the healthy agent's runs were disturbed by the others' faults";
+}
+
+TEST(RosExperimentTest, BadParametersStopTheNodeNamingThem) {
+  const std::string out = scratch("bad");
+  const std::pair<std::string, std::string> cases[] = {
+      {"_config:=" + kTestDir + "/experiment.yaml _output_dir:=" + out + " _batch_size:=0",
+       "~batch_size: expected at least 1"},
+      {"_output_dir:=" + out, "~config: required"},
+      {"_config:=/nonexistent/experiment.yaml _output_dir:=" + out, "/nonexistent/experiment.yaml: cannot open"},
+      {"_config:=" + kTestDir + "/experiment.yaml", "~output_dir: required"},
+      {"_config:=" + kTestDir + "/experiment.yaml _output_dir:=" + out + " _step_timeout:=-1",
+       "~step_timeout: expected a positive number"},
+      {"_config:=" + kTestDir + "/bad_agent_experiment.yaml _output_dir:=" + out, "unknown agent type 'flier'"},
+      {"_config:=" + kTestDir + "/experiment.yaml _output_dir:=" + out +
+           " _wait_for_sets:=/nobody/problem_set _set_timeout:=0.5",
+       "~wait_for_sets: no ppp_msgs/ProblemSet on /nobody/problem_set"},
+  };
+  int index = 0;
+  for (const auto& c : cases) {
+    Child node(std::string(SIMULATOR_NODE) + " __name:=bad_sim_" + std::to_string(index) + " " + c.first,
+               out + "." + std::to_string(index++) + ".log");
+    EXPECT_NE(node.wait(), 0) << c.first;
+    EXPECT_NE(node.output().find(c.second), std::string::npos) << c.first << " printed:\n" << node.output();
+  }
+}
+
+}  // namespace
+}  // namespace simulator
+}  // namespace ppp
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "ros_experiment_rostest");
+  ros::NodeHandle nh;
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  return RUN_ALL_TESTS();
+}
