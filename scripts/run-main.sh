@@ -1,17 +1,32 @@
 #!/usr/bin/env bash
 # The main job: installs what is missing, builds, then runs the default experiment (config/experiment.yaml:
-# two evolved sets of 60 PPPs, ten agents, 1,000 runs each) into results/experiment/ and says where the
-# report is. Rerunning resumes an interrupted experiment; a finished one is reported again at once.
-set -euo pipefail
+# two evolved sets of 60 PPPs, ten agents, 1,000 runs each) through ROS: roslaunch launch/experiment.launch
+# starts the two generator nodes, the simulator node and one process per agent, on a private master. Results,
+# report and bag go to results/experiment/. Rerunning resumes an interrupted experiment.
+set -eo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 cd "$PPP_ROOT"
 scripts/install-deps.sh
 mkdir -p "$PPP_BUILD_DIR"
 echo "building (log: $PPP_BUILD_DIR/build.log)"
 scripts/build.sh > "$PPP_BUILD_DIR/build.log" 2>&1 || { tail -50 "$PPP_BUILD_DIR/build.log"; exit 1; }
+source "$PPP_BUILD_DIR/devel/setup.bash"  # before set -u: setup.bash reads unset variables
+set -u
+export PATH="/usr/bin:$PATH"
 
 out="$PPP_ROOT/results/experiment"
-scripts/ppp experiment config/experiment.yaml -o "$out"
+mkdir -p "$out"
+port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+export ROS_MASTER_URI="http://127.0.0.1:$port" ROS_IP=127.0.0.1
+echo "running the experiment with ROS (log: $out/roslaunch.log)"
+roslaunch -p "$port" launch/experiment.launch output_dir:="$out" > "$out/roslaunch.log" 2>&1 || true
+# roslaunch's exit status says nothing about its nodes: the report is the verdict.
+if [ ! -s "$out/report.md" ] || ! grep -q "experiment done" "$out/roslaunch.log"; then
+  tail -30 "$out/roslaunch.log"
+  echo "the experiment did not finish; rerun this command to resume it" >&2
+  exit 1
+fi
 echo
 sed -n '/^## Pass rates/,/^## Mann/p' "$out/report.md" | sed '$d'
-echo "Open the report: $out/report.html (Markdown: $out/report.md)"
+echo "Report: $out/report.html (Markdown: $out/report.md); results: $out/results.csv; bag: $out/experiment.bag"
+echo "Look at the bag in rviz: build/devel/env.sh roslaunch launch/inspect.launch bag:=$out/experiment.bag"

@@ -39,23 +39,23 @@ ppp_msgs::GridCell toCell(Cell c) {
   return m;
 }
 
-ppp_msgs::EpisodeScan toMessage(const ScanRequest& r) {
-  ppp_msgs::EpisodeScan m;
+/// Fills `m` from `r`, reusing m's buffers.
+void toMessage(const ScanRequest& r, ppp_msgs::EpisodeScan* message) {
+  ppp_msgs::EpisodeScan& m = *message;
   m.episode = r.episode;
   m.step = static_cast<std::uint32_t>(r.step);
   m.position = toCell(r.position);
   m.goal = toCell(r.goal);
   m.bumped = r.bumped;
   m.range = static_cast<std::uint8_t>(r.range);
-  m.cells = r.cells;
-  if (r.start) {
-    m.width = static_cast<std::uint32_t>(r.start->width);
-    m.height = static_cast<std::uint32_t>(r.start->height);
-    m.start = toCell(r.start->start);
-    m.agent_seed = r.start->agent_seed;
-    m.prior_map = r.start->prior_map;
-  }
-  return m;
+  m.cells.assign(r.cells.begin(), r.cells.end());
+  const EpisodeStart none;
+  const EpisodeStart& start = r.start ? *r.start : none;
+  m.width = static_cast<std::uint32_t>(start.width);
+  m.height = static_cast<std::uint32_t>(start.height);
+  m.start = toCell(start.start);
+  m.agent_seed = start.agent_seed;
+  m.prior_map.assign(start.prior_map.begin(), start.prior_map.end());
 }
 
 }  // namespace
@@ -82,13 +82,16 @@ class LaneRunner {
       return;
     }
     int silent_batches = 0;
+    // Both buffers live across batches, so a batch allocates (almost) nothing.
+    std::vector<ScanRequest> scans;
+    ppp_msgs::ScanBatch message;
+    message.agent = name;
     for (std::uint32_t batch = 1; !lane_->finished() && ros::ok(); ++batch) {
-      const std::vector<ScanRequest> scans = lane_->scans();
-      ppp_msgs::ScanBatch message;
+      lane_->scans(&scans);
       message.header.stamp = ros::Time::now();
-      message.agent = name;
       message.batch = batch;
-      for (const ScanRequest& s : scans) message.scans.push_back(toMessage(s));
+      message.scans.resize(scans.size());
+      for (std::size_t i = 0; i < scans.size(); ++i) toMessage(scans[i], &message.scans[i]);
       recorder_->recordScans(name, scans);
       std::unique_lock<std::mutex> lock(mutex_);
       expected_batch_ = batch;

@@ -27,7 +27,7 @@ AgentLane::AgentLane(const agents::AgentConfig& config, const EpisodeOptions& op
   }
 }
 
-std::vector<ScanRequest> AgentLane::scans() {
+void AgentLane::scans(std::vector<ScanRequest>* requests) {
   while (static_cast<int>(active_.size()) < batch_size_ && !queue_.empty()) {
     const Work work = queue_.front();
     queue_.pop_front();
@@ -39,11 +39,12 @@ std::vector<ScanRequest> AgentLane::scans() {
                                                  seed, options_.budget),
                        false});
   }
-  std::vector<ScanRequest> requests;
-  requests.reserve(active_.size());
-  for (Active& a : active_) {
+  requests->resize(active_.size());
+  for (std::size_t i = 0; i < active_.size(); ++i) {
+    Active& a = active_[i];
     const Scan scan = a.episode->scan();
-    ScanRequest r;
+    ScanRequest& r = (*requests)[i];
+    r.start.reset();
     r.episode = a.id;
     r.step = scan.step();
     r.position = scan.position();
@@ -66,9 +67,7 @@ std::vector<ScanRequest> AgentLane::scans() {
       r.start = std::move(start);
       a.started = true;
     }
-    requests.push_back(std::move(r));
   }
-  return requests;
 }
 
 EpisodeResult AgentLane::result(const Work& work, std::uint64_t seed, const EpisodeOutcome& outcome) const {

@@ -41,9 +41,11 @@ agents::AgentConfig config(const std::string& type, int memory = 0, double noise
 std::vector<EpisodeResult> playLane(AgentLane& lane) {
   agents::AgentHost host(lane.config());
   std::vector<EpisodeResult> results;
+  std::vector<ScanRequest> scans;
   while (!lane.finished()) {
     std::vector<MoveReply> moves;
-    for (const ScanRequest& s : lane.scans()) {
+    lane.scans(&scans);
+    for (const ScanRequest& s : scans) {
       if (s.start) {
         agents::EpisodeInfo info{s.start->width, s.start->height, s.start->start, s.goal, s.start->agent_seed, nullptr};
         Grid prior(s.start->width, s.start->height);
@@ -113,7 +115,8 @@ TEST(AgentLaneTest, BatchedPlayEqualsTheInProcessRunnerForEveryAgentAndBatchSize
 
 TEST(AgentLaneTest, FaultsFailOnlyTheirEpisodes) {
   AgentLane lane(config("random"), EpisodeOptions{}, smallSets(), 5, 2, {}, 4);
-  const auto scans = lane.scans();
+  std::vector<ScanRequest> scans;
+  lane.scans(&scans);
   ASSERT_EQ(scans.size(), 4u);
   // Episode 0 answered well, 1 for the wrong step, 2 with an unknown action, 3 not at all.
   const std::vector<MoveReply> moves{{scans[0].episode, 0, 0}, {scans[1].episode, 5, 0}, {scans[2].episode, 0, 9},

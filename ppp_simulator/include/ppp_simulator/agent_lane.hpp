@@ -60,8 +60,9 @@ class AgentLane {
   bool finished() const { return queue_.empty() && active_.empty(); }
   /// Runs not yet finished (active or queued).
   long remaining() const { return static_cast<long>(queue_.size() + active_.size()); }
-  /// Fills the batch from the queue and returns the scans of every active episode.
-  std::vector<ScanRequest> scans();
+  /// Fills the batch from the queue and writes the scans of every active episode into `requests` (resized;
+  /// its elements' buffers are reused, so a caller keeping one vector allocates nothing per batch).
+  void scans(std::vector<ScanRequest>* requests);
   /// Applies a batch of moves. An active episode with no move gets `missing_reason`; a move for the wrong step
   /// or with an unknown action fails its episode with reason::kInvalidAction; moves for unknown episodes are
   /// ignored. Returns the results of the episodes that ended.

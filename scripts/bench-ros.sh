@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# ROS experiment speed: agent-steps per second through the ten separate agent processes at batch sizes
+# 1, 10, 100 and 1000, and the default experiment through roslaunch against `ppp experiment`.
+# Usage: scripts/bench-ros.sh [--skip-default]   (run scripts/build.sh first). Figures go in BENCHMARKS.md.
+set -o pipefail
+skip_default="${1:-}"
+source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
+source "$PPP_BUILD_DIR/devel/setup.bash"
+set -u
+export PATH="/usr/bin:$PATH"
+cd "$PPP_ROOT"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+export ROS_IP=127.0.0.1 ROS_HOME="$work/ros"
+cp config/agents.yaml config/generator.yaml "$work/"
+
+# launch OUT RUNS BATCH RECORD: runs the default experiment with RUNS runs per agent per PPP; prints seconds.
+launch() {
+  sed "s/^runs: 1000 .*/runs: $2/" config/experiment.yaml > "$work/experiment.yaml"
+  local start end port
+  # A fresh master port per launch: the last master may still be shutting down on the old one.
+  port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+  export ROS_MASTER_URI="http://127.0.0.1:$port"
+  start=$(date +%s.%N)
+  roslaunch -p "$port" launch/experiment.launch output_dir:="$1" config:="$work/experiment.yaml" batch_size:="$3" \
+    record:="$4" > "$1.log" 2>&1
+  end=$(date +%s.%N)
+  awk "BEGIN { printf \"%.2f\", $end - $start }"
+}
+steps() { awk -F, 'NR > 1 { s += $7 } END { print s }' "$1/results.csv"; }
+
+echo "machine: nproc=$(nproc) cpu='$(grep -m1 '^model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')'"
+for pair in "1 1" "10 2" "100 20" "1000 100"; do
+  set -- $pair
+  seconds=$(launch "$work/b$1" "$2" "$1" false)
+  total=$(steps "$work/b$1")
+  echo "batch $1: $2 runs per agent per PPP, $total agent-steps in $seconds s (launch, generation and report included):" \
+    "$(awk "BEGIN { printf \"%.0f\", $total / $seconds }") agent-steps/s"
+done
+if [ "$skip_default" != "--skip-default" ]; then
+  seconds=$(launch "$work/ros" 1000 1000 true)
+  echo "default experiment through roslaunch (batch 1000, bag recorded): $seconds s"
+  start=$(date +%s.%N)
+  "$PPP_BUILD_DIR/devel/lib/ppp_simulator/ppp" experiment config/experiment.yaml -o "$work/cli" --quiet > /dev/null
+  end=$(date +%s.%N)
+  echo "default experiment through ppp experiment: $(awk "BEGIN { printf \"%.2f\", $end - $start }") s"
+  cmp -s "$work/ros/results.csv" "$work/cli/results.csv" && echo "results.csv identical" || echo "results.csv DIFFER"
+fi
