@@ -44,6 +44,13 @@ SensorModel::SensorModel(const SensorOptions& options) : options_(options) {
       }
     }
   }
+  if (s * s <= 64) {
+    for (const auto& blockers : blockers_) {
+      std::uint64_t mask = 0;
+      for (int b : blockers) mask |= std::uint64_t{1} << b;
+      blocker_masks_.push_back(mask);
+    }
+  }
 }
 
 void SensorModel::scan(const Grid& grid, Cell position, std::uint64_t noise_seed, int step,
@@ -52,20 +59,27 @@ void SensorModel::scan(const Grid& grid, Cell position, std::uint64_t noise_seed
   const int s = side();
   // Physical truth first: the line of sight depends on the real obstacles, not on what noise reports.
   std::array<std::int8_t, kMaxScanCells> truth;
+  std::uint64_t obstacles = 0;  // bit i: window cell i is an obstacle (windows of at most 64 cells)
   for (int dy = -r; dy <= r; ++dy) {
     for (int dx = -r; dx <= r; ++dx) {
       const Cell c{position.x + dx, position.y + dy};
-      truth[(dy + r) * s + (dx + r)] =
-          !grid.contains(c) ? kScanOutOfBounds : grid.isObstacle(c) ? kScanObstacle : kScanFree;
+      const int i = (dy + r) * s + (dx + r);
+      truth[i] = !grid.contains(c) ? kScanOutOfBounds : grid.isObstacle(c) ? kScanObstacle : kScanFree;
+      if (truth[i] == kScanObstacle && i < 64) obstacles |= std::uint64_t{1} << i;
     }
   }
   const int centre = r * s + r;
+  const bool masks = !blocker_masks_.empty();
   for (int i = 0; i < s * s; ++i) {
     bool visible = true;
-    for (int blocker : blockers_[i]) {
-      if (truth[blocker] == kScanObstacle) {
-        visible = false;
-        break;
+    if (masks) {
+      visible = (obstacles & blocker_masks_[i]) == 0;
+    } else {
+      for (int blocker : blockers_[i]) {
+        if (truth[blocker] == kScanObstacle) {
+          visible = false;
+          break;
+        }
       }
     }
     std::int8_t value = visible ? truth[i] : kScanUnknown;

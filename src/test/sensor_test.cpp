@@ -47,21 +47,24 @@ TEST(SensorTest, WindowWorkedByHand) {
 }
 
 TEST(SensorTest, AgreesWithLineOfSightOnRandomGrids) {
-  Rng rng(3);
-  SensorModel sensor(SensorOptions{3, 0.0});
-  for (int trial = 0; trial < 200; ++trial) {
-    Grid g(9, 8);
-    for (int i = 0; i < g.size(); ++i) g.setObstacle(g.cellAt(i), rng.bernoulli(0.3));
-    const Cell at{static_cast<int>(rng.below(9)), static_cast<int>(rng.below(8))};
-    const Scan scan(sensor, g, at, Cell{0, 0}, false, 0, 1);
-    for (int dy = -3; dy <= 3; ++dy) {
-      for (int dx = -3; dx <= 3; ++dx) {
-        const Cell c{at.x + dx, at.y + dy};
-        const std::int8_t expected = !lineOfSight(g, at, c) ? kScanUnknown
-                                     : !g.contains(c)        ? kScanOutOfBounds
-                                     : g.isObstacle(c)       ? kScanObstacle
-                                                             : kScanFree;
-        ASSERT_EQ(scan.at(dx, dy), expected) << trial << " " << dx << "," << dy;
+  // Range 3 (49 cells) takes the bit-mask path, range 5 (121 cells) the list path.
+  for (int range : {3, 5}) {
+    Rng rng(3);
+    SensorModel sensor(SensorOptions{range, 0.0});
+    for (int trial = 0; trial < 200; ++trial) {
+      Grid g(9, 8);
+      for (int i = 0; i < g.size(); ++i) g.setObstacle(g.cellAt(i), rng.bernoulli(0.3));
+      const Cell at{static_cast<int>(rng.below(9)), static_cast<int>(rng.below(8))};
+      const Scan scan(sensor, g, at, Cell{0, 0}, false, 0, 1);
+      for (int dy = -range; dy <= range; ++dy) {
+        for (int dx = -range; dx <= range; ++dx) {
+          const Cell c{at.x + dx, at.y + dy};
+          const std::int8_t expected = !lineOfSight(g, at, c) ? kScanUnknown
+                                       : !g.contains(c)        ? kScanOutOfBounds
+                                       : g.isObstacle(c)       ? kScanObstacle
+                                                               : kScanFree;
+          ASSERT_EQ(scan.at(dx, dy), expected) << "range " << range << " trial " << trial << " " << dx << "," << dy;
+        }
       }
     }
   }

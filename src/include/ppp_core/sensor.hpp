@@ -45,6 +45,7 @@ class SensorModel {
  private:
   SensorOptions options_;
   std::vector<std::vector<int>> blockers_;  // per window index: window indices that must be free
+  std::vector<std::uint64_t> blocker_masks_;  // the same as bit masks, for windows of at most 64 cells
 };
 
 /// What an agent receives each step: its cell, the goal, whether its last move bumped, and the scan window.
