@@ -15,14 +15,16 @@ set -u
 export PATH="/usr/bin:$PATH"
 
 out="$PPP_ROOT/results/experiment"
-mkdir -p "$out"
+log="$PPP_ROOT/results/experiment.roslaunch.log"  # beside, not in, the output directory
+mkdir -p "$PPP_ROOT/results"
 port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
 export ROS_MASTER_URI="http://127.0.0.1:$port" ROS_IP=127.0.0.1
-echo "running the experiment with ROS (log: $out/roslaunch.log)"
-roslaunch -p "$port" launch/experiment.launch output_dir:="$out" > "$out/roslaunch.log" 2>&1 || true
+echo "running the experiment with ROS (log: $log)"
+roslaunch -p "$port" launch/experiment.launch output_dir:="$out" > "$log" 2>&1 || true
 # roslaunch's exit status says nothing about its nodes: the report is the verdict.
-if [ ! -s "$out/report.md" ] || ! grep -q "experiment done" "$out/roslaunch.log"; then
-  tail -30 "$out/roslaunch.log"
+if [ ! -s "$out/report.md" ] || ! grep -q "experiment done" "$log"; then
+  grep -E "FATAL|ERROR" "$log" | tail -10
+  tail -5 "$log"
   echo "the experiment did not finish; rerun this command to resume it" >&2
   exit 1
 fi
