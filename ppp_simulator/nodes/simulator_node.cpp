@@ -81,7 +81,6 @@ class LaneRunner {
       report(lane_->failAll(reason::kAgentLost));
       return;
     }
-    int silent_batches = 0;
     // Both buffers live across batches, so a batch allocates (almost) nothing.
     std::vector<ScanRequest> scans;
     ppp_msgs::ScanBatch message;
@@ -103,19 +102,20 @@ class LaneRunner {
       if (answered && reply_) moves = std::move(*reply_);
       lock.unlock();
       if (answered && reply_) {
-        silent_batches = 0;
         report(lane_->answer(moves, reason::kTimeout));
       } else if (!agentAlive()) {
         ROS_ERROR("agent '%s' is gone: its %ld unfinished runs fail as agent_lost", name.c_str(), lane_->remaining());
         report(lane_->failAll(reason::kAgentLost));
-      } else if (++silent_batches >= parameters_.timeouts_before_giving_up) {
-        ROS_ERROR("agent '%s' did not answer %d batches in a row: its %ld unfinished runs fail as timeout",
-                  name.c_str(), silent_batches, lane_->remaining());
-        report(lane_->failAll(reason::kTimeout));
       } else {
-        ROS_WARN("agent '%s' did not answer batch %u within %.1f s: its episodes fail as timeout", name.c_str(), batch,
-                 parameters_.step_timeout);
-        report(lane_->answer({}, reason::kTimeout));
+        const auto ended = lane_->unanswered(reason::kTimeout, parameters_.timeouts_before_giving_up);
+        if (lane_->finished() && lane_->silentBatches() >= parameters_.timeouts_before_giving_up) {
+          ROS_ERROR("agent '%s' did not answer %d batches in a row: its unfinished runs fail as timeout",
+                    name.c_str(), lane_->silentBatches());
+        } else {
+          ROS_WARN("agent '%s' did not answer batch %u within %.1f s: its episodes fail as timeout", name.c_str(),
+                   batch, parameters_.step_timeout);
+        }
+        report(ended);
       }
     }
   }

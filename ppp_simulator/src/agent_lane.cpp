@@ -71,23 +71,19 @@ void AgentLane::scans(std::vector<ScanRequest>* requests) {
 }
 
 EpisodeResult AgentLane::result(const Work& work, std::uint64_t seed, const EpisodeOutcome& outcome) const {
-  const PreparedSet& set = sets_[work.set];
-  EpisodeResult r;
-  r.set = set.name;
-  r.problem = set.set.ids[work.problem];
-  r.agent = config_.name;
-  r.run = work.run;
-  r.seed = seed;
-  r.passed = outcome.passed;
-  r.steps = outcome.steps;
-  r.bumps = outcome.bumps;
-  r.path_length = outcome.path_length;
-  r.optimal_length = set.optimal[work.problem];
-  r.reason = outcome.reason;
-  return r;
+  return episodeResult(sets_[work.set], work.problem, config_.name, work.run, seed, outcome);
+}
+
+std::vector<EpisodeResult> AgentLane::unanswered(const char* reason, int give_up_after) {
+  std::vector<EpisodeResult> ended = answer({}, reason);
+  if (++silent_batches_ >= give_up_after) {
+    for (EpisodeResult& r : failAll(reason)) ended.push_back(std::move(r));
+  }
+  return ended;
 }
 
 std::vector<EpisodeResult> AgentLane::answer(const std::vector<MoveReply>& moves, const char* missing_reason) {
+  if (!moves.empty()) silent_batches_ = 0;
   std::unordered_map<std::uint32_t, const MoveReply*> by_episode;
   for (const MoveReply& m : moves) by_episode.emplace(m.episode, &m);
   std::vector<EpisodeResult> finished;

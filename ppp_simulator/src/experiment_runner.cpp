@@ -52,6 +52,23 @@ std::uint64_t runSeed(std::uint64_t experiment_seed, const std::string& set, con
                     {hashName(set), hashName(problem), hashName(agent), static_cast<std::uint64_t>(run)});
 }
 
+EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::string& agent, int run,
+                            std::uint64_t seed, const EpisodeOutcome& outcome) {
+  EpisodeResult r;
+  r.set = set.name;
+  r.problem = set.set.ids[problem];
+  r.agent = agent;
+  r.run = run;
+  r.seed = seed;
+  r.passed = outcome.passed;
+  r.steps = outcome.steps;
+  r.bumps = outcome.bumps;
+  r.path_length = outcome.path_length;
+  r.optimal_length = set.optimal[problem];
+  r.reason = outcome.reason;
+  return r;
+}
+
 void checkExperimentDirectory(const ExperimentConfig& config, const std::string& dir) {
   const fs::path root(dir);
   std::error_code error;
@@ -185,22 +202,12 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
         }
         const PreparedSet& set = sets[unit.set];
         rows.clear();
+        const std::string& agent = config.agents[unit.agent].name;
         for (int run : unit.runs) {
-          EpisodeResult r;
-          r.set = set.name;
-          r.problem = set.set.ids[unit.problem];
-          r.agent = config.agents[unit.agent].name;
-          r.run = run;
-          r.seed = runSeed(config.seed, r.set, r.problem, r.agent, run);
+          const std::uint64_t seed = runSeed(config.seed, set.name, set.set.ids[unit.problem], agent, run);
           const EpisodeOutcome outcome =
-              slot.second->run(set.set.problems[unit.problem], set.grids[unit.problem], *slot.first, r.seed);
-          r.passed = outcome.passed;
-          r.steps = outcome.steps;
-          r.bumps = outcome.bumps;
-          r.path_length = outcome.path_length;
-          r.optimal_length = set.optimal[unit.problem];
-          r.reason = outcome.reason;
-          rows.push_back(std::move(r));
+              slot.second->run(set.set.problems[unit.problem], set.grids[unit.problem], *slot.first, seed);
+          rows.push_back(episodeResult(set, unit.problem, agent, run, seed, outcome));
         }
         results.append(rows);
         const long now = done.fetch_add(static_cast<long>(rows.size())) + static_cast<long>(rows.size());

@@ -133,6 +133,19 @@ TEST(AgentLaneTest, FaultsFailOnlyTheirEpisodes) {
   EXPECT_TRUE(lane.finished());
 }
 
+TEST(AgentLaneTest, ASilentAgentIsGivenUpAfterSomeUnansweredBatches) {
+  AgentLane lane(config("random"), EpisodeOptions{}, smallSets(), 5, 2, {}, 4);
+  std::vector<ScanRequest> scans;
+  lane.scans(&scans);
+  EXPECT_EQ(lane.unanswered(reason::kTimeout, 2).size(), 4u);  // only the batch's episodes
+  EXPECT_FALSE(lane.finished());
+  lane.scans(&scans);
+  const auto ended = lane.unanswered(reason::kTimeout, 2);     // second in a row: everything left
+  EXPECT_EQ(ended.size(), static_cast<std::size_t>(2 * 4 * 2 - 4));
+  for (const auto& r : ended) EXPECT_EQ(r.reason, reason::kTimeout);
+  EXPECT_TRUE(lane.finished());
+}
+
 TEST(AgentLaneTest, DoneRunsAreSkippedAndBadBatchSizeRefused) {
   std::set<RunKey> done{{"turns", smallSets()[0].set.ids[0], "random_0", 0}};
   AgentLane lane(config("random"), EpisodeOptions{}, smallSets(), 5, 2, done, 3);

@@ -67,6 +67,11 @@ class AgentLane {
   /// or with an unknown action fails its episode with reason::kInvalidAction; moves for unknown episodes are
   /// ignored. Returns the results of the episodes that ended.
   std::vector<EpisodeResult> answer(const std::vector<MoveReply>& moves, const char* missing_reason);
+  /// A batch went unanswered: its episodes fail with `reason`, and once `give_up_after` batches in a row went
+  /// unanswered every remaining run fails with it too (a silent agent does not hold the experiment up).
+  std::vector<EpisodeResult> unanswered(const char* reason, int give_up_after);
+  /// Batches in a row that went unanswered.
+  int silentBatches() const { return silent_batches_; }
   /// Fails every active and queued run with `reason` (the agent is gone) and returns their results.
   std::vector<EpisodeResult> failAll(const char* reason);
   /// The configuration served.
@@ -96,6 +101,7 @@ class AgentLane {
   std::deque<Work> queue_;
   std::vector<Active> active_;
   std::uint32_t next_id_ = 0;
+  int silent_batches_ = 0;
 };
 
 }  // namespace simulator

@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "ppp_generator/problem_set.hpp"
+#include "ppp_simulator/episode.hpp"
+#include "ppp_simulator/episode_result.hpp"
 #include "ppp_simulator/experiment_config.hpp"
 #include "ppp_simulator/results_file.hpp"
 
@@ -25,6 +27,10 @@ struct PreparedSet {
 /// an agent or a set leaves every other run's seed unchanged.
 std::uint64_t runSeed(std::uint64_t experiment_seed, const std::string& set, const std::string& problem,
                       const std::string& agent, int run);
+
+/// The results.csv row of one run of `agent` on PPP `problem` of `set`.
+EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::string& agent, int run,
+                            std::uint64_t seed, const EpisodeOutcome& outcome);
 
 /// Generates (or reads) every set of the experiment into `dir`/sets/<name>/, reusing sets already there.
 /// @throws IoError, ParseError, InvalidArgument.
