@@ -27,27 +27,46 @@ void requireOnGrid(Cell cell, int width, int height, const char* field) {
 
 }  // namespace
 
-BatchResponder::BatchResponder(const AgentConfig& config) : config_(config), host_(config) {}
+BatchResponder::BatchResponder(const AgentConfig& config)
+    : config_(config), reads_window_(readsScanWindow(config)), host_(config) {}
 
 ppp_msgs::MoveBatch BatchResponder::answer(const ppp_msgs::ScanBatch& batch) {
   ++round_;
+  const std::size_t n = batch.episodes.size();
   ppp_msgs::MoveBatch moves;
   moves.agent = config_.name;
   moves.batch = batch.batch;
-  moves.moves.resize(batch.scans.size());
-  for (std::size_t i = 0; i < batch.scans.size(); ++i) {
-    const ppp_msgs::EpisodeScan& scan = batch.scans[i];
-    ppp_msgs::EpisodeMove& move = moves.moves[i];
-    move.episode = scan.episode;
-    move.step = scan.step;
+  moves.episodes = batch.episodes;
+  moves.steps.resize(n);
+  moves.actions.resize(n, kRejectedAction);
+  std::string what;
+  const std::string fault = checkShape(batch, &what);
+  if (!fault.empty()) {
+    for (std::size_t i = 0; i < n; ++i) {
+      moves.steps[i] = i < batch.steps.size() ? batch.steps[i] : 0;
+      reject(batch.episodes[i], moves.steps[i], fault, what);
+    }
+    return moves;
+  }
+  failed_starts_.clear();
+  for (const ppp_msgs::EpisodeStart& s : batch.starts) {
     try {
-      move.action = act(scan);
+      start(s);
     } catch (const InvalidArgument& e) {
-      reject(scan, e.name(), e.what());
-      move.action = kRejectedAction;
+      failed_starts_.emplace(s.episode, e);  // rejected with the episode's scan
+    }
+  }
+  const std::size_t window = static_cast<std::size_t>(2 * batch.range + 1) * (2 * batch.range + 1);
+  if (!reads_window_) unknown_window_.assign(window, kScanUnknown);
+  for (std::size_t i = 0; i < n; ++i) {
+    moves.steps[i] = batch.steps[i];
+    const std::int8_t* cells = reads_window_ ? batch.cells.data() + i * window : unknown_window_.data();
+    try {
+      moves.actions[i] = act(batch, i, cells);
+    } catch (const InvalidArgument& e) {
+      reject(batch.episodes[i], batch.steps[i], e.name(), e.what());
     } catch (const std::exception& e) {
-      reject(scan, "agent", e.what());
-      move.action = kRejectedAction;
+      reject(batch.episodes[i], batch.steps[i], "agent", e.what());
     }
   }
   // Episodes the simulator no longer sends are over.
@@ -62,56 +81,77 @@ ppp_msgs::MoveBatch BatchResponder::answer(const ppp_msgs::ScanBatch& batch) {
   return moves;
 }
 
-std::uint8_t BatchResponder::act(const ppp_msgs::EpisodeScan& scan) {
-  auto it = episodes_.find(scan.episode);
-  if (it != episodes_.end() && it->second.round == round_) {
-    throw InvalidArgument("duplicate", "episode " + std::to_string(scan.episode) + " has two scans in one batch");
+std::string BatchResponder::checkShape(const ppp_msgs::ScanBatch& batch, std::string* what) const {
+  const std::size_t n = batch.episodes.size();
+  if (batch.steps.size() != n || batch.positions.size() != n || batch.bumped.size() != n) {
+    *what = "episodes, steps, positions and bumped differ in length (" + std::to_string(n) + ", " +
+            std::to_string(batch.steps.size()) + ", " + std::to_string(batch.positions.size()) + ", " +
+            std::to_string(batch.bumped.size()) + ")";
+    return "batch";
   }
-  if (scan.step == 0) {
-    start(scan);
-    it = episodes_.find(scan.episode);
+  if (batch.range < 1 || batch.range > kMaxSensorRange) {
+    *what = "range " + std::to_string(batch.range) + " is outside [1, " + std::to_string(kMaxSensorRange) + "]";
+    return "range";
   }
-  if (it == episodes_.end()) {
-    throw InvalidArgument("episode", "episode " + std::to_string(scan.episode) + " at step " +
-                                         std::to_string(scan.step) + " was never started (no step-0 scan)");
+  const std::size_t window = static_cast<std::size_t>(2 * batch.range + 1) * (2 * batch.range + 1);
+  if (reads_window_ && batch.cells.size() != n * window) {
+    *what = "expected " + std::to_string(n) + " windows of " + std::to_string(window) + " cells, got " +
+            std::to_string(batch.cells.size()) + " cells";
+    return "cells";
   }
-  it->second.round = round_;
-  const Cell position = toCell(scan.position);
-  const Cell goal = toCell(scan.goal);
-  requireOnGrid(position, it->second.width, it->second.height, "position");
-  requireOnGrid(goal, it->second.width, it->second.height, "goal");
-  const Scan view(scan.range, scan.cells, position, goal, scan.bumped, static_cast<int>(scan.step));
-  return static_cast<std::uint8_t>(host_.act(scan.episode, view));
+  return "";
 }
 
-void BatchResponder::start(const ppp_msgs::EpisodeScan& scan) {
-  host_.finish(scan.episode);
-  episodes_.erase(scan.episode);
+std::uint8_t BatchResponder::act(const ppp_msgs::ScanBatch& batch, std::size_t i, const std::int8_t* window) {
+  const std::uint32_t id = batch.episodes[i];
+  const std::uint32_t step = batch.steps[i];
+  auto it = episodes_.find(id);
+  const auto failed = failed_starts_.find(id);
+  if (failed != failed_starts_.end()) throw failed->second;
+  if (it == episodes_.end()) {
+    throw InvalidArgument("episode", "episode " + std::to_string(id) + " at step " + std::to_string(step) +
+                                         " was never started (no EpisodeStart)");
+  }
+  Episode& episode = it->second;
+  if (episode.round == round_) {
+    throw InvalidArgument("duplicate", "episode " + std::to_string(id) + " has two scans in one batch");
+  }
+  episode.round = round_;
+  const Cell position = toCell(batch.positions[i]);
+  requireOnGrid(position, episode.width, episode.height, "position");
+  const std::size_t count = static_cast<std::size_t>(2 * batch.range + 1) * (2 * batch.range + 1);
+  const Scan view(batch.range, window, count, position, episode.goal, batch.bumped[i] != 0, static_cast<int>(step));
+  return static_cast<std::uint8_t>(episode.agent->act(view));
+}
+
+void BatchResponder::start(const ppp_msgs::EpisodeStart& start) {
+  host_.finish(start.episode);
+  episodes_.erase(start.episode);
   const auto side_ok = [](std::uint32_t side) { return side >= kMinGridSide && side <= kMaxGridSide; };
-  if (!side_ok(scan.width) || !side_ok(scan.height)) {
-    throw InvalidArgument("size", "the map size " + std::to_string(scan.width) + "x" + std::to_string(scan.height) +
-                                      " is outside [" + std::to_string(kMinGridSide) + ", " +
-                                      std::to_string(kMaxGridSide) + "]");
+  if (!side_ok(start.width) || !side_ok(start.height)) {
+    throw InvalidArgument("size", "the map size " + std::to_string(start.width) + "x" +
+                                      std::to_string(start.height) + " is outside [" +
+                                      std::to_string(kMinGridSide) + ", " + std::to_string(kMaxGridSide) + "]");
   }
   EpisodeInfo info;
-  info.width = static_cast<int>(scan.width);
-  info.height = static_cast<int>(scan.height);
-  info.start = toCell(scan.start);
-  info.goal = toCell(scan.goal);
-  info.seed = scan.agent_seed;
+  info.width = static_cast<int>(start.width);
+  info.height = static_cast<int>(start.height);
+  info.start = toCell(start.start);
+  info.goal = toCell(start.goal);
+  info.seed = start.agent_seed;
   requireOnGrid(info.start, info.width, info.height, "start");
   requireOnGrid(info.goal, info.width, info.height, "goal");
   std::unique_ptr<Grid> prior;
-  if (!scan.prior_map.empty()) {
+  if (!start.prior_map.empty()) {
     const std::size_t cells = static_cast<std::size_t>(info.width) * static_cast<std::size_t>(info.height);
-    if (scan.prior_map.size() != cells) {
+    if (start.prior_map.size() != cells) {
       throw InvalidArgument("prior_map", "expected " + std::to_string(cells) + " cells for a " +
                                              std::to_string(info.width) + "x" + std::to_string(info.height) +
-                                             " map, got " + std::to_string(scan.prior_map.size()));
+                                             " map, got " + std::to_string(start.prior_map.size()));
     }
     prior = std::make_unique<Grid>(info.width, info.height);
     for (std::size_t i = 0; i < cells; ++i) {
-      const std::int8_t value = scan.prior_map[i];
+      const std::int8_t value = start.prior_map[i];
       if (value != kScanFree && value != kScanObstacle) {
         throw InvalidArgument("prior_map", "cell " + std::to_string(i) + " is " + std::to_string(value) +
                                                "; expected FREE (0) or OBSTACLE (100)");
@@ -119,20 +159,21 @@ void BatchResponder::start(const ppp_msgs::EpisodeScan& scan) {
       prior->setObstacle(prior->cellAt(static_cast<int>(i)), value == kScanObstacle);
     }
   }
-  host_.start(scan.episode, info, prior.get());
-  episodes_[scan.episode] = Episode{info.width, info.height, 0};
+  Agent& agent = host_.start(start.episode, info, prior.get());
+  episodes_[start.episode] = Episode{info.width, info.height, info.goal, &agent, 0};
 }
 
-void BatchResponder::reject(const ppp_msgs::EpisodeScan& scan, const std::string& kind, const std::string& what) {
+void BatchResponder::reject(std::uint32_t episode, std::uint32_t step, const std::string& kind,
+                            const std::string& what) {
   // A duplicate scan leaves its episode alone: the first scan was answered.
   if (kind != "duplicate") {
-    host_.finish(scan.episode);
-    episodes_.erase(scan.episode);
+    host_.finish(episode);
+    episodes_.erase(episode);
   }
   if (rejections_[kind]++ == 0) {
     ROS_WARN("agent '%s': rejected the scan of episode %u step %u (%s); answered with action %d, which is no "
              "move. Further '%s' faults are not logged.",
-             config_.name.c_str(), scan.episode, scan.step, what.c_str(), kRejectedAction, kind.c_str());
+             config_.name.c_str(), episode, step, what.c_str(), kRejectedAction, kind.c_str());
   }
 }
 

@@ -4,8 +4,10 @@
 #include <map>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include "ppp_agents/agent_host.hpp"
+#include "ppp_core/error.hpp"
 #include "ppp_msgs/MoveBatch.h"
 #include "ppp_msgs/ScanBatch.h"
 
@@ -17,7 +19,7 @@ namespace agents {
 constexpr std::uint8_t kRejectedAction = 255;
 
 /// Answers scan batches with an AgentHost: message -> ppp types -> agents -> message. An episode is started by
-/// its step-0 scan and finished when a batch no longer holds it. A malformed scan is answered with
+/// its EpisodeStart and finished when a batch no longer holds it. A malformed scan is answered with
 /// kRejectedAction (and its episode dropped); each kind of fault is logged once. Never throws on input.
 class BatchResponder {
  public:
@@ -35,15 +37,22 @@ class BatchResponder {
   struct Episode {
     int width;
     int height;
-    std::uint32_t round;  // the last batch that held the episode
+    Cell goal;
+    Agent* agent;         // owned by host_
+    std::uint32_t round;  // the last batch that held the episode's scan
   };
-  std::uint8_t act(const ppp_msgs::EpisodeScan& scan);
-  void start(const ppp_msgs::EpisodeScan& scan);
-  void reject(const ppp_msgs::EpisodeScan& scan, const std::string& kind, const std::string& what);
+  /// The shape of the batch's arrays, or the field at fault.
+  std::string checkShape(const ppp_msgs::ScanBatch& batch, std::string* what) const;
+  void start(const ppp_msgs::EpisodeStart& start);
+  std::uint8_t act(const ppp_msgs::ScanBatch& batch, std::size_t i, const std::int8_t* window);
+  void reject(std::uint32_t episode, std::uint32_t step, const std::string& kind, const std::string& what);
 
   AgentConfig config_;
+  bool reads_window_;
   AgentHost host_;
   std::unordered_map<std::uint32_t, Episode> episodes_;
+  std::unordered_map<std::uint32_t, InvalidArgument> failed_starts_;  // this batch's rejected starts
+  std::vector<std::int8_t> unknown_window_;  // what an agent that reads no window is given
   std::uint32_t round_ = 0;
   std::map<std::string, long> rejections_;
 };

@@ -29,5 +29,7 @@ std::unique_ptr<Agent> makeAgent(const AgentConfig& config) {
   throw InvalidArgument("type", "no agent is built for type '" + type + "'");  // validate() lists the types
 }
 
+bool readsScanWindow(const AgentConfig& config) { return config.type != "random"; }
+
 }  // namespace agents
 }  // namespace ppp

@@ -9,7 +9,7 @@ namespace agents {
 
 AgentHost::AgentHost(const AgentConfig& config) : config_(config) { config_.validate(); }
 
-void AgentHost::start(std::uint32_t id, const EpisodeInfo& info, const Grid* prior_map) {
+Agent& AgentHost::start(std::uint32_t id, const EpisodeInfo& info, const Grid* prior_map) {
   finish(id);
   Slot slot;
   if (!idle_.empty()) {
@@ -22,7 +22,8 @@ void AgentHost::start(std::uint32_t id, const EpisodeInfo& info, const Grid* pri
   slot.prior_map = prior_map != nullptr ? std::make_unique<Grid>(*prior_map) : nullptr;
   episode.prior_map = slot.prior_map.get();
   slot.agent->reset(episode);
-  active_[id] = std::move(slot);
+  Slot& stored = active_[id] = std::move(slot);
+  return *stored.agent;
 }
 
 Action AgentHost::act(std::uint32_t id, const Scan& scan) {

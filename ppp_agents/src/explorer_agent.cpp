@@ -20,17 +20,33 @@ void ExplorerAgent::reset(const EpisodeInfo& info) {
   path_next_ = 0;
 }
 
-void ExplorerAgent::prepareSight(int range) {
-  sight_range_ = range;
-  sight_begin_.clear();
-  sight_blockers_.clear();
+namespace {
+
+/// Builds the line-of-sight table of one sensor range.
+ExplorerAgent::SightTable buildSightTable(int range) {
+  ExplorerAgent::SightTable table;
+  table.range = range;
   for (int dy = -range; dy <= range; ++dy) {
     for (int dx = -range; dx <= range; ++dx) {
-      sight_begin_.push_back(static_cast<int>(sight_blockers_.size()));
-      for (Cell c : cellsCrossed(Cell{0, 0}, Cell{dx, dy})) sight_blockers_.push_back(c);
+      table.begin.push_back(static_cast<int>(table.blockers.size()));
+      for (Cell c : cellsCrossed(Cell{0, 0}, Cell{dx, dy})) table.blockers.push_back(c);
     }
   }
-  sight_begin_.push_back(static_cast<int>(sight_blockers_.size()));
+  table.begin.push_back(static_cast<int>(table.blockers.size()));
+  return table;
+}
+
+}  // namespace
+
+const ExplorerAgent::SightTable& ExplorerAgent::sightTable(int range) {
+  // One table per range, shared by every explorer: an agent process hosting hundreds of episodes keeps one
+  // copy hot in cache instead of hundreds cold ones.
+  static const std::vector<SightTable> tables = [] {
+    std::vector<SightTable> all;
+    for (int r = 0; r <= kMaxSensorRange; ++r) all.push_back(buildSightTable(r));
+    return all;
+  }();
+  return tables.at(static_cast<std::size_t>(range));
 }
 
 void ExplorerAgent::collectUnknown(Cell position, int range) {
@@ -48,7 +64,7 @@ void ExplorerAgent::collectUnknown(Cell position, int range) {
 }
 
 int ExplorerAgent::unknownAround(Cell centre) const {
-  const int range = sight_range_;
+  const int range = sight_->range;
   const int side = 2 * range + 1;
   int count = 0;
   for (int u = 0; u < unknown_count_; ++u) {
@@ -57,8 +73,8 @@ int ExplorerAgent::unknownAround(Cell centre) const {
     if (dx < -range || dx > range || dy < -range || dy > range) continue;
     const int i = (dy + range) * side + (dx + range);
     bool hidden = false;
-    for (int b = sight_begin_[i]; b < sight_begin_[i + 1] && !hidden; ++b) {
-      const Cell blocker = sight_blockers_[b];
+    for (int b = sight_->begin[i]; b < sight_->begin[i + 1] && !hidden; ++b) {
+      const Cell blocker = sight_->blockers[b];
       hidden = memory_.at(Cell{centre.x + blocker.x, centre.y + blocker.y}) == kScanObstacle;
     }
     count += hidden ? 0 : 1;
@@ -105,8 +121,8 @@ Action ExplorerAgent::act(const Scan& scan) {
   memory_.update(scan);
   Action action;
   if (navigator_.towardsSeenGoal(scan, memory_, &goal_seen_, &action)) return action;
-  if (scan.range() != sight_range_) prepareSight(scan.range());
-  collectUnknown(position, sight_range_);
+  if (sight_ == nullptr || scan.range() != sight_->range) sight_ = &sightTable(scan.range());
+  collectUnknown(position, sight_->range);
   Action best[4];
   int best_count = 0;
   int best_gain = 0;

@@ -14,6 +14,7 @@
 #include "ppp_core/sensor.hpp"
 #include "ppp_msgs/MoveBatch.h"
 #include "ppp_msgs/ScanBatch.h"
+#include "scan_batch_builder.hpp"
 
 namespace ppp {
 namespace agents {
@@ -59,67 +60,64 @@ class Conversation {
   std::deque<ppp_msgs::MoveBatch> received_;
 };
 
-ppp_msgs::GridCell cell(int x, int y) {
-  ppp_msgs::GridCell c;
-  c.x = x;
-  c.y = y;
-  return c;
-}
-
 /// Step 0 of an episode on a 2x2 map whose top-right cell is an obstacle: start top-left, goal bottom-right.
 /// Window values follow that map (range 1).
-ppp_msgs::EpisodeScan cornerScan(std::uint32_t episode, bool prior_map) {
-  ppp_msgs::EpisodeScan s;
+test::TestScan cornerScan(std::uint32_t episode, bool prior_map) {
+  test::TestScan s;
   s.episode = episode;
   s.step = 0;
-  s.position = cell(0, 0);
-  s.goal = cell(1, 1);
-  s.range = 1;
+  s.position = Cell{0, 0};
   const std::int8_t o = kScanOutOfBounds;
   s.cells = {o, o, o, o, kScanFree, kScanObstacle, o, kScanFree, kScanFree};
-  s.width = 2;
-  s.height = 2;
-  s.start = cell(0, 0);
-  s.agent_seed = 3;
-  if (prior_map) s.prior_map = {kScanFree, kScanObstacle, kScanFree, kScanFree};
+  ppp_msgs::EpisodeStart start;
+  start.episode = episode;
+  start.width = 2;
+  start.height = 2;
+  start.start = test::cellMessage(Cell{0, 0});
+  start.goal = test::cellMessage(Cell{1, 1});
+  start.agent_seed = 3;
+  if (prior_map) start.prior_map = {kScanFree, kScanObstacle, kScanFree, kScanFree};
+  s.start = start;
   return s;
 }
 
-ppp_msgs::ScanBatch batchOf(std::uint32_t number, const std::vector<ppp_msgs::EpisodeScan>& scans) {
-  ppp_msgs::ScanBatch batch;
+/// `scan` one step later, without its EpisodeStart.
+test::TestScan next(test::TestScan scan) {
+  ++scan.step;
+  scan.start.reset();
+  return scan;
+}
+
+ppp_msgs::ScanBatch batchOf(std::uint32_t number, const std::vector<test::TestScan>& scans) {
+  ppp_msgs::ScanBatch batch = test::packBatch(number, 1, scans);
   batch.header.stamp = ros::Time::now();
-  batch.batch = number;
-  batch.scans = scans;
   return batch;
 }
 
 TEST(AgentNodeTest, AnswersEachBatchUnderItsNameAndRejectsMalformedScans) {
   Conversation agent("explorer_noise_0_1");
   ASSERT_TRUE(agent.connected()) << "no agent node on /explorer_noise_0_1/{scans,moves}";
-  ppp_msgs::EpisodeScan short_cells = cornerScan(2, false);
-  short_cells.cells.pop_back();
-  const auto moves = agent.exchange(batchOf(17, {cornerScan(1, false), short_cells, cornerScan(3, false)}));
+  test::TestScan off_grid = cornerScan(2, false);
+  off_grid.position = Cell{5, 0};
+  const auto moves = agent.exchange(batchOf(17, {cornerScan(1, false), off_grid, cornerScan(3, false)}));
   ASSERT_TRUE(moves) << "no answer";
   EXPECT_EQ(moves->agent, "explorer_noise_0.1");
   EXPECT_EQ(moves->batch, 17u);
   EXPECT_FALSE(moves->header.stamp.isZero());
-  ASSERT_EQ(moves->moves.size(), 3u);
-  for (std::size_t i = 0; i < 3; ++i) {
-    EXPECT_EQ(moves->moves[i].episode, i + 1);
-    EXPECT_EQ(moves->moves[i].step, 0u);
-  }
-  EXPECT_TRUE(isAction(moves->moves[0].action));
-  EXPECT_EQ(moves->moves[1].action, kRejectedAction);
-  EXPECT_TRUE(isAction(moves->moves[2].action));
+  const std::vector<std::uint32_t> episodes{1, 2, 3}, steps{0, 0, 0};
+  EXPECT_EQ(moves->episodes, episodes);
+  EXPECT_EQ(moves->steps, steps);
+  ASSERT_EQ(moves->actions.size(), 3u);
+  EXPECT_TRUE(isAction(moves->actions[0]));
+  EXPECT_EQ(moves->actions[1], kRejectedAction);
+  EXPECT_TRUE(isAction(moves->actions[2]));
 
-  ppp_msgs::EpisodeScan next = cornerScan(1, false);
-  next.step = 1;
-  const auto again = agent.exchange(batchOf(18, {next}));
+  const auto again = agent.exchange(batchOf(18, {next(cornerScan(1, false))}));
   ASSERT_TRUE(again) << "the node stopped answering after a malformed scan";
-  ASSERT_EQ(again->moves.size(), 1u);
+  ASSERT_EQ(again->actions.size(), 1u);
   EXPECT_EQ(again->batch, 18u);
-  EXPECT_EQ(again->moves[0].step, 1u);
-  EXPECT_TRUE(isAction(again->moves[0].action));
+  EXPECT_EQ(again->steps[0], 1u);
+  EXPECT_TRUE(isAction(again->actions[0]));
 }
 
 TEST(AgentNodeTest, AstarPlansOnThePriorMap) {
@@ -127,10 +125,10 @@ TEST(AgentNodeTest, AstarPlansOnThePriorMap) {
   ASSERT_TRUE(agent.connected());
   const auto moves = agent.exchange(batchOf(1, {cornerScan(5, true), cornerScan(6, false)}));
   ASSERT_TRUE(moves);
-  ASSERT_EQ(moves->moves.size(), 2u);
+  ASSERT_EQ(moves->actions.size(), 2u);
   EXPECT_EQ(moves->agent, "astar");
-  EXPECT_EQ(moves->moves[0].action, static_cast<std::uint8_t>(Action::South));  // east is the obstacle
-  EXPECT_EQ(moves->moves[1].action, kRejectedAction);                           // astar without its map
+  EXPECT_EQ(moves->actions[0], static_cast<std::uint8_t>(Action::South));  // east is the obstacle
+  EXPECT_EQ(moves->actions[1], kRejectedAction);                           // astar without its map
 }
 
 TEST(FaultyAgentNodeTest, SilentGarbageAndStopAfter) {
@@ -143,19 +141,19 @@ TEST(FaultyAgentNodeTest, SilentGarbageAndStopAfter) {
   const auto bad = garbage.exchange(batchOf(4, {cornerScan(1, false), cornerScan(2, false)}));
   ASSERT_TRUE(bad);
   EXPECT_EQ(bad->batch, 4u);
-  ASSERT_EQ(bad->moves.size(), 2u);
-  for (const auto& m : bad->moves) {
-    EXPECT_EQ(m.action, 200);
-    EXPECT_NE(m.step, 0u);
+  ASSERT_EQ(bad->actions.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(bad->actions[i], 200);
+    EXPECT_NE(bad->steps[i], 0u);
   }
 
-  ppp_msgs::EpisodeScan scan = cornerScan(9, false);
+  test::TestScan scan = cornerScan(9, false);
   for (std::uint32_t b = 1; b <= 2; ++b) {
     const auto moves = stop_after.exchange(batchOf(b, {scan}));
     ASSERT_TRUE(moves) << "batch " << b;
-    ASSERT_EQ(moves->moves.size(), 1u);
-    EXPECT_TRUE(isAction(moves->moves[0].action));
-    ++scan.step;
+    ASSERT_EQ(moves->actions.size(), 1u);
+    EXPECT_TRUE(isAction(moves->actions[0]));
+    scan = next(scan);
   }
   EXPECT_FALSE(stop_after.exchange(batchOf(3, {scan}), 1.0));
 }

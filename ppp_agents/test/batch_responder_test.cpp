@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ppp_core/rng.hpp"
+#include "scan_batch_builder.hpp"
 #include "test_world.hpp"
 
 namespace ppp {
@@ -35,34 +36,29 @@ struct Played {
   bool done = false;
 };
 
-ppp_msgs::GridCell cell(Cell c) {
-  ppp_msgs::GridCell m;
-  m.x = c.x;
-  m.y = c.y;
-  return m;
-}
-
 /// The step-`step` scan of an episode on kWorld, as the simulator sends it.
-ppp_msgs::EpisodeScan scanMessage(const Played& p, const SensorModel& sensor, bool prior_map) {
-  ppp_msgs::EpisodeScan m;
+test::TestScan scanOf(const Played& p, const SensorModel& sensor, bool prior_map) {
+  test::TestScan m;
   m.episode = p.id;
   m.step = static_cast<std::uint32_t>(p.steps);
-  m.position = cell(p.position);
-  m.goal = cell(kWorld.goal);
+  m.position = p.position;
   m.bumped = p.bumped;
-  m.range = static_cast<std::uint8_t>(sensor.options().range);
   m.cells.resize(static_cast<std::size_t>(sensor.side() * sensor.side()));
   sensor.scan(kWorld.grid, p.position, deriveSeed(p.seed, {1}), p.steps, m.cells.data());
   if (p.steps == 0) {
-    m.width = static_cast<std::uint32_t>(kWorld.grid.width());
-    m.height = static_cast<std::uint32_t>(kWorld.grid.height());
-    m.start = cell(kWorld.start);
-    m.agent_seed = p.seed;
+    ppp_msgs::EpisodeStart start;
+    start.episode = p.id;
+    start.width = static_cast<std::uint32_t>(kWorld.grid.width());
+    start.height = static_cast<std::uint32_t>(kWorld.grid.height());
+    start.start = test::cellMessage(kWorld.start);
+    start.goal = test::cellMessage(kWorld.goal);
+    start.agent_seed = p.seed;
     if (prior_map) {
       for (int i = 0; i < kWorld.grid.size(); ++i) {
-        m.prior_map.push_back(kWorld.grid.isObstacle(kWorld.grid.cellAt(i)) ? kScanObstacle : kScanFree);
+        start.prior_map.push_back(kWorld.grid.isObstacle(kWorld.grid.cellAt(i)) ? kScanObstacle : kScanFree);
       }
     }
+    m.start = start;
   }
   return m;
 }
@@ -79,15 +75,17 @@ std::vector<test::Outcome> playBatched(const AgentConfig& c, int count, std::siz
   }
   *most_active = 0;
   for (std::uint32_t batch_number = 1;; ++batch_number) {
-    ppp_msgs::ScanBatch batch;
-    batch.agent = c.name;
-    batch.batch = batch_number;
+    std::vector<test::TestScan> scans;
     std::vector<Played*> in_batch;
     for (Played& p : episodes) {
       if (p.done) continue;
-      batch.scans.push_back(scanMessage(p, sensor, c.type == "astar"));
+      scans.push_back(scanOf(p, sensor, c.type == "astar"));
+      // The simulator sends no window to agents that never read it.
+      if (!readsScanWindow(c)) scans.back().cells.clear();
       in_batch.push_back(&p);
     }
+    ppp_msgs::ScanBatch batch = test::packBatch(batch_number, sensor.options().range, scans);
+    batch.agent = c.name;
     const ppp_msgs::MoveBatch moves = responder.answer(batch);
     // Episodes that ended in the previous round were finished by this batch.
     EXPECT_EQ(responder.active(), in_batch.size());
@@ -95,13 +93,13 @@ std::vector<test::Outcome> playBatched(const AgentConfig& c, int count, std::siz
     if (in_batch.empty()) break;
     EXPECT_EQ(moves.agent, c.name);
     EXPECT_EQ(moves.batch, batch_number);
-    EXPECT_EQ(moves.moves.size(), in_batch.size());
+    EXPECT_EQ(moves.actions.size(), in_batch.size());
     for (std::size_t i = 0; i < in_batch.size(); ++i) {
       Played& p = *in_batch[i];
-      EXPECT_EQ(moves.moves[i].episode, p.id);
-      EXPECT_EQ(moves.moves[i].step, static_cast<std::uint32_t>(p.steps));
-      EXPECT_TRUE(isAction(moves.moves[i].action)) << int(moves.moves[i].action);
-      const Action action = static_cast<Action>(moves.moves[i].action);
+      EXPECT_EQ(moves.episodes[i], p.id);
+      EXPECT_EQ(moves.steps[i], static_cast<std::uint32_t>(p.steps));
+      EXPECT_TRUE(isAction(moves.actions[i])) << int(moves.actions[i]);
+      const Action action = static_cast<Action>(moves.actions[i]);
       ++p.steps;
       p.outcome.steps = p.steps;
       p.bumped = false;
@@ -144,78 +142,102 @@ TEST(BatchResponderTest, BatchedPlayEqualsInProcessPlayForEveryAgent) {
   }
 }
 
-/// A well-formed step-0 scan of episode `id` on kWorld.
-ppp_msgs::EpisodeScan startScan(std::uint32_t id, bool prior_map = false) {
+/// A well-formed step-0 scan of episode `id` on kWorld, with its EpisodeStart.
+test::TestScan startScan(std::uint32_t id, bool prior_map = false) {
   Played p{id, 5, kWorld.start};
-  return scanMessage(p, SensorModel(SensorOptions{}), prior_map);
+  return scanOf(p, SensorModel(SensorOptions{}), prior_map);
 }
 
-ppp_msgs::ScanBatch batchOf(const std::vector<ppp_msgs::EpisodeScan>& scans) {
-  ppp_msgs::ScanBatch batch;
-  batch.batch = 9;
-  batch.scans = scans;
-  return batch;
+/// `scan` at a later step, without its EpisodeStart.
+test::TestScan later(test::TestScan scan, std::uint32_t step) {
+  scan.step = step;
+  scan.start.reset();
+  return scan;
 }
 
-TEST(BatchResponderTest, MalformedScansAreRejectedOneByOne) {
+ppp_msgs::ScanBatch batchOf(const std::vector<test::TestScan>& scans, int range = 2) {
+  return test::packBatch(9, range, scans);
+}
+
+TEST(BatchResponderTest, MalformedScansAndStartsAreRejectedOneByOne) {
   BatchResponder responder(config("astar"));
-  ppp_msgs::EpisodeScan good = startScan(1, true);
-  ppp_msgs::EpisodeScan short_cells = startScan(2, true);
-  short_cells.cells.pop_back();
-  ppp_msgs::EpisodeScan short_map = startScan(3, true);
-  short_map.prior_map.pop_back();
-  ppp_msgs::EpisodeScan bad_map_value = startScan(4, true);
-  bad_map_value.prior_map[3] = 7;
-  ppp_msgs::EpisodeScan no_map = startScan(5, false);  // astar needs its prior map
-  ppp_msgs::EpisodeScan never_started = startScan(6, true);
-  never_started.step = 3;
-  ppp_msgs::EpisodeScan off_grid = startScan(7, true);
+  const test::TestScan good = startScan(1, true);
+  test::TestScan short_map = startScan(3, true);
+  short_map.start->prior_map.pop_back();
+  test::TestScan bad_map_value = startScan(4, true);
+  bad_map_value.start->prior_map[3] = 7;
+  test::TestScan no_map = startScan(5, false);  // astar needs its prior map
+  const test::TestScan never_started = later(startScan(6, true), 3);
+  test::TestScan off_grid = startScan(7, true);
   off_grid.position.x = 99;
-  ppp_msgs::EpisodeScan zero_size = startScan(8, true);
-  zero_size.width = 0;
-  ppp_msgs::EpisodeScan bad_range = startScan(9, true);
-  bad_range.range = 0;
-  const ppp_msgs::EpisodeScan duplicate = good;
+  test::TestScan zero_size = startScan(8, true);
+  zero_size.start->width = 0;
+  test::TestScan goal_off_grid = startScan(2, true);
+  goal_off_grid.start->goal.y = -1;
+  const test::TestScan duplicate = later(good, 0);
 
-  const auto moves = responder.answer(batchOf({good, short_cells, short_map, bad_map_value, no_map, never_started,
-                                               off_grid, zero_size, bad_range, duplicate}));
-  ASSERT_EQ(moves.moves.size(), 10u);
+  const auto moves = responder.answer(batchOf({good, goal_off_grid, short_map, bad_map_value, no_map,
+                                               never_started, off_grid, zero_size, duplicate}));
+  ASSERT_EQ(moves.actions.size(), 9u);
   EXPECT_EQ(moves.batch, 9u);
-  EXPECT_TRUE(isAction(moves.moves[0].action));
-  for (std::size_t i = 1; i < moves.moves.size(); ++i) {
-    EXPECT_EQ(moves.moves[i].action, kRejectedAction) << i;
-    EXPECT_EQ(moves.moves[i].episode, i == 9 ? 1u : static_cast<std::uint32_t>(i + 1)) << i;
-  }
+  EXPECT_TRUE(isAction(moves.actions[0]));
+  const std::vector<std::uint32_t> episodes{1, 2, 3, 4, 5, 6, 7, 8, 1};
+  EXPECT_EQ(moves.episodes, episodes);
+  for (std::size_t i = 1; i < moves.actions.size(); ++i) EXPECT_EQ(moves.actions[i], kRejectedAction) << i;
   EXPECT_EQ(responder.active(), 1u);  // only the good episode survives its duplicate
-  const std::map<std::string, long> expected{{"cells", 1},    {"prior_map", 3}, {"episode", 1}, {"position", 1},
-                                             {"size", 1},     {"range", 1},     {"duplicate", 1}};
+  const std::map<std::string, long> expected{{"goal", 1},     {"prior_map", 3}, {"episode", 1},
+                                             {"position", 1}, {"size", 1},      {"duplicate", 1}};
   EXPECT_EQ(responder.rejections(), expected);
 
   // The good episode goes on; a rejected one stays rejected.
-  ppp_msgs::EpisodeScan next = good;
-  next.step = 1;
-  short_cells.step = 1;
-  const auto again = responder.answer(batchOf({next, short_cells}));
-  EXPECT_TRUE(isAction(again.moves[0].action));
-  EXPECT_EQ(again.moves[1].action, kRejectedAction);
+  const auto again = responder.answer(batchOf({later(good, 1), later(short_map, 1)}));
+  EXPECT_TRUE(isAction(again.actions[0]));
+  EXPECT_EQ(again.actions[1], kRejectedAction);
+}
+
+TEST(BatchResponderTest, AMalformedBatchIsRejectedWhole) {
+  BatchResponder responder(config("explorer"));
+  const test::TestScan one = startScan(1);
+  const test::TestScan two = startScan(2);
+
+  ppp_msgs::ScanBatch short_cells = batchOf({one, two});
+  short_cells.cells.pop_back();
+  ppp_msgs::ScanBatch short_steps = batchOf({one, two});
+  short_steps.steps.pop_back();
+  const ppp_msgs::ScanBatch bad_range = batchOf({one, two}, 0);
+  for (const ppp_msgs::ScanBatch& bad : {short_cells, short_steps, bad_range}) {
+    const auto moves = responder.answer(bad);
+    ASSERT_EQ(moves.actions.size(), 2u);
+    EXPECT_EQ(moves.actions[0], kRejectedAction);
+    EXPECT_EQ(moves.actions[1], kRejectedAction);
+    EXPECT_EQ(moves.episodes, bad.episodes);
+  }
+  const std::map<std::string, long> expected{{"cells", 2}, {"batch", 2}, {"range", 2}};
+  EXPECT_EQ(responder.rejections(), expected);
+  EXPECT_EQ(responder.active(), 0u);
+
+  // A random agent reads no window, so a batch without cells is well formed for it (and only for it).
+  BatchResponder random(config("random"));
+  ppp_msgs::ScanBatch windowless = batchOf({one, two});
+  windowless.cells.clear();
+  const auto moves = random.answer(windowless);
+  EXPECT_TRUE(isAction(moves.actions[0]) && isAction(moves.actions[1]));
+  EXPECT_TRUE(random.rejections().empty());
+  EXPECT_EQ(responder.answer(windowless).actions[0], kRejectedAction);
 }
 
 TEST(BatchResponderTest, EpisodesMissingFromABatchAreFinishedAndIdsCanRestart) {
   BatchResponder responder(config("explorer"));
   responder.answer(batchOf({startScan(1), startScan(2), startScan(3)}));
   EXPECT_EQ(responder.active(), 3u);
-  ppp_msgs::EpisodeScan two = startScan(2);
-  two.step = 1;
-  responder.answer(batchOf({two}));
+  responder.answer(batchOf({later(startScan(2), 1)}));
   EXPECT_EQ(responder.active(), 1u);
-  // Episode 1 is over: a later scan of it is rejected, a new step 0 starts it afresh.
-  ppp_msgs::EpisodeScan one = startScan(1);
-  one.step = 1;
-  two.step = 2;
-  EXPECT_EQ(responder.answer(batchOf({one, two})).moves[0].action, kRejectedAction);
-  EXPECT_TRUE(isAction(responder.answer(batchOf({startScan(1)})).moves[0].action));
+  // Episode 1 is over: a later scan of it is rejected, a new EpisodeStart starts it afresh.
+  EXPECT_EQ(responder.answer(batchOf({later(startScan(1), 1), later(startScan(2), 2)})).actions[0],
+            kRejectedAction);
+  EXPECT_TRUE(isAction(responder.answer(batchOf({startScan(1)})).actions[0]));
   EXPECT_EQ(responder.active(), 1u);
-  EXPECT_TRUE(responder.answer(batchOf({})).moves.empty());
+  EXPECT_TRUE(responder.answer(batchOf({})).actions.empty());
   EXPECT_EQ(responder.active(), 0u);
 }
 

@@ -63,13 +63,9 @@ class FaultyAgentNode {
       case FaultMode::Garbage:
         moves.agent = name_;
         moves.batch = batch->batch;
-        for (const ppp_msgs::EpisodeScan& scan : batch->scans) {
-          ppp_msgs::EpisodeMove move;
-          move.episode = scan.episode;
-          move.step = scan.step + 1;
-          move.action = 200;
-          moves.moves.push_back(move);
-        }
+        moves.episodes = batch->episodes;
+        for (std::uint32_t step : batch->steps) moves.steps.push_back(step + 1);
+        moves.actions.assign(batch->episodes.size(), 200);
         break;
       case FaultMode::StopAfter:
         if (answered_ >= steps_) return;

@@ -169,6 +169,7 @@ void EpisodeRecorder::recordScans(const std::string& agent, const std::vector<Sc
       write("/" + agents::agentGraphName(agent) + "/path", stamp, path);
     }
 
+    if (s.cells.empty()) continue;  // an agent that reads no window (random) is sent none: no scan to show
     sensor_msgs::LaserScan laser;
     laser.header.stamp = stamp;
     laser.header.frame_id = base_link;

@@ -39,23 +39,35 @@ ppp_msgs::GridCell toCell(Cell c) {
   return m;
 }
 
-/// Fills `m` from `r`, reusing m's buffers.
-void toMessage(const ScanRequest& r, ppp_msgs::EpisodeScan* message) {
-  ppp_msgs::EpisodeScan& m = *message;
-  m.episode = r.episode;
-  m.step = static_cast<std::uint32_t>(r.step);
-  m.position = toCell(r.position);
-  m.goal = toCell(r.goal);
-  m.bumped = r.bumped;
-  m.range = static_cast<std::uint8_t>(r.range);
-  m.cells.assign(r.cells.begin(), r.cells.end());
-  const EpisodeStart none;
-  const EpisodeStart& start = r.start ? *r.start : none;
-  m.width = static_cast<std::uint32_t>(start.width);
-  m.height = static_cast<std::uint32_t>(start.height);
-  m.start = toCell(start.start);
-  m.agent_seed = start.agent_seed;
-  m.prior_map.assign(start.prior_map.begin(), start.prior_map.end());
+/// Fills `message` with `scans`, reusing its buffers.
+void toMessage(const std::vector<ScanRequest>& scans, ppp_msgs::ScanBatch* message) {
+  ppp_msgs::ScanBatch& m = *message;
+  const std::size_t n = scans.size();
+  m.range = n == 0 ? 0 : static_cast<std::uint8_t>(scans[0].range);
+  m.starts.clear();
+  m.episodes.resize(n);
+  m.steps.resize(n);
+  m.positions.resize(n);
+  m.bumped.resize(n);
+  m.cells.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    const ScanRequest& r = scans[i];
+    m.episodes[i] = r.episode;
+    m.steps[i] = static_cast<std::uint32_t>(r.step);
+    m.positions[i] = toCell(r.position);
+    m.bumped[i] = r.bumped ? 1 : 0;
+    m.cells.insert(m.cells.end(), r.cells.begin(), r.cells.end());
+    if (!r.start) continue;
+    ppp_msgs::EpisodeStart start;
+    start.episode = r.episode;
+    start.width = static_cast<std::uint32_t>(r.start->width);
+    start.height = static_cast<std::uint32_t>(r.start->height);
+    start.start = toCell(r.start->start);
+    start.goal = toCell(r.goal);
+    start.agent_seed = r.start->agent_seed;
+    start.prior_map = r.start->prior_map;
+    m.starts.push_back(std::move(start));
+  }
 }
 
 }  // namespace
@@ -89,8 +101,7 @@ class LaneRunner {
       lane_->scans(&scans);
       message.header.stamp = ros::Time::now();
       message.batch = batch;
-      message.scans.resize(scans.size());
-      for (std::size_t i = 0; i < scans.size(); ++i) toMessage(scans[i], &message.scans[i]);
+      toMessage(scans, &message);
       recorder_->recordScans(name, scans);
       std::unique_lock<std::mutex> lock(mutex_);
       expected_batch_ = batch;
@@ -100,9 +111,10 @@ class LaneRunner {
                                                   [&] { return reply_.has_value() || !ros::ok(); });
       std::vector<MoveReply> moves;
       if (answered && reply_) moves = std::move(*reply_);
+      const char* missing_reason = missing_reason_;
       lock.unlock();
       if (answered && reply_) {
-        report(lane_->answer(moves, reason::kTimeout));
+        report(lane_->answer(moves, missing_reason));
       } else if (!agentAlive()) {
         ROS_ERROR("agent '%s' is gone: its %ld unfinished runs fail as agent_lost", name.c_str(), lane_->remaining());
         report(lane_->failAll(reason::kAgentLost));
@@ -159,10 +171,20 @@ class LaneRunner {
   void onMoves(const ppp_msgs::MoveBatch::ConstPtr& message) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (message->batch != expected_batch_ || reply_) return;  // late answer to an earlier batch
-    std::vector<MoveReply> moves;
-    moves.reserve(message->moves.size());
-    for (const auto& m : message->moves) moves.push_back({m.episode, m.step, m.action});
+    const std::size_t n = message->episodes.size();
+    if (message->steps.size() != n || message->actions.size() != n) {
+      // A malformed batch answers no episode: all of them fail as invalid_action.
+      ROS_WARN_ONCE("agent '%s': a MoveBatch whose episodes, steps and actions differ in length",
+                    lane_->config().name.c_str());
+      reply_ = std::vector<MoveReply>();
+      missing_reason_ = reason::kInvalidAction;
+      reply_ready_.notify_one();
+      return;
+    }
+    std::vector<MoveReply> moves(n);
+    for (std::size_t i = 0; i < n; ++i) moves[i] = {message->episodes[i], message->steps[i], message->actions[i]};
     reply_ = std::move(moves);
+    missing_reason_ = reason::kTimeout;
     reply_ready_.notify_one();
   }
 
@@ -182,6 +204,7 @@ class LaneRunner {
   std::condition_variable reply_ready_;
   std::uint32_t expected_batch_ = 0;
   std::optional<std::vector<MoveReply>> reply_;
+  const char* missing_reason_ = reason::kTimeout;  // for episodes the reply has no move for
 };
 
 /// Waits for the generator nodes' sets, then runs the experiment.

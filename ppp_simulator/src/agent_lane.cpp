@@ -16,6 +16,7 @@ AgentLane::AgentLane(const agents::AgentConfig& config, const EpisodeOptions& op
       sets_(sets),
       experiment_seed_(experiment_seed),
       batch_size_(batch_size),
+      reads_window_(agents::readsScanWindow(config)),
       sensor_(SensorOptions{options.sensor_range, config.sensor_noise}) {
   if (batch_size < 1) throw InvalidArgument("batch_size", "expected at least 1, got " + std::to_string(batch_size));
   for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
@@ -54,8 +55,12 @@ void AgentLane::scans(std::vector<ScanRequest>* requests) {
     r.set = a.work.set;
     r.problem = a.work.problem;
     r.run = a.work.run;
-    const int cells = (2 * r.range + 1) * (2 * r.range + 1);
-    r.cells.assign(scan.cells(), scan.cells() + cells);
+    if (reads_window_) {
+      const int cells = (2 * r.range + 1) * (2 * r.range + 1);
+      r.cells.assign(scan.cells(), scan.cells() + cells);
+    } else {
+      r.cells.clear();
+    }
     if (!a.started) {
       const PreparedSet& set = sets_[a.work.set];
       const Grid& grid = set.grids[a.work.problem];
@@ -84,26 +89,36 @@ std::vector<EpisodeResult> AgentLane::unanswered(const char* reason, int give_up
 
 std::vector<EpisodeResult> AgentLane::answer(const std::vector<MoveReply>& moves, const char* missing_reason) {
   if (!moves.empty()) silent_batches_ = 0;
+  // Agents answer in scan order, so move i is normally episode i's; the index is built only when not.
   std::unordered_map<std::uint32_t, const MoveReply*> by_episode;
-  for (const MoveReply& m : moves) by_episode.emplace(m.episode, &m);
+  const auto move_of = [&](std::size_t i, std::uint32_t id) -> const MoveReply* {
+    if (by_episode.empty() && i < moves.size() && moves[i].episode == id) return &moves[i];
+    if (by_episode.empty()) {
+      for (const MoveReply& m : moves) by_episode.emplace(m.episode, &m);
+    }
+    const auto it = by_episode.find(id);
+    return it == by_episode.end() ? nullptr : it->second;
+  };
   std::vector<EpisodeResult> finished;
-  std::vector<Active> still_active;
-  for (Active& a : active_) {
-    const auto it = by_episode.find(a.id);
-    if (it == by_episode.end()) {
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < active_.size(); ++i) {
+    Active& a = active_[i];
+    const MoveReply* move = move_of(i, a.id);
+    if (move == nullptr) {
       a.episode->fail(missing_reason);
-    } else if (static_cast<int>(it->second->step) != a.episode->step() || !agents::isAction(it->second->action)) {
+    } else if (static_cast<int>(move->step) != a.episode->step() || !agents::isAction(move->action)) {
       a.episode->fail(reason::kInvalidAction);
     } else {
-      a.episode->apply(static_cast<agents::Action>(it->second->action));
+      a.episode->apply(static_cast<agents::Action>(move->action));
     }
     if (a.episode->done()) {
       finished.push_back(result(a.work, a.seed, a.episode->outcome()));
     } else {
-      still_active.push_back(std::move(a));
+      if (kept != i) active_[kept] = std::move(a);
+      ++kept;
     }
   }
-  active_ = std::move(still_active);
+  active_.erase(active_.begin() + static_cast<std::ptrdiff_t>(kept), active_.end());
   return finished;
 }
 

@@ -53,7 +53,12 @@ std::vector<EpisodeResult> playLane(AgentLane& lane) {
                                                                                       s.start->prior_map[i] == kScanObstacle);
         host.start(s.episode, info, s.start->prior_map.empty() ? nullptr : &prior);
       }
-      const Scan scan(s.range, s.cells, s.position, s.goal, s.bumped, s.step);
+      // The lane sends no window to agents that never read one; an all-unknown window stands in for it.
+      const int side = 2 * s.range + 1;
+      EXPECT_EQ(s.cells.empty(), !agents::readsScanWindow(lane.config()));
+      const std::vector<std::int8_t> cells =
+          s.cells.empty() ? std::vector<std::int8_t>(static_cast<std::size_t>(side * side), kScanUnknown) : s.cells;
+      const Scan scan(s.range, cells, s.position, s.goal, s.bumped, s.step);
       moves.push_back({s.episode, static_cast<std::uint32_t>(s.step), static_cast<int>(host.act(s.episode, scan))});
     }
     for (EpisodeResult& r : lane.answer(moves, reason::kTimeout)) results.push_back(std::move(r));

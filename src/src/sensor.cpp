@@ -103,14 +103,17 @@ Scan::Scan(const SensorModel& sensor, const Grid& grid, Cell position, Cell goal
       range_(sensor.options().range) {}
 
 Scan::Scan(int range, const std::vector<std::int8_t>& cells, Cell position, Cell goal, bool bumped, int step)
+    : Scan(range, cells.data(), cells.size(), position, goal, bumped, step) {}
+
+Scan::Scan(int range, const std::int8_t* cells, std::size_t count, Cell position, Cell goal, bool bumped, int step)
     : position_(position), goal_(goal), bumped_(bumped), step_(step), range_(range), filled_(true) {
   if (range < 1 || range > kMaxSensorRange) throw InvalidArgument("range", "outside [1, 7]: " + std::to_string(range));
   const std::size_t expected = static_cast<std::size_t>(2 * range + 1) * (2 * range + 1);
-  if (cells.size() != expected) {
+  if (count != expected) {
     throw InvalidArgument("cells", "expected " + std::to_string(expected) + " window cells for range " +
-                                       std::to_string(range) + ", got " + std::to_string(cells.size()));
+                                       std::to_string(range) + ", got " + std::to_string(count));
   }
-  std::copy(cells.begin(), cells.end(), cells_.begin());
+  std::copy(cells, cells + count, cells_.begin());
 }
 
 std::int8_t Scan::atCell(Cell c) const {

@@ -7,7 +7,7 @@
 namespace ppp {
 namespace agents {
 
-/// What an agent does in one step (the same numbers as ppp_msgs/EpisodeMove). 4-connected moves;
+/// What an agent does in one step (the same numbers as ppp_msgs/MoveBatch). 4-connected moves;
 /// North is towards row 0 (y down).
 enum class Action : std::uint8_t { Stay = 0, North = 1, East = 2, South = 3, West = 4 };
 

@@ -27,6 +27,9 @@ const std::vector<std::string>& agentTypeNames();
 /// Builds an agent for a configuration (validated first). @throws InvalidArgument.
 std::unique_ptr<Agent> makeAgent(const AgentConfig& config);
 
+/// False for agent types that never look at their scan window (random): the simulator node sends them none.
+bool readsScanWindow(const AgentConfig& config);
+
 /// Parses a memory window "KxK" (e.g. "5x5"; "full" means 0). @throws InvalidArgument naming `option`.
 int parseMemoryWindow(const std::string& text, const std::string& option);
 

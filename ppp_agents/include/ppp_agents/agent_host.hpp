@@ -18,8 +18,9 @@ class AgentHost {
  public:
   /// Agents of one configuration. @throws InvalidArgument for a bad configuration.
   explicit AgentHost(const AgentConfig& config);
-  /// Starts episode `id`: a fresh (reset) agent; `prior_map` is kept for the episode when not empty.
-  void start(std::uint32_t id, const EpisodeInfo& info, const Grid* prior_map);
+  /// Starts episode `id`: a fresh (reset) agent; `prior_map` is kept for the episode when not empty. Returns
+  /// the episode's agent, valid until the episode is finished (callers may act on it directly).
+  Agent& start(std::uint32_t id, const EpisodeInfo& info, const Grid* prior_map);
   /// The action of episode `id` for this scan. @throws InvalidArgument for an episode never started.
   Action act(std::uint32_t id, const Scan& scan);
   /// Ends episode `id` and frees its agent for reuse (unknown ids are ignored).

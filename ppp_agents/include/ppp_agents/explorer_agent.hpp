@@ -30,13 +30,21 @@ class ExplorerAgent final : public Agent {
   /// One greedy (or frontier, or goal) step.
   Action act(const Scan& scan) override;
 
+  /// Which cells hide each cell of a sensor window: for window index i (row-major), the offsets
+  /// blockers[begin[i] .. begin[i+1]) from the agent that a line of sight to it crosses.
+  struct SightTable {
+    int range = 0;              ///< Sensor range the table is for.
+    std::vector<int> begin;     ///< Per window index, where its blockers start (one extra entry at the end).
+    std::vector<Cell> blockers;  ///< Offsets of the cells crossed, all window cells concatenated.
+  };
+
  private:
   /// Collects the unknown cells within range + 1 of `position` (all that any neighbour's window can hold).
   void collectUnknown(Cell position, int range);
   /// Collected unknown cells within the sensor window around `centre` not hidden by a remembered obstacle.
   int unknownAround(Cell centre) const;
-  /// Builds the line-of-sight table of a sensor range (once per range; not per step).
-  void prepareSight(int range);
+  /// The line-of-sight table of a sensor range, built once per process and shared.
+  static const SightTable& sightTable(int range);
   /// True when a cell is known free and has an unknown on-map 4-neighbour.
   bool isFrontier(Cell c) const;
   /// The next move along the frontier path (re-planned when needed), or false when there is no frontier.
@@ -48,9 +56,7 @@ class ExplorerAgent final : public Agent {
   Navigator navigator_;
   Rng rng_{0};
   bool goal_seen_ = false;
-  int sight_range_ = -1;              // range the table below is built for
-  std::vector<int> sight_begin_;      // per window index: its blockers are sight_blockers_[begin[i], begin[i+1])
-  std::vector<Cell> sight_blockers_;  // offsets of the cells a line of sight to the window cell crosses
+  const SightTable* sight_ = nullptr;  // of the range of the last scan
   std::array<Cell, (2 * kMaxSensorRange + 3) * (2 * kMaxSensorRange + 3)> unknown_{};
   int unknown_count_ = 0;
   std::vector<Cell> path_;    // long_term: cells still to visit, the frontier last

@@ -33,7 +33,7 @@ struct ScanRequest {
   Cell goal;                         ///< The goal cell.
   bool bumped = false;               ///< The last move bumped.
   int range = 0;                     ///< Window radius.
-  std::vector<std::int8_t> cells;    ///< The window, row-major.
+  std::vector<std::int8_t> cells;    ///< The window, row-major; empty for agents that never read it (random).
   std::optional<EpisodeStart> start;  ///< Set on step 0.
   int set = 0;                       ///< Index of the PPP's set.
   int problem = 0;                   ///< Index of the PPP in its set.
@@ -97,6 +97,7 @@ class AgentLane {
   const std::vector<PreparedSet>& sets_;
   std::uint64_t experiment_seed_;
   int batch_size_;
+  bool reads_window_;
   SensorModel sensor_;
   std::deque<Work> queue_;
   std::vector<Active> active_;

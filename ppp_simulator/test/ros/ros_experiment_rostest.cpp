@@ -127,10 +127,12 @@ TEST(RosExperimentTest, ResultsEqualTheInProcessRunAndTheBagHoldsTheMaps) {
   const std::string text = readTextFile(info, 1u << 20);
   for (const char* expected :
        {"/map ", "nav_msgs/OccupancyGrid", "/tf ", "tf2_msgs/TFMessage", "/astar/path", "nav_msgs/Path",
-        "/random/scan", "sensor_msgs/LaserScan", "/ppp/markers", "visualization_msgs/MarkerArray", "/ppp/results",
+        "/explorer_memory_5x5/scan", "sensor_msgs/LaserScan", "/ppp/markers", "visualization_msgs/MarkerArray", "/ppp/results",
         "ppp_msgs/EpisodeResult", "/ppp/sets/turns", "ppp_msgs/ProblemSet"}) {
     EXPECT_NE(text.find(expected), std::string::npos) << "rosbag info lacks " << expected << ":\n" << text;
   }
+  // The random agent reads no window, so it is sent none and none is recorded.
+  EXPECT_EQ(text.find("/random/scan"), std::string::npos) << text;
   // The first map in the bag is the first recorded PPP: set turns, ppp_000; compare cell by cell.
   rosbag::Bag bag(out + "/experiment.bag");
   rosbag::View maps(bag, rosbag::TopicQuery("/map"));

@@ -8,7 +8,7 @@
 
 namespace ppp {
 
-/// Scan cell values (the same numbers as ppp_msgs/EpisodeScan).
+/// Scan cell values (the same numbers as ppp_msgs/ScanBatch).
 constexpr std::int8_t kScanUnknown = -1;      ///< Not in line of sight.
 constexpr std::int8_t kScanFree = 0;          ///< Seen free.
 constexpr std::int8_t kScanObstacle = 100;    ///< Seen obstacle.
@@ -58,6 +58,8 @@ class Scan {
        std::uint64_t noise_seed);
   /// A scan from received window cells. @throws InvalidArgument when the count is not (2*range+1)^2.
   Scan(int range, const std::vector<std::int8_t>& cells, Cell position, Cell goal, bool bumped, int step);
+  /// A scan from `count` received window cells at `cells`. @throws InvalidArgument as above.
+  Scan(int range, const std::int8_t* cells, std::size_t count, Cell position, Cell goal, bool bumped, int step);
 
   Cell position() const { return position_; }  ///< The agent's cell (grid coordinates, y down).
   Cell goal() const { return goal_; }          ///< The goal cell.
