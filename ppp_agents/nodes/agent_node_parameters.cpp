@@ -13,14 +13,6 @@ std::string typeList() {
   return list;
 }
 
-/// Reads an optional parameter of type T; a present parameter of another type is an error.
-template <typename T>
-bool readParameter(const ros::NodeHandle& nh, const std::string& name, T* value, const std::string& expected) {
-  if (!nh.hasParam(name)) return false;
-  if (!nh.getParam(name, *value)) throw InvalidArgument("~" + name, "expected " + expected);
-  return true;
-}
-
 }  // namespace
 
 std::string baseName(const std::string& graph_name) {
@@ -44,6 +36,10 @@ AgentConfig readAgentNodeParameters(const ros::NodeHandle& nh, const std::string
     config.validate();
   } catch (const InvalidArgument& e) {
     throw InvalidArgument("~" + e.name(), std::string(e.what()).substr(e.name().size() + 2));
+  }
+  if (isPlanner(config)) {
+    throw InvalidArgument("~type", "planner agents run through planner_bridge_node, not agent_node; valid here: " +
+                                       typeList());
   }
   return config;
 }

@@ -41,8 +41,6 @@ class BatchResponder {
     Agent* agent;         // owned by host_
     std::uint32_t round;  // the last batch that held the episode's scan
   };
-  /// The shape of the batch's arrays, or the field at fault.
-  std::string checkShape(const ppp_msgs::ScanBatch& batch, std::string* what) const;
   void start(const ppp_msgs::EpisodeStart& start);
   std::uint8_t act(const ppp_msgs::ScanBatch& batch, std::size_t i, const std::int8_t* window);
   void reject(std::uint32_t episode, std::uint32_t step, const std::string& kind, const std::string& what);

@@ -16,15 +16,27 @@ constexpr int kMaxMemoryWindow = 2 * kMaxGridSide - 1;
 
 std::string typeList() {
   std::string list;
-  for (const std::string& name : agentTypeNames()) list += (list.empty() ? "" : ", ") + name;
-  return list;
+  for (const std::string& name : agentTypeNames()) list += name + ", ";
+  return list + kPlannerType;
 }
 
 bool isAgentType(const std::string& type) {
   for (const std::string& name : agentTypeNames()) {
     if (name == type) return true;
   }
-  return false;
+  return type == kPlannerType;
+}
+
+/// What is wrong with a per-agent run count, or "" when nothing is.
+std::string runsProblem(int runs) {
+  if (runs >= 0) return "";
+  return "expected runs per PPP >= 1, or 0 for the experiment's runs, got " + std::to_string(runs);
+}
+
+/// What is wrong with asking for a prior map, or "" when nothing is.
+std::string priorMapProblem(const AgentConfig& config) {
+  if (!config.prior_map || config.type == kPlannerType) return "";
+  return "only planner agents take prior_map (astar always has the map; the other agents never do)";
 }
 
 void validateType(const std::string& type) {
@@ -80,7 +92,11 @@ void AgentConfig::validate() const {
   validateMemoryWindow(memory_window);
   const std::string noise_problem = sensorNoiseProblem(sensor_noise);
   if (!noise_problem.empty()) throw InvalidArgument("sensor_noise", noise_problem);
+  if (!runsProblem(runs).empty()) throw InvalidArgument("runs", runsProblem(runs));
+  if (!priorMapProblem(*this).empty()) throw InvalidArgument("prior_map", priorMapProblem(*this));
 }
+
+bool isPlanner(const AgentConfig& config) { return config.type == kPlannerType; }
 
 const std::vector<std::string>& agentTypeNames() {
   static const std::vector<std::string> names = {
@@ -113,6 +129,8 @@ std::vector<AgentConfig> readAgentConfigs(YamlMapReader& reader, const std::stri
     std::string memory;
     const bool has_memory = item.read("memory", &memory);
     item.read("sensor_noise", &config.sensor_noise);
+    item.read("runs", &config.runs);
+    item.read("prior_map", &config.prior_map);
     item.rejectUnknownKeys();
 
     if (!has_type) item.fail(node, "type", "missing; valid: " + typeList());
@@ -127,6 +145,10 @@ std::vector<AgentConfig> readAgentConfigs(YamlMapReader& reader, const std::stri
     }
     const std::string noise_problem = sensorNoiseProblem(config.sensor_noise);
     if (!noise_problem.empty()) item.fail(item.lookup("sensor_noise"), "sensor_noise", noise_problem);
+    if (!runsProblem(config.runs).empty()) item.fail(item.lookup("runs"), "runs", runsProblem(config.runs));
+    if (!priorMapProblem(config).empty()) {
+      item.fail(item.lookup("prior_map"), "prior_map", priorMapProblem(config));
+    }
     const auto inserted = names.emplace(config.name, i);
     if (!inserted.second) {
       item.fail(has_name ? item.lookup("name") : node, "name",

@@ -26,6 +26,10 @@ std::unique_ptr<Agent> makeAgent(const AgentConfig& config) {
   if (type == "long_term_explorer") return std::make_unique<ExplorerAgent>(true, window);
   if (type == "bumper") return std::make_unique<BumperAgent>(false, window);
   if (type == "decision_bumper") return std::make_unique<BumperAgent>(true, window);
+  if (isPlanner(config)) {
+    throw InvalidArgument("type", "'" + config.name + "' is a planner agent: an external ROS planner played through "
+                                  "planner_bridge_node (docs/planner-interface.md), never built in-process");
+  }
   throw InvalidArgument("type", "no agent is built for type '" + type + "'");  // validate() lists the types
 }
 

@@ -18,7 +18,8 @@ namespace {
 using test::config;
 
 const char* const kTypes =
-    "astar, random, wall_follower_left, wall_follower_right, explorer, long_term_explorer, bumper, decision_bumper";
+    "astar, random, wall_follower_left, wall_follower_right, explorer, long_term_explorer, bumper, decision_bumper, "
+    "planner";
 
 /// The message of the InvalidArgument that `f` throws ("" when it throws none).
 template <class F>
@@ -52,8 +53,8 @@ std::vector<AgentConfig> read(const std::string& yaml) {
 
 TEST(AgentConfigTest, TypeNamesAreTheEightAgents) {
   std::string list;
-  for (const std::string& name : agentTypeNames()) list += (list.empty() ? "" : ", ") + name;
-  EXPECT_EQ(list, kTypes);
+  for (const std::string& name : agentTypeNames()) list += name + ", ";
+  EXPECT_EQ(list + kPlannerType, kTypes);
 }
 
 TEST(AgentConfigTest, ValidateAcceptsEveryTypeAndTheHandicaps) {
@@ -126,7 +127,8 @@ TEST(AgentConfigTest, ReadsConfigurationsWithDefaults) {
 
 TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, colour: red}\n"),
-            "agents.yaml:2: agents[0].colour: unknown key; valid keys: memory, name, sensor_noise, type");
+            "agents.yaml:2: agents[0].colour: unknown key; valid keys: memory, name, prior_map, runs, sensor_noise, "
+            "type");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),
             std::string("agents.yaml:3: agents[1].type: missing; valid: ") + kTypes);
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - name: x\n    type: robot\n"),
@@ -155,6 +157,36 @@ TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
             "agents.yaml:1: agents: expected a list of agents, each a mapping with a type");
   EXPECT_EQ(parseError("agents: []\n"), "agents.yaml:1: agents: expected at least one agent");
   EXPECT_EQ(parseError("other: 1\n"), "agents.yaml:0: agents: missing; expected a list of agents");
+  EXPECT_EQ(parseError("agents:\n  - {type: planner, runs: -1}\n"),
+            "agents.yaml:2: agents[0].runs: expected runs per PPP >= 1, or 0 for the experiment's runs, got -1");
+  EXPECT_EQ(parseError("agents:\n  - {type: planner, runs: many}\n"),
+            "agents.yaml:2: agents[0].runs: expected an integer, got 'many'");
+  EXPECT_EQ(parseError("agents:\n  - {type: explorer, prior_map: true}\n"),
+            "agents.yaml:2: agents[0].prior_map: only planner agents take prior_map (astar always has the map; the "
+            "other agents never do)");
+}
+
+TEST(AgentConfigTest, PlannerAgentsAreReadButNeverBuiltInProcess) {
+  const auto configs = read(
+      "agents:\n"
+      "  - {name: ompl, type: planner, runs: 3, prior_map: true}\n"
+      "  - {type: planner, memory: 5x5}\n");
+  ASSERT_EQ(configs.size(), 2u);
+  EXPECT_TRUE(isPlanner(configs[0]));
+  EXPECT_EQ(configs[0].runs, 3);
+  EXPECT_TRUE(configs[0].prior_map);
+  EXPECT_EQ(configs[1].name, "planner");
+  EXPECT_EQ(configs[1].runs, 0);
+  EXPECT_FALSE(configs[1].prior_map);
+  EXPECT_EQ(configs[1].memory_window, 5);
+  EXPECT_TRUE(readsScanWindow(configs[1]));
+  EXPECT_EQ(invalidArgument([&] { makeAgent(configs[0]); }),
+            "type: 'ompl' is a planner agent: an external ROS planner played through planner_bridge_node "
+            "(docs/planner-interface.md), never built in-process");
+  AgentConfig astar = config("astar");
+  astar.prior_map = true;
+  EXPECT_EQ(invalidArgument([&] { astar.validate(); }),
+            "prior_map: only planner agents take prior_map (astar always has the map; the other agents never do)");
 }
 
 TEST(AgentConfigTest, LoadRejectsUnknownTopLevelKeysAndMissingFiles) {
@@ -172,7 +204,7 @@ TEST(AgentConfigTest, LoadRejectsUnknownTopLevelKeysAndMissingFiles) {
   EXPECT_THROW(loadAgentConfigs(path + ".missing"), IoError);
 }
 
-TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgents) {
+TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgentsAndTwoPlanners) {
   const auto configs = loadAgentConfigs(std::string(PPP_CONFIG_DIR) + "/agents.yaml");
   struct Expected {
     const char* name;
@@ -191,6 +223,8 @@ TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgents) {
       {"explorer_noise_0.1", "explorer", 0, 0.1},
       {"bumper", "bumper", 0, 0.0},
       {"decision_bumper", "decision_bumper", 0, 0.0},
+      {"ompl", "planner", 0, 0.0},
+      {"optimistic", "planner", 0, 0.0},
   };
   ASSERT_EQ(configs.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
@@ -199,7 +233,10 @@ TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgents) {
     EXPECT_EQ(configs[i].memory_window, expected[i].memory) << i;
     EXPECT_EQ(configs[i].sensor_noise, expected[i].noise) << i;
     EXPECT_NO_THROW(configs[i].validate()) << i;
+    EXPECT_EQ(configs[i].runs, isPlanner(configs[i]) ? 3 : 0) << i;
   }
+  EXPECT_TRUE(configs[10].prior_map);
+  EXPECT_FALSE(configs[11].prior_map);
 }
 
 TEST(AgentConfigTest, GraphNamesAreLegalRosNames) {

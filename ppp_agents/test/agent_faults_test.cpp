@@ -56,10 +56,11 @@ const std::vector<std::string> kOpen8 = {
     ".......G",  //
 };
 
-TEST(AgentFaultsTest, EveryShippedConfigurationButRandomPassesAnOpenMap) {
+TEST(AgentFaultsTest, EveryShippedBuiltInConfigurationButRandomPassesAnOpenMap) {
   const World w = world(kOpen8);
   for (const AgentConfig& c : loadAgentConfigs(std::string(PPP_CONFIG_DIR) + "/agents.yaml")) {
     if (c.type == "random") continue;  // random: see the 3x3 tests below
+    if (isPlanner(c)) continue;        // external planners: see ppp_simulator's planner_experiment test
     const Rate rate = passRate(c, w, 100, "open 8x8");
     // Measured: 100 % for every one of them.
     EXPECT_GE(rate.pass, 0.97) << c.name;

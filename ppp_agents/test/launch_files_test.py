@@ -43,9 +43,10 @@ class ExperimentLaunchTest(unittest.TestCase):
             cls.agents = yaml.safe_load(f)['agents']
 
     def test_one_agent_node_per_configured_agent(self):
+        built_in = [a for a in self.agents if a['type'] != 'planner']
         agent_nodes = sorted(n.name for n in self.config.nodes if n.type == 'agent_node')
-        self.assertEqual(agent_nodes, sorted(graph_name(a['name']) for a in self.agents))
-        for agent in self.agents:
+        self.assertEqual(agent_nodes, sorted(graph_name(a['name']) for a in built_in))
+        for agent in built_in:
             node_name = graph_name(agent['name'])
             node = self.nodes[node_name]
             self.assertEqual(node.package, 'ppp_agents')
@@ -58,6 +59,33 @@ class ExperimentLaunchTest(unittest.TestCase):
             self.assertEqual(self.params[prefix + 'memory'], agent.get('memory', 'full'), node_name)
             self.assertEqual(self.params[prefix + 'sensor_noise'], agent.get('sensor_noise', 0.0), node_name)
             self.assertEqual(self.params.get(prefix + 'name', node_name), agent['name'], node_name)
+
+    def test_one_bridge_and_one_planner_per_planner_agent(self):
+        planners = [a for a in self.agents if a['type'] == 'planner']
+        self.assertEqual(len(planners), 2)
+        bridges = sorted(n.namespace for n in self.config.nodes if n.type == 'planner_bridge_node')
+        self.assertEqual(bridges, sorted('/%s/' % graph_name(a['name']) for a in planners))
+        for agent in planners:
+            namespace = '/%s/' % graph_name(agent['name'])
+            bridge = [n for n in self.config.nodes if n.type == 'planner_bridge_node' and n.namespace == namespace][0]
+            self.assertEqual(bridge.name, 'bridge')
+            self.assertEqual(self.params.get(namespace + 'bridge/memory', 'full'), agent.get('memory', 'full'))
+            planner_nodes = [n for n in self.config.nodes if n.namespace == namespace + 'robot/']
+            self.assertEqual(len(planner_nodes), 1, namespace)
+            self.assertEqual(planner_nodes[0].package, 'ppp_agents')
+
+    def test_your_own_planner_gets_a_bridge_and_optionally_its_node(self):
+        bridge_only = load('experiment.launch', 'output_dir:=out', 'planner:=mine')
+        mine = [n for n in bridge_only.nodes if n.namespace.startswith('/mine/')]
+        self.assertEqual([(n.namespace, n.name, n.type) for n in mine], [('/mine/', 'bridge', 'planner_bridge_node')])
+        started = load('experiment.launch', 'output_dir:=out', 'planner:=mine', 'planner_pkg:=ppp_agents',
+                       'planner_type:=simple_planner.py')
+        planner = [n for n in started.nodes if n.namespace == '/mine/robot/']
+        self.assertEqual([(n.name, n.package, n.type) for n in planner], [('planner', 'ppp_agents', 'simple_planner.py')])
+        with open(os.path.join(ROOT, 'config', 'planner_experiment.yaml')) as f:
+            experiment = yaml.safe_load(f)
+        self.assertIn({'name': 'mine', 'type': 'planner'}, experiment['agents'])
+        self.assertEqual(experiment['sets'], self.experiment['sets'])
 
     def test_generator_nodes_make_the_configured_sets(self):
         with open(os.path.join(ROOT, 'config', 'generator.yaml')) as f:

@@ -11,7 +11,7 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/map_frame.hpp"
 #include "ppp_msgs/conversions.h"
-#include "ppp_simulator/scan_rays.hpp"
+#include "ppp_core/scan_rays.hpp"
 
 namespace ppp {
 namespace simulator {

@@ -5,9 +5,7 @@
 // summary.csv and the report are written when all runs are done; a sample of episodes and every result are
 // recorded in experiment.bag. The node exits when the experiment is finished.
 #include <ros/ros.h>
-#include <ros/network.h>
 #include <ros/topic.h>
-#include <xmlrpcpp/XmlRpcClient.h>
 
 #include <atomic>
 #include <condition_variable>
@@ -23,6 +21,7 @@
 #include "ppp_msgs/ProblemSet.h"
 #include "ppp_msgs/ScanBatch.h"
 #include "ppp_msgs/conversions.h"
+#include "ppp_msgs/node_liveness.h"
 #include "ppp_simulator/agent_lane.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
 #include "simulator_parameters.hpp"
@@ -87,12 +86,16 @@ class LaneRunner {
   /// Plays every run of the lane; returns when it is finished or ROS shuts down.
   void run() {
     const std::string& name = lane_->config().name;
+    const double step_timeout =
+        agents::isPlanner(lane_->config()) ? parameters_.planner_step_timeout : parameters_.step_timeout;
     if (!waitForAgent()) {
       ROS_ERROR("agent '%s' never connected within %.0f s: its %ld runs fail as agent_lost", name.c_str(),
                 parameters_.connect_timeout, lane_->remaining());
       report(lane_->failAll(reason::kAgentLost));
       return;
     }
+    const ros::WallTime started = ros::WallTime::now();
+    const long episodes = lane_->remaining();
     // Both buffers live across batches, so a batch allocates (almost) nothing.
     std::vector<ScanRequest> scans;
     ppp_msgs::ScanBatch message;
@@ -107,7 +110,7 @@ class LaneRunner {
       expected_batch_ = batch;
       reply_.reset();
       scans_.publish(message);
-      const bool answered = reply_ready_.wait_for(lock, std::chrono::duration<double>(parameters_.step_timeout),
+      const bool answered = reply_ready_.wait_for(lock, std::chrono::duration<double>(step_timeout),
                                                   [&] { return reply_.has_value() || !ros::ok(); });
       std::vector<MoveReply> moves;
       if (answered && reply_) moves = std::move(*reply_);
@@ -125,11 +128,14 @@ class LaneRunner {
                     name.c_str(), lane_->silentBatches());
         } else {
           ROS_WARN("agent '%s' did not answer batch %u within %.1f s: its episodes fail as timeout", name.c_str(),
-                   batch, parameters_.step_timeout);
+                   batch, step_timeout);
         }
         report(ended);
       }
     }
+    const double seconds = (ros::WallTime::now() - started).toSec();
+    ROS_INFO("agent '%s': %ld episodes in %.1f s (%.1f episodes/s)", name.c_str(), episodes, seconds,
+             seconds > 0 ? episodes / seconds : 0.0);
   }
 
  private:
@@ -142,31 +148,8 @@ class LaneRunner {
     return false;
   }
 
-  /// True while some process that publishes the agent's moves answers on its XML-RPC API (a killed node's
-  /// registration stays with the master, so the registration alone says nothing).
-  bool agentAlive() {
-    XmlRpc::XmlRpcValue args, result, state;
-    args[0] = ros::this_node::getName();
-    if (!ros::master::execute("getSystemState", args, result, state, false)) return true;  // cannot tell
-    const std::string topic = moves_.getTopic();
-    for (int i = 0; i < state[0].size(); ++i) {
-      if (static_cast<std::string>(state[0][i][0]) != topic) continue;
-      for (int j = 0; j < state[0][i][1].size(); ++j) {
-        XmlRpc::XmlRpcValue lookup_args, lookup_result, uri;
-        lookup_args[0] = ros::this_node::getName();
-        lookup_args[1] = state[0][i][1][j];
-        if (!ros::master::execute("lookupNode", lookup_args, lookup_result, uri, false)) continue;
-        std::string host;
-        std::uint32_t port = 0;
-        if (!ros::network::splitURI(static_cast<std::string>(uri), host, port)) continue;
-        XmlRpc::XmlRpcClient client(host.c_str(), static_cast<int>(port), "/");
-        XmlRpc::XmlRpcValue pid_args, pid;
-        pid_args[0] = ros::this_node::getName();
-        if (client.execute("getPid", pid_args, pid) && !client.isFault()) return true;
-      }
-    }
-    return false;
-  }
+  /// True while the agent's process answers (a killed node's registration stays with the master).
+  bool agentAlive() const { return ppp_msgs::publisherAlive(moves_.getTopic()); }
 
   void onMoves(const ppp_msgs::MoveBatch::ConstPtr& message) {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -183,6 +166,17 @@ class LaneRunner {
     }
     std::vector<MoveReply> moves(n);
     for (std::size_t i = 0; i < n; ++i) moves[i] = {message->episodes[i], message->steps[i], message->actions[i]};
+    for (const ppp_msgs::EpisodeFailure& f : message->failures) {
+      const char* reason = reason::agentReportedReason(f.reason);
+      if (reason == nullptr) {
+        ROS_WARN_ONCE("agent '%s' gave an episode up for an unknown reason '%s': recorded as invalid_action",
+                      lane_->config().name.c_str(), f.reason.c_str());
+        reason = reason::kInvalidAction;
+      }
+      for (MoveReply& m : moves) {
+        if (m.episode == f.episode) m.failure = reason;
+      }
+    }
     reply_ = std::move(moves);
     missing_reason_ = reason::kTimeout;
     reply_ready_.notify_one();
@@ -243,7 +237,8 @@ int runSimulator(ros::NodeHandle& nh, const SimulatorParameters& parameters) {
   std::vector<std::unique_ptr<LaneRunner>> runners;
   long remaining = 0;
   for (const auto& agent : config.agents) {
-    lanes.push_back(std::make_unique<AgentLane>(agent, config.episode, sets, config.seed, config.runs, results.done(),
+    lanes.push_back(std::make_unique<AgentLane>(agent, config.episode, sets, config.seed, config.runsFor(agent),
+                                                results.done(),
                                                 parameters.batch_size));
     remaining += lanes.back()->remaining();
     runners.push_back(std::make_unique<LaneRunner>(nh, parameters, lanes.back().get(), &results, &recorder));

@@ -27,6 +27,7 @@ SimulatorParameters readSimulatorParameters(const ros::NodeHandle& nh) {
   readParameter(nh, "output_dir", &p.output_dir, "a directory path");
   readParameter(nh, "batch_size", &p.batch_size, "an integer");
   readParameter(nh, "step_timeout", &p.step_timeout, "a number of seconds");
+  readParameter(nh, "planner_step_timeout", &p.planner_step_timeout, "a number of seconds");
   readParameter(nh, "timeouts_before_giving_up", &p.timeouts_before_giving_up, "an integer");
   readParameter(nh, "connect_timeout", &p.connect_timeout, "a number of seconds");
   if (nh.hasParam("wait_for_sets") && !nh.getParam("wait_for_sets", p.wait_for_sets)) {
@@ -47,6 +48,7 @@ SimulatorParameters readSimulatorParameters(const ros::NodeHandle& nh) {
   if (p.output_dir.empty()) throw InvalidArgument("~output_dir", "required: where results, report and bag go");
   if (p.batch_size < 1) throw InvalidArgument("~batch_size", "expected at least 1, got " + std::to_string(p.batch_size));
   requirePositive(p.step_timeout, "~step_timeout");
+  requirePositive(p.planner_step_timeout, "~planner_step_timeout");
   requirePositive(p.connect_timeout, "~connect_timeout");
   requirePositive(p.set_timeout, "~set_timeout");
   requirePositive(p.resolution, "~resolution");

@@ -15,7 +15,7 @@ AgentLane::AgentLane(const agents::AgentConfig& config, const EpisodeOptions& op
       options_((options.validate(), options)),
       sets_(sets),
       experiment_seed_(experiment_seed),
-      batch_size_(batch_size),
+      batch_size_(agents::isPlanner(config) ? 1 : batch_size),
       reads_window_(agents::readsScanWindow(config)),
       sensor_(SensorOptions{options.sensor_range, config.sensor_noise}) {
   if (batch_size < 1) throw InvalidArgument("batch_size", "expected at least 1, got " + std::to_string(batch_size));
@@ -106,6 +106,8 @@ std::vector<EpisodeResult> AgentLane::answer(const std::vector<MoveReply>& moves
     const MoveReply* move = move_of(i, a.id);
     if (move == nullptr) {
       a.episode->fail(missing_reason);
+    } else if (move->failure != nullptr) {
+      a.episode->fail(move->failure);
     } else if (static_cast<int>(move->step) != a.episode->step() || !agents::isAction(move->action)) {
       a.episode->fail(reason::kInvalidAction);
     } else {

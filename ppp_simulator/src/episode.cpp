@@ -83,7 +83,7 @@ agents::EpisodeInfo episodeInfo(const Problem& problem, const Grid& grid, const 
   info.start = problem.start;
   info.goal = problem.goal;
   info.seed = agentSeed(run_seed);
-  info.prior_map = config.type == "astar" ? &grid : nullptr;
+  info.prior_map = config.type == "astar" || (agents::isPlanner(config) && config.prior_map) ? &grid : nullptr;
   return info;
 }
 

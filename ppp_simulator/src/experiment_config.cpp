@@ -141,7 +141,8 @@ std::string experimentFingerprint(const ExperimentConfig& c) {
     out << "  - {name: " << a.name << ", type: " << a.type << ", memory: "
         << (a.memory_window == 0 ? std::string("full")
                                  : std::to_string(a.memory_window) + "x" + std::to_string(a.memory_window))
-        << ", sensor_noise: " << a.sensor_noise << "}\n";
+        << ", sensor_noise: " << a.sensor_noise << (a.runs > 0 ? ", runs: " + std::to_string(a.runs) : "")
+        << (a.prior_map ? ", prior_map: true" : "") << "}\n";
   }
   return out.str();
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <set>
 
 #include "ppp_core/csv.hpp"
 #include "ppp_simulator/episode.hpp"
@@ -25,7 +26,9 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
   // Pass counts per (set, problem, agent), over the agents that are not the control.
   std::map<std::tuple<std::string, std::string, std::string>, std::pair<int, int>> counts;
   for (const EpisodeResult& r : rows) {
-    if (agent_by_name.at(r.agent)->type == kControlType) continue;
+    // The control always passes; a planner's path cannot be replayed in-process for the picture.
+    const agents::AgentConfig& agent = *agent_by_name.at(r.agent);
+    if (agent.type == kControlType || agents::isPlanner(agent)) continue;
     auto& c = counts[{r.set, r.problem, r.agent}];
     c.first += r.passed ? 1 : 0;
     ++c.second;
@@ -107,10 +110,21 @@ void writeExperimentReport(const std::string& dir, const ExperimentConfig& confi
                            const std::vector<PreparedSet>& sets, const std::vector<EpisodeResult>& rows) {
   std::vector<std::string> set_names, agent_names;
   for (const PreparedSet& s : sets) set_names.push_back(s.name);
-  for (const auto& a : config.agents) agent_names.push_back(a.name);
+  // Agents with no rows (planners in an in-process run) are left out of the tables.
+  std::set<std::string> agents_run;
+  for (const EpisodeResult& r : rows) agents_run.insert(r.agent);
+  std::string other_runs;
+  for (const auto& a : config.agents) {
+    if (agents_run.count(a.name) == 0) continue;
+    agent_names.push_back(a.name);
+    if (config.runsFor(a) != config.runs) {
+      other_runs += (other_runs.empty() ? "" : ", ") + a.name + " " + std::to_string(config.runsFor(a));
+    }
+  }
   ReportInput input;
   input.title = "PPP Lab experiment: " + std::to_string(sets.size()) + " sets, " +
-                std::to_string(config.agents.size()) + " agents, " + std::to_string(config.runs) + " runs each";
+                std::to_string(agent_names.size()) + " agents, " + std::to_string(config.runs) + " runs each" +
+                (other_runs.empty() ? "" : " (" + other_runs + ")");
   input.config_text = config_text;
   input.rates = computePassRates(rows, set_names, agent_names);
   for (std::size_t a = 0; a < sets.size(); ++a) {

@@ -165,11 +165,20 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
   report.episodes_resumed = static_cast<long>(results.done().size());
   std::vector<Unit> units;
   long total = 0;
+  std::string planners;
+  for (const agents::AgentConfig& agent : config.agents) {
+    if (agents::isPlanner(agent)) planners += (planners.empty() ? "" : ", ") + agent.name;
+  }
+  if (!planners.empty()) {
+    say(log, "skipping the planner agents (" + planners + "): external ROS planners run only through "
+             "launch/experiment.launch");
+  }
   for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
     for (int p = 0; p < static_cast<int>(sets[s].set.problems.size()); ++p) {
       for (int a = 0; a < static_cast<int>(config.agents.size()); ++a) {
+        if (agents::isPlanner(config.agents[a])) continue;
         Unit unit{s, p, a, {}};
-        for (int run = 0; run < config.runs; ++run) {
+        for (int run = 0; run < config.runsFor(config.agents[a]); ++run) {
           ++total;
           if (results.done().count(RunKey{sets[s].name, sets[s].set.ids[p], config.agents[a].name, run}) == 0) {
             unit.runs.push_back(run);

@@ -100,4 +100,17 @@ cp "$work/agents.yaml" "$work/other_agents.yaml"
 expect_error "different experiment" "holds a different experiment" "$ppp" experiment "$work/other.yaml" -o "$work/a"
 cmp -s "$work/a/results.csv" "$work/b/results.csv" && pass || fail "a refused experiment touched the results"
 
+# Planner agents are external ROS planners: the in-process run says it skips them and reports the others.
+cat > "$work/planner_agents.yaml" <<'YAML'
+agents:
+  - {name: random, type: random}
+  - {name: ompl, type: planner, prior_map: true, runs: 2}
+YAML
+sed -e 's/runs: 1500/runs: 5/' -e 's/agents: agents.yaml/agents: planner_agents.yaml/' "$work/experiment.yaml" \
+  > "$work/planners.yaml"
+expect_ok "experiment with a planner agent" "$ppp" experiment "$work/planners.yaml" -o "$work/p"
+grep -q "skipping the planner agents (ompl)" "$work/err" && pass || fail "no word about the planner: $(cat "$work/err")"
+[ "$(rows "$work/p/results.csv")" -eq $((2 * 6 * 5 + 1)) ] && pass || fail "planner runs in process: $(rows "$work/p/results.csv")"
+grep -q "1 agents, 5 runs each" "$work/p/report.md" && pass || fail "report title: $(head -3 "$work/p/report.md")"
+
 finish

@@ -26,7 +26,7 @@ TEST(ExperimentConfigTest, ShippedDefaultExperiment) {
   EXPECT_EQ(c.sets[1].generator->fitness, "difficulty");
   EXPECT_EQ(c.sets[1].generator->population, 60);
   EXPECT_EQ(c.sets[1].generator->matings, 10000);
-  ASSERT_EQ(c.agents.size(), 10u);
+  ASSERT_EQ(c.agents.size(), 12u);  // the ten built-in agents and the two example planners
   EXPECT_EQ(c.agents[6].name, "explorer_memory_5x5");
   EXPECT_EQ(c.agents[6].memory_window, 5);
   EXPECT_EQ(c.agents[7].sensor_noise, 0.1);
@@ -96,6 +96,25 @@ TEST_F(ExperimentYaml, DirectoryHoldingAnotherExperimentIsRefused) {
   fs::remove(out + "/experiment.yaml");
   std::ofstream(out + "/notes.txt") << "mine";
   EXPECT_THROW(checkExperimentDirectory(c, out), IoError);
+}
+
+TEST_F(ExperimentYaml, PlannerAgentsKeepTheirOwnRunsAndMapChoiceInTheFingerprint) {
+  ExperimentConfig c;
+  c.runs = 7;
+  c.sets.push_back(SetSpec{"a", generator::GeneratorOptions{}, ""});
+  c.agents.push_back(agents::AgentConfig{"random", "random", 0, 0.0});
+  agents::AgentConfig planner{"ompl", agents::kPlannerType, 0, 0.0};
+  planner.runs = 3;
+  planner.prior_map = true;
+  c.agents.push_back(planner);
+  EXPECT_EQ(c.runsFor(c.agents[0]), 7);
+  EXPECT_EQ(c.runsFor(c.agents[1]), 3);
+  const std::string fingerprint = experimentFingerprint(c);
+  EXPECT_NE(fingerprint.find("  - {name: ompl, type: planner, memory: full, sensor_noise: 0, runs: 3, prior_map: true}"),
+            std::string::npos)
+      << fingerprint;
+  c.agents[1].runs = 4;  // a change of the planner's runs is a different experiment
+  EXPECT_NE(experimentFingerprint(c), fingerprint);
 }
 
 }  // namespace

@@ -16,15 +16,24 @@ struct AgentConfig {
   std::string type;            ///< One of agentTypeNames().
   int memory_window = 0;       ///< Limited memory: keep only a k x k window around the agent (odd k); 0 = full.
   double sensor_noise = 0.0;   ///< Probability that a sensed cell is reported flipped (applied by the sensor).
-  /// @throws InvalidArgument naming "type" (listing the valid ones), "memory" or "sensor_noise".
+  int runs = 0;                ///< Runs per PPP for this agent; 0 = the experiment's `runs`.
+  bool prior_map = false;      ///< Planner agents only: the planner is given the true map instead of the memory.
+  /// @throws InvalidArgument naming "type" (listing the valid ones), "memory", "sensor_noise", "runs" or
+  /// "prior_map".
   void validate() const;
 };
 
-/// The agent types: astar, random, wall_follower_left, wall_follower_right, explorer, long_term_explorer,
-/// bumper, decision_bumper.
+/// The type of agents played by an external ROS planner through planner_bridge_node, one episode at a time.
+constexpr const char* kPlannerType = "planner";
+
+/// True for an external planner agent (type kPlannerType), which cannot be built in-process.
+bool isPlanner(const AgentConfig& config);
+
+/// The built-in agent types: astar, random, wall_follower_left, wall_follower_right, explorer,
+/// long_term_explorer, bumper, decision_bumper (configurations may also name kPlannerType).
 const std::vector<std::string>& agentTypeNames();
 
-/// Builds an agent for a configuration (validated first). @throws InvalidArgument.
+/// Builds an agent for a configuration (validated first). @throws InvalidArgument (also for planners).
 std::unique_ptr<Agent> makeAgent(const AgentConfig& config);
 
 /// False for agent types that never look at their scan window (random): the simulator node sends them none.

@@ -45,6 +45,7 @@ struct MoveReply {
   std::uint32_t episode = 0;  ///< The episode answered.
   std::uint32_t step = 0;     ///< The step answered.
   int action = 0;             ///< An agents::Action number (anything else is invalid).
+  const char* failure = nullptr;  ///< The agent gives the episode up for this reason (a reason:: constant).
 };
 
 /// All the runs of one agent configuration in an experiment, played in lockstep batches: up to `batch_size`
@@ -64,8 +65,8 @@ class AgentLane {
   /// its elements' buffers are reused, so a caller keeping one vector allocates nothing per batch).
   void scans(std::vector<ScanRequest>* requests);
   /// Applies a batch of moves. An active episode with no move gets `missing_reason`; a move for the wrong step
-  /// or with an unknown action fails its episode with reason::kInvalidAction; moves for unknown episodes are
-  /// ignored. Returns the results of the episodes that ended.
+  /// or with an unknown action fails its episode with reason::kInvalidAction, a move with a failure fails it
+  /// with that reason; moves for unknown episodes are ignored. Returns the results of the episodes that ended.
   std::vector<EpisodeResult> answer(const std::vector<MoveReply>& moves, const char* missing_reason);
   /// A batch went unanswered: its episodes fail with `reason`, and once `give_up_after` batches in a row went
   /// unanswered every remaining run fails with it too (a silent agent does not hold the experiment up).

@@ -30,6 +30,8 @@ struct ExperimentConfig {
   std::vector<agents::AgentConfig> agents;  ///< The agent configurations, in report order.
   /// @throws InvalidArgument naming the field.
   void validate() const;
+  /// Runs per PPP of `agent`: its own `runs`, or the experiment's.
+  int runsFor(const agents::AgentConfig& agent) const { return agent.runs > 0 ? agent.runs : runs; }
 };
 
 /// Loads an experiment YAML (see config/experiment.yaml). Relative paths (agents file, set directories) are

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The ROS experiment as a user starts it: roslaunch launch/experiment.launch on a small config (two sets of 60
-# evolved PPPs, the ten agents, 2 runs each), on a private master. Checks the experiment finishes with exactly
-# sets x PPPs x agents x runs rows, the report and bag exist, and rviz (headless) shows the recorded map.
+# evolved PPPs, the ten agents with 2 runs each and the two example planners with their own 3), on a private
+# master. Checks the experiment finishes with exactly sets x PPPs x agents x runs rows, the report and bag
+# exist, and rviz (headless) shows the recorded map.
 # Usage: launch_experiment_test.sh DEVEL_DIR
 devel="$1"
 source "$devel/setup.bash"  # before set -u: setup.bash reads unset variables
@@ -17,16 +18,21 @@ cp "$root/config/agents.yaml" "$root/config/generator.yaml" "$work/"
 timeout 600 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/out" config:="$work/experiment.yaml" \
   > "$work/launch.log" 2>&1
 rows=$(($(wc -l < "$work/out/results.csv") - 1))
-[ "$rows" -eq $((2 * 60 * 10 * 2)) ] && pass || fail "results.csv has $rows rows, expected 2400: $(tail -20 "$work/launch.log")"
+expected=$((2 * 60 * (10 * 2 + 2 * 3)))
+[ "$rows" -eq "$expected" ] && pass || fail "results.csv has $rows rows, expected $expected: $(tail -20 "$work/launch.log")"
 for f in summary.csv report.html report.md experiment.bag sets/turns/tree.html sets/difficulty/set.csv; do
   [ -s "$work/out/$f" ] && pass || fail "the launched experiment did not write $f"
 done
 grep -q "experiment done" "$work/launch.log" && pass || fail "the simulator did not report the end"
-! grep -q "agent_lost\|timeout" "$work/out/results.csv" && pass || fail "healthy agents lost runs"
+! grep -q ",agent_lost$\|,timeout$\|,planner_lost$\|,planner_timeout$\|,invalid_path$\|,invalid_action$" \
+  "$work/out/results.csv" && pass || fail "healthy agents lost runs: $(grep -c "lost$\|timeout$\|invalid" "$work/out/results.csv")"
+ompl_passes=$(grep -c ",ompl,.*,goal_reached$" "$work/out/results.csv")
+[ "$ompl_passes" -eq $((2 * 60 * 3)) ] && pass || fail "OMPL with the true map passed $ompl_passes of 360 runs"
 
-# The same experiment in process gives the same rows.
+# The same experiment in process gives the same rows (it runs no planner agents).
 "$devel/lib/ppp_simulator/ppp" experiment "$work/experiment.yaml" -o "$work/cli" --quiet > /dev/null 2>&1
-cmp -s "$work/out/results.csv" "$work/cli/results.csv" && pass || fail "roslaunch and ppp experiment results differ"
+grep -v ",ompl,\|,optimistic," "$work/out/results.csv" > "$work/ros_built_in.csv"
+cmp -s "$work/ros_built_in.csv" "$work/cli/results.csv" && pass || fail "roslaunch and ppp experiment results differ"
 
 # rviz, headless, on the recorded bag: the picture must show the map (pixels checked, not just a file).
 if "$root/scripts/rviz-screenshot.sh" "$work/out/experiment.bag" "$work/rviz.png" 5 > "$work/rviz.log" 2>&1; then

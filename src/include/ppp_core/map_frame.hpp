@@ -4,6 +4,12 @@
 
 namespace ppp {
 
+/// A point of the ROS `map` frame, in metres.
+struct MapPoint {
+  double x = 0.0;  ///< Metres to the right of the map's origin (its bottom-left corner).
+  double y = 0.0;  ///< Metres above the map's origin.
+};
+
 /// The one place where grid coordinates (y down, row 0 at the top) meet the ROS `map` frame
 /// (y up, origin at the bottom-left corner of the map, `resolution` metres per cell).
 struct MapFrame {

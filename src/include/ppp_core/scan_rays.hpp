@@ -4,7 +4,6 @@
 #include <vector>
 
 namespace ppp {
-namespace simulator {
 
 /// Turns a scan window into laser ranges, for tools that expect a range sensor (sensor_msgs/LaserScan).
 /// Ray i points at angle 2*pi*i/rays, counter-clockwise from the +x axis of the ROS map frame (east, with north
@@ -13,5 +12,4 @@ namespace simulator {
 /// edge, reports infinity (no return).
 std::vector<float> windowRanges(const std::int8_t* cells, int range, int rays);
 
-}  // namespace simulator
 }  // namespace ppp

@@ -1,4 +1,4 @@
-#include "ppp_simulator/scan_rays.hpp"
+#include "ppp_core/scan_rays.hpp"
 
 #include <cmath>
 #include <limits>
@@ -6,7 +6,6 @@
 #include "ppp_core/sensor.hpp"
 
 namespace ppp {
-namespace simulator {
 
 std::vector<float> windowRanges(const std::int8_t* cells, int range, int rays) {
   constexpr double kStep = 0.05;
@@ -34,5 +33,4 @@ std::vector<float> windowRanges(const std::int8_t* cells, int range, int rays) {
   return ranges;
 }
 
-}  // namespace simulator
 }  // namespace ppp

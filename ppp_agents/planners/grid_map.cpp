@@ -1,0 +1,51 @@
+#include "grid_map.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/segment_walk.hpp"
+
+namespace ppp {
+namespace planners {
+
+GridMap::GridMap(int width, int height, double resolution, const std::vector<std::int8_t>& data, bool unknown_is_free)
+    : frame_{width, height, resolution} {
+  validateGridSize(width, height, "map size");
+  if (!(resolution > 0.0) || !std::isfinite(resolution)) {
+    throw InvalidArgument("map resolution",
+                          "expected a positive, finite number of metres per cell, got " + std::to_string(resolution));
+  }
+  const std::size_t cells = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  if (data.size() != cells) {
+    throw InvalidArgument(
+        "map data", "expected width*height = " + std::to_string(cells) + " values, got " + std::to_string(data.size()));
+  }
+  passable_.assign(cells, 0);
+  for (std::size_t i = 0; i < cells; ++i) {
+    const int value = data[i];
+    if (value < kUnknownOccupancy || value > 100) {
+      throw InvalidArgument("map data[" + std::to_string(i) + "]",
+                            "expected -1 (unknown) or an occupancy in [0, 100], got " + std::to_string(value));
+    }
+    const bool free = value == kUnknownOccupancy ? unknown_is_free : value < kObstacleOccupancy;
+    const Cell cell = frame_.cellOfMapRowColumn(static_cast<int>(i % static_cast<std::size_t>(width)),
+                                                static_cast<int>(i / static_cast<std::size_t>(width)));
+    passable_[static_cast<std::size_t>(index(cell))] = free ? 1 : 0;
+  }
+}
+
+Cell GridMap::cellOf(MapPoint p) const { return walkMapSegment(frame_, p.x, p.y, p.x, p.y).front(); }
+
+bool GridMap::segmentPassable(MapPoint a, MapPoint b) const { return walkPassable(a, b) && walkPassable(b, a); }
+
+bool GridMap::walkPassable(MapPoint from, MapPoint to) const {
+  for (const Cell cell : walkMapSegment(frame_, from.x, from.y, to.x, to.y)) {
+    if (!passable(cell)) return false;
+  }
+  return true;
+}
+
+}  // namespace planners
+}  // namespace ppp

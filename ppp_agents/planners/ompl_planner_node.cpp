@@ -1,0 +1,47 @@
+// ompl_planner_node: OMPL geometric planning on the robot's map (docs/planner-interface.md).
+//   subscribes  map (nav_msgs/OccupancyGrid)               what the robot knows: -1 unknown, 0 free, 100 obstacle
+//               move_base_simple/goal (geometry_msgs/PoseStamped)  a plan request
+//               tf ~map_frame -> ~base_frame               the robot's pose
+//   publishes   plan (nav_msgs/Path, latched)              simplified waypoints from the robot's cell centre to the
+//                                                          goal's, every segment walking only passable cells;
+//                                                          stamped with the newer of the goal's and the map's stamp;
+//                                                          empty when OMPL finds no path in time. One per goal.
+//   parameters  ~planner (RRTConnect, RRTstar or PRM; default RRTConnect), ~planning_time (seconds per plan,
+//               default 1.0), ~seed (ompl::RNG::setSeed, default 1), ~unknown_is_free (default true),
+//               ~map_frame (default "map"), ~base_frame (default: the node's namespace + "/base_link",
+//               e.g. "ompl/robot/base_link" in /ompl/robot)
+// Topics are relative: start the node in the bridge's robot namespace (/G/robot).
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
+#include <ros/ros.h>
+
+#include "ompl_grid_planner.hpp"
+#include "planner_node.hpp"
+#include "ppp_core/error.hpp"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "ompl_planner");
+  ros::NodeHandle nh;
+  ros::NodeHandle private_nh("~");
+  try {
+    namespace planners = ppp::planners;
+    const planners::OmplNodeParameters parameters = planners::readOmplNodeParameters(private_nh);
+    ompl::RNG::setSeed(parameters.seed);
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    planners::PlannerNodeOptions options;
+    options.frames = planners::readPlannerFrames(private_nh, ros::this_node::getNamespace());
+    options.unknown_is_free = parameters.unknown_is_free;
+    const planners::OmplGridPlanner planner(parameters.planner);
+    planners::PlannerNode node(nh, options, [&planner](const planners::GridMap& map, ppp::Cell robot, ppp::Cell goal) {
+      return planner.plan(map, robot, goal);
+    });
+    ROS_INFO("OMPL planner %s (%.3f s per plan, seed %u, unknown cells %s): %s", parameters.planner.planner.c_str(),
+             parameters.planner.planning_time, parameters.seed, parameters.unknown_is_free ? "free" : "blocked",
+             node.topics().c_str());
+    node.run();
+  } catch (const ppp::Error& e) {
+    ROS_FATAL("%s", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,166 @@
+#include "planner_node.hpp"
+
+#include <nav_msgs/Path.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <utility>
+
+#include "ppp_core/error.hpp"
+
+namespace ppp {
+namespace planners {
+
+namespace {
+
+/// How long a request waits for its map and pose.
+constexpr std::chrono::seconds kRequestWait{1};
+/// How often run() looks at ros::ok() while idle.
+constexpr std::chrono::milliseconds kIdlePoll{100};
+
+/// The planner's view of a map message. @throws InvalidArgument when it does not follow the interface.
+GridMap gridMapOf(const nav_msgs::OccupancyGrid& map, bool unknown_is_free) {
+  const geometry_msgs::Point& origin = map.info.origin.position;
+  if (origin.x != 0.0 || origin.y != 0.0) {
+    throw InvalidArgument("map.info.origin",
+                          "expected (0, 0), got (" + std::to_string(origin.x) + ", " + std::to_string(origin.y) + ")");
+  }
+  return GridMap(static_cast<int>(map.info.width), static_cast<int>(map.info.height), map.info.resolution, map.data,
+                 unknown_is_free);
+}
+
+}  // namespace
+
+PlannerNode::PlannerNode(ros::NodeHandle& nh, PlannerNodeOptions options, PlanFunction plan)
+    : options_(std::move(options)),
+      plan_(std::move(plan)),
+      tf_listener_(tf_buffer_),
+      plan_publisher_(nh.advertise<nav_msgs::Path>("plan", 1, true)),
+      map_subscriber_(nh.subscribe("map", 1, &PlannerNode::onMap, this)),
+      goal_subscriber_(nh.subscribe("move_base_simple/goal", 1, &PlannerNode::onGoal, this)) {}
+
+std::string PlannerNode::topics() const {
+  return map_subscriber_.getTopic() + ", " + goal_subscriber_.getTopic() + " -> " + plan_publisher_.getTopic() +
+         "; pose: tf " + options_.frames.map_frame + " -> " + options_.frames.base_frame;
+}
+
+void PlannerNode::onMap(const nav_msgs::OccupancyGrid::ConstPtr& map) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    map_ = map;
+  }
+  changed_.notify_all();
+}
+
+void PlannerNode::onGoal(const geometry_msgs::PoseStamped::ConstPtr& goal) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    goal_ = goal;
+    goal_pending_ = true;
+    goal_reached_ = false;
+  }
+  changed_.notify_all();
+}
+
+bool PlannerNode::replanDue() const {
+  return options_.replan_on_map && goal_ && !goal_reached_ && map_ && map_ != planned_map_;
+}
+
+bool PlannerNode::nextRequest(Request* request) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  if (!changed_.wait_for(lock, kIdlePoll, [this] { return goal_pending_ || replanDue(); })) return false;
+  request->deadline = std::chrono::steady_clock::now() + kRequestWait;
+  request->goal = goal_;
+  request->replan = !goal_pending_;
+  if (goal_pending_) {
+    // The bridge publishes map and pose, then the goal, all with one stamp: wait for that map.
+    goal_pending_ = false;
+    const ros::Time stamp = goal_->header.stamp;
+    changed_.wait_until(lock, request->deadline,
+                        [this, stamp] { return goal_pending_ || (map_ && map_->header.stamp >= stamp); });
+    if (goal_pending_) return false;  // a newer goal replaces this one
+  }
+  request->map = map_;
+  request->pose_stamp = request->replan ? map_->header.stamp : goal_->header.stamp;
+  planned_map_ = map_;
+  return true;
+}
+
+void PlannerNode::run() {
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  Request request;
+  while (ros::ok()) {
+    if (nextRequest(&request)) serve(request);
+  }
+}
+
+void PlannerNode::serve(const Request& request) {
+  const geometry_msgs::PoseStamped& goal = *request.goal;
+  if (!request.map) {
+    ROS_WARN("goal stamped %.3f: no map within %lld s; not planning", goal.header.stamp.toSec(),
+             static_cast<long long>(kRequestWait.count()));
+    return;
+  }
+  if (!goal.header.frame_id.empty() && goal.header.frame_id != options_.frames.map_frame) {
+    ROS_WARN("goal in frame '%s', expected '%s'; not planning", goal.header.frame_id.c_str(),
+             options_.frames.map_frame.c_str());
+    return;
+  }
+  if (request.map->header.stamp < goal.header.stamp) {
+    ROS_WARN("goal stamped %.3f: planning on the older map stamped %.3f", goal.header.stamp.toSec(),
+             request.map->header.stamp.toSec());
+  }
+  geometry_msgs::TransformStamped pose;
+  try {
+    const double wait = std::chrono::duration<double>(request.deadline - std::chrono::steady_clock::now()).count();
+    pose = tf_buffer_.lookupTransform(options_.frames.map_frame, options_.frames.base_frame, request.pose_stamp,
+                                      ros::Duration(std::max(wait, 0.0)));
+  } catch (const tf2::TransformException& e) {
+    ROS_WARN("no robot pose at %.3f: %s; not planning", request.pose_stamp.toSec(), e.what());
+    return;
+  }
+  try {
+    const GridMap map = gridMapOf(*request.map, options_.unknown_is_free);
+    const Cell robot = map.cellOf(MapPoint{pose.transform.translation.x, pose.transform.translation.y});
+    const Cell target = map.cellOf(MapPoint{goal.pose.position.x, goal.pose.position.y});
+    if (request.replan && robot == target) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (goal_ == request.goal) goal_reached_ = true;
+      return;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<MapPoint> waypoints = plan_(map, robot, target);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    char text[160];
+    std::snprintf(text, sizeof text, "planned cell (%d, %d) -> (%d, %d)%s in %.6f s: %zu waypoints", robot.x, robot.y,
+                  target.x, target.y, request.replan ? " on a new map" : "", seconds, waypoints.size());
+    if (plan_time_logged_) {
+      ROS_DEBUG("%s", text);
+    } else {
+      ROS_INFO("%s (further plan times at DEBUG level)", text);
+      plan_time_logged_ = true;
+    }
+    publish(waypoints, std::max(goal.header.stamp, request.map->header.stamp));
+  } catch (const Error& e) {
+    ROS_WARN("not planning: %s", e.what());
+  }
+}
+
+void PlannerNode::publish(const std::vector<MapPoint>& waypoints, const ros::Time& stamp) {
+  nav_msgs::Path path;
+  path.header.frame_id = options_.frames.map_frame;
+  path.header.stamp = stamp;
+  path.poses.resize(waypoints.size());
+  for (std::size_t i = 0; i < waypoints.size(); ++i) {
+    path.poses[i].header = path.header;
+    path.poses[i].pose.position.x = waypoints[i].x;
+    path.poses[i].pose.position.y = waypoints[i].y;
+    path.poses[i].pose.orientation.w = 1.0;
+  }
+  plan_publisher_.publish(path);
+}
+
+}  // namespace planners
+}  // namespace ppp

@@ -1,0 +1,84 @@
+#pragma once
+
+#include <geometry_msgs/PoseStamped.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <ros/ros.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include <chrono>
+#include <condition_variable>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "grid_map.hpp"
+#include "planner_node_parameters.hpp"
+
+namespace ppp {
+namespace planners {
+
+/// A planner's answer: map-frame waypoints from the robot's cell to the goal's, empty when it finds no path.
+using PlanFunction = std::function<std::vector<MapPoint>(const GridMap& map, Cell robot, Cell goal)>;
+
+/// How a PlannerNode serves its planner.
+struct PlannerNodeOptions {
+  PlannerFrames frames;         ///< The map and robot frames.
+  bool unknown_is_free = true;  ///< Unknown map cells (-1) are passable.
+  bool replan_on_map = false;   ///< Plan again on every new map while there is a goal the robot is not at.
+};
+
+/// The ROS side of the example planners (docs/planner-interface.md): keeps the newest `map`, answers every
+/// `move_base_simple/goal` with a nav_msgs/Path on `plan` once it holds a map at least as new as the goal and
+/// the robot's pose (tf, map frame -> base frame) at the goal's stamp (waiting at most 1 s for them), and,
+/// with replan_on_map, plans again on every new map. Plans are stamped with the newer of the goal's and the
+/// map's stamp; no path gives an empty Path. Callbacks run on a spinner thread while run() plans.
+class PlannerNode {
+ public:
+  /// Subscribes and advertises in the node's namespace; plans with `plan`.
+  PlannerNode(ros::NodeHandle& nh, PlannerNodeOptions options, PlanFunction plan);
+
+  /// Serves plan requests until ROS shuts down.
+  void run();
+
+  /// The resolved topic names, for the log.
+  std::string topics() const;
+
+ private:
+  /// One planning job: the goal, the newest map, and the stamp to look the pose up at.
+  struct Request {
+    geometry_msgs::PoseStamped::ConstPtr goal;
+    nav_msgs::OccupancyGrid::ConstPtr map;
+    ros::Time pose_stamp;
+    bool replan = false;
+    std::chrono::steady_clock::time_point deadline;
+  };
+
+  void onMap(const nav_msgs::OccupancyGrid::ConstPtr& map);
+  void onGoal(const geometry_msgs::PoseStamped::ConstPtr& goal);
+  bool replanDue() const;
+  bool nextRequest(Request* request);
+  void serve(const Request& request);
+  void publish(const std::vector<MapPoint>& waypoints, const ros::Time& stamp);
+
+  PlannerNodeOptions options_;
+  PlanFunction plan_;
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_;
+  ros::Publisher plan_publisher_;
+  ros::Subscriber map_subscriber_;
+  ros::Subscriber goal_subscriber_;
+  bool plan_time_logged_ = false;
+
+  std::mutex mutex_;  // guards the members below, shared with the callbacks
+  std::condition_variable changed_;
+  nav_msgs::OccupancyGrid::ConstPtr map_;
+  geometry_msgs::PoseStamped::ConstPtr goal_;
+  bool goal_pending_ = false;                      // goal_ has not been planned for yet
+  bool goal_reached_ = false;                      // a re-plan found the robot on goal_
+  nav_msgs::OccupancyGrid::ConstPtr planned_map_;  // the newest map when the last request was taken
+};
+
+}  // namespace planners
+}  // namespace ppp

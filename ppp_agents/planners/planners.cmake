@@ -1,0 +1,47 @@
+# The example planner nodes (docs/planner-interface.md), included by ppp_agents/CMakeLists.txt. The algorithms
+# are a ROS-free library tested without a master; the nodes share one ROS glue library.
+find_package(ompl REQUIRED)
+
+add_library(ppp_planners STATIC
+  planners/grid_map.cpp
+  planners/optimistic_astar.cpp
+  planners/grid_motion_validator.cpp
+  planners/ompl_grid_planner.cpp
+)
+target_include_directories(ppp_planners PUBLIC planners ${ppp_core_INCLUDE_DIRS})
+target_include_directories(ppp_planners SYSTEM PUBLIC ${OMPL_INCLUDE_DIRS})
+target_link_libraries(ppp_planners PUBLIC ${ppp_core_LIBRARIES} ${OMPL_LIBRARIES})
+target_compile_options(ppp_planners PRIVATE -Wall -Wextra)
+
+add_library(ppp_planners_ros STATIC planners/planner_node.cpp planners/planner_node_parameters.cpp)
+target_include_directories(ppp_planners_ros SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
+target_link_libraries(ppp_planners_ros PUBLIC ppp_planners ${catkin_LIBRARIES})
+target_compile_options(ppp_planners_ros PRIVATE -Wall -Wextra)
+add_dependencies(ppp_planners_ros ${catkin_EXPORTED_TARGETS})
+
+foreach(node optimistic_planner_node ompl_planner_node)
+  add_executable(${node} planners/${node}.cpp)
+  target_link_libraries(${node} ppp_planners_ros)
+  target_compile_options(${node} PRIVATE -Wall -Wextra)
+endforeach()
+
+install(TARGETS optimistic_planner_node ompl_planner_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+catkin_install_python(PROGRAMS scripts/simple_planner.py DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+
+if(CATKIN_ENABLE_TESTING)
+  foreach(test_name grid_map_test optimistic_astar_test ompl_grid_planner_test)
+    catkin_add_gtest(${test_name} planners/test/${test_name}.cpp)
+    target_link_libraries(${test_name} ppp_planners GTest::gtest_main)
+    target_compile_options(${test_name} PRIVATE -Wall -Wextra)
+  endforeach()
+  catkin_add_gtest(planner_node_parameters_test planners/test/planner_node_parameters_test.cpp)
+  target_link_libraries(planner_node_parameters_test ppp_planners_ros GTest::gtest_main)
+endif()
+
+# Plan times on a 20x20 map (Google Benchmark): a separate executable, never a test.
+find_package(benchmark CONFIG QUIET)
+if(benchmark_FOUND)
+  add_executable(planners_bench planners/bench/planners_bench.cpp)
+  target_link_libraries(planners_bench ppp_planners benchmark::benchmark_main)
+  target_compile_options(planners_bench PRIVATE -Wall -Wextra)
+endif()

@@ -1,0 +1,80 @@
+#!/usr/bin/env python3
+"""A minimal planner for the PPP Lab planner bridge (docs/planner-interface.md).
+
+On each goal it searches the map breadth-first for a shortest path of 4-connected cells, treating
+unknown cells as free, and publishes the centre of every cell of it on `plan` (an empty Path when
+there is none). Start it in the robot's namespace, e.g. `rosrun ppp_agents simple_planner.py __ns:=/G/robot`.
+"""
+from collections import deque
+import time
+
+import rospy
+from geometry_msgs.msg import PoseStamped
+from nav_msgs.msg import OccupancyGrid, Odometry, Path
+
+newest = {"map": None, "odom": None}  # the last message of each kind
+
+
+def wait_for(kind, stamp):
+    """The newest message of a kind once it is stamped no earlier than `stamp` (or after 1 s, the newest)."""
+    deadline = time.monotonic() + 1.0
+    while time.monotonic() < deadline and not rospy.is_shutdown():
+        if newest[kind] is not None and newest[kind].header.stamp >= stamp:
+            break
+        time.sleep(0.01)  # each subscription has its own thread, so the map and odom still arrive
+    return newest[kind]
+
+
+def shortest_path(grid, start, goal):
+    """Breadth-first search: the (column, row) cells from start to goal, or [] when the goal is walled off.
+    Row 0 is the bottom row; cells of occupancy 50 or more are obstacles, unknown (-1) counts as free."""
+    width, height = grid.info.width, grid.info.height
+    came_from = {start: None}
+    queue = deque([start])
+    while queue:
+        cell = queue.popleft()
+        if cell == goal:
+            path = []
+            while cell is not None:
+                path.append(cell)
+                cell = came_from[cell]
+            return path[::-1]
+        column, row = cell
+        for c, r in ((column + 1, row), (column - 1, row), (column, row + 1), (column, row - 1)):
+            if 0 <= c < width and 0 <= r < height and (c, r) not in came_from and grid.data[r * width + c] < 50:
+                came_from[(c, r)] = cell
+                queue.append((c, r))
+    return []
+
+
+def on_goal(goal):
+    grid = wait_for("map", goal.header.stamp)
+    odom = wait_for("odom", goal.header.stamp)
+    if grid is None or odom is None:
+        rospy.logwarn("no map or no odometry yet: not planning")
+        return
+    size = grid.info.resolution  # metres per cell; the map's origin is (0, 0)
+
+    def cell_of(position):
+        return (int(position.x // size), int(position.y // size))
+
+    path = Path()
+    path.header.frame_id = "map"
+    path.header.stamp = max(goal.header.stamp, grid.header.stamp)
+    for column, row in shortest_path(grid, cell_of(odom.pose.pose.position), cell_of(goal.pose.position)):
+        pose = PoseStamped()
+        pose.header = path.header
+        pose.pose.position.x = (column + 0.5) * size
+        pose.pose.position.y = (row + 0.5) * size
+        pose.pose.orientation.w = 1.0
+        path.poses.append(pose)
+    plan_publisher.publish(path)
+
+
+if __name__ == "__main__":
+    rospy.init_node("simple_planner")
+    plan_publisher = rospy.Publisher("plan", Path, queue_size=1)
+    rospy.Subscriber("map", OccupancyGrid, lambda message: newest.update(map=message))
+    rospy.Subscriber("odom", Odometry, lambda message: newest.update(odom=message))
+    rospy.Subscriber("move_base_simple/goal", PoseStamped, on_goal)
+    rospy.spin()

@@ -1,0 +1,113 @@
+// Planner agents end to end: simulator_node (started here) plays the bridges and planners of
+// planner_experiment.test. The example planners pass their maps; a silent planner, one publishing a path
+// through a wall and one killed mid-episode fail with their reasons while the next episode runs; a bridge
+// without a planner, or with a plan topic of the wrong type, exits naming the topics.
+#include <gtest/gtest.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+
+#include <map>
+#include <string>
+
+#include "ppp_core/text_file.hpp"
+#include "ppp_simulator/results_file.hpp"
+#include "ros_test_support.hpp"
+
+namespace ppp {
+namespace simulator {
+namespace {
+
+using test::Child;
+using test::scratch;
+
+const std::string kTestDir = PPP_ROS_TEST_DIR;
+
+/// Runs simulator_node on `config`; returns the rows of results.csv (the test fails when the node does).
+std::vector<EpisodeResult> runExperiment(const std::string& name, const std::string& config, std::string* out) {
+  *out = scratch(name);
+  Child simulator(std::string(SIMULATOR_NODE) + " __name:=sim_" + name + " _config:=" + kTestDir + "/" + config +
+                      " _output_dir:=" + *out + " _record:=false _connect_timeout:=60",
+                  *out + ".log");
+  const int status = simulator.wait();
+  EXPECT_EQ(status, 0) << simulator.output();
+  return status == 0 ? readResultsFile(*out + "/results.csv") : std::vector<EpisodeResult>{};
+}
+
+/// reason[agent][problem] -> count.
+std::map<std::string, std::map<std::string, std::map<std::string, int>>> reasons(
+    const std::vector<EpisodeResult>& rows) {
+  std::map<std::string, std::map<std::string, std::map<std::string, int>>> out;
+  for (const EpisodeResult& r : rows) ++out[r.agent][r.problem][r.reason];
+  return out;
+}
+
+TEST(PlannerExperimentTest, ExamplePlannersPassAndFaultyPlannersFailWithTheirReasons) {
+  std::string out;
+  const auto rows = runExperiment("planners", "planner_experiment.yaml", &out);
+  ASSERT_EQ(rows.size(), 3u * 2 + 3u * 2 + 3u + 3u);
+  auto r = reasons(rows);
+  for (const char* map : {"open", "wall", "hidden"}) {
+    // OMPL plans on the true map; the optimistic re-planner starts blind and must find the route behind the
+    // wall of "hidden" (its straight first plan runs into it).
+    EXPECT_EQ(r["ompl"][map]["goal_reached"], 2) << map;
+    EXPECT_EQ(r["optimistic"][map]["goal_reached"], 2) << map;
+    EXPECT_EQ(r["silent_planner"][map]["planner_timeout"], 1) << map;
+  }
+  EXPECT_EQ(r["straight_planner"]["open"]["goal_reached"], 1);
+  EXPECT_EQ(r["straight_planner"]["wall"]["invalid_path"], 1);
+  EXPECT_EQ(r["straight_planner"]["hidden"]["invalid_path"], 1);
+  for (const EpisodeResult& row : rows) {
+    if (row.agent == "ompl") EXPECT_EQ(row.bumps, 0) << row.problem;
+  }
+  // The planners' results are in the report beside any other agent's.
+  const std::string report = readTextFile(out + "/report.md", 1u << 24);
+  for (const char* agent : {"ompl", "optimistic", "silent_planner", "straight_planner"}) {
+    EXPECT_NE(report.find(agent), std::string::npos) << agent;
+  }
+}
+
+TEST(PlannerExperimentTest, APlannerKilledMidEpisodeFailsItAndTheNextEpisodeRuns) {
+  std::string out;
+  const auto rows = runExperiment("crash", "planner_crash_experiment.yaml", &out);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0].reason, "planner_lost");
+  EXPECT_GT(rows[0].steps, 0);  // it died after answering once: mid-episode
+  EXPECT_EQ(rows[1].reason, "goal_reached");
+  EXPECT_EQ(rows[2].reason, "goal_reached");
+}
+
+TEST(PlannerExperimentTest, TheBridgeNamesMissingPlannerTopicsAndWrongTypes) {
+  const std::string out = scratch("bridge_errors");
+  ros::NodeHandle nh;
+  // A "planner" publishing odometry where the path should be.
+  const ros::Publisher wrong = nh.advertise<nav_msgs::Odometry>("/typo/robot/plan", 1);
+  const std::pair<std::string, std::string> cases[] = {
+      {"__ns:=/lonely _connect_timeout:=1",
+       "nothing publishes /lonely/robot/plan (nav_msgs/Path); nothing subscribes to "
+       "/lonely/robot/move_base_simple/goal"},
+      {"__ns:=/typo _connect_timeout:=5", "/typo/robot/plan is published as nav_msgs/Odometry; expected nav_msgs/Path"},
+      {"__ns:=/bad _plan_timeout:=-1", "~plan_timeout: expected a positive number"},
+      {"__ns:=/bad _memory:=4x4", "~memory: the window side must be odd"},
+      {"_connect_timeout:=1", "~name: required when the bridge runs outside an agent's namespace"},
+  };
+  int index = 0;
+  for (const auto& c : cases) {
+    Child bridge(std::string(PLANNER_BRIDGE_NODE) + " __name:=bridge_" + std::to_string(index) + " " + c.first,
+                 out + "." + std::to_string(index++) + ".log");
+    EXPECT_EQ(bridge.wait(), 1) << c.first;
+    EXPECT_NE(bridge.output().find(c.second), std::string::npos) << c.first << " printed:\n" << bridge.output();
+  }
+}
+
+}  // namespace
+}  // namespace simulator
+}  // namespace ppp
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "planner_experiment_rostest");
+  ros::NodeHandle nh;
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  return RUN_ALL_TESTS();
+}
