@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # ROS experiment speed: agent-steps per second through the ten separate agent processes at batch sizes
-# 1, 10, 100 and 1000, and the default experiment through roslaunch against `ppp experiment`.
+# 1, 10, 100 and 1000; the default experiment's built-in agents through roslaunch against `ppp experiment`;
+# and the shipped default with the example planners, with episodes per second through planner_bridge_node.
 # Usage: scripts/bench-ros.sh [--skip-default]   (run scripts/build.sh first). Figures go in BENCHMARKS.md.
 set -o pipefail
 skip_default="${1:-}"
@@ -12,7 +13,8 @@ cd "$PPP_ROOT"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 export ROS_IP=127.0.0.1 ROS_HOME="$work/ros"
-cp config/agents.yaml config/generator.yaml "$work/"
+cp config/generator.yaml "$work/"
+grep -v "type: planner" config/agents.yaml > "$work/agents.yaml"  # the ten built-in agents
 
 # launch OUT RUNS BATCH RECORD: runs the default experiment with RUNS runs per agent per PPP; prints seconds.
 launch() {
@@ -38,11 +40,22 @@ for pair in "1 1" "10 2" "100 20" "1000 100"; do
     "$(awk "BEGIN { printf \"%.0f\", $total / $seconds }") agent-steps/s"
 done
 if [ "$skip_default" != "--skip-default" ]; then
-  seconds=$(launch "$work/ros" 1000 1000 true)
-  echo "default experiment through roslaunch (batch 1000, bag recorded): $seconds s"
+  # The ten built-in agents only, against `ppp experiment` (which runs no planner agents).
+  seconds=$(launch "$work/builtin" 1000 1000 true)
+  echo "default experiment, built-in agents, through roslaunch (batch 1000, bag recorded): $seconds s"
   start=$(date +%s.%N)
-  "$PPP_BUILD_DIR/devel/lib/ppp_simulator/ppp" experiment config/experiment.yaml -o "$work/cli" --quiet > /dev/null
+  "$PPP_BUILD_DIR/devel/lib/ppp_simulator/ppp" experiment "$work/experiment.yaml" -o "$work/cli" --quiet > /dev/null
   end=$(date +%s.%N)
-  echo "default experiment through ppp experiment: $(awk "BEGIN { printf \"%.2f\", $end - $start }") s"
-  cmp -s "$work/ros/results.csv" "$work/cli/results.csv" && echo "results.csv identical" || echo "results.csv DIFFER"
+  echo "default experiment, built-in agents, through ppp experiment: $(awk "BEGIN { printf \"%.2f\", $end - $start }") s"
+  cmp -s "$work/builtin/results.csv" "$work/cli/results.csv" && echo "results.csv identical" || echo "results.csv DIFFER"
+  # The shipped default: the same plus the two example planners through planner_bridge_node.
+  cp config/agents.yaml "$work/agents.yaml"
+  seconds=$(launch "$work/full" 1000 1000 true)
+  echo "default experiment with the example planners through roslaunch: $seconds s"
+  grep -ho "agent '\(ompl\|optimistic\)': .*episodes/s)" "$work/full.log"
+  # The planners alone (the built-in agent nodes idle): episodes per second through the bridge, unloaded.
+  grep "type: planner" config/agents.yaml | sed '1i agents:' > "$work/agents.yaml"
+  seconds=$(launch "$work/planners" 1000 1000 false)
+  echo "the two example planners alone, 3 runs per PPP each: $seconds s"
+  grep -ho "agent '\(ompl\|optimistic\)': .*episodes/s)" "$work/planners.log"
 fi

@@ -87,6 +87,7 @@ PlannerBridge::PlannerBridge(ros::NodeHandle& nh, const BridgeParameters& parame
   goal_ = planner_nh_.advertise<geometry_msgs::PoseStamped>("move_base_simple/goal", 10);
   ros::SubscribeOptions options = ros::SubscribeOptions::create<nav_msgs::Path>(
       "plan", 10, [this](const nav_msgs::Path::ConstPtr& path) { onPlan(path); }, ros::VoidPtr(), &plan_queue_);
+  options.transport_hints = ros::TransportHints().tcpNoDelay();  // Nagle would hold each path back 40 ms
   plan_ = planner_nh_.subscribe(options);
   plan_spinner_.start();
   scans_ = nh.subscribe("scans", 10, &PlannerBridge::onScans, this, ros::TransportHints().tcpNoDelay());

@@ -2,6 +2,7 @@
 //   subscribes  map (nav_msgs/OccupancyGrid)               what the robot knows: -1 unknown, 0 free, 100 obstacle
 //               move_base_simple/goal (geometry_msgs/PoseStamped)  a plan request
 //               tf ~map_frame -> ~base_frame               the robot's pose
+//               odom (nav_msgs/Odometry)                 only as the sign that the tf of a stamp is out
 //   publishes   plan (nav_msgs/Path, latched)              the centre of every cell from the robot's to the goal's,
 //                                                          stamped with the newer of the goal's and the map's stamp;
 //                                                          empty when the map shows no path. Planned on every goal

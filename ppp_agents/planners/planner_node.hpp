@@ -2,6 +2,7 @@
 
 #include <geometry_msgs/PoseStamped.h>
 #include <nav_msgs/OccupancyGrid.h>
+#include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
@@ -56,6 +57,7 @@ class PlannerNode {
   };
 
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& map);
+  void onOdom(const nav_msgs::Odometry::ConstPtr& odom);
   void onGoal(const geometry_msgs::PoseStamped::ConstPtr& goal);
   bool replanDue() const;
   bool nextRequest(Request* request);
@@ -68,6 +70,7 @@ class PlannerNode {
   tf2_ros::TransformListener tf_listener_;
   ros::Publisher plan_publisher_;
   ros::Subscriber map_subscriber_;
+  ros::Subscriber odom_subscriber_;  // only as the signal that the tf of a stamp has been sent
   ros::Subscriber goal_subscriber_;
   bool plan_time_logged_ = false;
 
@@ -78,6 +81,7 @@ class PlannerNode {
   bool goal_pending_ = false;                      // goal_ has not been planned for yet
   bool goal_reached_ = false;                      // a re-plan found the robot on goal_
   nav_msgs::OccupancyGrid::ConstPtr planned_map_;  // the newest map when the last request was taken
+  ros::Time odom_stamp_;                           // stamp of the newest odometry
 };
 
 }  // namespace planners

@@ -74,7 +74,8 @@ def on_goal(goal):
 if __name__ == "__main__":
     rospy.init_node("simple_planner")
     plan_publisher = rospy.Publisher("plan", Path, queue_size=1)
-    rospy.Subscriber("map", OccupancyGrid, lambda message: newest.update(map=message))
-    rospy.Subscriber("odom", Odometry, lambda message: newest.update(odom=message))
-    rospy.Subscriber("move_base_simple/goal", PoseStamped, on_goal)
+    # tcp_nodelay: without it TCP may hold each small message back for 40 ms.
+    rospy.Subscriber("map", OccupancyGrid, lambda message: newest.update(map=message), tcp_nodelay=True)
+    rospy.Subscriber("odom", Odometry, lambda message: newest.update(odom=message), tcp_nodelay=True)
+    rospy.Subscriber("move_base_simple/goal", PoseStamped, on_goal, tcp_nodelay=True)
     rospy.spin()

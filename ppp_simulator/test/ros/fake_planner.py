@@ -33,9 +33,9 @@ class FakePlanner:
         self.odom = None
         self.map = None
         self.plan = rospy.Publisher("plan", Path, queue_size=10)
-        rospy.Subscriber("odom", Odometry, self.on_odom)
-        rospy.Subscriber("map", OccupancyGrid, self.on_map)
-        rospy.Subscriber("move_base_simple/goal", PoseStamped, self.on_goal)
+        rospy.Subscriber("odom", Odometry, self.on_odom, tcp_nodelay=True)
+        rospy.Subscriber("map", OccupancyGrid, self.on_map, tcp_nodelay=True)
+        rospy.Subscriber("move_base_simple/goal", PoseStamped, self.on_goal, tcp_nodelay=True)
 
     def on_odom(self, odom):
         self.odom = odom
