@@ -13,7 +13,6 @@
 #include "batch_responder.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/scan_rays.hpp"
-#include "ppp_core/segment_walk.hpp"
 #include "ppp_core/sensor.hpp"
 #include "ppp_msgs/node_liveness.h"
 #include "scan_batch_checks.hpp"
@@ -279,7 +278,9 @@ PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch)
     const std::string problem = follower_.follow(points, frame_, robot, goal_cell_, known_);
     if (!problem.empty()) return fail(ppp_msgs::EpisodeFailure::INVALID_PATH, problem);
     action = follower_.next(robot, known_);
-    if (!action) return fail(ppp_msgs::EpisodeFailure::INVALID_PATH, "the path gives the robot no move (it ends at the robot's cell)");
+    if (!action) {
+      return fail(ppp_msgs::EpisodeFailure::INVALID_PATH, "the path gives the robot no move from its cell");
+    }
   }
   return StepOutcome{static_cast<std::uint8_t>(*action), ""};
 }
@@ -289,17 +290,18 @@ std::optional<nav_msgs::Path> PlannerBridge::waitForPath(ros::Time stamp, Cell r
   const ros::Time request = stamp;
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(parameters_.plan_timeout);
   ros::WallTime resend = ros::WallTime::now() + ros::WallDuration(1.0);
-  std::optional<nav_msgs::Path> elsewhere;  // the last path that ends away from the goal
+  std::optional<nav_msgs::Path> unusable;  // the last path that does not fit the request
   std::unique_lock<std::mutex> lock(path_mutex_);
   while (ros::ok()) {
     if (paths_received_ > paths_used_) {
       paths_used_ = paths_received_;
-      // A path stamped before the request answers an earlier one (stamp 0 means "now"); one ending away from
-      // the goal may be a re-plan for the previous episode's goal: wait for another, judge it if none comes.
+      // A path stamped before the request answers an earlier one (stamp 0 means "now"). One that does not fit
+      // (not from the robot's cell, not to the goal, through a known wall) may still be a late answer to an
+      // earlier request carrying a newer map's stamp: wait for another, and judge it if none comes.
       const nav_msgs::Path& path = *latest_path_;
       if (path.header.stamp.isZero() || path.header.stamp >= request) {
-        if (endsAtGoal(path)) return path;
-        elsewhere = path;
+        if (answers(path, robot)) return path;
+        unusable = path;
       }
     }
     // A planner that answered in this episode and is gone now died mid-episode: no point waiting.
@@ -320,18 +322,15 @@ std::optional<nav_msgs::Path> PlannerBridge::waitForPath(ros::Time stamp, Cell r
     const ros::WallTime until = std::min({deadline, resend, now + ros::WallDuration(0.05)});
     path_arrived_.wait_for(lock, std::chrono::nanoseconds((until - now).toNSec()));
   }
-  return elsewhere;
+  return unusable;
 }
 
-bool PlannerBridge::endsAtGoal(const nav_msgs::Path& path) const {
-  if (path.poses.empty()) return true;  // "no path" is an answer too
-  const geometry_msgs::Point& end = path.poses.back().pose.position;
-  if (!std::isfinite(end.x) || !std::isfinite(end.y)) return true;  // judged (and refused) by pathPoints
-  try {
-    return walkMapSegment(frame_, end.x, end.y, end.x, end.y).front() == goal_cell_;
-  } catch (const InvalidArgument&) {
-    return true;  // far off the map: judged (and refused) by the follower
-  }
+bool PlannerBridge::answers(const nav_msgs::Path& path, Cell robot) const {
+  std::vector<MapPoint> points;
+  // An empty path or one in a wrong frame is an answer, and a wrong one: judged by the caller.
+  if (!pathPoints(path, &points).empty() || points.empty()) return true;
+  PathFollower probe;
+  return probe.follow(points, frame_, robot, goal_cell_, known_).empty();
 }
 
 std::string PlannerBridge::pathPoints(const nav_msgs::Path& path, std::vector<MapPoint>* points) const {

@@ -65,8 +65,8 @@ class PlannerBridge {
   void publishGoal(const ros::Time& stamp);
   /// Waits for a path answering a request made at `stamp` (re-sending the request every second).
   std::optional<nav_msgs::Path> waitForPath(ros::Time stamp, Cell robot, const std::int8_t* window, int range);
-  /// True when the path's last pose lies in the goal cell (or the path is empty, or not finite).
-  bool endsAtGoal(const nav_msgs::Path& path) const;
+  /// True when `path` is a usable answer for the robot at `robot`, or an empty or wrong-frame one (also final).
+  bool answers(const nav_msgs::Path& path, Cell robot) const;
   /// Turns a path's poses into map points; "" or what is wrong with its frame.
   std::string pathPoints(const nav_msgs::Path& path, std::vector<MapPoint>* points) const;
   bool plannerConnected() const { return plan_.getNumPublishers() > 0; }

@@ -5,7 +5,7 @@
 //               odom (nav_msgs/Odometry)                 only as the sign that the tf of a stamp is out
 //   publishes   plan (nav_msgs/Path, latched)              simplified waypoints from the robot's cell centre to the
 //                                                          goal's, every segment walking only passable cells;
-//                                                          stamped with the newer of the goal's and the map's stamp;
+//                                                          stamped with the pose's stamp (the goal's, or the map's);
 //                                                          empty when OMPL finds no path in time. One per goal.
 //   parameters  ~planner (RRTConnect, RRTstar or PRM; default RRTConnect), ~planning_time (seconds per plan,
 //               default 1.0), ~seed (ompl::RNG::setSeed, default 1), ~unknown_is_free (default true),

@@ -4,7 +4,7 @@
 //               tf ~map_frame -> ~base_frame               the robot's pose
 //               odom (nav_msgs/Odometry)                 only as the sign that the tf of a stamp is out
 //   publishes   plan (nav_msgs/Path, latched)              the centre of every cell from the robot's to the goal's,
-//                                                          stamped with the newer of the goal's and the map's stamp;
+//                                                          stamped with the pose's stamp (the goal's, or the map's);
 //                                                          empty when the map shows no path. Planned on every goal
 //                                                          and again on every new map until the robot is on the goal.
 //   parameters  ~map_frame (default "map"), ~base_frame (default: the node's namespace + "/base_link",

@@ -159,7 +159,9 @@ void PlannerNode::serve(const Request& request) {
       ROS_INFO("%s (further plan times at DEBUG level)", text);
       plan_time_logged_ = true;
     }
-    publish(waypoints, std::max(goal.header.stamp, request.map->header.stamp));
+    // Stamped with the state it was planned for: the pose's stamp (the goal's, or the new map's for a
+    // re-plan), so a late answer to an old request never looks like an answer to a newer one.
+    publish(waypoints, request.pose_stamp);
   } catch (const Error& e) {
     ROS_WARN("not planning: %s", e.what());
   }

@@ -33,8 +33,9 @@ struct PlannerNodeOptions {
 /// The ROS side of the example planners (docs/planner-interface.md): keeps the newest `map`, answers every
 /// `move_base_simple/goal` with a nav_msgs/Path on `plan` once it holds a map at least as new as the goal and
 /// the robot's pose (tf, map frame -> base frame) at the goal's stamp (waiting at most 1 s for them), and,
-/// with replan_on_map, plans again on every new map. Plans are stamped with the newer of the goal's and the
-/// map's stamp; no path gives an empty Path. Callbacks run on a spinner thread while run() plans.
+/// with replan_on_map, plans again on every new map. A plan is stamped with the stamp of the pose it starts
+/// from (the goal's; a re-plan's map's); no path gives an empty Path. Callbacks run on a spinner thread while
+/// run() plans.
 class PlannerNode {
  public:
   /// Subscribes and advertises in the node's namespace; plans with `plan`.

@@ -24,10 +24,20 @@ for f in summary.csv report.html report.md experiment.bag sets/turns/tree.html s
   [ -s "$work/out/$f" ] && pass || fail "the launched experiment did not write $f"
 done
 grep -q "experiment done" "$work/launch.log" && pass || fail "the simulator did not report the end"
+# reasons AGENT...: "agent reason count" lines of results.csv for those agents.
+reasons() {
+  awk -F, -v agents=" $* " 'NR > 1 && index(agents, " " $3 " ") { n[$3 " " $11]++ } END { for (k in n) print k, n[k] }' \
+    "$work/out/results.csv" | sort
+}
 ! grep -q ",agent_lost$\|,timeout$\|,planner_lost$\|,planner_timeout$\|,invalid_path$\|,invalid_action$" \
-  "$work/out/results.csv" && pass || fail "healthy agents lost runs: $(grep -c "lost$\|timeout$\|invalid" "$work/out/results.csv")"
-ompl_passes=$(grep -c ",ompl,.*,goal_reached$" "$work/out/results.csv")
-[ "$ompl_passes" -eq $((2 * 60 * 3)) ] && pass || fail "OMPL with the true map passed $ompl_passes of 360 runs"
+  "$work/out/results.csv" && pass || fail "healthy agents lost runs: $(grep "lost$\|timeout$\|invalid" "$work/out/results.csv" | head)
+$(grep "fails as" "$work/launch.log" | head)"
+# Measured: both planners pass all 360 runs. OMPL plans on the true map, so only its time limit (1 s per plan,
+# on a loaded machine) could make it miss a path; the optimistic planner's re-plans race the robot.
+for planner in ompl optimistic; do
+  passes=$(grep -c ",$planner,.*,goal_reached$" "$work/out/results.csv")
+  [ "$passes" -ge 354 ] && pass || fail "$planner passed $passes of 360 runs: $(reasons "$planner")"
+done
 
 # The same experiment in process gives the same rows (it runs no planner agents).
 "$devel/lib/ppp_simulator/ppp" experiment "$work/experiment.yaml" -o "$work/cli" --quiet > /dev/null 2>&1

@@ -69,7 +69,8 @@ TEST(RosExperimentTest, ResultsEqualTheInProcessRunAndTheBagHoldsTheMaps) {
   const std::string text = readTextFile(info, 1u << 20);
   for (const char* expected :
        {"/map ", "nav_msgs/OccupancyGrid", "/tf ", "tf2_msgs/TFMessage", "/astar/path", "nav_msgs/Path",
-        "/explorer_memory_5x5/scan", "sensor_msgs/LaserScan", "/ppp/markers", "visualization_msgs/MarkerArray", "/ppp/results",
+        "/explorer_memory_5x5/scan", "sensor_msgs/LaserScan", "/ppp/markers", "visualization_msgs/MarkerArray",
+        "/ppp/results",
         "ppp_msgs/EpisodeResult", "/ppp/sets/turns", "ppp_msgs/ProblemSet"}) {
     EXPECT_NE(text.find(expected), std::string::npos) << "rosbag info lacks " << expected << ":\n" << text;
   }
