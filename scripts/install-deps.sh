@@ -9,7 +9,7 @@ packages=(
   # ROS 1 as Debian ships it: catkin, roscpp, rospy, rosbag, roslaunch, message generation
   ros-core-dev python3-rostest rosbash libtf2-ros-dev
   python3-diagnostic-msgs python3-nav-msgs python3-geometry-msgs python3-sensor-msgs
-  python3-visualization-msgs python3-tf2-msgs python3-tf2-ros
+  python3-visualization-msgs python3-tf2-msgs
   # the example planners: OMPL (sampling-based planning)
   libompl-dev
   # rviz, headless under a virtual X server, screenshots and their check
