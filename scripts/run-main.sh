@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job: installs what is missing, builds, then runs the default experiment (config/experiment.yaml:
-# two evolved sets of 60 PPPs, ten agents, 1,000 runs each) through ROS: roslaunch launch/experiment.launch
-# starts the two generator nodes, the simulator node and one process per agent, on a private master. Results,
+# two evolved sets of 60 PPPs, ten agents with 1,000 runs each and two example planners with 3) through ROS:
+# roslaunch launch/experiment.launch starts the two generator nodes, the simulator node and one process per
+# agent (a bridge and a planner per planner agent), on a private master. Results,
 # report and bag go to results/experiment/. Rerunning resumes an interrupted experiment.
 set -eo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
