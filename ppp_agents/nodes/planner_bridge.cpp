@@ -188,23 +188,9 @@ void PlannerBridge::onScans(const ppp_msgs::ScanBatch::ConstPtr& batch) {
 void PlannerBridge::start(const ppp_msgs::EpisodeStart& s) {
   active_ = false;
   try {
-    ParsedStart parsed = parseEpisodeStart(s);
-    const EpisodeInfo& info = parsed.info;
-    episode_ = s.episode;
-    goal_cell_ = info.goal;
-    frame_ = MapFrame{info.width, info.height, parameters_.resolution};
-    has_prior_ = parsed.prior != nullptr;
-    known_.width = info.width;
-    known_.height = info.height;
-    known_.cells.assign(static_cast<std::size_t>(info.width) * info.height, kScanUnknown);
-    if (has_prior_) {
-      for (int i = 0; i < parsed.prior->size(); ++i) {
-        known_.cells[i] = parsed.prior->isObstacle(parsed.prior->cellAt(i)) ? kScanObstacle : kScanFree;
-      }
-    } else {
-      memory_.reset(info.width, info.height, parameters_.config.memory_window);
-    }
-    follower_.clear();
+    const ParsedStart parsed = parseEpisodeStart(s);
+    episode_id_ = s.episode;
+    episode_.start(parsed.info, parsed.prior.get(), parameters_.config.memory_window, parameters_.resolution);
     planner_answered_ = false;
     std::lock_guard<std::mutex> lock(path_mutex_);
     paths_used_ = paths_received_;  // a path sent for an earlier episode is not this one's
@@ -217,7 +203,7 @@ void PlannerBridge::start(const ppp_msgs::EpisodeStart& s) {
 PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch) {
   const std::uint32_t id = batch.episodes[0];
   const StepOutcome rejected{kRejectedAction, ""};
-  if (!active_ || id != episode_) {
+  if (!active_ || id != episode_id_) {
     warnOnce("episode", "episode " + std::to_string(id) + " was never started (no EpisodeStart)");
     return rejected;
   }
@@ -225,15 +211,9 @@ PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch)
   const int range = batch.range;
   const std::size_t count = static_cast<std::size_t>(2 * range + 1) * (2 * range + 1);
   try {
-    requireOnGrid(robot, frame_.width, frame_.height, "position");
-    const Scan scan(range, batch.cells.data(), count, robot, goal_cell_, batch.bumped[0] != 0,
-                    static_cast<int>(batch.steps[0]));
-    if (!has_prior_) {
-      memory_.update(scan);
-      for (int y = 0; y < frame_.height; ++y) {
-        for (int x = 0; x < frame_.width; ++x) known_.cells[y * frame_.width + x] = memory_.at(Cell{x, y});
-      }
-    }
+    requireOnGrid(robot, episode_.frame().width, episode_.frame().height, "position");
+    episode_.observe(Scan(range, batch.cells.data(), count, robot, episode_.goal(), batch.bumped[0] != 0,
+                          static_cast<int>(batch.steps[0])));
   } catch (const InvalidArgument& e) {
     warnOnce(e.name(), std::string("rejected a scan: ") + e.what());
     active_ = false;
@@ -257,10 +237,8 @@ PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch)
     paths_used_ = paths_received_;
   }
   std::vector<MapPoint> points;
-  if (unasked && pathPoints(*unasked, &points).empty() && !points.empty()) {
-    follower_.follow(points, frame_, robot, goal_cell_, known_);
-  }
-  std::optional<Action> action = follower_.next(robot, known_);
+  if (unasked && pathPoints(*unasked, &points).empty()) episode_.offer(points, robot);
+  std::optional<Action> action = episode_.next(robot);
   if (!action) {
     publishGoal(stamp);
     const std::optional<nav_msgs::Path> path = waitForPath(stamp, robot, batch.cells.data(), range);
@@ -274,13 +252,12 @@ PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch)
     planner_answered_ = true;
     const std::string frame_problem = pathPoints(*path, &points);
     if (!frame_problem.empty()) return fail(ppp_msgs::EpisodeFailure::INVALID_PATH, frame_problem);
-    if (points.empty()) return fail(ppp_msgs::EpisodeFailure::NO_PATH, "the planner published an empty path");
-    const std::string problem = follower_.follow(points, frame_, robot, goal_cell_, known_);
-    if (!problem.empty()) return fail(ppp_msgs::EpisodeFailure::INVALID_PATH, problem);
-    action = follower_.next(robot, known_);
-    if (!action) {
-      return fail(ppp_msgs::EpisodeFailure::INVALID_PATH, "the path gives the robot no move from its cell");
+    const Answer answer = episode_.answer(points, robot);
+    if (answer.verdict == AnswerVerdict::NoPath) return fail(ppp_msgs::EpisodeFailure::NO_PATH, answer.detail);
+    if (answer.verdict == AnswerVerdict::InvalidPath) {
+      return fail(ppp_msgs::EpisodeFailure::INVALID_PATH, answer.detail);
     }
+    action = answer.action;
   }
   return StepOutcome{static_cast<std::uint8_t>(*action), ""};
 }
@@ -327,10 +304,8 @@ std::optional<nav_msgs::Path> PlannerBridge::waitForPath(ros::Time stamp, Cell r
 
 bool PlannerBridge::answers(const nav_msgs::Path& path, Cell robot) const {
   std::vector<MapPoint> points;
-  // An empty path or one in a wrong frame is an answer, and a wrong one: judged by the caller.
-  if (!pathPoints(path, &points).empty() || points.empty()) return true;
-  PathFollower probe;
-  return probe.follow(points, frame_, robot, goal_cell_, known_).empty();
+  // A path in a wrong frame is an answer, and a wrong one: judged by the caller.
+  return !pathPoints(path, &points).empty() || episode_.fits(points, robot);
 }
 
 std::string PlannerBridge::pathPoints(const nav_msgs::Path& path, std::vector<MapPoint>* points) const {
@@ -341,7 +316,8 @@ std::string PlannerBridge::pathPoints(const nav_msgs::Path& path, std::vector<Ma
   for (const geometry_msgs::PoseStamped& pose : path.poses) {
     const std::string frame = bareFrame(pose.header.frame_id);
     if (!frame.empty() && frame != parameters_.map_frame) {
-      return "a pose of the path is in frame '" + pose.header.frame_id + "'; expected '" + parameters_.map_frame + "'";
+      return "a pose of the path is in frame '" + pose.header.frame_id + "'; expected '" + parameters_.map_frame +
+             "'";
     }
     if (!std::isfinite(pose.pose.position.x) || !std::isfinite(pose.pose.position.y)) {
       return "a pose of the path is not a finite point";
@@ -352,18 +328,19 @@ std::string PlannerBridge::pathPoints(const nav_msgs::Path& path, std::vector<Ma
 }
 
 void PlannerBridge::publishState(const ros::Time& stamp, Cell robot, const std::int8_t* window, int range) {
+  const MapFrame& frame = episode_.frame();
   nav_msgs::OccupancyGrid map;
   map.header.stamp = stamp;
   map.header.frame_id = parameters_.map_frame;
   map.info.map_load_time = stamp;
   map.info.resolution = static_cast<float>(parameters_.resolution);
-  map.info.width = static_cast<std::uint32_t>(frame_.width);
-  map.info.height = static_cast<std::uint32_t>(frame_.height);
+  map.info.width = static_cast<std::uint32_t>(frame.width);
+  map.info.height = static_cast<std::uint32_t>(frame.height);
   map.info.origin.orientation.w = 1.0;
-  map.data.resize(known_.cells.size());
+  map.data.resize(episode_.known().cells.size());
   // kScan* values are the OccupancyGrid's own: -1 unknown, 0 free, 100 obstacle.
-  for (int y = 0; y < frame_.height; ++y) {
-    for (int x = 0; x < frame_.width; ++x) map.data[frame_.mapIndex(Cell{x, y})] = known_.at(Cell{x, y});
+  for (int y = 0; y < frame.height; ++y) {
+    for (int x = 0; x < frame.width; ++x) map.data[frame.mapIndex(Cell{x, y})] = episode_.known().at(Cell{x, y});
   }
   map_.publish(map);
 
@@ -371,8 +348,8 @@ void PlannerBridge::publishState(const ros::Time& stamp, Cell robot, const std::
   transform.header.stamp = stamp;
   transform.header.frame_id = parameters_.map_frame;
   transform.child_frame_id = parameters_.base_frame;
-  transform.transform.translation.x = frame_.centreX(robot);
-  transform.transform.translation.y = frame_.centreY(robot);
+  transform.transform.translation.x = frame.centreX(robot);
+  transform.transform.translation.y = frame.centreY(robot);
   transform.transform.rotation.w = 1.0;
   tf_.sendTransform(transform);
 
@@ -400,8 +377,8 @@ void PlannerBridge::publishGoal(const ros::Time& stamp) {
   geometry_msgs::PoseStamped goal;
   goal.header.stamp = stamp;
   goal.header.frame_id = parameters_.map_frame;
-  goal.pose.position.x = frame_.centreX(goal_cell_);
-  goal.pose.position.y = frame_.centreY(goal_cell_);
+  goal.pose.position.x = episode_.frame().centreX(episode_.goal());
+  goal.pose.position.y = episode_.frame().centreY(episode_.goal());
   goal.pose.orientation.w = 1.0;
   goal_.publish(goal);
 }

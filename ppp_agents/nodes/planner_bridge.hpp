@@ -13,9 +13,7 @@
 
 #include "nav_msgs/Path.h"
 #include "ppp_agents/agent_config.hpp"
-#include "ppp_agents/agent_memory.hpp"
-#include "ppp_agents/path_follower.hpp"
-#include "ppp_core/map_frame.hpp"
+#include "ppp_agents/planner_episode.hpp"
 #include "ppp_msgs/MoveBatch.h"
 #include "ppp_msgs/ScanBatch.h"
 
@@ -85,13 +83,8 @@ class PlannerBridge {
 
   // The episode being played.
   bool active_ = false;
-  std::uint32_t episode_ = 0;
-  Cell goal_cell_;
-  MapFrame frame_;
-  bool has_prior_ = false;
-  AgentMemory memory_;
-  KnownMap known_;
-  PathFollower follower_;
+  std::uint32_t episode_id_ = 0;
+  PlannerEpisode episode_;
   bool planner_answered_ = false;  // the planner sent a path during this episode
   ros::WallTime next_probe_;       // when plannerGone() may ask the planner's process again
 

@@ -1,0 +1,67 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ppp_agents/action.hpp"
+#include "ppp_agents/agent.hpp"
+#include "ppp_agents/agent_memory.hpp"
+#include "ppp_agents/path_follower.hpp"
+#include "ppp_core/grid.hpp"
+#include "ppp_core/map_frame.hpp"
+#include "ppp_core/sensor.hpp"
+
+namespace ppp {
+namespace agents {
+
+/// How a planner's answer to a plan request ended the wait.
+enum class AnswerVerdict {
+  Move,         ///< A usable path: the robot takes its first move.
+  NoPath,       ///< The planner found no path (an empty answer).
+  InvalidPath,  ///< The path is unusable (off the map, not through the robot, through a known wall, not to the goal).
+};
+
+/// The result of judging an answer.
+struct Answer {
+  AnswerVerdict verdict = AnswerVerdict::Move;  ///< What the answer amounts to.
+  Action action = Action::Stay;                  ///< The move, for AnswerVerdict::Move.
+  std::string detail;                            ///< What is wrong, otherwise.
+};
+
+/// One episode of a planner agent as planner_bridge_node plays it, without ROS: what the robot knows (its
+/// memory with the agent's memory handicap, or the true map), the planner's path it follows, and the verdicts
+/// on the planner's paths (docs/planner-interface.md).
+class PlannerEpisode {
+ public:
+  /// Starts an episode on a width x height map; `prior` is the true map for agents given it, else null.
+  void start(const EpisodeInfo& info, const Grid* prior, int memory_window, double resolution);
+  /// Takes the step's scan into the memory (a robot given the true map has nothing to learn).
+  void observe(const Scan& scan);
+  /// A path the planner published unasked: followed from now on when usable, ignored otherwise.
+  void offer(const std::vector<MapPoint>& points, Cell robot);
+  /// The move along the current path, or nothing when the planner must be asked for a path.
+  std::optional<Action> next(Cell robot);
+  /// True when `points` answer a request made with the robot at `robot`: a usable path, or an empty one (the
+  /// planner's "no path"). Anything else may be a late answer to an earlier request.
+  bool fits(const std::vector<MapPoint>& points, Cell robot) const;
+  /// Judges the planner's answer to a request; a usable path is followed from now on.
+  Answer answer(const std::vector<MapPoint>& points, Cell robot);
+  /// What the robot knows: kScanFree / kScanObstacle / kScanUnknown per cell.
+  const KnownMap& known() const { return known_; }
+  /// The map's frame (size and resolution).
+  const MapFrame& frame() const { return frame_; }
+  /// The goal cell.
+  Cell goal() const { return goal_; }
+
+ private:
+  MapFrame frame_;
+  Cell goal_;
+  bool has_prior_ = false;
+  AgentMemory memory_;
+  KnownMap known_;
+  PathFollower follower_;
+};
+
+}  // namespace agents
+}  // namespace ppp

@@ -1,0 +1,55 @@
+#include "ppp_agents/planner_episode.hpp"
+
+namespace ppp {
+namespace agents {
+
+void PlannerEpisode::start(const EpisodeInfo& info, const Grid* prior, int memory_window, double resolution) {
+  frame_ = MapFrame{info.width, info.height, resolution};
+  goal_ = info.goal;
+  has_prior_ = prior != nullptr;
+  known_.width = info.width;
+  known_.height = info.height;
+  known_.cells.assign(static_cast<std::size_t>(info.width) * info.height, kScanUnknown);
+  if (has_prior_) {
+    for (int i = 0; i < prior->size(); ++i) {
+      known_.cells[i] = prior->isObstacle(prior->cellAt(i)) ? kScanObstacle : kScanFree;
+    }
+  } else {
+    memory_.reset(info.width, info.height, memory_window);
+  }
+  follower_.clear();
+}
+
+void PlannerEpisode::observe(const Scan& scan) {
+  if (has_prior_) return;
+  memory_.update(scan);
+  for (int y = 0; y < frame_.height; ++y) {
+    for (int x = 0; x < frame_.width; ++x) known_.cells[y * frame_.width + x] = memory_.at(Cell{x, y});
+  }
+}
+
+void PlannerEpisode::offer(const std::vector<MapPoint>& points, Cell robot) {
+  if (!points.empty()) follower_.follow(points, frame_, robot, goal_, known_);
+}
+
+std::optional<Action> PlannerEpisode::next(Cell robot) { return follower_.next(robot, known_); }
+
+bool PlannerEpisode::fits(const std::vector<MapPoint>& points, Cell robot) const {
+  if (points.empty()) return true;
+  PathFollower probe;
+  return probe.follow(points, frame_, robot, goal_, known_).empty();
+}
+
+Answer PlannerEpisode::answer(const std::vector<MapPoint>& points, Cell robot) {
+  if (points.empty()) return Answer{AnswerVerdict::NoPath, Action::Stay, "the planner published an empty path"};
+  const std::string problem = follower_.follow(points, frame_, robot, goal_, known_);
+  if (!problem.empty()) return Answer{AnswerVerdict::InvalidPath, Action::Stay, problem};
+  const std::optional<Action> action = follower_.next(robot, known_);
+  if (!action) {
+    return Answer{AnswerVerdict::InvalidPath, Action::Stay, "the path gives the robot no move from its cell"};
+  }
+  return Answer{AnswerVerdict::Move, *action, ""};
+}
+
+}  // namespace agents
+}  // namespace ppp

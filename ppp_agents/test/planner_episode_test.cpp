@@ -1,0 +1,81 @@
+// PlannerEpisode: what the bridge's robot knows and the verdicts on a planner's answers, without ROS.
+// The map is 4x3 at 1 m per cell; a cell's centre in the map frame is (x + 0.5, 2 - y + 0.5).
+#include "ppp_agents/planner_episode.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "test_world.hpp"
+
+namespace ppp {
+namespace agents {
+namespace {
+
+const test::World kWorld = test::world({
+    "S#..",
+    ".#..",
+    "...G",
+});
+
+MapPoint centre(int x, int y) { return MapPoint{x + 0.5, 2 - y + 0.5}; }
+
+EpisodeInfo info() { return EpisodeInfo{4, 3, kWorld.start, kWorld.goal, 7, nullptr}; }
+
+/// The range-1 scan of the true map at `robot`.
+Scan scanAt(Cell robot) {
+  static const SensorModel sensor(SensorOptions{1, 0.0});
+  std::vector<std::int8_t> cells(9);
+  sensor.scan(kWorld.grid, robot, 0, 0, cells.data());
+  return Scan(1, cells, robot, kWorld.goal, false, 0);
+}
+
+TEST(PlannerEpisodeTest, WithThePriorMapTheRobotKnowsEverythingAndJudgesAnswersOnIt) {
+  PlannerEpisode episode;
+  episode.start(info(), &kWorld.grid, 0, 1.0);
+  EXPECT_EQ(episode.known().at(Cell{1, 0}), kScanObstacle);
+  EXPECT_EQ(episode.known().at(Cell{3, 0}), kScanFree);
+  const Cell robot{0, 0};
+  EXPECT_FALSE(episode.next(robot));  // no path yet: ask the planner
+  // Straight through the wall: not a fitting answer, and judged invalid.
+  const std::vector<MapPoint> through{centre(0, 0), centre(3, 0), centre(3, 2)};
+  EXPECT_FALSE(episode.fits(through, robot));
+  const Answer bad = episode.answer(through, robot);
+  EXPECT_EQ(bad.verdict, AnswerVerdict::InvalidPath);
+  EXPECT_EQ(bad.detail, "the path crosses the obstacle cell (1, 0)");
+  // An empty answer is the planner's "no path".
+  EXPECT_TRUE(episode.fits({}, robot));
+  EXPECT_EQ(episode.answer({}, robot).verdict, AnswerVerdict::NoPath);
+  // Around the wall: followed.
+  const std::vector<MapPoint> around{centre(0, 0), centre(0, 2), centre(3, 2)};
+  EXPECT_TRUE(episode.fits(around, robot));
+  const Answer good = episode.answer(around, robot);
+  EXPECT_EQ(good.verdict, AnswerVerdict::Move);
+  EXPECT_EQ(good.action, Action::South);
+  EXPECT_EQ(episode.next(Cell{0, 1}), Action::South);
+}
+
+TEST(PlannerEpisodeTest, WithoutItTheRobotLearnsFromScansAndReplansWhenAWallAppears) {
+  PlannerEpisode episode;
+  episode.start(info(), nullptr, 0, 1.0);
+  EXPECT_EQ(episode.known().at(Cell{3, 0}), kScanUnknown);
+  // The first scan shows the wall next to the start; the far side stays unknown.
+  episode.observe(scanAt(Cell{0, 0}));
+  EXPECT_EQ(episode.known().at(Cell{1, 0}), kScanObstacle);
+  EXPECT_EQ(episode.known().at(Cell{3, 0}), kScanUnknown);
+  const std::vector<MapPoint> through{centre(0, 0), centre(3, 0), centre(3, 2)};
+  EXPECT_EQ(episode.answer(through, Cell{0, 0}).verdict, AnswerVerdict::InvalidPath);
+  // An unasked path is followed when usable and ignored when not.
+  episode.offer(through, Cell{0, 0});
+  EXPECT_FALSE(episode.next(Cell{0, 0}));
+  episode.offer({centre(0, 0), centre(0, 2), centre(3, 2)}, Cell{0, 0});
+  EXPECT_EQ(episode.next(Cell{0, 0}), Action::South);
+  // A new episode forgets the map and the path.
+  episode.start(info(), nullptr, 0, 1.0);
+  EXPECT_EQ(episode.known().at(Cell{1, 0}), kScanUnknown);
+  EXPECT_FALSE(episode.next(Cell{0, 0}));
+}
+
+}  // namespace
+}  // namespace agents
+}  // namespace ppp
