@@ -21,6 +21,8 @@ namespace {
 constexpr int kLaserRays = 72;
 constexpr double kSecondsPerStep = 0.1;     // bag time of one recorded step
 constexpr int kPathEveryStep = 10;          // a recorded path is written every this many steps (and at step 0)
+constexpr std::size_t kResultsPerMessage = 1000;  // results grouped in one /ppp/results message at most
+constexpr double kResultsPeriod = 0.2;            // seconds a result may wait for its group
 
 visualization_msgs::Marker cellMarker(const MapFrame& frame, Cell cell, int id, float r, float g, float b,
                                       const std::string& ns) {
@@ -52,7 +54,7 @@ EpisodeRecorder::EpisodeRecorder(ros::NodeHandle& nh, const SimulatorParameters&
     : parameters_(parameters), sets_(sets), budget_(budget) {
   map_publisher_ = nh.advertise<nav_msgs::OccupancyGrid>("/map", 1, true);
   markers_publisher_ = nh.advertise<visualization_msgs::MarkerArray>("/ppp/markers", 1, true);
-  results_publisher_ = nh.advertise<ppp_msgs::EpisodeResult>("/ppp/results", 1000);
+  results_publisher_ = nh.advertise<ppp_msgs::EpisodeResults>("/ppp/results", 100);
   for (const PreparedSet& set : sets) {
     set_publishers_[set.name] = nh.advertise<ppp_msgs::ProblemSet>("/ppp/sets/" + set.name, 1, true);
   }
@@ -210,13 +212,26 @@ void EpisodeRecorder::recordResults(const std::vector<EpisodeResult>& results) {
     m.path_length = static_cast<std::uint32_t>(r.path_length);
     m.optimal_length = r.optimal_length;
     m.reason = r.reason;
-    results_publisher_.publish(m);
-    write("/ppp/results", bag_start_, m);
+    pending_results_.results.push_back(std::move(m));
   }
+  if (pending_results_.results.size() >= kResultsPerMessage ||
+      (ros::WallTime::now() - last_results_flush_).toSec() >= kResultsPeriod) {
+    flushResults();
+  }
+}
+
+void EpisodeRecorder::flushResults() {
+  last_results_flush_ = ros::WallTime::now();
+  if (pending_results_.results.empty()) return;
+  pending_results_.header.stamp = ros::Time::now();
+  results_publisher_.publish(pending_results_);
+  write("/ppp/results", bag_start_, pending_results_);
+  pending_results_.results.clear();
 }
 
 void EpisodeRecorder::close() {
   std::lock_guard<std::mutex> lock(mutex_);
+  flushResults();
   if (bag_open_) bag_.close();
   bag_open_ = false;
 }

@@ -10,7 +10,7 @@
 #include <rosbag/bag.h>
 #include <tf2_ros/transform_broadcaster.h>
 
-#include "ppp_msgs/EpisodeResult.h"
+#include "ppp_msgs/EpisodeResults.h"
 #include "ppp_msgs/ProblemSet.h"
 #include "ppp_simulator/agent_lane.hpp"
 #include "simulator_parameters.hpp"
@@ -20,7 +20,9 @@ namespace simulator {
 
 /// Publishes what standard ROS tools understand about a sample of episodes (the map, tf map -> G/base_link,
 /// G/path, G/scan as sensor_msgs/LaserScan, start/goal markers; G = the agent's graph name) and every result on
-/// /ppp/results, and writes all of it to <output_dir>/experiment.bag. In the bag, step k of a recorded episode
+/// /ppp/results (grouped: one ppp_msgs/EpisodeResults per 1,000 results or 0.2 s, whichever comes first,
+/// so a million results are not a million bag writes), and writes all of it to
+/// <output_dir>/experiment.bag. In the bag, step k of a recorded episode
 /// is stamped 0.1 s * k after the start of that episode's slot, and every agent's n-th recorded episode shares
 /// slot n (they all run on the same PPP), so `rosbag play` shows the agents moving side by side on their map.
 /// Thread-safe: every lane thread reports to it.
@@ -33,9 +35,9 @@ class EpisodeRecorder {
   void recordSets(const std::vector<ppp_msgs::ProblemSet>& sets);
   /// Publishes and records the sampled episodes among a batch of scans of `agent`.
   void recordScans(const std::string& agent, const std::vector<ScanRequest>& scans);
-  /// Publishes and records finished episodes.
+  /// Publishes and records finished episodes (grouped with those of the last moments).
   void recordResults(const std::vector<EpisodeResult>& results);
-  /// Closes the bag.
+  /// Publishes and records the results still grouped, then closes the bag.
   void close();
 
  private:
@@ -50,6 +52,7 @@ class EpisodeRecorder {
   };
   bool sampled(const ScanRequest& scan) const;
   ros::Time slotTime(int slot, int step) const;
+  void flushResults();
   template <typename M>
   void write(const std::string& topic, const ros::Time& time, const M& message, bool latched = false);
 
@@ -70,6 +73,8 @@ class EpisodeRecorder {
   int maps_written_ = 0;                           // slots whose map is in the bag
   int budget_;
   ros::Time bag_start_;
+  ppp_msgs::EpisodeResults pending_results_;  // not yet published
+  ros::WallTime last_results_flush_;
   tf2_ros::TransformBroadcaster broadcaster_;
 };
 

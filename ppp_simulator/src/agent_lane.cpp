@@ -36,33 +36,34 @@ void AgentLane::scans(std::vector<ScanRequest>* requests) {
     const std::uint64_t seed =
         runSeed(experiment_seed_, set.name, set.set.ids[work.problem], config_.name, work.run);
     active_.push_back({next_id_++, work, seed,
-                       std::make_unique<Episode>(set.set.problems[work.problem], set.grids[work.problem], sensor_,
-                                                 seed, options_.budget),
+                       Episode(set.set.problems[work.problem], set.grids[work.problem], sensor_, seed, options_.budget),
                        false});
   }
   requests->resize(active_.size());
+  const int range = options_.sensor_range;
   for (std::size_t i = 0; i < active_.size(); ++i) {
     Active& a = active_[i];
-    const Scan scan = a.episode->scan();
+    const PreparedSet& set = sets_[a.work.set];
     ScanRequest& r = (*requests)[i];
     r.start.reset();
     r.episode = a.id;
-    r.step = scan.step();
-    r.position = scan.position();
-    r.goal = scan.goal();
-    r.bumped = scan.bumped();
-    r.range = scan.range();
+    r.step = a.episode.step();
+    r.position = a.episode.position();
+    r.goal = set.set.problems[a.work.problem].goal;
+    r.bumped = a.episode.bumped();
+    r.range = range;
     r.set = a.work.set;
     r.problem = a.work.problem;
     r.run = a.work.run;
     if (reads_window_) {
-      const int cells = (2 * r.range + 1) * (2 * r.range + 1);
-      r.cells.assign(scan.cells(), scan.cells() + cells);
+      // The window from the PPP's atlas: a copy instead of a line-of-sight test per cell (same values).
+      const WindowAtlas& atlas = set.windows[a.work.problem];
+      r.cells.resize(static_cast<std::size_t>(atlas.cells()));
+      a.episode.scanWindow(atlas, r.cells.data());
     } else {
       r.cells.clear();
     }
     if (!a.started) {
-      const PreparedSet& set = sets_[a.work.set];
       const Grid& grid = set.grids[a.work.problem];
       const agents::EpisodeInfo info = episodeInfo(set.set.problems[a.work.problem], grid, config_, a.seed);
       EpisodeStart start{info.width, info.height, info.start, info.seed, {}};
@@ -105,16 +106,16 @@ std::vector<EpisodeResult> AgentLane::answer(const std::vector<MoveReply>& moves
     Active& a = active_[i];
     const MoveReply* move = move_of(i, a.id);
     if (move == nullptr) {
-      a.episode->fail(missing_reason);
+      a.episode.fail(missing_reason);
     } else if (move->failure != nullptr) {
-      a.episode->fail(move->failure);
-    } else if (static_cast<int>(move->step) != a.episode->step() || !agents::isAction(move->action)) {
-      a.episode->fail(reason::kInvalidAction);
+      a.episode.fail(move->failure);
+    } else if (static_cast<int>(move->step) != a.episode.step() || !agents::isAction(move->action)) {
+      a.episode.fail(reason::kInvalidAction);
     } else {
-      a.episode->apply(static_cast<agents::Action>(move->action));
+      a.episode.apply(static_cast<agents::Action>(move->action));
     }
-    if (a.episode->done()) {
-      finished.push_back(result(a.work, a.seed, a.episode->outcome()));
+    if (a.episode.done()) {
+      finished.push_back(result(a.work, a.seed, a.episode.outcome()));
     } else {
       if (kept != i) active_[kept] = std::move(a);
       ++kept;
@@ -127,8 +128,8 @@ std::vector<EpisodeResult> AgentLane::answer(const std::vector<MoveReply>& moves
 std::vector<EpisodeResult> AgentLane::failAll(const char* why) {
   std::vector<EpisodeResult> failed;
   for (Active& a : active_) {
-    a.episode->fail(why);
-    failed.push_back(result(a.work, a.seed, a.episode->outcome()));
+    a.episode.fail(why);
+    failed.push_back(result(a.work, a.seed, a.episode.outcome()));
   }
   active_.clear();
   for (const Work& work : queue_) {

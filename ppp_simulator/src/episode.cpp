@@ -1,5 +1,6 @@
 #include "ppp_simulator/episode.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "ppp_core/error.hpp"
@@ -41,6 +42,12 @@ Episode::Episode(const Problem& problem, const Grid& grid, const SensorModel& se
 
 Scan Episode::scan() const {
   return Scan(*sensor_, *grid_, position_, problem_->goal, bumped_, outcome_.steps, noise_seed_);
+}
+
+void Episode::scanWindow(const WindowAtlas& atlas, std::int8_t* window) const {
+  const std::int8_t* seen = atlas.window(position_);
+  std::copy(seen, seen + atlas.cells(), window);
+  sensor_->addNoise(noise_seed_, outcome_.steps, window);
 }
 
 void Episode::apply(agents::Action action) {

@@ -118,6 +118,7 @@ std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::
       const DpaResult& result = dpa.solve(p.grids.back(), problem.start, problem.goal);
       if (!result.reachable) throw InvalidArgument("sets", "set '" + spec.name + "' holds an unsolvable PPP");
       p.optimal.push_back(result.advances);
+      p.windows.emplace_back(p.grids.back(), config.episode.sensor_range);
     }
     prepared.push_back(std::move(p));
   }

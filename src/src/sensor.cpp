@@ -55,9 +55,14 @@ SensorModel::SensorModel(const SensorOptions& options) : options_(options) {
 
 void SensorModel::scan(const Grid& grid, Cell position, std::uint64_t noise_seed, int step,
                        std::int8_t* window) const {
+  see(grid, position, window);
+  addNoise(noise_seed, step, window);
+}
+
+void SensorModel::see(const Grid& grid, Cell position, std::int8_t* window) const {
   const int r = options_.range;
   const int s = side();
-  // Physical truth first: the line of sight depends on the real obstacles, not on what noise reports.
+  // Physical truth first: the line of sight depends on the real obstacles.
   std::array<std::int8_t, kMaxScanCells> truth;
   std::uint64_t obstacles = 0;  // bit i: window cell i is an obstacle (windows of at most 64 cells)
   for (int dy = -r; dy <= r; ++dy) {
@@ -68,7 +73,6 @@ void SensorModel::scan(const Grid& grid, Cell position, std::uint64_t noise_seed
       if (truth[i] == kScanObstacle && i < 64) obstacles |= std::uint64_t{1} << i;
     }
   }
-  const int centre = r * s + r;
   const bool masks = !blocker_masks_.empty();
   for (int i = 0; i < s * s; ++i) {
     bool visible = true;
@@ -82,12 +86,19 @@ void SensorModel::scan(const Grid& grid, Cell position, std::uint64_t noise_seed
         }
       }
     }
-    std::int8_t value = visible ? truth[i] : kScanUnknown;
-    if (options_.noise > 0.0 && i != centre && (value == kScanFree || value == kScanObstacle) &&
+    window[i] = visible ? truth[i] : kScanUnknown;
+  }
+}
+
+void SensorModel::addNoise(std::uint64_t noise_seed, int step, std::int8_t* window) const {
+  if (options_.noise <= 0.0) return;
+  const int centre = options_.range * side() + options_.range;
+  for (int i = 0; i < side() * side(); ++i) {
+    const std::int8_t value = window[i];
+    if (i != centre && (value == kScanFree || value == kScanObstacle) &&
         noiseDraw(noise_seed, step, i) < options_.noise) {
-      value = value == kScanFree ? kScanObstacle : kScanFree;
+      window[i] = value == kScanFree ? kScanObstacle : kScanFree;
     }
-    window[i] = value;
   }
 }
 

@@ -2,7 +2,6 @@
 
 #include <cstdint>
 #include <deque>
-#include <memory>
 #include <optional>
 #include <set>
 #include <vector>
@@ -88,7 +87,7 @@ class AgentLane {
     std::uint32_t id;
     Work work;
     std::uint64_t seed;
-    std::unique_ptr<Episode> episode;
+    Episode episode;
     bool started;
   };
   EpisodeResult result(const Work& work, std::uint64_t seed, const EpisodeOutcome& outcome) const;

@@ -7,6 +7,7 @@
 #include "ppp_agents/agent_config.hpp"
 #include "ppp_core/problem.hpp"
 #include "ppp_core/sensor.hpp"
+#include "ppp_core/window_atlas.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -46,6 +47,12 @@ class Episode {
   bool done() const { return done_; }
   /// What the agent senses now (computed on first read).
   Scan scan() const;
+  /// Fills `window` with the cells of scan() from `atlas` (the windows of this episode's grid and range).
+  void scanWindow(const WindowAtlas& atlas, std::int8_t* window) const;
+  /// The agent's cell.
+  Cell position() const { return position_; }
+  /// True when the last action hit an obstacle or the edge.
+  bool bumped() const { return bumped_; }
   /// Applies the agent's action for this step.
   void apply(agents::Action action);
   /// Ends the episode as failed for `reason` (e.g. reason::kTimeout).

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "ppp_core/window_atlas.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_simulator/episode.hpp"
 #include "ppp_simulator/episode_result.hpp"
@@ -21,6 +22,7 @@ struct PreparedSet {
   generator::ProblemSet set;     ///< The PPPs and their evaluations.
   std::vector<Grid> grids;       ///< Decoded grid of each PPP.
   std::vector<int> optimal;      ///< Fewest moves from start to goal of each PPP.
+  std::vector<WindowAtlas> windows;  ///< Every cell's noiseless scan window of each PPP, at the sensor range.
 };
 
 /// The seed of one run, derived from the experiment seed and the run's names (not positions), so adding

@@ -13,11 +13,12 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "ppp_core/ppp_file.hpp"
 #include "ppp_core/text_file.hpp"
-#include "ppp_msgs/EpisodeResult.h"
+#include "ppp_msgs/EpisodeResults.h"
 #include "ppp_msgs/conversions.h"
 #include "ppp_simulator/results_file.hpp"
 #include "ros_test_support.hpp"
@@ -71,7 +72,7 @@ TEST(RosExperimentTest, ResultsEqualTheInProcessRunAndTheBagHoldsTheMaps) {
        {"/map ", "nav_msgs/OccupancyGrid", "/tf ", "tf2_msgs/TFMessage", "/astar/path", "nav_msgs/Path",
         "/explorer_memory_5x5/scan", "sensor_msgs/LaserScan", "/ppp/markers", "visualization_msgs/MarkerArray",
         "/ppp/results",
-        "ppp_msgs/EpisodeResult", "/ppp/sets/turns", "ppp_msgs/ProblemSet"}) {
+        "ppp_msgs/EpisodeResults", "/ppp/sets/turns", "ppp_msgs/ProblemSet"}) {
     EXPECT_NE(text.find(expected), std::string::npos) << "rosbag info lacks " << expected << ":\n" << text;
   }
   // The random agent reads no window, so it is sent none and none is recorded.
@@ -90,8 +91,19 @@ TEST(RosExperimentTest, ResultsEqualTheInProcessRunAndTheBagHoldsTheMaps) {
       EXPECT_EQ(map->data[(grid.height() - 1 - y) * grid.width() + x], grid.isObstacle(Cell{x, y}) ? 100 : 0);
     }
   }
-  rosbag::View results(bag, rosbag::TopicQuery("/ppp/results"));
-  EXPECT_EQ(results.size(), 2u * 3 * 3 * 40);
+  // Every result is in the bag once, grouped.
+  std::size_t recorded = 0;
+  std::set<std::string> keys;
+  for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery("/ppp/results"))) {
+    const auto group = m.instantiate<ppp_msgs::EpisodeResults>();
+    ASSERT_TRUE(group);
+    for (const ppp_msgs::EpisodeResult& r : group->results) {
+      ++recorded;
+      keys.insert(r.set + "/" + r.problem + "/" + r.agent + "/" + std::to_string(r.run));
+    }
+  }
+  EXPECT_EQ(recorded, 2u * 3 * 3 * 40);
+  EXPECT_EQ(keys.size(), 2u * 3 * 3 * 40);
 }
 
 TEST(RosExperimentTest, RestartedSimulatorResumesAfterSigkill) {

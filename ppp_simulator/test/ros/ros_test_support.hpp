@@ -15,7 +15,7 @@
 #include <string>
 
 #include "ppp_core/text_file.hpp"
-#include "ppp_msgs/EpisodeResult.h"
+#include "ppp_msgs/EpisodeResults.h"
 
 namespace ppp {
 namespace simulator {
@@ -53,7 +53,7 @@ class Child {
 /// Counts the results published on /ppp/results, per agent.
 class ResultCounter {
  public:
-  ResultCounter() { subscriber_ = nh_.subscribe("/ppp/results", 10000, &ResultCounter::onResult, this); }
+  ResultCounter() { subscriber_ = nh_.subscribe("/ppp/results", 1000, &ResultCounter::onResult, this); }
   /// Waits (up to `seconds`) until `agent` has at least `count` results; false on time-out.
   bool waitFor(const std::string& agent, int count, double seconds) {
     std::unique_lock<std::mutex> lock(mutex_);
@@ -61,9 +61,9 @@ class ResultCounter {
   }
 
  private:
-  void onResult(const ppp_msgs::EpisodeResult::ConstPtr& result) {
+  void onResult(const ppp_msgs::EpisodeResults::ConstPtr& group) {
     std::lock_guard<std::mutex> lock(mutex_);
-    ++counts_[result->agent];
+    for (const ppp_msgs::EpisodeResult& result : group->results) ++counts_[result.agent];
     changed_.notify_all();
   }
   ros::NodeHandle nh_;

@@ -39,8 +39,13 @@ class SensorModel {
   const SensorOptions& options() const { return options_; }
   /// Side of the window, 2 * range + 1.
   int side() const { return 2 * options_.range + 1; }
-  /// Fills `window` (side*side cells, row-major from (-range, -range), x fastest) as seen from `position`.
+  /// Fills `window` (side*side cells, row-major from (-range, -range), x fastest) as seen from `position`:
+  /// see() then addNoise().
   void scan(const Grid& grid, Cell position, std::uint64_t noise_seed, int step, std::int8_t* window) const;
+  /// Fills `window` with what a noiseless sensor reports from `position`.
+  void see(const Grid& grid, Cell position, std::int8_t* window) const;
+  /// Flips the sensed cells of a noiseless `window` that this sensor's noise flips at `step` of a run.
+  void addNoise(std::uint64_t noise_seed, int step, std::int8_t* window) const;
 
  private:
   SensorOptions options_;
@@ -91,7 +96,7 @@ class Scan {
   int step_ = 0;
   int range_ = 0;
   mutable bool filled_ = false;
-  mutable std::array<std::int8_t, kMaxScanCells> cells_{};
+  mutable std::array<std::int8_t, kMaxScanCells> cells_;  // only the first (2*range+1)^2 are used, once filled
 };
 
 }  // namespace ppp

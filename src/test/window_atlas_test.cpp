@@ -1,0 +1,52 @@
+#include "ppp_core/window_atlas.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/rng.hpp"
+
+namespace ppp {
+namespace {
+
+TEST(WindowAtlasTest, EveryCellMatchesTheSensorWithAndWithoutNoise) {
+  // Range 2 takes the sensor's bit-mask path, range 5 its list path; noise is added after the lookup.
+  for (int range : {2, 5}) {
+    Rng rng(11);
+    const SensorModel noiseless(SensorOptions{range, 0.0});
+    const SensorModel noisy(SensorOptions{range, 0.3});
+    const int cells = (2 * range + 1) * (2 * range + 1);
+    for (int trial = 0; trial < 20; ++trial) {
+      Grid g(11, 7);
+      for (int i = 0; i < g.size(); ++i) g.setObstacle(g.cellAt(i), rng.bernoulli(0.3));
+      const WindowAtlas atlas(g, range);
+      ASSERT_EQ(atlas.cells(), cells);
+      for (int i = 0; i < g.size(); ++i) {
+        const Cell at = g.cellAt(i);
+        std::vector<std::int8_t> expected(cells);
+        noiseless.scan(g, at, 0, 0, expected.data());
+        ASSERT_EQ(std::vector<std::int8_t>(atlas.window(at), atlas.window(at) + cells), expected)
+            << "range " << range << " trial " << trial << " cell " << at.x << "," << at.y;
+        const std::uint64_t seed = rng.next();
+        noisy.scan(g, at, seed, trial, expected.data());
+        std::vector<std::int8_t> looked_up(atlas.window(at), atlas.window(at) + cells);
+        noisy.addNoise(seed, trial, looked_up.data());
+        ASSERT_EQ(looked_up, expected) << "noisy, range " << range << " trial " << trial;
+      }
+    }
+  }
+}
+
+TEST(WindowAtlasTest, BadRangeIsNamed) {
+  const Grid g(4, 4);
+  try {
+    WindowAtlas atlas(g, 0);
+    FAIL() << "range 0 accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.name(), "sensor_range");
+  }
+}
+
+}  // namespace
+}  // namespace ppp
