@@ -2,6 +2,7 @@
 
 #include <ros/console.h>
 
+#include <algorithm>
 #include <exception>
 
 #include "ppp_core/error.hpp"
@@ -10,6 +11,12 @@
 
 namespace ppp {
 namespace agents {
+
+namespace {
+
+constexpr std::size_t kPrefetchAhead = 2;  // scans between fetching an agent into cache and acting on it
+
+}  // namespace
 
 BatchResponder::BatchResponder(const AgentConfig& config)
     : config_(config), reads_window_(readsScanWindow(config)), host_(config) {}
@@ -30,6 +37,7 @@ ppp_msgs::MoveBatch BatchResponder::answer(const ppp_msgs::ScanBatch& batch) {
       moves.steps[i] = i < batch.steps.size() ? batch.steps[i] : 0;
       reject(batch.episodes[i], moves.steps[i], fault, what);
     }
+    finishAbsent();
     return moves;
   }
   failed_starts_.clear();
@@ -42,8 +50,11 @@ ppp_msgs::MoveBatch BatchResponder::answer(const ppp_msgs::ScanBatch& batch) {
   }
   const std::size_t window = static_cast<std::size_t>(2 * batch.range + 1) * (2 * batch.range + 1);
   if (!reads_window_) unknown_window_.assign(window, kScanUnknown);
+  next_ = 0;
   for (std::size_t i = 0; i < n; ++i) {
     moves.steps[i] = batch.steps[i];
+    // The agent acted on a few scans from now is fetched into cache meanwhile (1,000 agents do not fit).
+    if (next_ + kPrefetchAhead < episodes_.size()) __builtin_prefetch(episodes_[next_ + kPrefetchAhead].agent);
     const std::int8_t* cells = reads_window_ ? batch.cells.data() + i * window : unknown_window_.data();
     try {
       moves.actions[i] = act(batch, i, cells);
@@ -53,55 +64,77 @@ ppp_msgs::MoveBatch BatchResponder::answer(const ppp_msgs::ScanBatch& batch) {
       reject(batch.episodes[i], batch.steps[i], "agent", e.what());
     }
   }
-  // Episodes the simulator no longer sends are over.
-  for (auto it = episodes_.begin(); it != episodes_.end();) {
-    if (it->second.round == round_) {
-      ++it;
-      continue;
-    }
-    host_.finish(it->first);
-    it = episodes_.erase(it);
-  }
+  finishAbsent();
   return moves;
+}
+
+BatchResponder::Episode* BatchResponder::find(std::uint32_t id) {
+  if (next_ < episodes_.size() && episodes_[next_].id == id) return &episodes_[next_++];
+  const auto it = std::lower_bound(episodes_.begin(), episodes_.end(), id,
+                                   [](const Episode& e, std::uint32_t key) { return e.id < key; });
+  if (it == episodes_.end() || it->id != id) return nullptr;
+  next_ = static_cast<std::size_t>(it - episodes_.begin()) + 1;
+  return &*it;
 }
 
 std::uint8_t BatchResponder::act(const ppp_msgs::ScanBatch& batch, std::size_t i, const std::int8_t* window) {
   const std::uint32_t id = batch.episodes[i];
   const std::uint32_t step = batch.steps[i];
-  auto it = episodes_.find(id);
-  const auto failed = failed_starts_.find(id);
-  if (failed != failed_starts_.end()) throw failed->second;
-  if (it == episodes_.end()) {
+  if (!failed_starts_.empty()) {
+    const auto failed = failed_starts_.find(id);
+    if (failed != failed_starts_.end()) throw failed->second;
+  }
+  Episode* episode = find(id);
+  if (episode == nullptr || episode->rejected) {
     throw InvalidArgument("episode", "episode " + std::to_string(id) + " at step " + std::to_string(step) +
                                          " was never started (no EpisodeStart)");
   }
-  Episode& episode = it->second;
-  if (episode.round == round_) {
+  if (episode->round == round_) {
     throw InvalidArgument("duplicate", "episode " + std::to_string(id) + " has two scans in one batch");
   }
-  episode.round = round_;
+  episode->round = round_;
   const Cell position = toCell(batch.positions[i]);
-  requireOnGrid(position, episode.width, episode.height, "position");
+  requireOnGrid(position, episode->width, episode->height, "position");
   const std::size_t count = static_cast<std::size_t>(2 * batch.range + 1) * (2 * batch.range + 1);
-  const Scan view(batch.range, window, count, position, episode.goal, batch.bumped[i] != 0, static_cast<int>(step));
-  return static_cast<std::uint8_t>(episode.agent->act(view));
+  const Scan view(batch.range, window, count, position, episode->goal, batch.bumped[i] != 0, static_cast<int>(step));
+  return static_cast<std::uint8_t>(episode->agent->act(view));
 }
 
 void BatchResponder::start(const ppp_msgs::EpisodeStart& start) {
-  host_.finish(start.episode);
-  episodes_.erase(start.episode);
   const ParsedStart parsed = parseEpisodeStart(start);
   const EpisodeInfo& info = parsed.info;
-  Agent& agent = host_.start(start.episode, info, parsed.prior.get());
-  episodes_[start.episode] = Episode{info.width, info.height, info.goal, &agent, 0};
+  Agent& agent = host_.start(start.episode, info, parsed.prior.get());  // a restarted id gets a fresh agent
+  const Episode episode{start.episode, info.width, info.height, info.goal, &agent, 0, false};
+  const auto it = std::lower_bound(episodes_.begin(), episodes_.end(), start.episode,
+                                   [](const Episode& e, std::uint32_t key) { return e.id < key; });
+  if (it != episodes_.end() && it->id == start.episode) {
+    *it = episode;
+  } else {
+    episodes_.insert(it, episode);  // new ids are the largest: normally an append
+  }
+}
+
+void BatchResponder::finishAbsent() {
+  // Episodes this batch held no (accepted) scan of are over.
+  std::size_t kept = 0;
+  for (const Episode& e : episodes_) {
+    if (e.round == round_ && !e.rejected) {
+      episodes_[kept++] = e;
+    } else {
+      host_.finish(e.id);
+    }
+  }
+  episodes_.resize(kept);
 }
 
 void BatchResponder::reject(std::uint32_t episode, std::uint32_t step, const std::string& kind,
                             const std::string& what) {
-  // A duplicate scan leaves its episode alone: the first scan was answered.
+  // A duplicate scan leaves its episode alone: the first scan was answered. Otherwise the episode ends with
+  // this batch (finishAbsent frees its agent).
   if (kind != "duplicate") {
-    host_.finish(episode);
-    episodes_.erase(episode);
+    const auto it = std::lower_bound(episodes_.begin(), episodes_.end(), episode,
+                                     [](const Episode& e, std::uint32_t key) { return e.id < key; });
+    if (it != episodes_.end() && it->id == episode) it->rejected = true;
   }
   if (rejections_[kind]++ == 0) {
     ROS_WARN("agent '%s': rejected the scan of episode %u step %u (%s); answered with action %d, which is no "

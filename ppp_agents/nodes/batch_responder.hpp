@@ -35,20 +35,27 @@ class BatchResponder {
 
  private:
   struct Episode {
+    std::uint32_t id;
     int width;
     int height;
     Cell goal;
     Agent* agent;         // owned by host_
     std::uint32_t round;  // the last batch that held the episode's scan
+    bool rejected;        // a scan of it was rejected: it ends with this batch
   };
   void start(const ppp_msgs::EpisodeStart& start);
+  Episode* find(std::uint32_t id);
   std::uint8_t act(const ppp_msgs::ScanBatch& batch, std::size_t i, const std::int8_t* window);
   void reject(std::uint32_t episode, std::uint32_t step, const std::string& kind, const std::string& what);
+  void finishAbsent();
 
   AgentConfig config_;
   bool reads_window_;
   AgentHost host_;
-  std::unordered_map<std::uint32_t, Episode> episodes_;
+  // Sorted by id, contiguous: the simulator sends each batch in id order, so the next scan's episode is
+  // normally the one after the last found (a cache-friendly walk instead of a hash probe per step).
+  std::vector<Episode> episodes_;
+  std::size_t next_ = 0;  // where find() looks first
   std::unordered_map<std::uint32_t, InvalidArgument> failed_starts_;  // this batch's rejected starts
   std::vector<std::int8_t> unknown_window_;  // what an agent that reads no window is given
   std::uint32_t round_ = 0;

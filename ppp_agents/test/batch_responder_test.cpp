@@ -63,8 +63,10 @@ test::TestScan scanOf(const Played& p, const SensorModel& sensor, bool prior_map
   return m;
 }
 
-/// Plays `count` episodes (seeds 100, 101, ...) through one responder, all in lockstep batches.
-std::vector<test::Outcome> playBatched(const AgentConfig& c, int count, std::size_t* most_active) {
+/// Plays `count` episodes (seeds 100, 101, ...) through one responder, all in lockstep batches, in id order
+/// or (`reorder`) in reverse id order every other batch.
+std::vector<test::Outcome> playBatched(const AgentConfig& c, int count, std::size_t* most_active,
+                                       bool reorder = false) {
   BatchResponder responder(c);
   const SensorModel sensor(SensorOptions{2, c.sensor_noise});
   std::vector<Played> episodes;
@@ -77,7 +79,8 @@ std::vector<test::Outcome> playBatched(const AgentConfig& c, int count, std::siz
   for (std::uint32_t batch_number = 1;; ++batch_number) {
     std::vector<test::TestScan> scans;
     std::vector<Played*> in_batch;
-    for (Played& p : episodes) {
+    for (std::size_t k = 0; k < episodes.size(); ++k) {
+      Played& p = episodes[reorder && batch_number % 2 == 1 ? episodes.size() - 1 - k : k];
       if (p.done) continue;
       scans.push_back(scanOf(p, sensor, c.type == "astar"));
       // The simulator sends no window to agents that never read it.
@@ -127,16 +130,19 @@ std::vector<test::Outcome> playBatched(const AgentConfig& c, int count, std::siz
 TEST(BatchResponderTest, BatchedPlayEqualsInProcessPlayForEveryAgent) {
   for (const std::string& type : agentTypeNames()) {
     for (const AgentConfig& c : {config(type), config(type, 3), config(type, 0, 0.1)}) {
-      std::size_t most_active = 0;
-      const auto batched = playBatched(c, 6, &most_active);
-      EXPECT_EQ(most_active, 6u);
-      auto agent = makeAgent(c);
-      for (int i = 0; i < 6; ++i) {
-        const auto expected = test::runEpisode(*agent, kWorld, 100 + i, c.sensor_noise, 300, type == "astar");
-        EXPECT_EQ(batched[i].passed, expected.passed) << type << " episode " << i;
-        EXPECT_EQ(batched[i].steps, expected.steps) << type << " episode " << i;
-        EXPECT_EQ(batched[i].bumps, expected.bumps) << type << " episode " << i;
-        EXPECT_EQ(batched[i].path, expected.path) << type << " episode " << i;
+      // Scans normally come in id order (the responder walks its episodes along); any order must work.
+      for (bool reorder : {false, true}) {
+        std::size_t most_active = 0;
+        const auto batched = playBatched(c, 6, &most_active, reorder);
+        EXPECT_EQ(most_active, 6u);
+        auto agent = makeAgent(c);
+        for (int i = 0; i < 6; ++i) {
+          const auto expected = test::runEpisode(*agent, kWorld, 100 + i, c.sensor_noise, 300, type == "astar");
+          EXPECT_EQ(batched[i].passed, expected.passed) << type << " episode " << i << " reorder " << reorder;
+          EXPECT_EQ(batched[i].steps, expected.steps) << type << " episode " << i << " reorder " << reorder;
+          EXPECT_EQ(batched[i].bumps, expected.bumps) << type << " episode " << i << " reorder " << reorder;
+          EXPECT_EQ(batched[i].path, expected.path) << type << " episode " << i << " reorder " << reorder;
+        }
       }
     }
   }

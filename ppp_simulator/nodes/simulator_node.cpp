@@ -4,13 +4,12 @@
 // in-process runner, so the results equal `ppp experiment`'s. Results go to results.csv as episodes end;
 // summary.csv and the report are written when all runs are done; a sample of episodes and every result are
 // recorded in experiment.bag. The node exits when the experiment is finished.
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <ros/topic.h>
 
-#include <atomic>
-#include <condition_variable>
+#include <algorithm>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <thread>
 
@@ -30,6 +29,8 @@ namespace ppp {
 namespace simulator {
 
 namespace {
+
+const ros::WallDuration kShutdownCheck(0.1);  // a lane waiting for a reply notices a shutdown this often
 
 ppp_msgs::GridCell toCell(Cell c) {
   ppp_msgs::GridCell m;
@@ -79,8 +80,13 @@ class LaneRunner {
       : parameters_(parameters), lane_(lane), results_(results), recorder_(recorder) {
     const std::string graph_name = agents::agentGraphName(lane->config().name);
     scans_ = nh.advertise<ppp_msgs::ScanBatch>("/" + graph_name + "/scans", 2);
-    moves_ = nh.subscribe("/" + graph_name + "/moves", 2, &LaneRunner::onMoves, this,
-                          ros::TransportHints().tcpNoDelay());
+    // The lane's own callback queue, served by the lane's thread while it waits for the answer: the reply
+    // wakes that thread directly, not a spinner thread that would then wake it.
+    ros::SubscribeOptions options = ros::SubscribeOptions::create<ppp_msgs::MoveBatch>(
+        "/" + graph_name + "/moves", 2, [this](const ppp_msgs::MoveBatch::ConstPtr& m) { onMoves(m); },
+        ros::VoidConstPtr(), &replies_);
+    options.transport_hints = ros::TransportHints().tcpNoDelay();
+    moves_ = nh.subscribe(options);
   }
 
   /// Plays every run of the lane; returns when it is finished or ROS shuts down.
@@ -106,18 +112,11 @@ class LaneRunner {
       message.batch = batch;
       toMessage(scans, &message);
       recorder_->recordScans(name, scans);
-      std::unique_lock<std::mutex> lock(mutex_);
       expected_batch_ = batch;
       reply_.reset();
       scans_.publish(message);
-      const bool answered = reply_ready_.wait_for(lock, std::chrono::duration<double>(step_timeout),
-                                                  [&] { return reply_.has_value() || !ros::ok(); });
-      std::vector<MoveReply> moves;
-      if (answered && reply_) moves = std::move(*reply_);
-      const char* missing_reason = missing_reason_;
-      lock.unlock();
-      if (answered && reply_) {
-        report(lane_->answer(moves, missing_reason));
+      if (awaitReply(step_timeout)) {
+        report(lane_->answer(*reply_, missing_reason_));
       } else if (!agentAlive()) {
         ROS_ERROR("agent '%s' is gone: its %ld unfinished runs fail as agent_lost", name.c_str(), lane_->remaining());
         report(lane_->failAll(reason::kAgentLost));
@@ -139,6 +138,18 @@ class LaneRunner {
   }
 
  private:
+  /// Serves the lane's queue until the reply to the current batch came (true), `seconds` passed or ROS
+  /// shut down.
+  bool awaitReply(double seconds) {
+    const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(seconds);
+    while (!reply_ && ros::ok()) {
+      const ros::WallDuration left = deadline - ros::WallTime::now();
+      if (left <= ros::WallDuration(0)) break;
+      replies_.callAvailable(std::min(left, kShutdownCheck));
+    }
+    return reply_.has_value();
+  }
+
   bool waitForAgent() {
     const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(parameters_.connect_timeout);
     while (ros::ok() && ros::WallTime::now() < deadline) {
@@ -152,7 +163,6 @@ class LaneRunner {
   bool agentAlive() const { return ppp_msgs::publisherAlive(moves_.getTopic()); }
 
   void onMoves(const ppp_msgs::MoveBatch::ConstPtr& message) {
-    std::lock_guard<std::mutex> lock(mutex_);
     if (message->batch != expected_batch_ || reply_) return;  // late answer to an earlier batch
     const std::size_t n = message->episodes.size();
     if (message->steps.size() != n || message->actions.size() != n) {
@@ -161,7 +171,6 @@ class LaneRunner {
                     lane_->config().name.c_str());
       reply_ = std::vector<MoveReply>();
       missing_reason_ = reason::kInvalidAction;
-      reply_ready_.notify_one();
       return;
     }
     std::vector<MoveReply> moves(n);
@@ -179,7 +188,6 @@ class LaneRunner {
     }
     reply_ = std::move(moves);
     missing_reason_ = reason::kTimeout;
-    reply_ready_.notify_one();
   }
 
   void report(const std::vector<EpisodeResult>& results) {
@@ -192,10 +200,9 @@ class LaneRunner {
   AgentLane* lane_;
   ResultsFile* results_;
   EpisodeRecorder* recorder_;
+  ros::CallbackQueue replies_;  // the moves subscription's callbacks, called by the lane's thread
   ros::Publisher scans_;
-  ros::Subscriber moves_;
-  std::mutex mutex_;
-  std::condition_variable reply_ready_;
+  ros::Subscriber moves_;       // after replies_: unsubscribes before the queue goes
   std::uint32_t expected_batch_ = 0;
   std::optional<std::vector<MoveReply>> reply_;
   const char* missing_reason_ = reason::kTimeout;  // for episodes the reply has no move for
