@@ -36,34 +36,33 @@ void AgentLane::scans(std::vector<ScanRequest>* requests) {
     const std::uint64_t seed =
         runSeed(experiment_seed_, set.name, set.set.ids[work.problem], config_.name, work.run);
     active_.push_back({next_id_++, work, seed,
-                       Episode(set.set.problems[work.problem], set.grids[work.problem], sensor_, seed, options_.budget),
+                       Episode(set.set.problems[work.problem], set.grids[work.problem], sensor_, seed, options_.budget,
+                               false, windowsOf(set, work.problem)),
                        false});
   }
   requests->resize(active_.size());
-  const int range = options_.sensor_range;
   for (std::size_t i = 0; i < active_.size(); ++i) {
     Active& a = active_[i];
-    const PreparedSet& set = sets_[a.work.set];
+    const Scan scan = a.episode.scan();
     ScanRequest& r = (*requests)[i];
     r.start.reset();
     r.episode = a.id;
-    r.step = a.episode.step();
-    r.position = a.episode.position();
-    r.goal = set.set.problems[a.work.problem].goal;
-    r.bumped = a.episode.bumped();
-    r.range = range;
+    r.step = scan.step();
+    r.position = scan.position();
+    r.goal = scan.goal();
+    r.bumped = scan.bumped();
+    r.range = scan.range();
     r.set = a.work.set;
     r.problem = a.work.problem;
     r.run = a.work.run;
     if (reads_window_) {
-      // The window from the PPP's atlas: a copy instead of a line-of-sight test per cell (same values).
-      const WindowAtlas& atlas = set.windows[a.work.problem];
-      r.cells.resize(static_cast<std::size_t>(atlas.cells()));
-      a.episode.scanWindow(atlas, r.cells.data());
+      const int cells = (2 * r.range + 1) * (2 * r.range + 1);
+      r.cells.assign(scan.cells(), scan.cells() + cells);
     } else {
       r.cells.clear();
     }
     if (!a.started) {
+      const PreparedSet& set = sets_[a.work.set];
       const Grid& grid = set.grids[a.work.problem];
       const agents::EpisodeInfo info = episodeInfo(set.set.problems[a.work.problem], grid, config_, a.seed);
       EpisodeStart start{info.width, info.height, info.start, info.seed, {}};

@@ -1,6 +1,5 @@
 #include "ppp_simulator/episode.hpp"
 
-#include <algorithm>
 #include <string>
 
 #include "ppp_core/error.hpp"
@@ -29,10 +28,11 @@ std::uint64_t agentSeed(std::uint64_t run_seed) { return deriveSeed(run_seed, {1
 std::uint64_t noiseSeed(std::uint64_t run_seed) { return deriveSeed(run_seed, {2}); }
 
 Episode::Episode(const Problem& problem, const Grid& grid, const SensorModel& sensor, std::uint64_t run_seed,
-                 int budget, bool record_path)
+                 int budget, bool record_path, const WindowAtlas* windows)
     : problem_(&problem),
       grid_(&grid),
       sensor_(&sensor),
+      windows_(windows),
       noise_seed_(noiseSeed(run_seed)),
       budget_(budget),
       record_path_(record_path),
@@ -41,13 +41,7 @@ Episode::Episode(const Problem& problem, const Grid& grid, const SensorModel& se
 }
 
 Scan Episode::scan() const {
-  return Scan(*sensor_, *grid_, position_, problem_->goal, bumped_, outcome_.steps, noise_seed_);
-}
-
-void Episode::scanWindow(const WindowAtlas& atlas, std::int8_t* window) const {
-  const std::int8_t* seen = atlas.window(position_);
-  std::copy(seen, seen + atlas.cells(), window);
-  sensor_->addNoise(noise_seed_, outcome_.steps, window);
+  return Scan(*sensor_, *grid_, position_, problem_->goal, bumped_, outcome_.steps, noise_seed_, windows_);
 }
 
 void Episode::apply(agents::Action action) {
@@ -100,9 +94,9 @@ EpisodeRunner::EpisodeRunner(const agents::AgentConfig& config, const EpisodeOpt
       sensor_(SensorOptions{options.sensor_range, config.sensor_noise}) {}
 
 EpisodeOutcome EpisodeRunner::run(const Problem& problem, const Grid& grid, agents::Agent& agent,
-                                  std::uint64_t run_seed, bool record_path) {
+                                  std::uint64_t run_seed, bool record_path, const WindowAtlas* windows) {
   agent.reset(episodeInfo(problem, grid, config_, run_seed));
-  Episode episode(problem, grid, sensor_, run_seed, options_.budget, record_path);
+  Episode episode(problem, grid, sensor_, run_seed, options_.budget, record_path, windows);
   while (!episode.done()) episode.apply(agent.act(episode.scan()));
   return episode.outcome();
 }

@@ -118,7 +118,10 @@ std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::
       const DpaResult& result = dpa.solve(p.grids.back(), problem.start, problem.goal);
       if (!result.reachable) throw InvalidArgument("sets", "set '" + spec.name + "' holds an unsolvable PPP");
       p.optimal.push_back(result.advances);
-      p.windows.emplace_back(p.grids.back(), config.episode.sensor_range);
+      const int range = config.episode.sensor_range;
+      p.windows.push_back(WindowAtlas::bytes(p.grids.back(), range) <= kMaxWindowAtlasBytes
+                              ? std::optional<WindowAtlas>(std::in_place, p.grids.back(), range)
+                              : std::nullopt);
     }
     prepared.push_back(std::move(p));
   }
@@ -216,7 +219,8 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
         for (int run : unit.runs) {
           const std::uint64_t seed = runSeed(config.seed, set.name, set.set.ids[unit.problem], agent, run);
           const EpisodeOutcome outcome =
-              slot.second->run(set.set.problems[unit.problem], set.grids[unit.problem], *slot.first, seed);
+              slot.second->run(set.set.problems[unit.problem], set.grids[unit.problem], *slot.first, seed, false,
+                               windowsOf(set, unit.problem));
           rows.push_back(episodeResult(set, unit.problem, agent, run, seed, outcome));
         }
         results.append(rows);

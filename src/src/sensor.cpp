@@ -5,6 +5,7 @@
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/visibility.hpp"
+#include "ppp_core/window_atlas.hpp"
 
 namespace ppp {
 
@@ -103,9 +104,10 @@ void SensorModel::addNoise(std::uint64_t noise_seed, int step, std::int8_t* wind
 }
 
 Scan::Scan(const SensorModel& sensor, const Grid& grid, Cell position, Cell goal, bool bumped, int step,
-           std::uint64_t noise_seed)
+           std::uint64_t noise_seed, const WindowAtlas* windows)
     : sensor_(&sensor),
       grid_(&grid),
+      windows_(windows),
       noise_seed_(noise_seed),
       position_(position),
       goal_(goal),
@@ -135,7 +137,13 @@ std::int8_t Scan::atCell(Cell c) const {
 }
 
 void Scan::fill() const {
-  sensor_->scan(*grid_, position_, noise_seed_, step_, cells_.data());
+  if (windows_ != nullptr) {
+    const std::int8_t* seen = windows_->window(position_);
+    std::copy(seen, seen + windows_->cells(), cells_.begin());
+    sensor_->addNoise(noise_seed_, step_, cells_.data());
+  } else {
+    sensor_->scan(*grid_, position_, noise_seed_, step_, cells_.data());
+  }
   filled_ = true;
 }
 

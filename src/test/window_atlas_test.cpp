@@ -38,6 +38,27 @@ TEST(WindowAtlasTest, EveryCellMatchesTheSensorWithAndWithoutNoise) {
   }
 }
 
+TEST(WindowAtlasTest, ALazyScanReadsTheAtlasWithTheSensorsNoise) {
+  Rng rng(5);
+  Grid g(8, 8);
+  for (int i = 0; i < g.size(); ++i) g.setObstacle(g.cellAt(i), rng.bernoulli(0.25));
+  const WindowAtlas atlas(g, 2);
+  const SensorModel noisy(SensorOptions{2, 0.2});
+  for (int i = 0; i < g.size(); ++i) {
+    const Scan computed(noisy, g, g.cellAt(i), Cell{7, 7}, false, i, 99);
+    const Scan looked_up(noisy, g, g.cellAt(i), Cell{7, 7}, false, i, 99, &atlas);
+    ASSERT_EQ(std::vector<std::int8_t>(looked_up.cells(), looked_up.cells() + 25),
+              std::vector<std::int8_t>(computed.cells(), computed.cells() + 25))
+        << "cell " << i;
+  }
+}
+
+TEST(WindowAtlasTest, SizeIsOneWindowPerCell) {
+  EXPECT_EQ(WindowAtlas::bytes(Grid(20, 20), 2), 20u * 20 * 25);
+  EXPECT_EQ(WindowAtlas::bytes(Grid(200, 200), 2), 200u * 200 * 25);
+  EXPECT_GT(WindowAtlas::bytes(Grid(300, 300), 2), kMaxWindowAtlasBytes);  // scanned step by step instead
+}
+
 TEST(WindowAtlasTest, BadRangeIsNamed) {
   const Grid g(4, 4);
   try {

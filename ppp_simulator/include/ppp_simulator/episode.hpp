@@ -40,19 +40,14 @@ std::uint64_t noiseSeed(std::uint64_t run_seed);
 /// runner and the ROS simulator node both drive episodes through this class.
 class Episode {
  public:
-  /// Starts at the problem's start. `grid` and `sensor` must outlive the episode.
+  /// Starts at the problem's start. `grid`, `sensor` and `windows` (the grid's atlas at the sensor's range,
+  /// when there is one: scans become lookups) must outlive the episode.
   Episode(const Problem& problem, const Grid& grid, const SensorModel& sensor, std::uint64_t run_seed, int budget,
-          bool record_path = false);
+          bool record_path = false, const WindowAtlas* windows = nullptr);
   /// True once the agent stood on the goal, the budget was spent or fail() was called.
   bool done() const { return done_; }
   /// What the agent senses now (computed on first read).
   Scan scan() const;
-  /// Fills `window` with the cells of scan() from `atlas` (the windows of this episode's grid and range).
-  void scanWindow(const WindowAtlas& atlas, std::int8_t* window) const;
-  /// The agent's cell.
-  Cell position() const { return position_; }
-  /// True when the last action hit an obstacle or the edge.
-  bool bumped() const { return bumped_; }
   /// Applies the agent's action for this step.
   void apply(agents::Action action);
   /// Ends the episode as failed for `reason` (e.g. reason::kTimeout).
@@ -66,6 +61,7 @@ class Episode {
   const Problem* problem_;
   const Grid* grid_;
   const SensorModel* sensor_;
+  const WindowAtlas* windows_;
   std::uint64_t noise_seed_;
   int budget_;
   bool record_path_;
@@ -86,9 +82,10 @@ class EpisodeRunner {
  public:
   /// A runner for one agent configuration. @throws InvalidArgument for bad options.
   EpisodeRunner(const agents::AgentConfig& config, const EpisodeOptions& options);
-  /// Runs `agent` from the start of `problem` (whose decoded grid is `grid`) with the given run seed.
+  /// Runs `agent` from the start of `problem` (whose decoded grid is `grid`, and `windows` its atlas when
+  /// there is one) with the given run seed.
   EpisodeOutcome run(const Problem& problem, const Grid& grid, agents::Agent& agent, std::uint64_t run_seed,
-                     bool record_path = false);
+                     bool record_path = false, const WindowAtlas* windows = nullptr);
   /// The sensor of this configuration (range from the options, noise from the agent).
   const SensorModel& sensor() const { return sensor_; }
 

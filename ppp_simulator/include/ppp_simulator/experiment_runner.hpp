@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,8 +23,15 @@ struct PreparedSet {
   generator::ProblemSet set;     ///< The PPPs and their evaluations.
   std::vector<Grid> grids;       ///< Decoded grid of each PPP.
   std::vector<int> optimal;      ///< Fewest moves from start to goal of each PPP.
-  std::vector<WindowAtlas> windows;  ///< Every cell's noiseless scan window of each PPP, at the sensor range.
+  /// Each PPP's WindowAtlas at the experiment's sensor range, when it fits kMaxWindowAtlasBytes.
+  std::vector<std::optional<WindowAtlas>> windows;
 };
+
+/// PPP `problem`'s WindowAtlas in `set`, or nullptr when it has none.
+inline const WindowAtlas* windowsOf(const PreparedSet& set, int problem) {
+  const std::optional<WindowAtlas>& windows = set.windows[problem];
+  return windows ? &*windows : nullptr;
+}
 
 /// The seed of one run, derived from the experiment seed and the run's names (not positions), so adding
 /// an agent or a set leaves every other run's seed unchanged.

@@ -8,6 +8,8 @@
 
 namespace ppp {
 
+class WindowAtlas;
+
 /// Scan cell values (the same numbers as ppp_msgs/ScanBatch).
 constexpr std::int8_t kScanUnknown = -1;      ///< Not in line of sight.
 constexpr std::int8_t kScanFree = 0;          ///< Seen free.
@@ -58,9 +60,10 @@ class SensorModel {
 /// is filled in advance. Either way the values are the same.
 class Scan {
  public:
-  /// A scan computed lazily by `sensor` from `grid` (both must outlive the scan).
+  /// A scan computed lazily by `sensor` from `grid`, or copied from `windows` (the grid's atlas at the sensor's
+  /// range) with the sensor's noise added; all must outlive the scan.
   Scan(const SensorModel& sensor, const Grid& grid, Cell position, Cell goal, bool bumped, int step,
-       std::uint64_t noise_seed);
+       std::uint64_t noise_seed, const WindowAtlas* windows = nullptr);
   /// A scan from received window cells. @throws InvalidArgument when the count is not (2*range+1)^2.
   Scan(int range, const std::vector<std::int8_t>& cells, Cell position, Cell goal, bool bumped, int step);
   /// A scan from `count` received window cells at `cells`. @throws InvalidArgument as above.
@@ -89,6 +92,7 @@ class Scan {
 
   const SensorModel* sensor_ = nullptr;
   const Grid* grid_ = nullptr;
+  const WindowAtlas* windows_ = nullptr;
   std::uint64_t noise_seed_ = 0;
   Cell position_;
   Cell goal_;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -8,10 +9,18 @@
 
 namespace ppp {
 
-/// The noiseless scan window of every cell of one grid, computed once: a simulator that sends every window
-/// copies it instead of testing line of sight cell by cell each step (a 20x20 map at range 2 takes 10 KB).
+/// Largest atlas worth keeping for one map (a 20x20 map at range 2 takes 10 KB, 200x200 1 MB); larger maps
+/// or ranges are scanned step by step.
+constexpr std::size_t kMaxWindowAtlasBytes = std::size_t{1} << 20;
+
+/// The noiseless scan window of every cell of one grid, computed once: each step's scan becomes a copy
+/// (plus noise) instead of a line-of-sight test per window cell.
 class WindowAtlas {
  public:
+  /// Bytes an atlas of `grid` at sensor `range` takes.
+  static std::size_t bytes(const Grid& grid, int range) {
+    return static_cast<std::size_t>(grid.size()) * (2 * range + 1) * (2 * range + 1);
+  }
   /// The windows of every cell of `grid` at sensor `range`. @throws InvalidArgument for a bad range.
   WindowAtlas(const Grid& grid, int range);
   /// Window radius.
