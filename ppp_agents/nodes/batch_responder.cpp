@@ -53,8 +53,12 @@ ppp_msgs::MoveBatch BatchResponder::answer(const ppp_msgs::ScanBatch& batch) {
   next_ = 0;
   for (std::size_t i = 0; i < n; ++i) {
     moves.steps[i] = batch.steps[i];
-    // The agent acted on a few scans from now is fetched into cache meanwhile (1,000 agents do not fit).
-    if (next_ + kPrefetchAhead < episodes_.size()) __builtin_prefetch(episodes_[next_ + kPrefetchAhead].agent);
+    // Scans come in id order, so the agents acted on a few scans from now are known: their state is fetched
+    // into cache meanwhile (a thousand agents' memories do not fit).
+    if (next_ + 2 * kPrefetchAhead < episodes_.size()) __builtin_prefetch(episodes_[next_ + 2 * kPrefetchAhead].agent);
+    if (next_ + kPrefetchAhead < episodes_.size() && i + kPrefetchAhead < n) {
+      episodes_[next_ + kPrefetchAhead].agent->prefetch(toCell(batch.positions[i + kPrefetchAhead]));
+    }
     const std::int8_t* cells = reads_window_ ? batch.cells.data() + i * window : unknown_window_.data();
     try {
       moves.actions[i] = act(batch, i, cells);

@@ -49,6 +49,13 @@ const ExplorerAgent::SightTable& ExplorerAgent::sightTable(int range) {
   return tables.at(static_cast<std::size_t>(range));
 }
 
+void ExplorerAgent::prefetch(Cell position) const {
+  if (sight_ == nullptr) return;
+  memory_.prefetch(position, sight_->range + 1);
+  __builtin_prefetch(&unknown_count_);
+  __builtin_prefetch(unknown_.data());
+}
+
 void ExplorerAgent::collectUnknown(Cell position, int range) {
   unknown_count_ = 0;
   const int reach = range + 1;

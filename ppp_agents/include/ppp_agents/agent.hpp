@@ -31,6 +31,9 @@ class Agent {
   virtual void reset(const EpisodeInfo& info) = 0;
   /// The action for this step.
   virtual Action act(const Scan& scan) = 0;
+  /// Asks the processor to fetch what act() at `position` will read; a host acting on many agents in turn
+  /// calls it a few agents ahead. Only a hint: does nothing by default.
+  virtual void prefetch(Cell position) const { (void)position; }
 };
 
 }  // namespace agents

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -26,6 +27,13 @@ class AgentMemory {
   bool isFree(Cell c) const { return at(c) == kScanFree; }
   /// True when the cell is on the map and not remembered (neither free nor obstacle).
   bool isUnknown(Cell c) const { return at(c) == kScanUnknown; }
+  /// Asks the processor to fetch the remembered cells within `reach` of `c`.
+  void prefetch(Cell c, int reach) const {
+    if (cells_.empty()) return;
+    for (int y = std::max(c.y - reach, 0); y <= std::min(c.y + reach, height_ - 1); ++y) {
+      __builtin_prefetch(cells_.data() + y * width_ + std::max(c.x - reach, 0));
+    }
+  }
   /// Map columns.
   int width() const { return width_; }
   /// Map rows.

@@ -29,6 +29,8 @@ class ExplorerAgent final : public Agent {
   void reset(const EpisodeInfo& info) override;
   /// One greedy (or frontier, or goal) step.
   Action act(const Scan& scan) override;
+  /// Fetches the remembered cells around `position` and the collected-unknown list.
+  void prefetch(Cell position) const override;
 
   /// Which cells hide each cell of a sensor window: for window index i (row-major), the offsets
   /// blockers[begin[i] .. begin[i+1]) from the agent that a line of sight to it crosses.
@@ -57,8 +59,8 @@ class ExplorerAgent final : public Agent {
   Rng rng_{0};
   bool goal_seen_ = false;
   const SightTable* sight_ = nullptr;  // of the range of the last scan
+  int unknown_count_ = 0;  // before unknown_: read with the other per-step fields, not 2 KB away
   std::array<Cell, (2 * kMaxSensorRange + 3) * (2 * kMaxSensorRange + 3)> unknown_{};
-  int unknown_count_ = 0;
   std::vector<Cell> path_;    // long_term: cells still to visit, the frontier last
   std::size_t path_next_ = 0;
 };
