@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # ROS experiment speed: agent-steps per second through the ten separate agent processes at batch sizes
-# 1, 10, 100 and 1000; the default experiment's built-in agents through roslaunch against `ppp experiment`;
+# 1, 10, 100, 1000, 2000 and 4000; the default experiment's built-in agents through roslaunch against `ppp experiment`;
 # and the shipped default with the example planners, with episodes per second through planner_bridge_node.
 # Usage: scripts/bench-ros.sh [--skip-default]   (run scripts/build.sh first). Figures go in BENCHMARKS.md.
 set -o pipefail
@@ -29,10 +29,12 @@ launch() {
   end=$(date +%s.%N)
   awk "BEGIN { printf \"%.2f\", $end - $start }"
 }
+# The batch size experiment.launch uses when none is given.
+default_batch="$(grep -o 'name="batch_size" default="[0-9]*"' launch/experiment.launch | grep -o '[0-9]*"$' | tr -d '"')"
 steps() { awk -F, 'NR > 1 { s += $7 } END { print s }' "$1/results.csv"; }
 
 echo "machine: nproc=$(nproc) cpu='$(grep -m1 '^model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')'"
-for pair in "1 1" "10 2" "100 20" "1000 100"; do
+for pair in "1 1" "10 2" "100 20" "1000 200" "2000 200" "4000 200"; do
   set -- $pair
   seconds=$(launch "$work/b$1" "$2" "$1" false)
   total=$(steps "$work/b$1")
@@ -41,8 +43,8 @@ for pair in "1 1" "10 2" "100 20" "1000 100"; do
 done
 if [ "$skip_default" != "--skip-default" ]; then
   # The ten built-in agents only, against `ppp experiment` (which runs no planner agents).
-  seconds=$(launch "$work/builtin" 1000 1000 true)
-  echo "default experiment, built-in agents, through roslaunch (batch 1000, bag recorded): $seconds s"
+  seconds=$(launch "$work/builtin" 1000 "$default_batch" true)
+  echo "default experiment, built-in agents, through roslaunch (batch $default_batch, bag recorded): $seconds s"
   start=$(date +%s.%N)
   "$PPP_BUILD_DIR/devel/lib/ppp_simulator/ppp" experiment "$work/experiment.yaml" -o "$work/cli" --quiet > /dev/null
   end=$(date +%s.%N)
@@ -50,12 +52,12 @@ if [ "$skip_default" != "--skip-default" ]; then
   cmp -s "$work/builtin/results.csv" "$work/cli/results.csv" && echo "results.csv identical" || echo "results.csv DIFFER"
   # The shipped default: the same plus the two example planners through planner_bridge_node.
   cp config/agents.yaml "$work/agents.yaml"
-  seconds=$(launch "$work/full" 1000 1000 true)
+  seconds=$(launch "$work/full" 1000 "$default_batch" true)
   echo "default experiment with the example planners through roslaunch: $seconds s"
   grep -ho "agent '\(ompl\|optimistic\)': .*episodes/s)" "$work/full.log"
   # The planners alone (the built-in agent nodes idle): episodes per second through the bridge, unloaded.
   grep "type: planner" config/agents.yaml | sed '1i agents:' > "$work/agents.yaml"
-  seconds=$(launch "$work/planners" 1000 1000 false)
+  seconds=$(launch "$work/planners" 1000 "$default_batch" false)
   echo "the two example planners alone, 3 runs per PPP each: $seconds s"
   grep -ho "agent '\(ompl\|optimistic\)': .*episodes/s)" "$work/planners.log"
 fi

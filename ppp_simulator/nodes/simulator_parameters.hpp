@@ -12,7 +12,7 @@ namespace simulator {
 struct SimulatorParameters {
   std::string config;                       ///< Experiment YAML (required), as for `ppp experiment`.
   std::string output_dir;                   ///< Output directory (required); rerun on it to resume.
-  int batch_size = 1000;                    ///< Episodes per agent per message, >= 1.
+  int batch_size = 2000;                    ///< Episodes per agent per message, >= 1.
   double step_timeout = 5.0;                ///< Seconds an agent has to answer a batch.
   double planner_step_timeout = 30.0;       ///< Seconds a planner agent's bridge has to answer a step.
   int timeouts_before_giving_up = 3;        ///< Consecutive unanswered batches after which an agent's runs all fail.
