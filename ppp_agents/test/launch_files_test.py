@@ -108,7 +108,7 @@ class ExperimentLaunchTest(unittest.TestCase):
         self.assertTrue(simulator.required)
         self.assertEqual(self.params['/simulator/output_dir'], os.path.join(os.getcwd(), 'relative', 'out'))
         self.assertTrue(os.path.isfile(self.params['/simulator/config']))
-        self.assertEqual(self.params['/simulator/batch_size'], 1000)
+        self.assertEqual(self.params['/simulator/batch_size'], 2000)
         self.assertEqual(self.params['/simulator/step_timeout'], 5.0)
         self.assertIs(self.params['/simulator/record'], True)
 
