@@ -1,5 +1,6 @@
 #include "episode_recorder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -64,6 +65,7 @@ EpisodeRecorder::EpisodeRecorder(ros::NodeHandle& nh, const SimulatorParameters&
     scan_publishers_[agent] = nh.advertise<sensor_msgs::LaserScan>("/" + graph_name + "/scan", 10);
   }
   bag_start_ = ros::Time::now();
+  latest_stamp_ = bag_start_;
   if (parameters.record) {
     const std::string path = (std::filesystem::path(parameters.output_dir) / "experiment.bag").string();
     try {
@@ -78,6 +80,7 @@ EpisodeRecorder::EpisodeRecorder(ros::NodeHandle& nh, const SimulatorParameters&
 template <typename M>
 void EpisodeRecorder::write(const std::string& topic, const ros::Time& time, const M& message, bool latched) {
   if (!bag_open_) return;
+  latest_stamp_ = std::max(latest_stamp_, time);
   if (!latched) {
     bag_.write(topic, time, message);
     return;
@@ -225,7 +228,9 @@ void EpisodeRecorder::flushResults() {
   if (pending_results_.results.empty()) return;
   pending_results_.header.stamp = ros::Time::now();
   results_publisher_.publish(pending_results_);
-  write("/ppp/results", bag_start_, pending_results_);
+  // Stamped with the latest bag time so far: results follow the recorded episodes, and the bag's last chunk
+  // ends at its latest time (`rosbag info` takes the bag's end from its last chunk).
+  write("/ppp/results", latest_stamp_, pending_results_);
   pending_results_.results.clear();
 }
 

@@ -73,6 +73,7 @@ class EpisodeRecorder {
   int maps_written_ = 0;                           // slots whose map is in the bag
   int budget_;
   ros::Time bag_start_;
+  ros::Time latest_stamp_;  // the latest time written to the bag
   ppp_msgs::EpisodeResults pending_results_;  // not yet published
   ros::WallTime last_results_flush_;
   tf2_ros::TransformBroadcaster broadcaster_;

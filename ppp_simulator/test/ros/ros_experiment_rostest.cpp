@@ -10,6 +10,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -75,6 +76,13 @@ TEST(RosExperimentTest, ResultsEqualTheInProcessRunAndTheBagHoldsTheMaps) {
         "ppp_msgs/EpisodeResults", "/ppp/sets/turns", "ppp_msgs/ProblemSet"}) {
     EXPECT_NE(text.find(expected), std::string::npos) << "rosbag info lacks " << expected << ":\n" << text;
   }
+  // The bag spans the recorded episodes (each step 0.1 s of bag time).
+  // The line reads "duration:    12.3s", or "duration:    1:02s (62s)" from a minute up.
+  const std::size_t duration_at = text.find("duration:");
+  ASSERT_NE(duration_at, std::string::npos) << text;
+  const std::string line = text.substr(duration_at, text.find('\n', duration_at) - duration_at);
+  const std::size_t seconds_at = line.find('(') != std::string::npos ? line.find('(') + 1 : line.find_first_not_of(" ", 9);
+  EXPECT_GT(std::atof(line.c_str() + seconds_at), 1.0) << line;
   // The random agent reads no window, so it is sent none and none is recorded.
   EXPECT_EQ(text.find("/random/scan"), std::string::npos) << text;
   // The first map in the bag is the first recorded PPP: set turns, ppp_000; compare cell by cell.
