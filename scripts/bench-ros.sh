@@ -2,7 +2,8 @@
 # ROS experiment speed: agent-steps per second through the ten separate agent processes at batch sizes
 # 1, 10, 100, 1000, 2000 and 4000; the default experiment's built-in agents through roslaunch against `ppp experiment`;
 # and the shipped default with the example planners, with episodes per second through planner_bridge_node.
-# Usage: scripts/bench-ros.sh [--skip-default]   (run scripts/build.sh first). Figures go in BENCHMARKS.md.
+# Usage: [PAIRS=N] scripts/bench-ros.sh [--skip-default]   (run scripts/build.sh first; PAIRS: how many
+# roslaunch / ppp experiment pairs of the default experiment, 1 by default). Figures go in BENCHMARKS.md.
 set -o pipefail
 skip_default="${1:-}"
 source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
@@ -42,14 +43,19 @@ for pair in "1 1" "10 2" "100 20" "1000 200" "2000 200" "4000 200"; do
     "$(awk "BEGIN { printf \"%.0f\", $total / $seconds }") agent-steps/s"
 done
 if [ "$skip_default" != "--skip-default" ]; then
-  # The ten built-in agents only, against `ppp experiment` (which runs no planner agents).
-  seconds=$(launch "$work/builtin" 1000 "$default_batch" true)
-  echo "default experiment, built-in agents, through roslaunch (batch $default_batch, bag recorded): $seconds s"
-  start=$(date +%s.%N)
-  "$PPP_BUILD_DIR/devel/lib/ppp_simulator/ppp" experiment "$work/experiment.yaml" -o "$work/cli" --quiet > /dev/null
-  end=$(date +%s.%N)
-  echo "default experiment, built-in agents, through ppp experiment: $(awk "BEGIN { printf \"%.2f\", $end - $start }") s"
-  cmp -s "$work/builtin/results.csv" "$work/cli/results.csv" && echo "results.csv identical" || echo "results.csv DIFFER"
+  # The ten built-in agents only, against `ppp experiment` (which runs no planner agents), in PAIRS pairs run
+  # back to back (the VM's speed drifts, so each pair's ratio says more than two separate ranges).
+  for pair in $(seq 1 "${PAIRS:-1}"); do
+    rm -rf "$work/builtin" "$work/cli"
+    seconds=$(launch "$work/builtin" 1000 "$default_batch" true)
+    echo "default experiment, built-in agents, through roslaunch (batch $default_batch, bag recorded): $seconds s"
+    start=$(date +%s.%N)
+    "$PPP_BUILD_DIR/devel/lib/ppp_simulator/ppp" experiment "$work/experiment.yaml" -o "$work/cli" --quiet > /dev/null
+    end=$(date +%s.%N)
+    cli=$(awk "BEGIN { printf \"%.2f\", $end - $start }")
+    echo "default experiment, built-in agents, through ppp experiment: $cli s (ratio $(awk "BEGIN { printf \"%.2f\", $seconds / $cli }"))"
+    cmp -s "$work/builtin/results.csv" "$work/cli/results.csv" && echo "results.csv identical" || echo "results.csv DIFFER"
+  done
   # The shipped default: the same plus the two example planners through planner_bridge_node.
   cp config/agents.yaml "$work/agents.yaml"
   seconds=$(launch "$work/full" 1000 "$default_batch" true)

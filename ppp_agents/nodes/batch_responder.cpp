@@ -72,10 +72,14 @@ ppp_msgs::MoveBatch BatchResponder::answer(const ppp_msgs::ScanBatch& batch) {
   return moves;
 }
 
+std::vector<BatchResponder::Episode>::iterator BatchResponder::firstNotBefore(std::uint32_t id) {
+  return std::lower_bound(episodes_.begin(), episodes_.end(), id,
+                          [](const Episode& e, std::uint32_t key) { return e.id < key; });
+}
+
 BatchResponder::Episode* BatchResponder::find(std::uint32_t id) {
   if (next_ < episodes_.size() && episodes_[next_].id == id) return &episodes_[next_++];
-  const auto it = std::lower_bound(episodes_.begin(), episodes_.end(), id,
-                                   [](const Episode& e, std::uint32_t key) { return e.id < key; });
+  const auto it = firstNotBefore(id);
   if (it == episodes_.end() || it->id != id) return nullptr;
   next_ = static_cast<std::size_t>(it - episodes_.begin()) + 1;
   return &*it;
@@ -109,8 +113,7 @@ void BatchResponder::start(const ppp_msgs::EpisodeStart& start) {
   const EpisodeInfo& info = parsed.info;
   Agent& agent = host_.start(start.episode, info, parsed.prior.get());  // a restarted id gets a fresh agent
   const Episode episode{start.episode, info.width, info.height, info.goal, &agent, 0, false};
-  const auto it = std::lower_bound(episodes_.begin(), episodes_.end(), start.episode,
-                                   [](const Episode& e, std::uint32_t key) { return e.id < key; });
+  const auto it = firstNotBefore(start.episode);
   if (it != episodes_.end() && it->id == start.episode) {
     *it = episode;
   } else {
@@ -136,8 +139,7 @@ void BatchResponder::reject(std::uint32_t episode, std::uint32_t step, const std
   // A duplicate scan leaves its episode alone: the first scan was answered. Otherwise the episode ends with
   // this batch (finishAbsent frees its agent).
   if (kind != "duplicate") {
-    const auto it = std::lower_bound(episodes_.begin(), episodes_.end(), episode,
-                                     [](const Episode& e, std::uint32_t key) { return e.id < key; });
+    const auto it = firstNotBefore(episode);
     if (it != episodes_.end() && it->id == episode) it->rejected = true;
   }
   if (rejections_[kind]++ == 0) {

@@ -44,6 +44,7 @@ class BatchResponder {
     bool rejected;        // a scan of it was rejected: it ends with this batch
   };
   void start(const ppp_msgs::EpisodeStart& start);
+  std::vector<Episode>::iterator firstNotBefore(std::uint32_t id);  // in episodes_, by id
   Episode* find(std::uint32_t id);
   std::uint8_t act(const ppp_msgs::ScanBatch& batch, std::size_t i, const std::int8_t* window);
   void reject(std::uint32_t episode, std::uint32_t step, const std::string& kind, const std::string& what);
