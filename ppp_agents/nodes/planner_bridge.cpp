@@ -12,9 +12,10 @@
 #include "agent_node_parameters.hpp"
 #include "batch_responder.hpp"
 #include "ppp_core/error.hpp"
-#include "ppp_core/scan_rays.hpp"
 #include "ppp_core/sensor.hpp"
+#include "ppp_msgs/conversions.h"
 #include "ppp_msgs/node_liveness.h"
+#include "ppp_msgs/node_parameters.h"
 #include "scan_batch_checks.hpp"
 
 namespace ppp {
@@ -22,15 +23,10 @@ namespace agents {
 
 namespace {
 
-constexpr int kLaserRays = 72;
 constexpr double kProbePeriod = 0.2;  // seconds between asks whether the planner's process is alive
 
 /// A frame name without a leading slash (tf2 frames have none).
 std::string bareFrame(const std::string& frame) { return frame.empty() || frame[0] != '/' ? frame : frame.substr(1); }
-
-void requirePositive(double value, const char* name) {
-  if (!(value > 0)) throw InvalidArgument(name, "expected a positive number, got " + std::to_string(value));
-}
 
 /// The type the master has for `topic` ("" when nobody advertises it).
 std::string advertisedType(const std::string& topic) {
@@ -62,9 +58,9 @@ BridgeParameters readBridgeParameters(const ros::NodeHandle& nh, const std::stri
   readParameter(nh, "map_frame", &p.map_frame, "a frame name");
   p.base_frame = bareFrame(ns == "/" ? "robot/base_link" : ns + "/robot/base_link");
   readParameter(nh, "base_frame", &p.base_frame, "a frame name");
-  requirePositive(p.resolution, "~resolution");
-  requirePositive(p.plan_timeout, "~plan_timeout");
-  requirePositive(p.connect_timeout, "~connect_timeout");
+  ppp_msgs::requirePositive(p.resolution, "~resolution");
+  ppp_msgs::requirePositive(p.plan_timeout, "~plan_timeout");
+  ppp_msgs::requirePositive(p.connect_timeout, "~connect_timeout");
   p.map_frame = bareFrame(p.map_frame);
   p.base_frame = bareFrame(p.base_frame);
   if (p.map_frame.empty()) throw InvalidArgument("~map_frame", "expected a non-empty frame name");
@@ -361,15 +357,8 @@ void PlannerBridge::publishState(const ros::Time& stamp, Cell robot, const std::
   odom.pose.pose.orientation.w = 1.0;
   odom_.publish(odom);
 
-  sensor_msgs::LaserScan laser;
+  sensor_msgs::LaserScan laser = ppp_msgs::toLaserScan(window, range, parameters_.resolution, parameters_.base_frame);
   laser.header.stamp = stamp;
-  laser.header.frame_id = parameters_.base_frame;
-  laser.angle_increment = static_cast<float>(2.0 * M_PI / kLaserRays);
-  laser.angle_max = laser.angle_increment * (kLaserRays - 1);
-  laser.range_max = static_cast<float>((range + 0.5) * std::sqrt(2.0) * parameters_.resolution);
-  for (float r : windowRanges(window, range, kLaserRays)) {
-    laser.ranges.push_back(std::isinf(r) ? r : r * static_cast<float>(parameters_.resolution));
-  }
   scan_.publish(laser);
 }
 

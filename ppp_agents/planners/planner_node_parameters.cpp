@@ -1,17 +1,14 @@
 #include "planner_node_parameters.hpp"
 
 #include "ppp_core/error.hpp"
+#include "ppp_msgs/node_parameters.h"
 
 namespace ppp {
 namespace planners {
 
 namespace {
 
-/// Reads an optional parameter of type T; a present parameter of another type is an error.
-template <typename T>
-void readParameter(const ros::NodeHandle& nh, const std::string& name, T* value, const std::string& expected) {
-  if (nh.hasParam(name) && !nh.getParam(name, *value)) throw InvalidArgument("~" + name, "expected " + expected);
-}
+using ppp_msgs::readParameter;
 
 void readFrame(const ros::NodeHandle& nh, const std::string& name, std::string* frame) {
   const std::string expected = "a tf frame name without a leading slash";

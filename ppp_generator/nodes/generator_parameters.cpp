@@ -3,18 +3,14 @@
 #include <vector>
 
 #include "ppp_core/error.hpp"
+#include "ppp_msgs/node_parameters.h"
 
 namespace ppp {
 namespace generator {
 
 namespace {
 
-/// Reads an optional parameter of type T; a present parameter of another type is an error.
-template <typename T>
-void readParameter(const ros::NodeHandle& nh, const std::string& name, T* value, const char* expected) {
-  if (!nh.hasParam(name)) return;
-  if (!nh.getParam(name, *value)) throw InvalidArgument("~" + name, std::string("expected ") + expected);
-}
+using ppp_msgs::readParameter;
 
 std::optional<Cell> readCell(const ros::NodeHandle& nh, const std::string& name) {
   std::vector<int> pair;

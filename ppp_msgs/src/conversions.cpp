@@ -7,6 +7,7 @@
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/map_frame.hpp"
+#include "ppp_core/scan_rays.hpp"
 
 namespace ppp_msgs {
 
@@ -190,6 +191,21 @@ ppp::Problem fromMessage(const ppp_msgs::Problem& message) {
                                    (decoded.isObstacle(cell) ? "obstacle" : "free"));
   }
   return problem;
+}
+
+sensor_msgs::LaserScan toLaserScan(const std::int8_t* window, int range, double resolution,
+                                   const std::string& frame_id) {
+  sensor_msgs::LaserScan laser;
+  laser.header.frame_id = frame_id;
+  laser.angle_min = 0.0f;
+  laser.angle_increment = static_cast<float>(2.0 * M_PI / kLaserRays);
+  laser.angle_max = laser.angle_increment * (kLaserRays - 1);
+  laser.range_min = 0.0f;
+  laser.range_max = static_cast<float>((range + 0.5) * std::sqrt(2.0) * resolution);
+  for (float r : ppp::windowRanges(window, range, kLaserRays)) {
+    laser.ranges.push_back(std::isinf(r) ? r : r * static_cast<float>(resolution));
+  }
+  return laser;
 }
 
 }  // namespace ppp_msgs

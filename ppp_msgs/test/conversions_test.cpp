@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -321,6 +322,23 @@ TEST(ProblemMessage, FromMessageRejectsBadFields) {
   message = good;
   message.max_obstacles = static_cast<std::uint32_t>(-1);
   expectInvalid([&] { ppp_msgs::fromMessage(message); }, "max_obstacles");
+}
+
+}  // namespace
+
+namespace {
+
+TEST(ToLaserScan, RaysInMetresFromTheWindow) {
+  // Range 1 (3x3 window, row-major, y down): an obstacle east of the robot, the rest free.
+  const std::vector<std::int8_t> window = {0, 0, 0, 0, 0, 100, 0, 0, 0};
+  const sensor_msgs::LaserScan laser = ppp_msgs::toLaserScan(window.data(), 1, 0.5, "explorer/base_link");
+  EXPECT_EQ(laser.header.frame_id, "explorer/base_link");
+  ASSERT_EQ(laser.ranges.size(), static_cast<std::size_t>(ppp_msgs::kLaserRays));
+  EXPECT_FLOAT_EQ(laser.angle_increment, static_cast<float>(2.0 * M_PI / ppp_msgs::kLaserRays));
+  EXPECT_FLOAT_EQ(laser.range_max, static_cast<float>(1.5 * std::sqrt(2.0) * 0.5));
+  // East (ray 0) meets the obstacle half a cell out: 0.25 m; west (ray 36) leaves the window: no return.
+  EXPECT_NEAR(laser.ranges[0], 0.25f, 0.03f);
+  EXPECT_TRUE(std::isinf(laser.ranges[ppp_msgs::kLaserRays / 2]));
 }
 
 }  // namespace

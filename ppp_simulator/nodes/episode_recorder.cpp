@@ -1,7 +1,6 @@
 #include "episode_recorder.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <filesystem>
 
 #include <sensor_msgs/LaserScan.h>
@@ -12,14 +11,12 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/map_frame.hpp"
 #include "ppp_msgs/conversions.h"
-#include "ppp_core/scan_rays.hpp"
 
 namespace ppp {
 namespace simulator {
 
 namespace {
 
-constexpr int kLaserRays = 72;
 constexpr double kSecondsPerStep = 0.1;     // bag time of one recorded step
 constexpr int kPathEveryStep = 10;          // a recorded path is written every this many steps (and at step 0)
 constexpr std::size_t kResultsPerMessage = 1000;  // results grouped in one /ppp/results message at most
@@ -175,17 +172,8 @@ void EpisodeRecorder::recordScans(const std::string& agent, const std::vector<Sc
     }
 
     if (s.cells.empty()) continue;  // an agent that reads no window (random) is sent none: no scan to show
-    sensor_msgs::LaserScan laser;
+    sensor_msgs::LaserScan laser = ppp_msgs::toLaserScan(s.cells.data(), s.range, parameters_.resolution, base_link);
     laser.header.stamp = stamp;
-    laser.header.frame_id = base_link;
-    laser.angle_min = 0.0f;
-    laser.angle_increment = static_cast<float>(2.0 * M_PI / kLaserRays);
-    laser.angle_max = laser.angle_increment * (kLaserRays - 1);
-    laser.range_min = 0.0f;
-    laser.range_max = static_cast<float>((s.range + 0.5) * std::sqrt(2.0) * parameters_.resolution);
-    for (float r : windowRanges(s.cells.data(), s.range, kLaserRays)) {
-      laser.ranges.push_back(std::isinf(r) ? r : r * static_cast<float>(parameters_.resolution));
-    }
     scan_publishers_.at(agent).publish(laser);
     write("/" + agents::agentGraphName(agent) + "/scan", stamp, laser);
   }

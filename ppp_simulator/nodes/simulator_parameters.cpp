@@ -3,23 +3,13 @@
 #include <sstream>
 
 #include "ppp_core/error.hpp"
+#include "ppp_msgs/node_parameters.h"
 
 namespace ppp {
 namespace simulator {
 
-namespace {
-
-template <typename T>
-void readParameter(const ros::NodeHandle& nh, const std::string& name, T* value, const char* expected) {
-  if (!nh.hasParam(name)) return;
-  if (!nh.getParam(name, *value)) throw InvalidArgument("~" + name, std::string("expected ") + expected);
-}
-
-void requirePositive(double value, const char* name) {
-  if (!(value > 0)) throw InvalidArgument(name, "expected a positive number, got " + std::to_string(value));
-}
-
-}  // namespace
+using ppp_msgs::readParameter;
+using ppp_msgs::requirePositive;
 
 SimulatorParameters readSimulatorParameters(const ros::NodeHandle& nh) {
   SimulatorParameters p;

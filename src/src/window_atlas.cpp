@@ -3,7 +3,7 @@
 namespace ppp {
 
 WindowAtlas::WindowAtlas(const Grid& grid, int range)
-    : range_(range), cells_((2 * range + 1) * (2 * range + 1)), width_(grid.width()) {
+    : cells_((2 * range + 1) * (2 * range + 1)), width_(grid.width()) {
   const SensorModel sensor(SensorOptions{range, 0.0});
   windows_.resize(static_cast<std::size_t>(grid.size()) * cells_);
   for (int y = 0; y < grid.height(); ++y) {

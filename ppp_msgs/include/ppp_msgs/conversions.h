@@ -1,6 +1,7 @@
 #pragma once
 
 #include <nav_msgs/OccupancyGrid.h>
+#include <sensor_msgs/LaserScan.h>
 
 #include <cstdint>
 #include <string>
@@ -36,6 +37,15 @@ nav_msgs::OccupancyGrid toOccupancyGrid(const ppp::Grid& grid, double resolution
 ///         map.data, map.data[i]) for sides outside [kMinGridSide, kMaxGridSide], a non-positive
 ///         resolution, a data size other than width*height, or a value outside [-1, 100].
 ppp::Grid fromOccupancyGrid(const nav_msgs::OccupancyGrid& map);
+
+/// Rays of the laser scans made by toLaserScan (one every 5 degrees).
+constexpr int kLaserRays = 72;
+
+/// A scan window (ppp::SensorModel's cells, `range` its radius) as the range sensor standard ROS consumers
+/// expect: kLaserRays rays from ppp::windowRanges, in metres at `resolution` metres per cell, in `frame_id` (the
+/// agent's base_link). The header stamp is left zero for the caller to set.
+sensor_msgs::LaserScan toLaserScan(const std::int8_t* window, int range, double resolution,
+                                   const std::string& frame_id);
 
 /// The descriptor as a message; coordinates stay in the genotype's grid convention (y down).
 ppp_msgs::Obstacle toMessage(const ppp::Obstacle& obstacle);

@@ -23,8 +23,6 @@ class WindowAtlas {
   }
   /// The windows of every cell of `grid` at sensor `range`. @throws InvalidArgument for a bad range.
   WindowAtlas(const Grid& grid, int range);
-  /// Window radius.
-  int range() const { return range_; }
   /// Cells in one window, (2 * range + 1)^2.
   int cells() const { return cells_; }
   /// SensorModel::see(grid, position) for a cell of the grid.
@@ -33,7 +31,6 @@ class WindowAtlas {
   }
 
  private:
-  int range_;
   int cells_;
   int width_;
   std::vector<std::int8_t> windows_;  // cells_ values per grid cell, in the grid's cell order
