@@ -12,13 +12,15 @@ void WallFollowerAgent::reset(const EpisodeInfo& info) {
   navigator_.reset(info.width, info.height);
   goal_seen_ = false;
   engaged_ = false;
-  const int dx = info.goal.x - info.start.x;
-  const int dy = info.goal.y - info.start.y;
-  if (std::abs(dx) >= std::abs(dy)) {
-    heading_ = dx >= 0 ? 1 : 3;  // East or West
-  } else {
-    heading_ = dy >= 0 ? 2 : 0;  // South or North
-  }
+  goal_ = info.goal;
+  heading_ = headingTowards(info.start, info.goal);
+}
+
+int WallFollowerAgent::headingTowards(Cell from, Cell goal) {
+  const int dx = goal.x - from.x;
+  const int dy = goal.y - from.y;
+  if (std::abs(dx) >= std::abs(dy)) return dx >= 0 ? 1 : 3;  // East or West
+  return dy >= 0 ? 2 : 0;                                     // South or North
 }
 
 Action WallFollowerAgent::act(const Scan& scan) {
@@ -34,6 +36,7 @@ Action WallFollowerAgent::act(const Scan& scan) {
   const int towards_wall = side_ == Side::Left ? 3 : 1;  // quarter turns clockwise: left = 3, right = 1
   const int away_from_wall = 4 - towards_wall;
   if (!engaged_) {
+    heading_ = headingTowards(scan.position(), goal_);
     if (!wall(heading_)) return kMoves[heading_];
     engaged_ = true;
     heading_ = (heading_ + away_from_wall) % 4;  // the wall just hit is now on the agent's side

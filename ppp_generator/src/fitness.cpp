@@ -66,18 +66,31 @@ const Entry kEntries[] = {
 std::vector<FitnessInfo> fitnessCatalogue() {
   std::vector<FitnessInfo> catalogue;
   for (const Entry& e : kEntries) catalogue.push_back({e.name, e.maximise, e.description});
+  catalogue.push_back({kFailureFitness, true,
+                       "share of failed episodes of the named agents (agents, runs_per_eval; maximised)"});
   return catalogue;
 }
 
 std::string fitnessNames() {
   std::string names;
-  for (const Entry& e : kEntries) names += (names.empty() ? "" : ", ") + std::string(e.name);
+  for (const FitnessInfo& info : fitnessCatalogue()) names += (names.empty() ? "" : ", ") + info.name;
   return names;
 }
 
 Fitness makeFitness(const std::string& name, const FitnessParameters& parameters) {
   for (const Entry& e : kEntries) {
-    if (name == e.name) return Fitness{e.name, e.maximise, e.make(parameters)};
+    if (name == e.name) return Fitness{e.name, e.maximise, e.make(parameters), {}, 1};
+  }
+  if (name == kFailureFitness) {
+    throw InvalidArgument("fitness", "'failure' plays episodes of an agent panel; it is built by the episode "
+                                     "engine (ppp generate, ppp experiment, the simulator node), not on its own");
+  }
+  throw InvalidArgument("fitness", "unknown fitness '" + name + "'; valid: " + fitnessNames());
+}
+
+bool fitnessMaximises(const std::string& name) {
+  for (const FitnessInfo& info : fitnessCatalogue()) {
+    if (name == info.name) return info.maximise;
   }
   throw InvalidArgument("fitness", "unknown fitness '" + name + "'; valid: " + fitnessNames());
 }

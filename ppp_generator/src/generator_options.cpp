@@ -1,5 +1,6 @@
 #include "ppp_generator/generator_options.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -38,10 +39,75 @@ void readWeights(YamlMapReader& parent, DifficultyWeights* w) {
   reader.rejectUnknownKeys();
 }
 
+/// A flow-style YAML list of plain names.
+std::string yamlList(const std::vector<std::string>& names) {
+  std::string text = "[";
+  for (std::size_t i = 0; i < names.size(); ++i) text += (i > 0 ? ", " : "") + names[i];
+  return text + "]";
+}
+
+/// The failure fitness's and the archive's options.
+void validateHuntOptions(const GeneratorOptions& o) {
+  const bool failure = o.fitness == kFailureFitness;
+  if (failure && o.agents.empty()) {
+    throw InvalidArgument("agents", "empty panel: the failure fitness needs at least one agent name");
+  }
+  if (!failure && !o.agents.empty()) throw InvalidArgument("agents", "only the failure fitness uses an agent panel");
+  for (std::size_t i = 0; i < o.agents.size(); ++i) {
+    if (o.agents[i].empty()) throw InvalidArgument("agents", "empty agent name");
+    for (std::size_t j = 0; j < i; ++j) {
+      if (o.agents[i] == o.agents[j]) throw InvalidArgument("agents", "'" + o.agents[i] + "' named twice");
+    }
+  }
+  if (o.runs_per_eval < 1 || o.runs_per_eval > kMaxRunsPerEval) {
+    throw InvalidArgument("runs_per_eval", "expected runs in [1, " + std::to_string(kMaxRunsPerEval) + "], got " +
+                                               std::to_string(o.runs_per_eval));
+  }
+  if (o.archive != kNoArchive && o.archive != kMapElitesArchive) {
+    throw InvalidArgument("archive", "unknown archive '" + o.archive + "'; valid: none, map_elites");
+  }
+  if (o.features.size() < 2) {
+    throw InvalidArgument("features", "expected two or more character names, got " + std::to_string(o.features.size()));
+  }
+  const std::vector<std::string>& names = characterNames();
+  for (std::size_t i = 0; i < o.features.size(); ++i) {
+    if (std::find(names.begin(), names.end(), o.features[i]) == names.end()) {
+      std::string valid;
+      for (const std::string& n : names) valid += (valid.empty() ? "" : ", ") + n;
+      throw InvalidArgument("features", "unknown character '" + o.features[i] + "'; valid: " + valid);
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (o.features[i] == o.features[j]) throw InvalidArgument("features", "'" + o.features[i] + "' named twice");
+    }
+  }
+  if (o.bins < 2 || o.bins > kMaxBins) {
+    throw InvalidArgument("bins", "expected bins per feature in [2, " + std::to_string(kMaxBins) + "], got " +
+                                      std::to_string(o.bins));
+  }
+  double cells = 1.0;
+  for (std::size_t i = 0; i < o.features.size(); ++i) cells *= o.bins;
+  if (cells > static_cast<double>(kMaxArchiveCells)) {
+    throw InvalidArgument("bins", "bins^features = " + formatShortest(cells) + " archive cells; at most " +
+                                      std::to_string(kMaxArchiveCells));
+  }
+}
+
 }  // namespace
 
 void GeneratorOptions::validate() const {
-  makeFitness(fitness, FitnessParameters{weights, seed});
+  if (fitness == kFailureFitness) {
+    fitnessMaximises(fitness);
+  } else {
+    makeFitness(fitness, FitnessParameters{weights, seed});
+  }
+  validateHuntOptions(*this);
+  if (replacement != kCrowdingReplacement && replacement != kTournamentReplacement) {
+    throw InvalidArgument("replacement", "unknown rule '" + replacement + "'; valid: crowding, tournament");
+  }
+  if (crowding_window < 2 || crowding_window > kMaxCrowdingWindow) {
+    throw InvalidArgument("crowding_window", "expected pool members in [2, " + std::to_string(kMaxCrowdingWindow) +
+                                                 "], got " + std::to_string(crowding_window));
+  }
   weights.validate();
   if (population < 2) throw InvalidArgument("population", "expected at least 2, got " + std::to_string(population));
   if (matings < 0) throw InvalidArgument("matings", "expected a count >= 0, got " + std::to_string(matings));
@@ -81,6 +147,14 @@ void applyGeneratorYaml(YamlMapReader& reader, GeneratorOptions* o) {
   unsigned long seed = 0;
   if (reader.read("seed", &seed)) o->seed = seed;
   reader.read("characters", &o->characters);
+  reader.read("replacement", &o->replacement);
+  reader.read("crowding_window", &o->crowding_window);
+  reader.read("agents", &o->agents);
+  reader.read("agents_file", &o->agents_file);
+  reader.read("runs_per_eval", &o->runs_per_eval);
+  reader.read("archive", &o->archive);
+  reader.read("features", &o->features);
+  reader.read("bins", &o->bins);
   readWeights(reader, &o->weights);
 }
 
@@ -109,6 +183,14 @@ std::string generatorOptionsYaml(const GeneratorOptions& o) {
       << "max_block_side: " << o.obstacle_shapes.max_block_side << "\n"
       << "seed: " << o.seed << "\n"
       << "characters: " << o.characters << "\n"
+      << "replacement: " << o.replacement << "\n"
+      << "crowding_window: " << o.crowding_window << "\n"
+      << "agents: " << yamlList(o.agents) << "\n"
+      << "agents_file: '" << o.agents_file << "'\n"
+      << "runs_per_eval: " << o.runs_per_eval << "\n"
+      << "archive: " << o.archive << "\n"
+      << "features: " << yamlList(o.features) << "\n"
+      << "bins: " << o.bins << "\n"
       << "weights:\n"
       << "  start: " << formatShortest(o.weights.start) << "\n"
       << "  centre: " << formatShortest(o.weights.centre) << "\n"

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "ppp_core/error.hpp"
-#include "ppp_core/random_problem.hpp"
+#include "ppp_generator/diversity.hpp"
 
 namespace ppp {
 namespace generator {
@@ -14,95 +14,37 @@ namespace {
 
 constexpr long kMaxInitialRedraws = 1000000;
 
-/// FNV-1a over the grid cells.
-std::uint64_t hashCells(const Grid& grid) {
-  std::uint64_t hash = 0xcbf29ce484222325ULL;
-  for (std::uint8_t cell : grid.cells()) hash = (hash ^ cell) * 0x100000001b3ULL;
-  return hash;
-}
-
 }  // namespace
 
-GeneticAlgorithm::GeneticAlgorithm(const GeneratorOptions& options)
-    : options_(options),
-      fitness_((options.validate(), makeFitness(options.fitness, FitnessParameters{options.weights, options.seed}))),
-      rng_(options.seed) {
-  shape_ = Problem::empty(options.width, options.height, options.max_obstacles);
-  shape_.start = options.startCell();
-  shape_.goal = options.goalCell();
-}
-
-bool GeneticAlgorithm::evaluate(Individual* individual) {
-  individual->grid = decodeGrid(individual->problem);
-  individual->grid_hash = hashCells(individual->grid);
-  const DpaResult& dpa = dpa_.solve(individual->grid, individual->problem.start, individual->problem.goal);
-  if (!dpa.reachable) return false;
-  individual->value = fitness_.value(individual->problem, individual->grid, dpa);
-  individual->score = fitness_.score(individual->value);
-  return true;
-}
-
-bool GeneticAlgorithm::inPool(const std::vector<Individual>& pool, const Individual& candidate) const {
-  for (const Individual& member : pool) {
-    if (member.grid_hash == candidate.grid_hash && member.grid == candidate.grid) return true;
-  }
-  return false;
-}
-
-Problem GeneticAlgorithm::randomChromosome() {
-  Problem problem = shape_;
-  const int count = options_.max_obstacles == 0 ? 0 : static_cast<int>(rng_.uniformInt(1, options_.max_obstacles));
+std::vector<int> drawDistinct(Rng* rng, int size, int count) {
+  std::vector<int> order(static_cast<std::size_t>(size));
+  std::iota(order.begin(), order.end(), 0);
+  count = std::min(count, size);
   for (int i = 0; i < count; ++i) {
-    problem.obstacles.push_back(randomObstacle(rng_, shape_.width, shape_.height, options_.obstacle_shapes));
+    const auto j = i + static_cast<int>(rng->below(static_cast<std::uint64_t>(size - i)));
+    std::swap(order[i], order[j]);
   }
-  return problem;
+  order.resize(static_cast<std::size_t>(count));
+  return order;
 }
 
-void GeneticAlgorithm::crossover(const Problem& a, const Problem& b, Problem* child_a, Problem* child_b) {
-  // One-point crossover of variable-length lists: child_a = a[0, i) + b[j, end), child_b = b[0, j) + a[i, end).
-  const auto cut_a = static_cast<std::size_t>(rng_.below(a.obstacles.size() + 1));
-  const auto cut_b = static_cast<std::size_t>(rng_.below(b.obstacles.size() + 1));
-  *child_a = shape_;
-  *child_b = shape_;
-  child_a->obstacles.assign(a.obstacles.begin(), a.obstacles.begin() + cut_a);
-  child_a->obstacles.insert(child_a->obstacles.end(), b.obstacles.begin() + cut_b, b.obstacles.end());
-  child_b->obstacles.assign(b.obstacles.begin(), b.obstacles.begin() + cut_b);
-  child_b->obstacles.insert(child_b->obstacles.end(), a.obstacles.begin() + cut_a, a.obstacles.end());
-  for (Problem* child : {child_a, child_b}) {
-    if (static_cast<int>(child->obstacles.size()) > options_.max_obstacles) {
-      child->obstacles.resize(static_cast<std::size_t>(options_.max_obstacles));
-    }
-  }
-}
+GeneticAlgorithm::GeneticAlgorithm(const GeneratorOptions& options)
+    : GeneticAlgorithm(options, (options.validate(),
+                                 makeFitness(options.fitness, FitnessParameters{options.weights, options.seed}))) {}
 
-void GeneticAlgorithm::mutate(Problem* problem) {
-  if (options_.max_obstacles == 0 || !rng_.bernoulli(options_.mutation_rate)) return;
-  auto& genes = problem->obstacles;
-  const bool can_add = static_cast<int>(genes.size()) < options_.max_obstacles;
-  const bool can_remove = !genes.empty();
-  // 0: change one descriptor, 1: add one, 2: remove one; impossible kinds fall back to change or add.
-  int kind = static_cast<int>(rng_.below(3));
-  if (kind == 2 && !can_remove) kind = 1;
-  if (kind == 1 && !can_add) kind = 0;
-  if (kind == 0 && genes.empty()) kind = 1;
-  const Obstacle fresh = randomObstacle(rng_, shape_.width, shape_.height, options_.obstacle_shapes);
-  if (kind == 0) {
-    genes[rng_.below(genes.size())] = fresh;
-  } else if (kind == 1) {
-    genes.insert(genes.begin() + static_cast<long>(rng_.below(genes.size() + 1)), fresh);
-  } else {
-    genes.erase(genes.begin() + static_cast<long>(rng_.below(genes.size())));
-  }
-}
+GeneticAlgorithm::GeneticAlgorithm(const GeneratorOptions& options, Fitness fitness)
+    : options_((options.validate(), options)),
+      fitness_(std::move(fitness)),
+      rng_(options.seed),
+      breeder_(options_, fitness_, &rng_) {}
 
-std::vector<Individual> GeneticAlgorithm::run(const ProgressCallback& progress, long progress_interval) {
-  stats_ = GenerationStats{};
+std::vector<Individual> GeneticAlgorithm::initialPool() {
   std::vector<Individual> pool;
   pool.reserve(static_cast<std::size_t>(options_.population));
   while (static_cast<int>(pool.size()) < options_.population) {
     Individual individual;
-    individual.problem = randomChromosome();
-    if (evaluate(&individual) && !inPool(pool, individual)) {
+    individual.problem = breeder_.randomChromosome();
+    if (breeder_.decode(&individual) && !gridInPool(pool, individual)) {
       pool.push_back(std::move(individual));
     } else if (++stats_.initial_redraws > kMaxInitialRedraws) {
       throw InvalidArgument("population", "only " + std::to_string(pool.size()) + " distinct solvable PPPs in " +
@@ -111,50 +53,96 @@ std::vector<Individual> GeneticAlgorithm::run(const ProgressCallback& progress, 
                                               "or enlarge the grid");
     }
   }
+  std::vector<Individual*> members;
+  for (Individual& i : pool) members.push_back(&i);
+  breeder_.score(members);
+  return pool;
+}
+
+void GeneticAlgorithm::replace(std::vector<Individual>* pool, const std::vector<int>& tournament, Individual* child,
+                               int* replaced) {
+  if (gridInPool(*pool, *child)) {
+    ++stats_.children_duplicate;
+    return;
+  }
+  if (options_.replacement == kTournamentReplacement) {
+    const int slot = tournament[tournament.size() - 1 - static_cast<std::size_t>(*replaced)];
+    (*pool)[static_cast<std::size_t>(slot)] = *child;
+    ++*replaced;
+    ++stats_.children_accepted;
+    return;
+  }
+  // Restricted tournament replacement: the most similar of a random window competes with the child.
+  const std::vector<int> window = drawDistinct(&rng_, static_cast<int>(pool->size()), options_.crowding_window);
+  int nearest = window[0];
+  double nearest_difference = 2.0;
+  for (int member : window) {
+    const double d = cellDifference((*pool)[static_cast<std::size_t>(member)].grid, child->grid);
+    if (d < nearest_difference) nearest_difference = d, nearest = member;
+  }
+  Individual& rival = (*pool)[static_cast<std::size_t>(nearest)];
+  if (child->score >= rival.score) {
+    rival = *child;
+    ++stats_.children_accepted;
+  } else {
+    ++stats_.children_rejected;
+  }
+}
+
+std::vector<Individual> GeneticAlgorithm::run(const ProgressCallback& progress, long progress_interval) {
+  stats_ = GenerationStats{};
+  std::vector<Individual> pool = initialPool();
   const int tournament_size = std::min(options_.tournament_size, options_.population);
-  std::vector<int> order(pool.size());
-  std::vector<int> tournament;
-  Individual children[2];
   auto best = [&]() {
-    double value = pool[0].value;
-    double score = pool[0].score;
-    for (const Individual& i : pool) {
-      if (i.score > score) score = i.score, value = i.value;
-    }
-    return value;
+    const auto fittest = std::max_element(pool.begin(), pool.end(), [](const Individual& a, const Individual& b) {
+      return a.score < b.score;
+    });
+    return fittest->value;
   };
-  for (long mating = 0; mating < options_.matings; ++mating) {
-    // Tournament: distinct members by a partial Fisher-Yates shuffle of the pool indices.
-    std::iota(order.begin(), order.end(), 0);
-    tournament.clear();
-    for (int i = 0; i < tournament_size; ++i) {
-      const auto j = i + static_cast<int>(rng_.below(order.size() - i));
-      std::swap(order[i], order[j]);
-      tournament.push_back(order[i]);
-    }
-    // Fittest first; ties keep the draw order.
-    std::stable_sort(tournament.begin(), tournament.end(),
-                     [&](int a, int b) { return pool[a].score > pool[b].score; });
-    crossover(pool[tournament[0]].problem, pool[tournament[1]].problem, &children[0].problem,
-              &children[1].problem);
-    int replaced = 0;
-    for (Individual& child : children) {
-      mutate(&child.problem);
-      if (!evaluate(&child)) {
-        ++stats_.children_pruned;  // Wei's pruning: an unsolvable child never enters the pool
-        continue;
+  struct Mating {
+    std::vector<int> tournament;  // fittest first
+    Individual children[2];
+    bool valid[2] = {false, false};
+    bool unscored[2] = {false, false};  // a batch fitness skipped it: its grid was already in the pool
+  };
+  const long round_size = breeder_.roundSize();
+  std::vector<Mating> round;
+  for (long begin = 0; begin < options_.matings; begin += round_size) {
+    const long count = std::min(round_size, options_.matings - begin);
+    round.assign(static_cast<std::size_t>(count), Mating{});
+    std::vector<Individual*> to_score;
+    for (Mating& m : round) {
+      m.tournament = drawDistinct(&rng_, static_cast<int>(pool.size()), tournament_size);
+      // Fittest first; ties keep the draw order.
+      std::stable_sort(m.tournament.begin(), m.tournament.end(),
+                       [&](int a, int b) { return pool[a].score > pool[b].score; });
+      breeder_.crossover(pool[m.tournament[0]].problem, pool[m.tournament[1]].problem, &m.children[0].problem,
+                         &m.children[1].problem);
+      for (int c = 0; c < 2; ++c) {
+        breeder_.mutate(&m.children[c].problem);
+        m.valid[c] = breeder_.decode(&m.children[c]);
+        if (!m.valid[c]) {
+          ++stats_.children_pruned;  // Wei's pruning: an unsolvable child never enters the pool
+        } else if (breeder_.batched()) {
+          m.unscored[c] = gridInPool(pool, m.children[c]);
+          if (!m.unscored[c]) to_score.push_back(&m.children[c]);
+        }
       }
-      if (inPool(pool, child)) {
-        ++stats_.children_duplicate;
-        continue;
-      }
-      ++stats_.children_accepted;
-      pool[tournament[tournament_size - 1 - replaced]] = child;
-      ++replaced;
     }
-    ++stats_.matings;
-    if (progress && progress_interval > 0 && (mating + 1) % progress_interval == 0) {
-      progress(mating + 1, options_.matings, best());
+    breeder_.score(to_score);
+    for (long k = 0; k < count; ++k) {
+      Mating& m = round[static_cast<std::size_t>(k)];
+      int replaced = 0;
+      for (int c = 0; c < 2; ++c) {
+        if (m.unscored[c]) {
+          ++stats_.children_duplicate;
+        } else if (m.valid[c]) {
+          replace(&pool, m.tournament, &m.children[c], &replaced);
+        }
+      }
+      ++stats_.matings;
+      const long done = begin + k + 1;
+      if (progress && progress_interval > 0 && done % progress_interval == 0) progress(done, options_.matings, best());
     }
   }
   if (progress) progress(options_.matings, options_.matings, best());

@@ -12,6 +12,7 @@
 #include "ppp_core/picture.hpp"
 #include "ppp_core/ppp_file.hpp"
 #include "ppp_core/text_file.hpp"
+#include "ppp_generator/diversity.hpp"
 #include "ppp_generator/newick.hpp"
 #include "ppp_generator/tree_json.hpp"
 #include "ppp_generator/tree_html.hpp"
@@ -30,7 +31,16 @@ constexpr int kThumbnailCellPixels = 4;
 std::vector<std::string> setCsvHeader() {
   std::vector<std::string> header{"id", "file", "fitness", "fitness_value"};
   for (const std::string& name : characterNames()) header.push_back(name);
+  header.push_back("nearest_difference");
   return header;
+}
+
+/// Fills the set's diversity figures from its PPPs.
+void measureDiversity(ProblemSet* set) {
+  std::vector<Grid> grids;
+  for (const Problem& p : set->problems) grids.push_back(decodeGrid(p));
+  set->nearest = nearestDifferences(grids);
+  set->diversity = setDiversity(grids);
 }
 
 std::string idOf(std::size_t index, std::size_t count) {
@@ -59,10 +69,9 @@ ProblemSet makeProblemSet(const GeneratorOptions& options, const std::vector<Ind
   std::vector<int> order(pool.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return pool[a].score > pool[b].score; });
-  const Fitness fitness = makeFitness(options.fitness, FitnessParameters{options.weights, options.seed});
   ProblemSet set;
   set.fitness = options.fitness;
-  set.maximise = fitness.maximise;
+  set.maximise = fitnessMaximises(options.fitness);
   Evaluator evaluator(options.weights);
   for (std::size_t rank = 0; rank < order.size(); ++rank) {
     const Individual& individual = pool[order[rank]];
@@ -83,6 +92,7 @@ ProblemSet makeProblemSet(const GeneratorOptions& options, const std::vector<Ind
     set.evaluations.push_back(evaluation);
     set.fitness_values.push_back(individual.value);
   }
+  measureDiversity(&set);
   return set;
 }
 
@@ -132,7 +142,8 @@ void checkOutputDirectory(const std::string& dir) {
   fs::remove(probe, error);
 }
 
-void writeProblemSetDirectory(const std::string& dir, const ProblemSet& set, const GeneratorOptions& options) {
+void writeProblemSetDirectory(const std::string& dir, const ProblemSet& set, const GeneratorOptions& options,
+                              const std::map<std::string, std::string>& extra_files) {
   checkOutputDirectory(dir);
   const fs::path root(dir);
   const fs::path parent = root.has_parent_path() ? root.parent_path() : fs::path(".");
@@ -147,10 +158,12 @@ void writeProblemSetDirectory(const std::string& dir, const ProblemSet& set, con
       writePppFile(set.problems[i], (staging / file).string());
       std::vector<std::string> row{set.ids[i], file, set.fitness, formatNumber(set.fitness_values[i])};
       for (double value : characterVector(set.evaluations[i])) row.push_back(formatNumber(value));
+      row.push_back(formatNumber(set.nearest[i]));
       csv.write(row);
     }
   }
   writeText(staging / kOptionsFile, generatorOptionsYaml(options));
+  for (const auto& [name, contents] : extra_files) writeText(staging / name, contents);
   writeTreeFiles(staging.string(), set, buildTaxonomy(set, parseCharacterSet(options.characters)));
   if (fs::exists(root)) fs::remove_all(root, error);
   fs::rename(staging, root, error);
@@ -193,7 +206,8 @@ ProblemSet readProblemSetDirectory(const std::string& dir) {
     set.problems.push_back(std::move(problem));
   }
   if (set.problems.empty()) throw ParseError(csv_path, line_number, "set", "lists no PPPs");
-  set.maximise = makeFitness(set.fitness).maximise;
+  measureDiversity(&set);
+  set.maximise = fitnessMaximises(set.fitness);
   return set;
 }
 

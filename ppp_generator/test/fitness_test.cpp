@@ -70,9 +70,22 @@ TEST(FitnessTest, UnknownNameListsTheValidOnes) {
   } catch (const InvalidArgument& e) {
     EXPECT_EQ(std::string(e.what()),
               "fitness: unknown fitness 'hardness'; valid: turns, advances, turns_plus_advances, difficulty, "
-              "goal_visibility, visibility_magnitude, random");
+              "goal_visibility, visibility_magnitude, random, failure");
   }
-  EXPECT_EQ(fitnessCatalogue().size(), 7u);
+  EXPECT_EQ(fitnessCatalogue().size(), 8u);
+}
+
+TEST(FitnessTest, FailureIsListedButNeedsAnAgentPanel) {
+  EXPECT_TRUE(fitnessMaximises("failure"));
+  EXPECT_FALSE(fitnessMaximises("difficulty"));
+  EXPECT_THROW(fitnessMaximises("hardness"), InvalidArgument);
+  try {
+    makeFitness("failure");
+    FAIL();
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.name(), "fitness");
+    EXPECT_NE(std::string(e.what()).find("agent panel"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -61,7 +61,9 @@ TEST(GeneticAlgorithmTest, NoInvalidOrDuplicatePppEverInThePool) {
         EXPECT_LE(static_cast<int>(i.problem.obstacles.size()), o.max_obstacles);
       }
       EXPECT_EQ(ga.stats().matings, 300);
-      EXPECT_EQ(ga.stats().children_accepted + ga.stats().children_pruned + ga.stats().children_duplicate, 600);
+      EXPECT_EQ(ga.stats().children_accepted + ga.stats().children_pruned + ga.stats().children_duplicate +
+                    ga.stats().children_rejected,
+                600);
       for (std::size_t a = 0; a < pool.size(); ++a) {
         for (std::size_t b = a + 1; b < pool.size(); ++b) {
           EXPECT_NE(decodeGrid(pool[a].problem), decodeGrid(pool[b].problem)) << "duplicate PPPs " << a << ", " << b;

@@ -6,8 +6,9 @@
 #include "cli_options.hpp"
 #include "commands.hpp"
 #include "ppp_core/csv.hpp"
-#include "ppp_generator/genetic_algorithm.hpp"
+#include "ppp_agents/agent_config.hpp"
 #include "ppp_generator/problem_set.hpp"
+#include "ppp_simulator/set_evolution.hpp"
 #include "progress.hpp"
 
 namespace ppp {
@@ -29,6 +30,16 @@ struct GenerateFlags {
   int tournament_size = 0;
   double mutation_rate = 0;
   std::vector<std::string> weights;
+  std::string replacement;
+  int crowding_window = 0;
+  std::vector<std::string> agents;
+  std::string agents_file;
+  int runs_per_eval = 0;
+  std::string archive;
+  std::vector<std::string> features;
+  int bins = 0;
+  int budget = 0;
+  int threads = 0;
   std::string output;
   bool quiet = false;
 };
@@ -53,25 +64,33 @@ generator::GeneratorOptions resolveOptions(const CLI::App& command, const Genera
   if (given("--tournament-size")) o.tournament_size = f.tournament_size;
   if (given("--mutation-rate")) o.mutation_rate = f.mutation_rate;
   if (given("--weight")) o.weights = parseWeights(f.weights, o.weights);
+  if (given("--replacement")) o.replacement = f.replacement;
+  if (given("--crowding-window")) o.crowding_window = f.crowding_window;
+  if (given("--agents")) o.agents = f.agents;
+  if (given("--agents-file")) o.agents_file = f.agents_file;
+  if (given("--runs-per-eval")) o.runs_per_eval = f.runs_per_eval;
+  if (given("--archive")) o.archive = f.archive;
+  if (given("--features")) o.features = f.features;
+  if (given("--bins")) o.bins = f.bins;
   o.validate();
   return o;
 }
 
 void runGenerate(const CLI::App& command, const GenerateFlags& flags) {
   const generator::GeneratorOptions options = resolveOptions(command, flags);
-  generator::checkOutputDirectory(flags.output);
-  generator::GeneticAlgorithm ga(options);
+  simulator::EpisodeOptions episode;
+  if (command.count("--budget") > 0) episode.budget = flags.budget;
+  episode.validate();
+  const std::vector<agents::AgentConfig> available =
+      options.agents_file.empty() ? std::vector<agents::AgentConfig>{} : agents::loadAgentConfigs(options.agents_file);
   Progress progress("matings", flags.quiet);
-  const auto pool = ga.run([&](long done, long total, double best) {
-    progress.update(done, total, "best " + options.fitness + " " + formatNumber(best));
-  });
-  const generator::ProblemSet set = generator::makeProblemSet(options, pool);
-  generator::writeProblemSetDirectory(flags.output, set, options);
-  const auto& stats = ga.stats();
-  std::cout << "wrote " << set.problems.size() << " PPPs, set.csv, generator.yaml and tree.{nwk,json,html} to "
-            << flags.output << " (" << stats.matings << " matings, " << stats.children_accepted
-            << " children accepted, " << stats.children_pruned << " pruned as unsolvable, "
-            << stats.children_duplicate << " dropped as duplicates)\n";
+  const simulator::EvolvedSet evolved = simulator::evolveSetDirectory(
+      flags.output, options, available, episode, flags.threads, [&](long done, long total, double best) {
+        progress.update(done, total, "best " + options.fitness + " " + formatNumber(best));
+      });
+  std::cout << "wrote " << evolved.set.problems.size() << " PPPs, set.csv, generator.yaml and tree.{nwk,json,html}"
+            << (options.archive == generator::kMapElitesArchive ? ", archive.{csv,svg}" : "") << " to "
+            << flags.output << " (" << evolved.summary << ")\n";
 }
 
 }  // namespace
@@ -84,7 +103,7 @@ void addGenerateCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--fitness", flags->fitness,
                       "Fitness: turns, advances, turns_plus_advances, difficulty, goal_visibility, "
-                      "visibility_magnitude, random");
+                      "visibility_magnitude, random, failure (the failure rate of --agents)");
   command->add_option("--population", flags->population, "PPPs in the pool (>= 2)");
   command->add_option("--matings", flags->matings, "Steady-state mating events (>= 0)");
   command->add_option("--size", flags->size, "Grid size WIDTHxHEIGHT");
@@ -96,6 +115,21 @@ void addGenerateCommand(CLI::App& app) {
   command->add_option("--tournament-size", flags->tournament_size, "Individuals per mating event (>= 2)");
   command->add_option("--mutation-rate", flags->mutation_rate, "Probability of one mutation per child");
   command->add_option("--weight", flags->weights, "Difficulty weight NAME=VALUE (repeatable)");
+  command->add_option("--replacement", flags->replacement,
+                      "crowding (a child replaces the most similar of --crowding-window PPPs if as fit) or "
+                      "tournament (the least fit of its tournament)");
+  command->add_option("--crowding-window", flags->crowding_window, "PPPs a child is compared with (crowding)");
+  command->add_option("--agents", flags->agents, "failure: the panel's agent names, comma-separated")
+      ->delimiter(',');
+  command->add_option("--agents-file", flags->agents_file,
+                      "failure: agents file the names are looked up in (default: built-in type names)");
+  command->add_option("--runs-per-eval", flags->runs_per_eval, "failure: episodes per agent per evaluated PPP");
+  command->add_option("--budget", flags->budget, "failure: moves per episode (default 300)");
+  command->add_option("--threads", flags->threads, "failure: worker threads (default 0: every core)");
+  command->add_option("--archive", flags->archive, "none, or map_elites: the set is the elites of an archive");
+  command->add_option("--features", flags->features, "map_elites: characters to bin, comma-separated")
+      ->delimiter(',');
+  command->add_option("--bins", flags->bins, "map_elites: bins per feature");
   command->add_option("-o,--output", flags->output, "Output directory")->required();
   command->add_flag("--quiet", flags->quiet, "No progress output");
   command->callback([command, flags] { runGenerate(*command, *flags); });

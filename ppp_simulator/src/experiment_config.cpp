@@ -7,6 +7,7 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_core/yaml_reader.hpp"
+#include "ppp_simulator/failure_fitness.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -80,6 +81,12 @@ void ExperimentConfig::validate() const {
     if (!s.generator) continue;
     try {
       s.generator->validate();
+      if (s.generator->fitness == generator::kFailureFitness) {
+        if (!s.generator->agents_file.empty()) {
+          throw InvalidArgument("agents_file", "in an experiment the panel's names come from its agents");
+        }
+        resolvePanel(s.generator->agents, agents);
+      }
     } catch (const InvalidArgument& e) {
       const std::string field = "sets[" + std::to_string(i) + "].generator." + e.name();
       throw InvalidArgument(field, std::string(e.what()).substr(e.name().size() + 2));

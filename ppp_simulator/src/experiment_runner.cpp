@@ -11,10 +11,10 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_core/text_file.hpp"
-#include "ppp_generator/genetic_algorithm.hpp"
 #include "ppp_simulator/episode.hpp"
 #include "ppp_simulator/experiment_report.hpp"
 #include "ppp_simulator/results_file.hpp"
+#include "ppp_simulator/set_evolution.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -106,9 +106,9 @@ std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::
       if (!fs::exists(fs::path(set_dir) / "set.csv")) {
         say(log, "generating set '" + spec.name + "' (" + spec.generator->fitness + ", " +
                      std::to_string(spec.generator->matings) + " matings)");
-        generator::GeneticAlgorithm ga(*spec.generator);
-        generator::writeProblemSetDirectory(set_dir, generator::makeProblemSet(*spec.generator, ga.run()),
-                                            *spec.generator);
+        const EvolvedSet evolved =
+            evolveSetDirectory(set_dir, *spec.generator, config.agents, config.episode, config.threads);
+        say(log, "set '" + spec.name + "': " + evolved.summary);
       }
     }
     p.set = generator::readProblemSetDirectory(set_dir);

@@ -22,6 +22,12 @@ Grid::Grid(int width, int height) {
   cells_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
 }
 
+std::uint64_t Grid::hash() const {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (std::uint8_t cell : cells_) h = (h ^ cell) * 0x100000001b3ULL;
+  return h;
+}
+
 int Grid::obstacleCount() const { return static_cast<int>(std::count(cells_.begin(), cells_.end(), 1)); }
 
 }  // namespace ppp

@@ -9,9 +9,11 @@ namespace agents {
 
 /// `wall_follower_left` / `wall_follower_right`: keeps a wall (an obstacle or the map edge, as the scan reports
 /// the four neighbours) on one side with the hand-on-wall rule: with an internal heading, it turns towards the
-/// wall side if it can, else goes straight, else turns away, else turns back. Before touching any wall it goes
-/// straight along the goal's larger axis difference until blocked, then turns so the wall is on its side.
-/// Fault: around a free-standing cycle of walls (an island) it circles forever when the goal is not on that loop.
+/// wall side if it can, else goes straight, else turns away, else turns back. Before touching any wall it heads
+/// for the goal, each step along the axis with the larger distance left (a staircase along the diagonal from a
+/// corner), until that move is blocked; then it turns so the wall is on its side and never lets go of it.
+/// Fault: the first obstacle met from the default corner start is usually an island (a free-standing cycle of
+/// walls); it circles it forever when the goal is not in sight from that loop.
 /// Once it sees the goal it leaves the wall and takes a shortest path on its memory (kept for this alone).
 class WallFollowerAgent final : public Agent {
  public:
@@ -25,6 +27,9 @@ class WallFollowerAgent final : public Agent {
   Action act(const Scan& scan) override;
 
  private:
+  /// The quarter-turn heading (index into kMoves) along the larger axis distance from `from` to `goal`.
+  static int headingTowards(Cell from, Cell goal);
+
   Side side_;
   int memory_window_;
   AgentMemory memory_;
@@ -32,6 +37,7 @@ class WallFollowerAgent final : public Agent {
   bool goal_seen_ = false;
   bool engaged_ = false;  // touched a wall: the hand-on-wall rule is in force
   int heading_ = 0;       // index into kMoves
+  Cell goal_;
 };
 
 }  // namespace agents

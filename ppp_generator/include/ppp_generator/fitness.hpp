@@ -18,12 +18,26 @@ struct FitnessParameters {
   std::uint64_t seed = 1;     ///< For `random`: its values come from a generator seeded with this.
 };
 
+/// What a batch scorer says of one PPP.
+struct FitnessScore {
+  double value = 0;  ///< The raw fitness value (e.g. a failure rate).
+  double score = 0;  ///< Larger is fitter: the value oriented, plus any documented tie-break.
+};
+
+/// Scores many valid PPPs at once, in input order (`grids[i]` is the decoded grid of `problems[i]`): the
+/// failure fitness plays episodes of its agents on them, in process or through the simulator node.
+using BatchScorer = std::function<std::vector<FitnessScore>(const std::vector<const Problem*>& problems,
+                                                            const std::vector<const Grid*>& grids)>;
+
 /// A named fitness function: a value per valid PPP, and whether selection maximises or minimises it.
 struct Fitness {
   std::string name;   ///< Registry name, e.g. "turns".
   bool maximise = true;  ///< True when larger values are fitter (harder).
   /// The raw value of a valid PPP, given its decoded grid and DPA result.
   std::function<double(const Problem&, const Grid&, const DpaResult&)> value;
+  /// When set, PPPs are scored through it, `batch_size` at a time, and `value` is unused.
+  BatchScorer batch;
+  int batch_size = 1;  ///< PPPs per batch call (and matings per round of the generator).
 
   /// Fitness as "larger is fitter" whatever the direction.
   double score(double raw_value) const { return maximise ? raw_value : -raw_value; }
@@ -42,8 +56,17 @@ std::vector<FitnessInfo> fitnessCatalogue();
 /// Comma-separated registry names, for error messages.
 std::string fitnessNames();
 
-/// Builds a fitness function by name. @throws InvalidArgument("fitness", ...) listing the valid names.
+/// The fitness that is the failure rate of a panel of agents (SPEC 6b); built by the episode engine's
+/// makeFailureFitness (ppp_simulator), or through ROS by the simulator node, not by makeFitness.
+constexpr const char* kFailureFitness = "failure";
+
+/// Builds a fitness function by name. @throws InvalidArgument("fitness", ...) listing the valid names, and
+/// for kFailureFitness, which needs an agent panel.
 Fitness makeFitness(const std::string& name, const FitnessParameters& parameters = {});
+
+/// True when the named fitness (any registered name or kFailureFitness) selects larger values.
+/// @throws InvalidArgument("fitness", ...) for an unknown name.
+bool fitnessMaximises(const std::string& name);
 
 }  // namespace generator
 }  // namespace ppp

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "ppp_core/evaluation.hpp"
 #include "ppp_core/grid.hpp"
@@ -11,6 +12,22 @@
 
 namespace ppp {
 namespace generator {
+
+/// Replacement rule of the dissertation: children replace the least fit of their tournament.
+constexpr const char* kTournamentReplacement = "tournament";
+/// Restricted tournament replacement: a child replaces the most similar of a random window if at least as fit.
+constexpr const char* kCrowdingReplacement = "crowding";
+/// No archive: the set is the genetic algorithm's final pool.
+constexpr const char* kNoArchive = "none";
+/// MAP-Elites: the set is the elites of an archive binned over taxonomic characters.
+constexpr const char* kMapElitesArchive = "map_elites";
+/// Largest crowding window (a window beyond the population is the whole pool).
+constexpr int kMaxCrowdingWindow = 100000;
+/// Most runs per evaluation of the failure fitness.
+constexpr int kMaxRunsPerEval = 10000;
+/// Most bins per feature of a MAP-Elites archive, and most cells in all.
+constexpr int kMaxBins = 100;
+constexpr long kMaxArchiveCells = 100000;
 
 /// Everything that shapes one run of the generator. Defaults match config/generator.yaml.
 struct GeneratorOptions {
@@ -28,6 +45,14 @@ struct GeneratorOptions {
   RandomObstacleOptions obstacle_shapes;  ///< Size limits of random descriptors.
   std::uint64_t seed = 1;           ///< Seed of every random choice of the run.
   std::string characters = "extended";  ///< Character set of the taxonomy (wei or extended).
+  std::string replacement = kCrowdingReplacement;  ///< kCrowdingReplacement or kTournamentReplacement.
+  int crowding_window = 20;         ///< Pool members a child is compared with under crowding (capped at the pool).
+  std::vector<std::string> agents;  ///< Failure fitness: the panel's agent names.
+  std::string agents_file;          ///< Failure fitness: agents file the names resolve in ("": built-in types).
+  int runs_per_eval = 20;           ///< Failure fitness: episodes per agent per evaluated PPP.
+  std::string archive = kNoArchive; ///< kNoArchive or kMapElitesArchive.
+  std::vector<std::string> features{"turns", "obstacles"};  ///< MAP-Elites: characters binned (two or more).
+  int bins = 8;                     ///< MAP-Elites: bins per feature.
 
   /// Checks every option. @throws InvalidArgument naming the option and what was expected.
   void validate() const;

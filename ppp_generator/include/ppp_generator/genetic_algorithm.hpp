@@ -3,23 +3,13 @@
 #include <functional>
 #include <vector>
 
-#include "ppp_core/dpa.hpp"
-#include "ppp_core/problem.hpp"
 #include "ppp_core/rng.hpp"
+#include "ppp_generator/breeder.hpp"
 #include "ppp_generator/fitness.hpp"
 #include "ppp_generator/generator_options.hpp"
 
 namespace ppp {
 namespace generator {
-
-/// One member of the pool: a valid PPP and its fitness.
-struct Individual {
-  Problem problem;     ///< Always valid (goal reachable).
-  Grid grid;           ///< The decoded grid.
-  std::uint64_t grid_hash = 0;  ///< Hash of the grid's cells, to find duplicates quickly.
-  double value = 0;    ///< Raw fitness value.
-  double score = 0;    ///< Fitness oriented so that larger is fitter.
-};
 
 /// Counters of one run, for logs and tests.
 struct GenerationStats {
@@ -27,7 +17,8 @@ struct GenerationStats {
   long children_accepted = 0;  ///< Valid children that entered the pool.
   long children_pruned = 0;    ///< Children discarded by Wei's pruning (goal unreachable).
   long children_duplicate = 0; ///< Valid children discarded because their grid is already in the pool.
-  long initial_redraws = 0;    ///< Unsolvable random chromosomes redrawn for the initial pool.
+  long children_rejected = 0;  ///< Valid children that lost to the member they would have replaced (crowding).
+  long initial_redraws = 0;    ///< Unsolvable or repeated random chromosomes redrawn for the initial pool.
 };
 
 /// Called every `progress_interval` mating events and at the end: (matings done, total, best raw value).
@@ -35,14 +26,21 @@ using ProgressCallback = std::function<void(long done, long total, double best_v
 
 /// Ashlock's steady-state genetic algorithm over obstacle chromosomes with Wei's pruning.
 /// Each mating event draws a tournament, the two fittest mate (one-point crossover of descriptor lists,
-/// then with probability `mutation_rate` one mutation: change, add or remove a descriptor), and the valid
-/// children replace the least fit of the tournament. A child whose decoded grid equals one already in the
-/// pool is discarded too, so the pool keeps distinct PPPs (a set of copies is useless to a test engineer).
+/// then with probability `mutation_rate` one mutation: change, add or remove a descriptor). Replacement:
+/// `tournament` (the dissertation's): the valid children replace the least fit of the tournament;
+/// `crowding` (restricted tournament replacement): each valid child is compared with the most similar
+/// (fewest differing cells) of `crowding_window` random pool members and replaces it if at least as fit, so
+/// a good layout can only push out its own near-copies and the pool keeps many layouts. A child whose
+/// grid is already in the pool is discarded, so the pool holds distinct PPPs.
+/// A batch fitness (failure) is scored a round of batch_size matings at a time: the round's parents are
+/// drawn from the pool as it was before the round, and the children enter in mating order afterwards.
 /// Deterministic for a seed.
 class GeneticAlgorithm {
  public:
-  /// Prepares a run. @throws InvalidArgument for bad options.
+  /// Prepares a run with the fitness named in the options. @throws InvalidArgument for bad options.
   explicit GeneticAlgorithm(const GeneratorOptions& options);
+  /// Prepares a run with a fitness built elsewhere (the failure fitness). @throws InvalidArgument.
+  GeneticAlgorithm(const GeneratorOptions& options, Fitness fitness);
 
   /// Builds the initial pool and runs every mating event; returns the final pool in pool order.
   std::vector<Individual> run(const ProgressCallback& progress = {}, long progress_interval = 1000);
@@ -51,19 +49,18 @@ class GeneticAlgorithm {
   const GenerationStats& stats() const { return stats_; }
 
  private:
-  bool evaluate(Individual* individual);
-  bool inPool(const std::vector<Individual>& pool, const Individual& candidate) const;
-  Problem randomChromosome();
-  void crossover(const Problem& a, const Problem& b, Problem* child_a, Problem* child_b);
-  void mutate(Problem* problem);
+  std::vector<Individual> initialPool();
+  void replace(std::vector<Individual>* pool, const std::vector<int>& tournament, Individual* child, int* replaced);
 
   GeneratorOptions options_;
   Fitness fitness_;
   Rng rng_;
-  DpaSolver dpa_;
-  Problem shape_;
+  Breeder breeder_;
   GenerationStats stats_;
 };
+
+/// Draws up to `count` distinct pool indices below `size` (a partial Fisher-Yates shuffle of `order`).
+std::vector<int> drawDistinct(Rng* rng, int size, int count);
 
 }  // namespace generator
 }  // namespace ppp

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,8 @@ struct ProblemSet {
   std::vector<Problem> problems;         ///< The PPPs, metadata included.
   std::vector<Evaluation> evaluations;   ///< Every measure of each PPP.
   std::vector<double> fitness_values;    ///< Raw fitness value of each PPP.
+  std::vector<double> nearest;           ///< Share of cells in which each PPP differs from its nearest other.
+  double diversity = 0;                  ///< setDiversity of the PPPs' grids (see diversity.hpp).
 
   /// Fitness oriented so that larger is fitter ("harder"), per PPP.
   std::vector<double> hardness() const;
@@ -42,11 +45,13 @@ ProblemSet makeProblemSet(const GeneratorOptions& options, const std::vector<Ind
 /// Builds the taxonomy of a set. @throws InvalidArgument for an empty set.
 Taxonomy buildTaxonomy(const ProblemSet& set, CharacterSet characters);
 
-/// Writes the set as a directory: one `.ppp` per PPP, `set.csv`, `generator.yaml` and the tree files.
-/// Everything is written to a temporary sibling directory first and renamed into place, so the directory
-/// is either complete or untouched. An existing directory is replaced only if it holds a PPP set.
+/// Writes the set as a directory: one `.ppp` per PPP, `set.csv`, `generator.yaml`, the tree files and
+/// `extra_files` (name -> contents, e.g. a hunt's archive). Everything is written to a temporary sibling
+/// directory first and renamed into place, so the directory is either complete or untouched. An existing
+/// directory is replaced only if it holds a PPP set.
 /// @throws IoError when the directory cannot be written or holds something else.
-void writeProblemSetDirectory(const std::string& dir, const ProblemSet& set, const GeneratorOptions& options);
+void writeProblemSetDirectory(const std::string& dir, const ProblemSet& set, const GeneratorOptions& options,
+                              const std::map<std::string, std::string>& extra_files = {});
 
 /// Checks, before a long run, that `dir` can be created or replaced. @throws IoError saying why not.
 void checkOutputDirectory(const std::string& dir);

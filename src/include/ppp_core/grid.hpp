@@ -50,6 +50,8 @@ class Grid {
   int obstacleCount() const;
   /// Raw row-major cells, 1 = obstacle, 0 = free.
   const std::vector<std::uint8_t>& cells() const { return cells_; }
+  /// FNV-1a hash of the cells (equal grids of one size hash equally; used to find copies and derive seeds).
+  std::uint64_t hash() const;
   /// Grids are equal when sizes and every cell agree.
   friend bool operator==(const Grid& a, const Grid& b) {
     return a.width_ == b.width_ && a.height_ == b.height_ && a.cells_ == b.cells_;

@@ -1,0 +1,101 @@
+#include "ppp_generator/breeder.hpp"
+
+#include <algorithm>
+
+#include "ppp_core/random_problem.hpp"
+
+namespace ppp {
+namespace generator {
+
+Breeder::Breeder(const GeneratorOptions& options, const Fitness& fitness, Rng* rng)
+    : options_(options), fitness_(fitness), rng_(rng) {
+  shape_ = Problem::empty(options.width, options.height, options.max_obstacles);
+  shape_.start = options.startCell();
+  shape_.goal = options.goalCell();
+}
+
+Problem Breeder::randomChromosome() {
+  Problem problem = shape_;
+  const int count = options_.max_obstacles == 0 ? 0 : static_cast<int>(rng_->uniformInt(1, options_.max_obstacles));
+  for (int i = 0; i < count; ++i) {
+    problem.obstacles.push_back(randomObstacle(*rng_, shape_.width, shape_.height, options_.obstacle_shapes));
+  }
+  return problem;
+}
+
+void Breeder::crossover(const Problem& a, const Problem& b, Problem* child_a, Problem* child_b) {
+  const auto cut_a = static_cast<std::size_t>(rng_->below(a.obstacles.size() + 1));
+  const auto cut_b = static_cast<std::size_t>(rng_->below(b.obstacles.size() + 1));
+  *child_a = shape_;
+  *child_b = shape_;
+  child_a->obstacles.assign(a.obstacles.begin(), a.obstacles.begin() + cut_a);
+  child_a->obstacles.insert(child_a->obstacles.end(), b.obstacles.begin() + cut_b, b.obstacles.end());
+  child_b->obstacles.assign(b.obstacles.begin(), b.obstacles.begin() + cut_b);
+  child_b->obstacles.insert(child_b->obstacles.end(), a.obstacles.begin() + cut_a, a.obstacles.end());
+  for (Problem* child : {child_a, child_b}) {
+    if (static_cast<int>(child->obstacles.size()) > options_.max_obstacles) {
+      child->obstacles.resize(static_cast<std::size_t>(options_.max_obstacles));
+    }
+  }
+}
+
+void Breeder::mutate(Problem* problem) {
+  if (options_.max_obstacles == 0 || !rng_->bernoulli(options_.mutation_rate)) return;
+  auto& genes = problem->obstacles;
+  const bool can_add = static_cast<int>(genes.size()) < options_.max_obstacles;
+  const bool can_remove = !genes.empty();
+  // 0: change one descriptor, 1: add one, 2: remove one; impossible kinds fall back to change or add.
+  int kind = static_cast<int>(rng_->below(3));
+  if (kind == 2 && !can_remove) kind = 1;
+  if (kind == 1 && !can_add) kind = 0;
+  if (kind == 0 && genes.empty()) kind = 1;
+  const Obstacle fresh = randomObstacle(*rng_, shape_.width, shape_.height, options_.obstacle_shapes);
+  if (kind == 0) {
+    genes[rng_->below(genes.size())] = fresh;
+  } else if (kind == 1) {
+    genes.insert(genes.begin() + static_cast<long>(rng_->below(genes.size() + 1)), fresh);
+  } else {
+    genes.erase(genes.begin() + static_cast<long>(rng_->below(genes.size())));
+  }
+}
+
+bool Breeder::decode(Individual* individual) {
+  individual->grid = decodeGrid(individual->problem);
+  individual->grid_hash = individual->grid.hash();
+  const DpaResult& dpa = dpa_.solve(individual->grid, individual->problem.start, individual->problem.goal);
+  if (!dpa.reachable) return false;
+  if (!batched()) {
+    individual->value = fitness_.value(individual->problem, individual->grid, dpa);
+    individual->score = fitness_.score(individual->value);
+  }
+  return true;
+}
+
+void Breeder::score(const std::vector<Individual*>& individuals) {
+  if (!batched()) return;
+  const auto size = static_cast<std::size_t>(std::max(1, fitness_.batch_size));
+  for (std::size_t begin = 0; begin < individuals.size(); begin += size) {
+    const std::size_t end = std::min(individuals.size(), begin + size);
+    std::vector<const Problem*> problems;
+    std::vector<const Grid*> grids;
+    for (std::size_t i = begin; i < end; ++i) {
+      problems.push_back(&individuals[i]->problem);
+      grids.push_back(&individuals[i]->grid);
+    }
+    const std::vector<FitnessScore> scores = fitness_.batch(problems, grids);
+    for (std::size_t i = begin; i < end; ++i) {
+      individuals[i]->value = scores.at(i - begin).value;
+      individuals[i]->score = scores.at(i - begin).score;
+    }
+  }
+}
+
+bool gridInPool(const std::vector<Individual>& pool, const Individual& candidate) {
+  for (const Individual& member : pool) {
+    if (member.grid_hash == candidate.grid_hash && member.grid == candidate.grid) return true;
+  }
+  return false;
+}
+
+}  // namespace generator
+}  // namespace ppp

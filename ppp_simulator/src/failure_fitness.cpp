@@ -1,0 +1,158 @@
+#include "ppp_simulator/failure_fitness.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/rng.hpp"
+#include "ppp_core/window_atlas.hpp"
+
+namespace ppp {
+namespace simulator {
+
+namespace {
+
+constexpr double kBudgetTieBreak = 0.001;
+
+std::uint64_t hashName(const std::string& name) {
+  std::uint64_t hash = 0xcbf29ce484222325ULL;
+  for (unsigned char c : name) hash = (hash ^ c) * 0x100000001b3ULL;
+  return hash;
+}
+
+void checkPanel(const std::vector<agents::AgentConfig>& panel) {
+  if (panel.empty()) throw InvalidArgument("agents", "empty panel: the failure fitness needs at least one agent");
+  for (const agents::AgentConfig& a : panel) {
+    if (agents::isPlanner(a)) {
+      throw InvalidArgument("agents", "'" + a.name + "' is a ROS planner agent; in process a hunt can only run "
+                                      "built-in agents (hunt a planner with launch/hunt.launch)");
+    }
+    a.validate();
+  }
+}
+
+}  // namespace
+
+std::uint64_t failureRunSeed(std::uint64_t generator_seed, std::uint64_t grid_hash, const std::string& agent,
+                             int run) {
+  return deriveSeed(generator_seed, {0x6661696c, grid_hash, hashName(agent), static_cast<std::uint64_t>(run)});
+}
+
+std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const std::vector<const Problem*>& problems,
+                                              const std::vector<const Grid*>& grids) {
+  checkPanel(panel.agents);
+  const std::size_t agent_count = panel.agents.size();
+  const std::size_t units = problems.size() * agent_count;
+  std::vector<int> failures(units, 0);
+  std::vector<long> steps(units, 0);
+  std::vector<std::uint64_t> hashes;
+  std::vector<std::optional<WindowAtlas>> atlases(problems.size());
+  for (const Grid* grid : grids) hashes.push_back(grid->hash());
+  std::vector<std::once_flag> atlas_built(problems.size());
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  auto worker = [&]() {
+    try {
+      std::vector<std::unique_ptr<agents::Agent>> agents(agent_count);
+      std::vector<std::unique_ptr<EpisodeRunner>> runners(agent_count);
+      for (;;) {
+        const std::size_t u = next.fetch_add(1);
+        if (u >= units) return;
+        const std::size_t p = u / agent_count;
+        const std::size_t a = u % agent_count;
+        if (!agents[a]) {
+          agents[a] = agents::makeAgent(panel.agents[a]);
+          runners[a] = std::make_unique<EpisodeRunner>(panel.agents[a], panel.episode);
+        }
+        const int range = panel.episode.sensor_range;
+        std::call_once(atlas_built[p], [&] {
+          if (WindowAtlas::bytes(*grids[p], range) <= kMaxWindowAtlasBytes) atlases[p].emplace(*grids[p], range);
+        });
+        const WindowAtlas* atlas = atlases[p] ? &*atlases[p] : nullptr;
+        for (int run = 0; run < panel.runs_per_eval; ++run) {
+          const std::uint64_t seed = failureRunSeed(panel.seed, hashes[p], panel.agents[a].name, run);
+          const EpisodeOutcome outcome = runners[a]->run(*problems[p], *grids[p], *agents[a], seed, false, atlas);
+          failures[u] += outcome.passed ? 0 : 1;
+          steps[u] += outcome.steps;
+        }
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(error_mutex);
+      if (!error) error = std::current_exception();
+    }
+  };
+  const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int thread_count = std::min<int>(panel.threads > 0 ? panel.threads : hardware, static_cast<int>(units));
+  std::vector<std::thread> threads;
+  for (int t = 1; t < thread_count; ++t) threads.emplace_back(worker);
+  worker();
+  for (std::thread& t : threads) t.join();
+  if (error) std::rethrow_exception(error);
+  std::vector<FailureEstimate> estimates(problems.size());
+  const double runs = panel.runs_per_eval;
+  for (std::size_t p = 0; p < problems.size(); ++p) {
+    for (std::size_t a = 0; a < agent_count; ++a) {
+      estimates[p].failure_rate += failures[p * agent_count + a] / runs / agent_count;
+      estimates[p].budget_used += steps[p * agent_count + a] / (runs * panel.episode.budget) / agent_count;
+    }
+  }
+  return estimates;
+}
+
+generator::Fitness makeFailureFitness(const FailurePanel& panel) {
+  checkPanel(panel.agents);
+  panel.episode.validate();
+  generator::Fitness fitness;
+  fitness.name = generator::kFailureFitness;
+  fitness.maximise = true;
+  fitness.batch_size = kFailureBatchSize;
+  fitness.batch = [panel](const std::vector<const Problem*>& problems, const std::vector<const Grid*>& grids) {
+    std::vector<generator::FitnessScore> scores;
+    for (const FailureEstimate& e : estimateFailures(panel, problems, grids)) {
+      scores.push_back({e.failure_rate, e.failure_rate + kBudgetTieBreak * e.budget_used});
+    }
+    return scores;
+  };
+  return fitness;
+}
+
+std::vector<agents::AgentConfig> resolvePanel(const std::vector<std::string>& names,
+                                              const std::vector<agents::AgentConfig>& available) {
+  if (names.empty()) throw InvalidArgument("agents", "empty panel: the failure fitness needs at least one agent name");
+  std::vector<agents::AgentConfig> panel;
+  for (const std::string& name : names) {
+    if (available.empty()) {
+      const auto& types = agents::agentTypeNames();
+      if (std::find(types.begin(), types.end(), name) == types.end()) {
+        std::string valid;
+        for (const std::string& t : types) valid += (valid.empty() ? "" : ", ") + t;
+        throw InvalidArgument("agents", "unknown agent '" + name + "'; with no agents file the names are built-in "
+                                        "types: " + valid);
+      }
+      agents::AgentConfig config;
+      config.name = name;
+      config.type = name;
+      panel.push_back(config);
+      continue;
+    }
+    const auto found = std::find_if(available.begin(), available.end(),
+                                    [&](const agents::AgentConfig& a) { return a.name == name; });
+    if (found == available.end()) {
+      std::string valid;
+      for (const agents::AgentConfig& a : available) valid += (valid.empty() ? "" : ", ") + a.name;
+      throw InvalidArgument("agents", "unknown agent '" + name + "'; valid: " + valid);
+    }
+    panel.push_back(*found);
+  }
+  checkPanel(panel);
+  return panel;
+}
+
+}  // namespace simulator
+}  // namespace ppp
