@@ -2,6 +2,7 @@
 # Behaviour of the `ppp` command line, run as a user would. Usage: cli_test.sh PATH_TO_PPP
 set -u
 ppp="$1"
+config_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../config" && pwd)"
 source "$(dirname "${BASH_SOURCE[0]}")/cli_harness.sh"
 
 for sub in random evaluate convert generate tree select; do
@@ -104,5 +105,33 @@ expect_error "k too large" "k: " "$ppp" select "$work/set_a" -k 13
 expect_error "k zero" "k: " "$ppp" select "$work/set_a" -k 0
 expect_error "select bad characters" "characters: unknown character set" "$ppp" select "$work/set_a" -k 2 --characters x
 expect_error "tree of a non-set" "set.csv" "$ppp" tree "$work/not_a_set"
+
+# --- hunting: the failure fitness and the MAP-Elites archive
+hunt=(generate --population 12 --matings 200 --quiet --fitness failure --runs-per-eval 3)
+expect_ok "hunt" "$ppp" "${hunt[@]}" --agents wall_follower_left,bumper --seed 3 -o "$work/hunt_a"
+expect_ok "hunt again" "$ppp" "${hunt[@]}" --agents wall_follower_left,bumper --seed 3 --threads 1 -o "$work/hunt_b"
+diff -r "$work/hunt_a" "$work/hunt_b" > /dev/null && pass || fail "same hunt seed gave different sets"
+grep -q "^meta fitness failure$" "$work/hunt_a/ppp_000.ppp" && pass || fail "hunted PPP lacks its fitness"
+grep -q "diversity" "$work/out" && pass || fail "generate did not print the diversity"
+head -1 "$work/hunt_a/set.csv" | grep -q ",nearest_difference$" && pass || fail "set.csv lacks nearest_difference"
+expect_ok "hunt map_elites" "$ppp" "${hunt[@]}" --agents explorer_memory_5x5 --agents-file "$config_dir/agents.yaml" \
+  --archive map_elites --features turns,visibility_goal --bins 5 --seed 3 -o "$work/hunt_m"
+for f in archive.csv archive.svg; do
+  [ -s "$work/hunt_m/$f" ] && pass || fail "map_elites did not write $f"
+done
+head -1 "$work/hunt_m/archive.csv" | grep -q "^cell,turns_bin,visibility_goal_bin," && pass || fail "archive.csv header"
+expect_error "empty panel" "agents: empty panel" "$ppp" "${hunt[@]}" -o "$work/bad2"
+expect_error "unknown panel agent" "agents: unknown agent 'nobody'" "$ppp" "${hunt[@]}" --agents nobody -o "$work/bad2"
+expect_error "planner in process" "agents: 'optimistic' is a ROS planner agent" \
+  "$ppp" "${hunt[@]}" --agents optimistic --agents-file "$config_dir/agents.yaml" -o "$work/bad2"
+expect_error "runs_per_eval 0" "runs_per_eval: expected runs in [1, 10000], got 0" \
+  "$ppp" generate --quiet --fitness failure --agents bumper --runs-per-eval 0 -o "$work/bad2"
+expect_error "unknown feature" "features: unknown character 'width'" \
+  "$ppp" "${hunt[@]}" --agents bumper --archive map_elites --features turns,width -o "$work/bad2"
+expect_error "bins 1" "bins: expected bins per feature in [2, 100], got 1" \
+  "$ppp" "${hunt[@]}" --agents bumper --archive map_elites --bins 1 -o "$work/bad2"
+expect_error "panel without failure" "agents: only the failure fitness uses an agent panel" \
+  "$ppp" generate --quiet --agents bumper -o "$work/bad2"
+[ ! -e "$work/bad2" ] && pass || fail "a failed hunt left an output directory"
 
 finish

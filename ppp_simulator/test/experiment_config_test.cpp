@@ -76,6 +76,45 @@ TEST_F(ExperimentYaml, BadInputNamesKeyAndLine) {
   EXPECT_EQ(errorOf("agents: agents.yaml\n").rfind(" sets: an experiment needs at least one PPP set", 0), 0u);
 }
 
+TEST_F(ExperimentYaml, HuntedSetsNameTheirPanelFromTheExperimentsAgents) {
+  std::ofstream(dir_ / "agents.yaml") << "agents:\n  - {name: random, type: random}\n"
+                                         "  - {name: slow, type: explorer, memory: 5x5}\n"
+                                         "  - {name: mine, type: planner}\n";
+  const auto hunt = [](const std::string& keys) {
+    return "agents: agents.yaml\nsets:\n  - name: h\n    generator: {fitness: failure, " + keys + "}\n";
+  };
+  EXPECT_EQ(errorOf(hunt("agents: [slow, random], runs_per_eval: 5")), "no error");
+  EXPECT_EQ(errorOf(hunt("agents: [explorer]")), " sets[0].generator.agents: unknown agent 'explorer'; valid: random, slow, mine");
+  EXPECT_EQ(errorOf(hunt("agents: []")),
+            " sets[0].generator.agents: empty panel: the failure fitness needs at least one agent name");
+  EXPECT_EQ(errorOf(hunt("agents: [mine]")).rfind(" sets[0].generator.agents: 'mine' is a ROS planner agent", 0), 0u);
+  EXPECT_EQ(errorOf(hunt("agents: [slow], runs_per_eval: 0")),
+            " sets[0].generator.runs_per_eval: expected runs in [1, 10000], got 0");
+  EXPECT_EQ(errorOf(hunt("agents: [slow], runs_per_eval: 10001")),
+            " sets[0].generator.runs_per_eval: expected runs in [1, 10000], got 10001");
+  EXPECT_EQ(errorOf(hunt("agents: [slow], archive: map_elites, features: [turns, width]"))
+                .rfind(" sets[0].generator.features: unknown character 'width'; valid: turns, ", 0),
+            0u);
+  EXPECT_EQ(errorOf(hunt("agents: [slow], archive: map_elites, features: [turns]")),
+            " sets[0].generator.features: expected two or more character names, got 1");
+  EXPECT_EQ(errorOf(hunt("agents: [slow], archive: map_elites, bins: 1")),
+            " sets[0].generator.bins: expected bins per feature in [2, 100], got 1");
+  EXPECT_EQ(errorOf(hunt("agents: [slow], archive: map_elites, bins: 101")),
+            " sets[0].generator.bins: expected bins per feature in [2, 100], got 101");
+  EXPECT_EQ(errorOf(hunt("agents: [slow], archive: map_elites, features: [turns, advances, obstacles], bins: 50")),
+            " sets[0].generator.bins: bins^features = 125000 archive cells; at most 100000");
+  EXPECT_EQ(errorOf(hunt("agents: [slow], archive: grid")),
+            " sets[0].generator.archive: unknown archive 'grid'; valid: none, map_elites");
+  EXPECT_EQ(errorOf(hunt("agents: [slow], agents_file: agents.yaml")),
+            " sets[0].generator.agents_file: in an experiment the panel's names come from its agents");
+  EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - name: t\n    generator: {fitness: turns, agents: [slow]}\n"),
+            " sets[0].generator.agents: only the failure fitness uses an agent panel");
+  EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - name: t\n    generator: {replacement: best}\n"),
+            " sets[0].generator.replacement: unknown rule 'best'; valid: crowding, tournament");
+  EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - name: t\n    generator: {crowding_window: 1}\n"),
+            " sets[0].generator.crowding_window: expected pool members in [2, 100000], got 1");
+}
+
 TEST_F(ExperimentYaml, DirectoryHoldingAnotherExperimentIsRefused) {
   ExperimentConfig c;
   c.sets.push_back(SetSpec{"a", generator::GeneratorOptions{}, ""});
