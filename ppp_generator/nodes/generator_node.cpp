@@ -10,7 +10,7 @@
 
 #include "generator_parameters.hpp"
 #include "ppp_core/error.hpp"
-#include "ppp_generator/genetic_algorithm.hpp"
+#include "ppp_generator/set_evolution.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_msgs/Generate.h"
 #include "ppp_msgs/ProblemSet.h"
@@ -34,17 +34,16 @@ class GeneratorNode {
     GeneratorOptions options = parameters_.options;
     if (seed != 0) options.seed = seed;
     if (!parameters_.output_dir.empty()) checkOutputDirectory(parameters_.output_dir);
-    GeneticAlgorithm ga(options);
     ROS_INFO("generating %d PPPs (%s fitness, %ld matings, seed %lu)", options.population, options.fitness.c_str(),
              options.matings, static_cast<unsigned long>(options.seed));
-    const auto pool = ga.run(
-        [](long done, long total, double best) {
-          ROS_INFO("%ld/%ld matings, best fitness %g", done, total, best);
-        },
+    const EvolvedSet evolved = evolveSet(
+        options, makeFitness(options.fitness, FitnessParameters{options.weights, options.seed}),
+        [](long done, long total, double best) { ROS_INFO("%ld/%ld matings, best fitness %g", done, total, best); },
         std::max(1L, options.matings / 10));
-    const ProblemSet set = makeProblemSet(options, pool);
+    const ProblemSet& set = evolved.set;
+    ROS_INFO("%s", evolved.summary.c_str());
     if (!parameters_.output_dir.empty()) {
-      writeProblemSetDirectory(parameters_.output_dir, set, options);
+      writeProblemSetDirectory(parameters_.output_dir, set, options, evolved.extra_files);
       ROS_INFO("wrote the set to %s", parameters_.output_dir.c_str());
     }
     ppp_msgs::ProblemSet message;

@@ -43,6 +43,14 @@ NodeParameters readNodeParameters(const ros::NodeHandle& nh) {
   if (seed < 0) throw InvalidArgument("~seed", "expected an integer >= 0, got " + std::to_string(seed));
   o.seed = static_cast<std::uint64_t>(seed);
   readParameter(nh, "characters", &o.characters, "a string");
+  readParameter(nh, "replacement", &o.replacement, "a string");
+  readParameter(nh, "crowding_window", &o.crowding_window, "an integer");
+  readParameter(nh, "agents", &o.agents, "a list of strings");
+  readParameter(nh, "agents_file", &o.agents_file, "a string");
+  readParameter(nh, "runs_per_eval", &o.runs_per_eval, "an integer");
+  readParameter(nh, "archive", &o.archive, "a string");
+  readParameter(nh, "features", &o.features, "a list of strings");
+  readParameter(nh, "bins", &o.bins, "an integer");
   const std::pair<const char*, double*> weights[] = {
       {"weights/start", &o.weights.start},
       {"weights/centre", &o.weights.centre},

@@ -220,11 +220,12 @@ std::string archiveHeatMapSvg(const Archive& archive, const std::vector<std::str
     high = std::max(high, elite.individual.value);
   }
   const int size = bins * kCellPixels;
-  const int width = size + kMargin + 20;
+  const int width = std::max(size + kMargin + 20, 480);  // room for the title and the caption
   const int height = size + kMargin + 40;
   std::ostringstream svg;
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
       << "\" font-family=\"sans-serif\" font-size=\"11\">\n"
+      << "<rect x=\"0\" y=\"0\" width=\"" << width << "\" height=\"" << height << "\" fill=\"#ffffff\"/>\n"
       << "<text x=\"" << kMargin << "\" y=\"16\" font-size=\"13\">" << xmlEscape(title) << "</text>\n";
   for (int bx = 0; bx < bins; ++bx) {
     for (int by = 0; by < bins; ++by) {

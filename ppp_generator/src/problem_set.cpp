@@ -177,7 +177,9 @@ ProblemSet readProblemSetDirectory(const std::string& dir) {
   std::istringstream lines(text);
   std::string line;
   std::getline(lines, line);
-  if (line != csvLine(setCsvHeader())) {
+  std::vector<std::string> before_diversity = setCsvHeader();
+  before_diversity.pop_back();  // sets written before nearest_difference existed are read too
+  if (line != csvLine(setCsvHeader()) && line != csvLine(before_diversity)) {
     throw ParseError(csv_path, 1, "header", "not a PPP set file (expected the header written by ppp generate)");
   }
   ProblemSet set;

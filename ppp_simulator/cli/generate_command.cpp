@@ -8,7 +8,8 @@
 #include "ppp_core/csv.hpp"
 #include "ppp_agents/agent_config.hpp"
 #include "ppp_generator/problem_set.hpp"
-#include "ppp_simulator/set_evolution.hpp"
+#include "ppp_generator/set_evolution.hpp"
+#include "ppp_simulator/failure_fitness.hpp"
 #include "progress.hpp"
 
 namespace ppp {
@@ -84,8 +85,9 @@ void runGenerate(const CLI::App& command, const GenerateFlags& flags) {
   const std::vector<agents::AgentConfig> available =
       options.agents_file.empty() ? std::vector<agents::AgentConfig>{} : agents::loadAgentConfigs(options.agents_file);
   Progress progress("matings", flags.quiet);
-  const simulator::EvolvedSet evolved = simulator::evolveSetDirectory(
-      flags.output, options, available, episode, flags.threads, [&](long done, long total, double best) {
+  const generator::EvolvedSet evolved = generator::evolveSetDirectory(
+      flags.output, options, simulator::fitnessFor(options, available, episode, flags.threads),
+      [&](long done, long total, double best) {
         progress.update(done, total, "best " + options.fitness + " " + formatNumber(best));
       });
   std::cout << "wrote " << evolved.set.problems.size() << " PPPs, set.csv, generator.yaml and tree.{nwk,json,html}"

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "ppp_core/csv.hpp"
+#include "ppp_core/text_file.hpp"
 #include "ppp_simulator/episode.hpp"
 #include "ppp_simulator/pass_rates.hpp"
 
@@ -16,6 +17,39 @@ namespace {
 
 /// The control agent type, left out when ranking PPPs by difficulty (it always passes a valid PPP).
 constexpr const char* kControlType = "astar";
+
+/// The first failing run of `agent` on PPP `problem` of `set`, replayed for its path.
+FailureExample failingRun(const ExperimentConfig& config, const PreparedSet& set, int problem,
+                          const agents::AgentConfig& agent_config, const std::vector<EpisodeResult>& rows) {
+  const EpisodeResult* first_fail = nullptr;
+  for (const EpisodeResult& r : rows) {
+    if (r.set == set.name && r.problem == set.set.ids[problem] && r.agent == agent_config.name && !r.passed &&
+        (first_fail == nullptr || r.run < first_fail->run)) {
+      first_fail = &r;
+    }
+  }
+  EpisodeRunner runner(agent_config, config.episode);
+  auto agent = agents::makeAgent(agent_config);
+  const EpisodeOutcome outcome =
+      runner.run(set.set.problems[problem], set.grids[problem], *agent, first_fail->seed, true);
+  FailureExample example;
+  example.set = set.name;
+  example.problem = set.set.ids[problem];
+  example.agent = agent_config.name;
+  example.run = first_fail->run;
+  example.seed = first_fail->seed;
+  example.ppp = set.set.problems[problem];
+  example.path = outcome.path;
+  example.reason = outcome.reason;
+  example.replay_flags = "--agent " + agent_config.type + " --memory " +
+                         (agent_config.memory_window == 0 ? std::string("full")
+                                                          : std::to_string(agent_config.memory_window) + "x" +
+                                                                std::to_string(agent_config.memory_window)) +
+                         " --sensor-noise " + formatNumber(agent_config.sensor_noise) + " --budget " +
+                         std::to_string(config.episode.budget) + " --sensor-range " +
+                         std::to_string(config.episode.sensor_range);
+  return example;
+}
 
 }  // namespace
 
@@ -72,38 +106,39 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
   if (static_cast<int>(candidates.size()) > count) candidates.resize(static_cast<std::size_t>(count));
   std::vector<FailureExample> failures;
   for (const Candidate& c : candidates) {
-    const PreparedSet& set = sets[c.set];
-    const EpisodeResult* first_fail = nullptr;
-    for (const EpisodeResult& r : rows) {
-      if (r.set == set.name && r.problem == set.set.ids[c.problem] && r.agent == c.worst_agent && !r.passed &&
-          (first_fail == nullptr || r.run < first_fail->run)) {
-        first_fail = &r;
-      }
-    }
-    const agents::AgentConfig& agent_config = *agent_by_name.at(c.worst_agent);
-    EpisodeRunner runner(agent_config, config.episode);
-    auto agent = agents::makeAgent(agent_config);
-    const EpisodeOutcome outcome =
-        runner.run(set.set.problems[c.problem], set.grids[c.problem], *agent, first_fail->seed, true);
-    FailureExample example;
-    example.set = set.name;
-    example.problem = set.set.ids[c.problem];
-    example.agent = c.worst_agent;
-    example.run = first_fail->run;
-    example.seed = first_fail->seed;
-    example.ppp = set.set.problems[c.problem];
-    example.path = outcome.path;
-    example.reason = outcome.reason;
-    example.replay_flags = "--agent " + agent_config.type + " --memory " +
-                           (agent_config.memory_window == 0 ? std::string("full")
-                                                            : std::to_string(agent_config.memory_window) + "x" +
-                                                                  std::to_string(agent_config.memory_window)) +
-                           " --sensor-noise " + formatNumber(agent_config.sensor_noise) + " --budget " +
-                           std::to_string(config.episode.budget) + " --sensor-range " +
-                           std::to_string(config.episode.sensor_range);
-    failures.push_back(std::move(example));
+    failures.push_back(failingRun(config, sets[c.set], c.problem, *agent_by_name.at(c.worst_agent), rows));
   }
   return failures;
+}
+
+std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
+                                          const std::vector<EpisodeResult>& rows) {
+  std::vector<FailureExample> worst;
+  for (const agents::AgentConfig& agent : config.agents) {
+    if (agent.type == kControlType || agent.type == "random" || agents::isPlanner(agent)) continue;
+    std::map<std::pair<int, int>, std::pair<int, int>> counts;  // (set, problem) -> (passes, runs)
+    std::map<std::string, int> set_index;
+    for (int s = 0; s < static_cast<int>(sets.size()); ++s) set_index[sets[s].name] = s;
+    std::vector<std::map<std::string, int>> problem_index(sets.size());
+    for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
+      for (int p = 0; p < static_cast<int>(sets[s].set.ids.size()); ++p) problem_index[s][sets[s].set.ids[p]] = p;
+    }
+    for (const EpisodeResult& r : rows) {
+      if (r.agent != agent.name) continue;
+      const int s = set_index.at(r.set);
+      auto& c = counts[{s, problem_index[s].at(r.problem)}];
+      c.first += r.passed ? 1 : 0;
+      ++c.second;
+    }
+    double lowest = 1.0;
+    std::pair<int, int> at{-1, -1};
+    for (const auto& [where, c] : counts) {  // set order, then PPP order: the first of equals wins
+      const double rate = static_cast<double>(c.first) / c.second;
+      if (rate < lowest) lowest = rate, at = where;
+    }
+    if (at.first >= 0) worst.push_back(failingRun(config, sets[at.first], at.second, agent, rows));
+  }
+  return worst;
 }
 
 void writeExperimentReport(const std::string& dir, const ExperimentConfig& config, const std::string& config_text,
@@ -131,6 +166,15 @@ void writeExperimentReport(const std::string& dir, const ExperimentConfig& confi
     for (std::size_t b = a + 1; b < sets.size(); ++b) input.comparisons.emplace_back(sets[a].name, sets[b].name);
   }
   input.failures = hardestFailures(config, sets, rows, config.hardest);
+  input.worst = worstFailures(config, sets, rows);
+  for (const PreparedSet& set : sets) {
+    SetInfo info{set.name, set.set.diversity, ""};
+    const std::filesystem::path archive = std::filesystem::path(set.directory) / "archive.svg";
+    if (!set.directory.empty() && std::filesystem::exists(archive)) {
+      info.archive_svg = readTextFile(archive.string(), 16u << 20);
+    }
+    input.sets.push_back(std::move(info));
+  }
   std::filesystem::create_directories(dir);
   writeSummaryCsv((std::filesystem::path(dir) / "summary.csv").string(), input.rates);
   writeReport(dir, input);

@@ -14,7 +14,8 @@
 #include "ppp_simulator/episode.hpp"
 #include "ppp_simulator/experiment_report.hpp"
 #include "ppp_simulator/results_file.hpp"
-#include "ppp_simulator/set_evolution.hpp"
+#include "ppp_generator/set_evolution.hpp"
+#include "ppp_simulator/failure_fitness.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -106,11 +107,12 @@ std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::
       if (!fs::exists(fs::path(set_dir) / "set.csv")) {
         say(log, "generating set '" + spec.name + "' (" + spec.generator->fitness + ", " +
                      std::to_string(spec.generator->matings) + " matings)");
-        const EvolvedSet evolved =
-            evolveSetDirectory(set_dir, *spec.generator, config.agents, config.episode, config.threads);
+        const generator::EvolvedSet evolved = generator::evolveSetDirectory(
+            set_dir, *spec.generator, fitnessFor(*spec.generator, config.agents, config.episode, config.threads));
         say(log, "set '" + spec.name + "': " + evolved.summary);
       }
     }
+    p.directory = set_dir;
     p.set = generator::readProblemSetDirectory(set_dir);
     DpaSolver dpa;
     for (const Problem& problem : p.set.problems) {

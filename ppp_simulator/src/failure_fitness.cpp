@@ -122,6 +122,21 @@ generator::Fitness makeFailureFitness(const FailurePanel& panel) {
   return fitness;
 }
 
+generator::Fitness fitnessFor(const generator::GeneratorOptions& options,
+                              const std::vector<agents::AgentConfig>& available, const EpisodeOptions& episode,
+                              int threads) {
+  if (options.fitness != generator::kFailureFitness) {
+    return generator::makeFitness(options.fitness, generator::FitnessParameters{options.weights, options.seed});
+  }
+  FailurePanel panel;
+  panel.agents = resolvePanel(options.agents, available);
+  panel.episode = episode;
+  panel.runs_per_eval = options.runs_per_eval;
+  panel.seed = options.seed;
+  panel.threads = threads;
+  return makeFailureFitness(panel);
+}
+
 std::vector<agents::AgentConfig> resolvePanel(const std::vector<std::string>& names,
                                               const std::vector<agents::AgentConfig>& available) {
   if (names.empty()) throw InvalidArgument("agents", "empty panel: the failure fitness needs at least one agent name");

@@ -207,7 +207,7 @@ std::vector<Plot> makePlots(const PassRateTable& rates) {
   for (const std::string& set : rates.sets) {
     Chart by_ppp;
     by_ppp.title = "Pass rate per PPP of set " + set;
-    by_ppp.x_label = "PPP";
+    by_ppp.x_label = "PPP (column number; the id is in the tooltip)";
     by_ppp.y_label = "pass rate over the runs (%)";
     by_ppp.categories = problemsOf(rates, set);
     std::map<std::string, std::size_t> column;
@@ -220,8 +220,9 @@ std::vector<Plot> makePlots(const PassRateTable& rates) {
       by_ppp.series.push_back(std::move(series));
     }
     plots.push_back(Plot{"plots/" + names.claim("pass_rate_by_ppp_" + safeStem(set), ".svg"),
-                         "Pass rate (%) of every agent on each PPP of set " + set + ".", lineChartSvg(by_ppp, true),
-                         lineChartSvg(by_ppp, false)});
+                         "Pass rate (%) of every agent (rows) on each PPP (columns, fittest first) of set " + set +
+                             ": red cells are PPPs the agent fails, blue ones it passes; hover for the figures.",
+                         heatMapSvg(by_ppp, true), heatMapSvg(by_ppp, false)});
   }
   return plots;
 }
@@ -405,6 +406,10 @@ void passRateSection(const ReportInput& input, Text* out) {
   footer("PPPs", [](const SetSummary& s) { return std::to_string(s.problems); });
   footer("runs per PPP and agent", [](const SetSummary& s) { return range(s.min_runs, s.max_runs); });
   footer("runs in total", [](const SetSummary& s) { return std::to_string(s.runs); });
+  if (input.sets.size() == rates.sets.size()) {
+    std::size_t column = 0;
+    footer("diversity", [&](const SetSummary&) { return formatFixed(input.sets[column++].diversity, 3); });
+  }
   out->html += "</tfoot>\n</table>\n";
   out->md += "\n";
 }
@@ -469,6 +474,43 @@ void plotSection(const std::vector<Plot>& plots, Text* out) {
   }
 }
 
+/// One failing run: heading, picture and the facts to replay it.
+void failureEntry(const FailureExample& failure, const Picture& picture, const std::string& number, Text* out) {
+  const std::string alt = "PPP " + failure.problem + " of set " + failure.set + " with the path of " +
+                          failure.agent + " in run " + std::to_string(failure.run);
+  const std::string reason = reasonText(failure.reason);
+  const std::string grid = std::to_string(failure.ppp.width) + "\xC3\x97" + std::to_string(failure.ppp.height) +
+                           ", start " + cellText(failure.ppp.start) + ", goal " + cellText(failure.ppp.goal) +
+                           ", " + std::to_string(decodeGrid(failure.ppp).obstacleCount()) + " obstacle cells";
+  const std::string command = replayCommand(failure, picture);
+
+  out->md += "### " + number + mdCode(failure.set, false) + " / " + mdCode(failure.problem, false) +
+             " \xE2\x80\x94 " + mdCode(failure.agent, false) + "\n\n";
+  out->md += "![" + mdText(alt) + "](" + picture.png_file + ")\n\n";
+  out->md += "- agent " + mdCode(failure.agent, false) + ", run " + std::to_string(failure.run) + ", seed " +
+             mdCode(std::to_string(failure.seed), false) + "\n";
+  out->md += "- reason " + mdCode(failure.reason, false) + (reason.empty() ? "" : ": " + mdText(reason)) + "\n";
+  out->md += "- grid " + mdText(grid) + "\n";
+  out->md += "- path " + mdText(pathText(failure)) + "\n";
+  out->md += "- replay: " + mdCode(command, false) + "\n\n";
+
+  out->html += "<h3>" + escapeMarkup(number) + "<code>" + escapeMarkup(failure.set) + "</code> / <code>" +
+               escapeMarkup(failure.problem) + "</code> \xE2\x80\x94 <code>" + escapeMarkup(failure.agent) +
+               "</code></h3>\n<div class=\"failure\">\n";
+  out->html += "<img src=\"data:image/png;base64," + generator::base64Encode(picture.png) + "\" width=\"" +
+               std::to_string(picture.width) + "\" height=\"" + std::to_string(picture.height) + "\" alt=\"" +
+               escapeMarkup(alt) + "\">\n<ul>\n";
+  out->html += "<li>agent <code>" + escapeMarkup(failure.agent) + "</code>, run " + std::to_string(failure.run) +
+               ", seed <code>" + std::to_string(failure.seed) + "</code></li>\n";
+  out->html += "<li>reason <code>" + escapeMarkup(failure.reason) + "</code>" +
+               (reason.empty() ? "" : ": " + escapeMarkup(reason)) + "</li>\n";
+  out->html += "<li>grid " + escapeMarkup(grid) + "</li>\n";
+  out->html += "<li>path " + escapeMarkup(pathText(failure)) + "</li>\n";
+  out->html += "<li>picture <code>" + escapeMarkup(picture.png_file) + "</code>, PPP file <code>" +
+               escapeMarkup(picture.ppp_file) + "</code></li>\n";
+  out->html += "<li>replay: <code>" + escapeMarkup(command) + "</code></li>\n</ul>\n</div>\n";
+}
+
 void failureSection(const ReportInput& input, const std::vector<Picture>& pictures, Text* out) {
   out->md += "## Hardest PPPs\n\n";
   out->html += "<h2>Hardest PPPs</h2>\n";
@@ -483,42 +525,69 @@ void failureSection(const ReportInput& input, const std::vector<Picture>& pictur
   out->md += mdText(intro) + "\n\n";
   out->html += "<p>" + escapeMarkup(intro) + "</p>\n";
   for (std::size_t i = 0; i < input.failures.size(); ++i) {
-    const FailureExample& failure = input.failures[i];
-    const Picture& picture = pictures[i];
-    const std::string number = std::to_string(i + 1) + ". ";
-    const std::string alt = "PPP " + failure.problem + " of set " + failure.set + " with the path of " +
-                            failure.agent + " in run " + std::to_string(failure.run);
-    const std::string reason = reasonText(failure.reason);
-    const std::string grid = std::to_string(failure.ppp.width) + "\xC3\x97" + std::to_string(failure.ppp.height) +
-                             ", start " + cellText(failure.ppp.start) + ", goal " + cellText(failure.ppp.goal) +
-                             ", " + std::to_string(decodeGrid(failure.ppp).obstacleCount()) + " obstacle cells";
-    const std::string command = replayCommand(failure, picture);
+    failureEntry(input.failures[i], pictures[i], std::to_string(i + 1) + ". ", out);
+  }
+}
 
-    out->md += "### " + number + mdCode(failure.set, false) + " / " + mdCode(failure.problem, false) +
-               " \xE2\x80\x94 " + mdCode(failure.agent, false) + "\n\n";
-    out->md += "![" + mdText(alt) + "](" + picture.png_file + ")\n\n";
-    out->md += "- agent " + mdCode(failure.agent, false) + ", run " + std::to_string(failure.run) + ", seed " +
-               mdCode(std::to_string(failure.seed), false) + "\n";
-    out->md += "- reason " + mdCode(failure.reason, false) + (reason.empty() ? "" : ": " + mdText(reason)) + "\n";
-    out->md += "- grid " + mdText(grid) + "\n";
-    out->md += "- path " + mdText(pathText(failure)) + "\n";
-    out->md += "- replay: " + mdCode(command, false) + "\n\n";
-
-    out->html += "<h3>" + escapeMarkup(number) + "<code>" + escapeMarkup(failure.set) + "</code> / <code>" +
-                 escapeMarkup(failure.problem) + "</code> \xE2\x80\x94 <code>" + escapeMarkup(failure.agent) +
-                 "</code></h3>\n<div class=\"failure\">\n";
-    out->html += "<img src=\"data:image/png;base64," + generator::base64Encode(picture.png) + "\" width=\"" +
-                 std::to_string(picture.width) + "\" height=\"" + std::to_string(picture.height) + "\" alt=\"" +
-                 escapeMarkup(alt) + "\">\n<ul>\n";
-    out->html += "<li>agent <code>" + escapeMarkup(failure.agent) + "</code>, run " + std::to_string(failure.run) +
-                 ", seed <code>" + std::to_string(failure.seed) + "</code></li>\n";
-    out->html += "<li>reason <code>" + escapeMarkup(failure.reason) + "</code>" +
-                 (reason.empty() ? "" : ": " + escapeMarkup(reason)) + "</li>\n";
-    out->html += "<li>grid " + escapeMarkup(grid) + "</li>\n";
-    out->html += "<li>path " + escapeMarkup(pathText(failure)) + "</li>\n";
-    out->html += "<li>picture <code>" + escapeMarkup(picture.png_file) + "</code>, PPP file <code>" +
-                 escapeMarkup(picture.ppp_file) + "</code></li>\n";
-    out->html += "<li>replay: <code>" + escapeMarkup(command) + "</code></li>\n</ul>\n</div>\n";
+/// Per agent and set, how many PPPs the agent fails; each agent's worst PPP; the sets' archives.
+void faultSection(const ReportInput& input, const std::vector<Picture>& pictures, Text* out) {
+  const PassRateTable& rates = input.rates;
+  out->md += "## Faults found\n\n";
+  out->html += "<h2>Faults found</h2>\n";
+  const std::string intro =
+      "Per agent and set: the PPPs the agent passes in fewer than half of its runs, out of the set's PPPs. "
+      "Below, every agent that fails somewhere (but the random baseline) with a failing run on its worst PPP.";
+  out->md += mdText(intro) + "\n\n";
+  out->html += "<p>" + escapeMarkup(intro) + "</p>\n";
+  std::map<std::pair<std::string, std::string>, std::pair<int, int>> failed;  // (set, agent) -> (failed, PPPs)
+  for (const ProblemPassRate& row : rates.per_problem) {
+    auto& count = failed[{row.set, row.agent}];
+    count.first += row.rate() < kFailedBelow ? 1 : 0;
+    ++count.second;
+  }
+  out->md += "| Agent |";
+  std::string align = "|:---|";
+  out->html += "<table>\n<thead><tr><th>Agent</th>";
+  for (const std::string& set : rates.sets) {
+    out->md += " " + mdCode(set, true) + " |";
+    align += "---:|";
+    out->html += "<th class=\"num\"><code>" + escapeMarkup(set) + "</code></th>";
+  }
+  out->md += "\n" + align + "\n";
+  out->html += "</tr></thead>\n<tbody>\n";
+  for (const std::string& agent : rates.agents) {
+    out->md += "| " + mdCode(agent, true) + " |";
+    out->html += "<tr><td><code>" + escapeMarkup(agent) + "</code></td>";
+    for (const std::string& set : rates.sets) {
+      const auto found = failed.find({set, agent});
+      if (found == failed.end()) {
+        out->md += " \xE2\x80\x94 |";
+        out->html += "<td class=\"num muted\">\xE2\x80\x94</td>";
+        continue;
+      }
+      const auto [fails, problems] = found->second;
+      const std::string text = std::to_string(fails) + " of " + std::to_string(problems);
+      out->md += " " + text + " |";
+      out->html += "<td class=\"num\" style=\"" + rateCellStyle(1.0 - static_cast<double>(fails) / problems) +
+                   "\">" + escapeMarkup(text) + "</td>";
+    }
+    out->md += "\n";
+    out->html += "</tr>\n";
+  }
+  out->md += "\n";
+  out->html += "</tbody>\n</table>\n";
+  for (std::size_t i = 0; i < input.worst.size(); ++i) {
+    failureEntry(input.worst[i], pictures[i], "", out);
+  }
+  for (const SetInfo& set : input.sets) {
+    if (set.archive_svg.empty()) continue;
+    const std::string caption = "The MAP-Elites archive of set " + set.name +
+                                ": each cell keeps the fittest PPP whose characters fall into it; darker is fitter.";
+    out->md += "### Archive of " + mdCode(set.name, false) + "\n\n" + mdText(caption) + " (sets/" +
+               mdText(set.name) + "/archive.svg)\n\n";
+    const std::string inline_svg = set.archive_svg.substr(std::min(set.archive_svg.find("<svg"), set.archive_svg.size()));
+    out->html += "<h3>Archive of <code>" + escapeMarkup(set.name) + "</code></h3>\n<figure>\n" + inline_svg +
+                 "<figcaption>" + escapeMarkup(caption) + "</figcaption>\n</figure>\n";
   }
 }
 
@@ -557,7 +626,11 @@ void makeDirectory(const std::string& path) {
 void writeReport(const std::string& dir, const ReportInput& input) {
   checkComparisons(input);
   const std::vector<Plot> plots = makePlots(input.rates);
-  const std::vector<Picture> pictures = makePictures(input.failures);
+  std::vector<FailureExample> shown = input.failures;
+  shown.insert(shown.end(), input.worst.begin(), input.worst.end());
+  const std::vector<Picture> all_pictures = makePictures(shown);
+  const std::vector<Picture> pictures(all_pictures.begin(), all_pictures.begin() + input.failures.size());
+  const std::vector<Picture> worst_pictures(all_pictures.begin() + input.failures.size(), all_pictures.end());
 
   Text text;
   const std::string title = input.title.empty() ? "PPP experiment report" : input.title;
@@ -568,6 +641,7 @@ void writeReport(const std::string& dir, const ReportInput& input) {
               "</h1>\n<p class=\"guide\">" + escapeMarkup(guide) + "</p>\n";
   passRateSection(input, &text);
   comparisonSection(input, &text);
+  faultSection(input, worst_pictures, &text);
   plotSection(plots, &text);
   failureSection(input, pictures, &text);
   configurationSection(input, &text);
@@ -576,16 +650,16 @@ void writeReport(const std::string& dir, const ReportInput& input) {
   const std::filesystem::path root(dir);
   makeDirectory(dir);
   makeDirectory((root / "plots").string());
-  if (!input.failures.empty()) {
+  if (!shown.empty()) {
     makeDirectory((root / "pictures").string());
     makeDirectory((root / "ppps").string());
   }
   for (const Plot& plot : plots) writeFileAtomically((root / plot.file).string(), plot.file_svg);
   std::set<std::string> written_ppps;
-  for (std::size_t i = 0; i < pictures.size(); ++i) {
-    writeFileAtomically((root / pictures[i].png_file).string(), pictures[i].png);
-    if (written_ppps.insert(pictures[i].ppp_file).second) {
-      writePppFile(input.failures[i].ppp, (root / pictures[i].ppp_file).string());
+  for (std::size_t i = 0; i < all_pictures.size(); ++i) {
+    writeFileAtomically((root / all_pictures[i].png_file).string(), all_pictures[i].png);
+    if (written_ppps.insert(all_pictures[i].ppp_file).second) {
+      writePppFile(shown[i].ppp, (root / all_pictures[i].ppp_file).string());
     }
   }
   writeFileAtomically((root / "report.md").string(), text.md);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/text_format.hpp"
@@ -131,41 +132,14 @@ std::string axes(const Chart& chart, const Layout& layout) {
   return svg;
 }
 
-/// A marker of the given shape (cycling circle, square, triangle, diamond) centred on (x, y).
-std::string marker(std::size_t series, double x, double y, const std::string& tooltip) {
-  const std::string fill = std::string(" fill=\"") + colour(series) + "\" stroke=\"#fff\" stroke-width=\"0.8\"";
-  const std::string title = "<title>" + tooltip + "</title>";
-  const double r = 3.6;
-  switch (series % 4) {
-    case 0:
-      return "<circle cx=\"" + px(x) + "\" cy=\"" + px(y) + "\" r=\"" + px(r) + "\"" + fill + ">" + title +
-             "</circle>\n";
-    case 1:
-      return "<rect x=\"" + px(x - r) + "\" y=\"" + px(y - r) + "\" width=\"" + px(2 * r) + "\" height=\"" +
-             px(2 * r) + "\"" + fill + ">" + title + "</rect>\n";
-    case 2:
-      return "<path d=\"M" + px(x) + " " + px(y - r - 0.8) + "L" + px(x + r + 0.6) + " " + px(y + r * 0.8) + "L" +
-             px(x - r - 0.6) + " " + px(y + r * 0.8) + "Z\"" + fill + ">" + title + "</path>\n";
-    default:
-      return "<path d=\"M" + px(x) + " " + px(y - r - 0.8) + "L" + px(x + r + 0.8) + " " + px(y) + "L" + px(x) +
-             " " + px(y + r + 0.8) + "L" + px(x - r - 0.8) + " " + px(y) + "Z\"" + fill + ">" + title + "</path>\n";
-  }
-}
-
-/// The legend on the right: a swatch (bars) or a line with its marker (lines) and the series name.
-std::string legend(const Chart& chart, const Layout& layout, bool lines) {
+/// The legend on the right: a swatch and the series name.
+std::string legend(const Chart& chart, const Layout& layout) {
   std::string svg;
   for (std::size_t s = 0; s < chart.series.size(); ++s) {
     const double y = kTop + static_cast<double>(s) * kLegendRow + 8;
     const std::string name = escapeMarkup(chart.series[s].name);
-    if (lines) {
-      svg += "<line x1=\"" + px(layout.legend_x) + "\" y1=\"" + px(y) + "\" x2=\"" + px(layout.legend_x + 18) +
-             "\" y2=\"" + px(y) + "\" stroke=\"" + colour(s) + "\" stroke-width=\"1.6\"/>\n";
-      svg += marker(s, layout.legend_x + 9, y, name);
-    } else {
-      svg += "<rect x=\"" + px(layout.legend_x) + "\" y=\"" + px(y - 6) + "\" width=\"18\" height=\"12\" fill=\"" +
-             colour(s) + "\"/>\n";
-    }
+    svg += "<rect x=\"" + px(layout.legend_x) + "\" y=\"" + px(y - 6) + "\" width=\"18\" height=\"12\" fill=\"" +
+           colour(s) + "\"/>\n";
     svg += "<text x=\"" + px(layout.legend_x + 26) + "\" y=\"" + px(y) + "\" dy=\"0.35em\" fill=\"#222\"><title>" +
            name + "</title>" + escapeMarkup(shortenText(chart.series[s].name, kMaxLegendChars)) + "</text>\n";
   }
@@ -216,42 +190,83 @@ std::string groupedBarChartSvg(const Chart& chart, bool standalone) {
              px(height) + "\" fill=\"" + colour(s) + "\"><title>" + tooltip(chart, s, c) + "</title></rect>\n";
     }
   }
-  svg += legend(chart, layout, false);
+  svg += legend(chart, layout);
   svg += "</svg>\n";
   return svg;
 }
 
-std::string lineChartSvg(const Chart& chart, bool standalone) {
+std::string heatMapSvg(const Chart& chart, bool standalone) {
   chart.validate();
-  const double min_band = 22 + 1.5 * static_cast<double>(chart.series.size());
-  const Layout layout = layOut(chart, min_band);
-  std::string svg = openSvg(chart, layout, standalone, "line chart") + axes(chart, layout);
-  const std::size_t n_series = chart.series.size();
-  const double nudge = n_series > 1 ? std::min(3.0, layout.band * 0.5 / static_cast<double>(n_series)) : 0.0;
-  std::string markers;
-  for (std::size_t s = 0; s < n_series; ++s) {
-    const double offset = (static_cast<double>(s) - static_cast<double>(n_series - 1) / 2) * nudge;
-    std::string d;
-    bool pen_down = false;
-    for (std::size_t c = 0; c < chart.categories.size(); ++c) {
-      const double value = chart.series[s].values[c];
-      if (std::isnan(value)) {
-        pen_down = false;
-        continue;
-      }
-      const double x = kLeft + (static_cast<double>(c) + 0.5) * layout.band + offset;
-      const double y = valueY(chart, value);
-      d += (pen_down ? "L" : "M") + px(x) + " " + px(y);
-      pen_down = true;
-      markers += marker(s, x, y, tooltip(chart, s, c));
-    }
-    if (!d.empty()) {
-      svg += "<path d=\"" + d + "\" fill=\"none\" stroke=\"" + colour(s) +
-             "\" stroke-width=\"1.6\" stroke-opacity=\"0.75\"/>\n";
+  const std::size_t columns = chart.categories.size();
+  const std::size_t rows = chart.series.size();
+  std::size_t longest_name = 0;
+  for (const PlotSeries& s : chart.series) {
+    longest_name = std::max(longest_name, std::min(displayLength(s.name), kMaxLegendChars));
+  }
+  const double left = 12 + static_cast<double>(longest_name) * kCharWidth;
+  const double cell_width = columns > 0 ? std::clamp(900.0 / static_cast<double>(columns), 6.0, 24.0) : 24.0;
+  const double cell_height = 18;
+  const double plot_width = std::max(kMinPlotWidth, cell_width * static_cast<double>(columns));
+  const double plot_bottom = kTop + cell_height * static_cast<double>(rows);
+  Layout layout;
+  layout.width = left + plot_width + 20;
+  layout.height = plot_bottom + 74;
+  std::string svg = openSvg(chart, layout, standalone, "heat map");
+  if (columns == 0 || rows == 0) {
+    svg += "<text x=\"" + px(left) + "\" y=\"" + px(kTop + 20) + "\" fill=\"#777\">no data</text>\n</svg>\n";
+    return svg;
+  }
+  // Diverging scale: 0 red, the middle near white, y_max blue (readable without telling red from green).
+  const auto fill = [&](double value) {
+    if (std::isnan(value)) return std::string("#cccccc");
+    const double t = std::clamp(value / chart.y_max, 0.0, 1.0);
+    const double low[3] = {178, 24, 43}, mid[3] = {247, 247, 247}, high[3] = {33, 102, 172};
+    const double* a = t < 0.5 ? low : mid;
+    const double* b = t < 0.5 ? mid : high;
+    const double u = t < 0.5 ? t * 2 : (t - 0.5) * 2;
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "#%02x%02x%02x", static_cast<int>(std::lround(a[0] + (b[0] - a[0]) * u)),
+                  static_cast<int>(std::lround(a[1] + (b[1] - a[1]) * u)),
+                  static_cast<int>(std::lround(a[2] + (b[2] - a[2]) * u)));
+    return std::string(hex);
+  };
+  for (std::size_t r = 0; r < rows; ++r) {
+    const double y = kTop + cell_height * static_cast<double>(r);
+    svg += "<text x=\"" + px(left - 6) + "\" y=\"" + px(y + cell_height / 2) +
+           "\" dy=\"0.35em\" text-anchor=\"end\" fill=\"#222\"><title>" + escapeMarkup(chart.series[r].name) +
+           "</title>" + escapeMarkup(shortenText(chart.series[r].name, kMaxLegendChars)) + "</text>\n";
+    for (std::size_t c = 0; c < columns; ++c) {
+      const double value = chart.series[r].values[c];
+      const std::string tip = std::isnan(value) ? escapeMarkup(chart.series[r].name + " on " + chart.categories[c] +
+                                                               ": no data")
+                                                : tooltip(chart, r, c);
+      svg += "<rect x=\"" + px(left + cell_width * static_cast<double>(c)) + "\" y=\"" + px(y) + "\" width=\"" +
+             px(cell_width - 1) + "\" height=\"" + px(cell_height - 1) + "\" fill=\"" + fill(value) + "\"><title>" +
+             tip + "</title></rect>\n";
     }
   }
-  svg += markers;  // above every line
-  svg += legend(chart, layout, true);
+  // Column labels: the first, the last and every tenth.
+  for (std::size_t c = 0; c < columns; ++c) {
+    if (c != 0 && c + 1 != columns && c % 10 != 0) continue;
+    svg += "<text x=\"" + px(left + cell_width * (static_cast<double>(c) + 0.5)) + "\" y=\"" + px(plot_bottom + 14) +
+           "\" text-anchor=\"middle\" font-size=\"10\" fill=\"#444\"><title>" + escapeMarkup(chart.categories[c]) +
+           "</title>" + std::to_string(c) + "</text>\n";
+  }
+  if (!chart.x_label.empty()) {
+    svg += "<text x=\"" + px(left) + "\" y=\"" + px(plot_bottom + 32) + "\" fill=\"#444\">" +
+           escapeMarkup(chart.x_label) + "</text>\n";
+  }
+  // The scale.
+  const double scale_y = plot_bottom + 44;
+  for (int i = 0; i <= 20; ++i) {
+    svg += "<rect x=\"" + px(left + 8.0 * i) + "\" y=\"" + px(scale_y) + "\" width=\"8\" height=\"10\" fill=\"" +
+           fill(chart.y_max * i / 20.0) + "\"/>\n";
+  }
+  svg += "<text x=\"" + px(left - 4) + "\" y=\"" + px(scale_y + 5) + "\" dy=\"0.35em\" text-anchor=\"end\" "
+         "font-size=\"10\" fill=\"#444\">0" + escapeMarkup(chart.value_suffix) + "</text>\n";
+  svg += "<text x=\"" + px(left + 172) + "\" y=\"" + px(scale_y + 5) + "\" dy=\"0.35em\" font-size=\"10\" "
+         "fill=\"#444\">" + formatGeneral(chart.y_max, 6) + escapeMarkup(chart.value_suffix) +
+         " (grey: no data)</text>\n";
   svg += "</svg>\n";
   return svg;
 }

@@ -20,12 +20,15 @@ TEST(ExperimentConfigTest, ShippedDefaultExperiment) {
   EXPECT_EQ(c.runs, 1000);
   EXPECT_EQ(c.episode.budget, 300);
   EXPECT_EQ(c.episode.sensor_range, 2);
-  ASSERT_EQ(c.sets.size(), 2u);
+  ASSERT_EQ(c.sets.size(), 3u);
   EXPECT_EQ(c.sets[0].name, "turns");
   EXPECT_EQ(c.sets[0].generator->fitness, "turns");
   EXPECT_EQ(c.sets[1].generator->fitness, "difficulty");
   EXPECT_EQ(c.sets[1].generator->population, 60);
   EXPECT_EQ(c.sets[1].generator->matings, 10000);
+  EXPECT_EQ(c.sets[2].generator->fitness, "failure");
+  EXPECT_EQ(c.sets[2].generator->agents, (std::vector<std::string>{"wall_follower_left", "explorer", "bumper"}));
+  EXPECT_EQ(c.sets[2].generator->runs_per_eval, 20);
   ASSERT_EQ(c.agents.size(), 12u);  // the ten built-in agents and the two example planners
   EXPECT_EQ(c.agents[6].name, "explorer_memory_5x5");
   EXPECT_EQ(c.agents[6].memory_window, 5);

@@ -15,7 +15,7 @@
 #include "ppp_core/reachability.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_core/text_file.hpp"
-#include "ppp_simulator/set_evolution.hpp"
+#include "ppp_generator/set_evolution.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -156,8 +156,10 @@ TEST(FailureFitnessTest, AHuntIsByteIdenticalForASeedAndFindsFailures) {
     o.matings = 300;
     o.seed = 9;
     o.archive = archive;
-    const EvolvedSet a = evolveSetDirectory((root / (archive + "_a")).string(), o, {}, EpisodeOptions{}, 2);
-    const EvolvedSet b = evolveSetDirectory((root / (archive + "_b")).string(), o, {}, EpisodeOptions{}, 1);
+    const generator::EvolvedSet a =
+        generator::evolveSetDirectory((root / (archive + "_a")).string(), o, fitnessFor(o, {}, EpisodeOptions{}, 2));
+    const generator::EvolvedSet b =
+        generator::evolveSetDirectory((root / (archive + "_b")).string(), o, fitnessFor(o, {}, EpisodeOptions{}, 1));
     EXPECT_EQ(filesOf(root / (archive + "_a")), filesOf(root / (archive + "_b"))) << archive;
     EXPECT_EQ(fs::exists(root / (archive + "_a") / "archive.svg"), archive == generator::kMapElitesArchive);
     double mean = 0;

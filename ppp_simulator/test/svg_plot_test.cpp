@@ -45,25 +45,25 @@ TEST(GroupedBarChartSvg, StandaloneHasTheXmlDeclarationAndNamespace) {
   EXPECT_NE(svg.find("xmlns=\"http://www.w3.org/2000/svg\""), std::string::npos);
 }
 
-TEST(LineChartSvg, DrawsAMarkerPerValueAndBreaksLinesAtMissingValues) {
+TEST(HeatMapSvg, OneCellPerValueColouredByRateAndGreyWhereMissing) {
   Chart chart = twoByThree();
   chart.series[1].values = {100, std::nan(""), 0};
-  const std::string svg = lineChartSvg(chart, false);
-  EXPECT_EQ(count(svg, "<title>set B on "), 2u);
-  // Series B is two separate pieces: two "M" moves in its path, no "L".
-  const std::size_t path = svg.find("stroke=\"#f28e2b\" stroke-width=\"1.6\" stroke-opacity");
-  ASSERT_NE(path, std::string::npos);
-  const std::size_t d = svg.rfind("<path d=\"", path);
-  const std::string data = svg.substr(d, path - d);
-  EXPECT_EQ(count(data, "M"), 2u) << data;
-  EXPECT_EQ(count(data, "L"), 0u) << data;
+  const std::string svg = heatMapSvg(chart, false);
+  EXPECT_EQ(count(svg, "<title>set B on "), 3u);
+  EXPECT_EQ(count(svg, ": no data</title>"), 1u);
+  // 0 % is the scale's red end, 100 % its blue end, 50 % the near-white middle.
+  EXPECT_NE(svg.find("fill=\"#b2182b\"><title>set B on"), std::string::npos) << svg;
+  EXPECT_NE(svg.find("fill=\"#2166ac\"><title>set B on"), std::string::npos);
+  EXPECT_NE(svg.find("fill=\"#cccccc\"><title>set B on"), std::string::npos);
+  chart.series[1].values = {50, 50, 50};
+  EXPECT_EQ(count(heatMapSvg(chart, false), "fill=\"#f7f7f7\"><title>set B on"), 3u);
 }
 
 TEST(Charts, EmptyChartsStillRender) {
   Chart chart;
   chart.title = "nothing";
   EXPECT_NE(groupedBarChartSvg(chart, false).find("no data"), std::string::npos);
-  EXPECT_NE(lineChartSvg(chart, false).find("no data"), std::string::npos);
+  EXPECT_NE(heatMapSvg(chart, false).find("no data"), std::string::npos);
 }
 
 TEST(Charts, ManyLongCategoriesAreSlantedAndShortened) {
@@ -73,7 +73,7 @@ TEST(Charts, ManyLongCategoriesAreSlantedAndShortened) {
     chart.categories.push_back("a_rather_long_problem_identifier_number_" + std::to_string(i));
   }
   chart.series = {{"x", std::vector<double>(40, 50.0)}};
-  const std::string svg = lineChartSvg(chart, false);
+  const std::string svg = groupedBarChartSvg(chart, false);
   EXPECT_NE(svg.find("rotate(-40)"), std::string::npos);
   EXPECT_NE(svg.find("\xE2\x80\xA6"), std::string::npos);  // ellipsis in the shortened label
   EXPECT_NE(svg.find("<title>a_rather_long_problem_identifier_number_39</title>"), std::string::npos);
@@ -91,7 +91,7 @@ TEST(Chart, ValidateRejectsMismatchedSeriesAndBadScale) {
   chart = twoByThree();
   chart.y_max = 0;
   try {
-    lineChartSvg(chart, false);
+    heatMapSvg(chart, false);
     FAIL() << "expected InvalidArgument";
   } catch (const InvalidArgument& e) {
     EXPECT_EQ(e.name(), "y_max");

@@ -17,6 +17,12 @@ namespace simulator {
 std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
                                             const std::vector<EpisodeResult>& rows, int count);
 
+/// Per agent (but the astar control, the random baseline and planners), the first failing run on its worst PPP
+/// (lowest pass rate over every set; the first of equals), replayed for its path; agents that never fail are
+/// left out.
+std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
+                                          const std::vector<EpisodeResult>& rows);
+
 /// Writes summary.csv and report.{md,html} (with plots and pictures) of a finished experiment into `dir`.
 /// @throws IoError.
 void writeExperimentReport(const std::string& dir, const ExperimentConfig& config, const std::string& config_text,

@@ -20,6 +20,7 @@ namespace simulator {
 /// A PPP set ready to run: its PPPs, decoded grids and optimal lengths.
 struct PreparedSet {
   std::string name;              ///< Set name.
+  std::string directory;         ///< The set's directory (PPP files, set.csv, trees, any archive).
   generator::ProblemSet set;     ///< The PPPs and their evaluations.
   std::vector<Grid> grids;       ///< Decoded grid of each PPP.
   std::vector<int> optimal;      ///< Fewest moves from start to goal of each PPP.

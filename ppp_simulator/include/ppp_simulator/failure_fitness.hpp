@@ -6,6 +6,7 @@
 
 #include "ppp_agents/agent_config.hpp"
 #include "ppp_generator/fitness.hpp"
+#include "ppp_generator/generator_options.hpp"
 #include "ppp_simulator/episode.hpp"
 
 namespace ppp {
@@ -44,6 +45,13 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
 /// search before the first failure is found). Scores kFailureBatchSize PPPs per call.
 /// @throws InvalidArgument("agents", ...) for an empty panel or a planner agent.
 generator::Fitness makeFailureFitness(const FailurePanel& panel);
+
+/// The fitness of a set's generator options: makeFitness(options.fitness), or for `failure` the failure
+/// fitness of the panel options.agents looked up in `available` (see resolvePanel), played with `episode`'s
+/// rules on `threads` threads (0: every core). @throws InvalidArgument naming the option.
+generator::Fitness fitnessFor(const generator::GeneratorOptions& options,
+                              const std::vector<agents::AgentConfig>& available, const EpisodeOptions& episode,
+                              int threads);
 
 /// Looks up the panel `names` among `available` configurations (an experiment's agents or an agents file);
 /// with no configurations available, each name must be a built-in agent type (no handicaps).

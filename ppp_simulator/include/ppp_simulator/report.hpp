@@ -27,6 +27,16 @@ struct FailureExample {
                                 ///< --memory 5x5"); empty means "--agent <agent>".
 };
 
+/// What the report says about a set besides its pass rates.
+struct SetInfo {
+  std::string name;         ///< Set name, as in the pass-rate table.
+  double diversity = 0;     ///< Its diversity figure (generator::setDiversity).
+  std::string archive_svg;  ///< Its MAP-Elites archive heat map (SVG), empty when it was not hunted with one.
+};
+
+/// PPPs an agent fails: its pass rate on them is below this.
+constexpr double kFailedBelow = 0.5;
+
 /// Everything the report shows.
 struct ReportInput {
   std::string title;        ///< Report heading.
@@ -34,12 +44,16 @@ struct ReportInput {
   PassRateTable rates;      ///< Pass rates of every agent on every PPP and set.
   std::vector<std::pair<std::string, std::string>> comparisons;  ///< Set pairs to compare, usually the first two.
   std::vector<FailureExample> failures;                          ///< Hardest PPPs with a failing path each.
+  std::vector<FailureExample> worst;  ///< Per agent, a failing run on its worst PPP ("Faults found").
+  std::vector<SetInfo> sets;          ///< Diversity and archive of each set (may be empty).
 };
 
-/// Writes the experiment report into `dir` (created if missing), replacing files of the same names:
+/// Writes the experiment report into `dir` (created if missing), replacing files of the same names (the
+/// "Faults found" section counts, per agent and set, the PPPs passed in under kFailedBelow of the runs, and
+/// shows `worst` and the sets' archives):
 /// `report.md` (Markdown, referring to the files below by relative path), `report.html` (self-contained: the
 /// same content with inline SVG charts and base64 PNG pictures, nothing fetched), `plots/pass_rate_by_agent.svg`,
-/// `plots/pass_rate_by_ppp_<set>.svg` per set, and per failure example `pictures/<set>_<problem>_<agent>.png`
+/// `plots/pass_rate_by_ppp_<set>.svg` per set (a heat map), and per failure example (hardest and worst) `pictures/<set>_<problem>_<agent>.png`
 /// (the PPP with the agent's path) and `ppps/<set>_<problem>.ppp` (the PPP, for `ppp replay`). Names are
 /// reduced to letters, digits, '.', '-' and '_' in file names. Every file is written atomically.
 /// Everything is checked and rendered before the first file is written.

@@ -33,10 +33,12 @@ struct Chart {
 /// @throws InvalidArgument as Chart::validate().
 std::string groupedBarChartSvg(const Chart& chart, bool standalone);
 
-/// Line chart as an `<svg>` element: per series, a marker at every category joined by a line (broken where a
-/// value is missing); markers of different series are nudged apart sideways so equal values stay visible.
-/// `standalone` as for groupedBarChartSvg(). @throws InvalidArgument as Chart::validate().
-std::string lineChartSvg(const Chart& chart, bool standalone);
+/// Heat map as an `<svg>` element: one row per series, one cell per category, coloured from red (0) through
+/// near-white (y_max / 2) to blue (y_max), grey where a value is missing; every cell has a tooltip, columns are
+/// numbered (the first, every tenth, the last) and a colour scale is drawn underneath. Readable for dozens of
+/// series over hundreds of categories. `standalone` as for groupedBarChartSvg().
+/// @throws InvalidArgument as Chart::validate().
+std::string heatMapSvg(const Chart& chart, bool standalone);
 
 }  // namespace simulator
 }  // namespace ppp

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The ROS experiment as a user starts it: roslaunch launch/experiment.launch on a small config (two sets of 60
-# evolved PPPs, the ten agents with 2 runs each and the two example planners with their own 3), on a private
+# The ROS experiment as a user starts it: roslaunch launch/experiment.launch on a small config (three sets of 60
+# PPPs: two evolved by generator nodes, one hunted by the simulator; the ten agents with 2 runs each and the two example planners with their own 3), on a private
 # master. Checks the experiment finishes with exactly sets x PPPs x agents x runs rows, the report and bag
 # exist, and rviz (headless) shows the recorded map.
 # Usage: launch_experiment_test.sh DEVEL_DIR
@@ -18,9 +18,9 @@ cp "$root/config/agents.yaml" "$root/config/generator.yaml" "$work/"
 timeout 600 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/out" config:="$work/experiment.yaml" \
   > "$work/launch.log" 2>&1
 rows=$(($(wc -l < "$work/out/results.csv") - 1))
-expected=$((2 * 60 * (10 * 2 + 2 * 3)))
+expected=$((3 * 60 * (10 * 2 + 2 * 3)))
 [ "$rows" -eq "$expected" ] && pass || fail "results.csv has $rows rows, expected $expected: $(tail -20 "$work/launch.log")"
-for f in summary.csv report.html report.md experiment.bag sets/turns/tree.html sets/difficulty/set.csv; do
+for f in summary.csv report.html report.md experiment.bag sets/turns/tree.html sets/difficulty/set.csv sets/hunted/set.csv; do
   [ -s "$work/out/$f" ] && pass || fail "the launched experiment did not write $f"
 done
 grep -q "experiment done" "$work/launch.log" && pass || fail "the simulator did not report the end"
@@ -32,11 +32,11 @@ reasons() {
 ! grep -q ",agent_lost$\|,timeout$\|,planner_lost$\|,planner_timeout$\|,invalid_path$\|,invalid_action$" \
   "$work/out/results.csv" && pass || fail "healthy agents lost runs: $(grep "lost$\|timeout$\|invalid" "$work/out/results.csv" | head)
 $(grep "fails as" "$work/launch.log" | head)"
-# Measured: both planners pass all 360 runs. OMPL plans on the true map, so only its time limit (1 s per plan,
+# Measured: both planners pass all 540 runs. OMPL plans on the true map, so only its time limit (1 s per plan,
 # on a loaded machine) could make it miss a path; the optimistic planner's re-plans race the robot.
 for planner in ompl optimistic; do
   passes=$(grep -c ",$planner,.*,goal_reached$" "$work/out/results.csv")
-  [ "$passes" -ge 354 ] && pass || fail "$planner passed $passes of 360 runs: $(reasons "$planner")"
+  [ "$passes" -ge 531 ] && pass || fail "$planner passed $passes of 540 runs: $(reasons "$planner")"
 done
 
 # The same experiment in process gives the same rows (it runs no planner agents).

@@ -1,0 +1,52 @@
+#include "ppp_generator/set_evolution.hpp"
+
+#include "ppp_core/csv.hpp"
+#include "ppp_generator/map_elites.hpp"
+
+namespace ppp {
+namespace generator {
+
+EvolvedSet evolveSet(const GeneratorOptions& options, Fitness fitness, const ProgressCallback& progress,
+                     long progress_interval) {
+  options.validate();
+  EvolvedSet evolved;
+  if (options.archive == kMapElitesArchive) {
+    MapElites search(options, std::move(fitness));
+    evolved.set = makeProblemSet(options, search.run(progress, progress_interval));
+    std::map<std::uint64_t, std::string> ids;
+    for (std::size_t i = 0; i < evolved.set.problems.size(); ++i) {
+      ids[decodeGrid(evolved.set.problems[i]).hash()] = evolved.set.ids[i];
+    }
+    std::vector<FeatureRange> ranges;
+    for (const std::string& name : options.features) ranges.push_back(featureRange(name, options));
+    evolved.extra_files["archive.csv"] = archiveCsv(search.archive(), options.features, ids);
+    evolved.extra_files["archive.svg"] = archiveHeatMapSvg(
+        search.archive(), options.features, ranges,
+        "MAP-Elites archive: " + options.fitness + " over " + options.features[0] + " x " + options.features[1]);
+    const ArchiveStats& s = search.stats();
+    evolved.summary = std::to_string(s.matings) + " matings, " + std::to_string(search.archive().elites().size()) +
+                      " archive cells filled, " + std::to_string(s.children_accepted) + " children became elites, " +
+                      std::to_string(s.children_pruned) + " pruned as unsolvable";
+  } else {
+    GeneticAlgorithm ga(options, std::move(fitness));
+    evolved.set = makeProblemSet(options, ga.run(progress, progress_interval));
+    const GenerationStats& s = ga.stats();
+    evolved.summary = std::to_string(s.matings) + " matings, " + std::to_string(s.children_accepted) +
+                      " children accepted, " + std::to_string(s.children_pruned) + " pruned as unsolvable, " +
+                      std::to_string(s.children_duplicate) + " dropped as duplicates, " +
+                      std::to_string(s.children_rejected) + " lost to a similar PPP";
+  }
+  evolved.summary += "; diversity " + formatNumber(evolved.set.diversity);
+  return evolved;
+}
+
+EvolvedSet evolveSetDirectory(const std::string& dir, const GeneratorOptions& options, Fitness fitness,
+                              const ProgressCallback& progress) {
+  checkOutputDirectory(dir);
+  EvolvedSet evolved = evolveSet(options, std::move(fitness), progress);
+  writeProblemSetDirectory(dir, evolved.set, options, evolved.extra_files);
+  return evolved;
+}
+
+}  // namespace generator
+}  // namespace ppp
