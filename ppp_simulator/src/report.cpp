@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <map>
 #include <set>
@@ -351,19 +352,23 @@ struct Text {
   std::string html;
 };
 
-void passRateSection(const ReportInput& input, Text* out) {
-  const PassRateTable& rates = input.rates;
-  out->md += "## Pass rates\n\n";
-  out->html += "<h2>Pass rates</h2>\n";
-  const std::string caption =
-      "Mean pass rate over each set's PPPs (rows: agents, columns: PPP sets); \xE2\x80\x94 marks an agent "
-      "without results on a set.";
-  out->md += mdText(caption) + "\n\n";
-  out->html += "<p>" + escapeMarkup(caption) + "</p>\n";
+/// One cell of an agent x set table: its text, and for the HTML its pass-rate shading and tooltip.
+struct TableCell {
+  bool present = false;  ///< False: the agent has no results on the set (drawn as a dash).
+  std::string text;      ///< What the cell says.
+  double shade_rate = 1; ///< Pass rate whose shade the HTML cell gets (rateCellStyle).
+  std::string title;     ///< HTML tooltip (may be empty).
+};
 
+/// Opens an agent x set table and writes its rows (rows: agents, columns: sets), leaving the HTML table open
+/// for a footer: the caller closes it with "</tbody>" or a "<tfoot>".
+void agentSetTable(const PassRateTable& rates, const std::string& html_class,
+                   const std::function<TableCell(const std::string& set, const std::string& agent)>& cell,
+                   Text* out) {
   out->md += "| Agent |";
   std::string align = "|:---|";
-  out->html += "<table class=\"rates\">\n<thead><tr><th>Agent</th>";
+  out->html += "<table" + (html_class.empty() ? std::string() : " class=\"" + html_class + "\"") +
+               ">\n<thead><tr><th>Agent</th>";
   for (const std::string& set : rates.sets) {
     out->md += " " + mdCode(set, true) + " |";
     align += "---:|";
@@ -375,20 +380,39 @@ void passRateSection(const ReportInput& input, Text* out) {
     out->md += "| " + mdCode(agent, true) + " |";
     out->html += "<tr><td><code>" + escapeMarkup(agent) + "</code></td>";
     for (const std::string& set : rates.sets) {
-      const SetPassRate* row = rates.find(set, agent);
-      if (row == nullptr) {
+      const TableCell c = cell(set, agent);
+      if (!c.present) {
         out->md += " \xE2\x80\x94 |";
         out->html += "<td class=\"num muted\">\xE2\x80\x94</td>";
-      } else {
-        out->md += " " + percent(row->mean_rate) + " |";
-        out->html += "<td class=\"num\" style=\"" + rateCellStyle(row->mean_rate) + "\" title=\"" +
-                     std::to_string(row->passes) + " of " + std::to_string(row->runs) + " runs passed on " +
-                     std::to_string(row->problems) + " PPPs\">" + percent(row->mean_rate) + "</td>";
+        continue;
       }
+      out->md += " " + c.text + " |";
+      out->html += "<td class=\"num\" style=\"" + rateCellStyle(c.shade_rate) + "\"" +
+                   (c.title.empty() ? std::string() : " title=\"" + escapeMarkup(c.title) + "\"") + ">" +
+                   escapeMarkup(c.text) + "</td>";
     }
     out->md += "\n";
     out->html += "</tr>\n";
   }
+}
+
+void passRateSection(const ReportInput& input, Text* out) {
+  const PassRateTable& rates = input.rates;
+  out->md += "## Pass rates\n\n";
+  out->html += "<h2>Pass rates</h2>\n";
+  const std::string caption =
+      "Mean pass rate over each set's PPPs (rows: agents, columns: PPP sets); \xE2\x80\x94 marks an agent "
+      "without results on a set.";
+  out->md += mdText(caption) + "\n\n";
+  out->html += "<p>" + escapeMarkup(caption) + "</p>\n";
+
+  agentSetTable(rates, "rates", [&](const std::string& set, const std::string& agent) {
+    const SetPassRate* row = rates.find(set, agent);
+    if (row == nullptr) return TableCell{};
+    return TableCell{true, percent(row->mean_rate), row->mean_rate,
+                     std::to_string(row->passes) + " of " + std::to_string(row->runs) + " runs passed on " +
+                         std::to_string(row->problems) + " PPPs"};
+  }, out);
   std::vector<SetSummary> summaries;
   for (const std::string& set : rates.sets) summaries.push_back(summarise(rates, set));
   const auto footer = [&](const std::string& label, auto cell) {
@@ -545,35 +569,13 @@ void faultSection(const ReportInput& input, const std::vector<Picture>& pictures
     count.first += row.rate() < kFailedBelow ? 1 : 0;
     ++count.second;
   }
-  out->md += "| Agent |";
-  std::string align = "|:---|";
-  out->html += "<table>\n<thead><tr><th>Agent</th>";
-  for (const std::string& set : rates.sets) {
-    out->md += " " + mdCode(set, true) + " |";
-    align += "---:|";
-    out->html += "<th class=\"num\"><code>" + escapeMarkup(set) + "</code></th>";
-  }
-  out->md += "\n" + align + "\n";
-  out->html += "</tr></thead>\n<tbody>\n";
-  for (const std::string& agent : rates.agents) {
-    out->md += "| " + mdCode(agent, true) + " |";
-    out->html += "<tr><td><code>" + escapeMarkup(agent) + "</code></td>";
-    for (const std::string& set : rates.sets) {
-      const auto found = failed.find({set, agent});
-      if (found == failed.end()) {
-        out->md += " \xE2\x80\x94 |";
-        out->html += "<td class=\"num muted\">\xE2\x80\x94</td>";
-        continue;
-      }
-      const auto [fails, problems] = found->second;
-      const std::string text = std::to_string(fails) + " of " + std::to_string(problems);
-      out->md += " " + text + " |";
-      out->html += "<td class=\"num\" style=\"" + rateCellStyle(1.0 - static_cast<double>(fails) / problems) +
-                   "\">" + escapeMarkup(text) + "</td>";
-    }
-    out->md += "\n";
-    out->html += "</tr>\n";
-  }
+  agentSetTable(rates, "", [&](const std::string& set, const std::string& agent) {
+    const auto found = failed.find({set, agent});
+    if (found == failed.end()) return TableCell{};
+    const auto [fails, problems] = found->second;
+    return TableCell{true, std::to_string(fails) + " of " + std::to_string(problems),
+                     1.0 - static_cast<double>(fails) / problems, ""};
+  }, out);
   out->md += "\n";
   out->html += "</tbody>\n</table>\n";
   for (std::size_t i = 0; i < input.worst.size(); ++i) {

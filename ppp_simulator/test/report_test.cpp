@@ -151,6 +151,34 @@ TEST_F(ReportTest, MarkdownHasTheHandComputedPercentagesAndSectionsInOrder) {
   EXPECT_NE(config, std::string::npos);
 }
 
+TEST_F(ReportTest, FaultsFoundCountsFailedPppsShowsTheWorstAndTheArchive) {
+  // Failed = passed in under half the runs: explorer fails q2 (1/4) but not p2 or q1 (2/4, exactly half);
+  // random passes at most 1/4 anywhere, so it fails 2 of 2 on both sets.
+  ReportInput input = handMadeInput();
+  FailureExample worst = input.failures[0];
+  worst.agent = "explorer";
+  worst.problem = "q2";
+  input.worst = {worst};
+  input.sets = {{"alpha", 0.75, ""}, {"beta", 1.25, "<svg><title>the beta archive</title></svg>\n"}};
+  writeReport(dir_, input);
+  const std::string md = read("report.md");
+  const std::size_t faults = md.find("## Faults found");
+  ASSERT_NE(faults, std::string::npos) << md;
+  EXPECT_LT(md.find("## Mann"), faults);
+  EXPECT_LT(faults, md.find("## Plots"));
+  const std::string section = md.substr(faults, md.find("## Plots") - faults);
+  EXPECT_NE(section.find("| `astar` | 0 of 2 | 0 of 2 |\n"), std::string::npos) << section;
+  EXPECT_NE(section.find("| `explorer` | 0 of 2 | 1 of 2 |\n"), std::string::npos) << section;
+  EXPECT_NE(section.find("| `random` | 2 of 2 | 2 of 2 |\n"), std::string::npos) << section;
+  EXPECT_NE(section.find("### `beta` / `q2` \xE2\x80\x94 `explorer`"), std::string::npos) << section;
+  EXPECT_NE(section.find("](pictures/beta_q2_explorer.png)"), std::string::npos) << section;
+  EXPECT_NE(section.find("### Archive of `beta`"), std::string::npos) << section;
+  EXPECT_EQ(section.find("### Archive of `alpha`"), std::string::npos) << section;
+  EXPECT_NE(md.find("| *diversity* | 0.750 | 1.250 |\n"), std::string::npos) << md;
+  EXPECT_TRUE(fs::is_regular_file(dir_ + "/pictures/beta_q2_explorer.png"));
+  EXPECT_NE(read("report.html").find("<svg><title>the beta archive</title></svg>"), std::string::npos);
+}
+
 TEST_F(ReportTest, HtmlIsSelfContainedAndEscaped) {
   writeReport(dir_, handMadeInput());
   const std::string html = read("report.html");
