@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The main job: installs what is missing, builds, then runs the default experiment (config/experiment.yaml:
-# two evolved sets of 60 PPPs, ten agents with 1,000 runs each and two example planners with 3) through ROS:
+# three sets of 60 PPPs, two evolved and one hunted, ten agents with 1,000 runs each and two example planners
+# with 3) through ROS:
 # roslaunch launch/experiment.launch starts the two generator nodes, the simulator node and one process per
 # agent (a bridge and a planner per planner agent), on a private master. Results,
 # report and bag go to results/experiment/. Rerunning resumes an interrupted experiment.
