@@ -3,12 +3,14 @@
 //              map         (nav_msgs/OccupancyGrid, latched) the set's PPP number ~publish_index
 //   service    ~generate   (ppp_msgs/Generate)              evolve again (optionally with another seed)
 //   parameters see config/generator.yaml (same names) plus ~output_dir, ~publish_index, ~resolution,
-//              ~generate_on_start
+//              ~generate_on_start, ~exit_when_done, and for fitness failure ~evaluator (the simulator node's
+//              ppp_msgs/EvaluateProblems service that plays the panel) and ~evaluator_timeout
 #include <ros/ros.h>
 
 #include <nav_msgs/OccupancyGrid.h>
 
 #include "generator_parameters.hpp"
+#include "remote_failure_fitness.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_generator/set_evolution.hpp"
 #include "ppp_generator/problem_set.hpp"
@@ -24,7 +26,8 @@ class GeneratorNode {
  public:
   /// Advertises the topics and the service. @throws InvalidArgument for bad parameters.
   GeneratorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
-      : parameters_(readNodeParameters(private_nh)),
+      : nh_(nh),
+        parameters_(readNodeParameters(private_nh)),
         set_publisher_(nh.advertise<ppp_msgs::ProblemSet>("problem_set", 1, true)),
         map_publisher_(nh.advertise<nav_msgs::OccupancyGrid>("map", 1, true)),
         service_(private_nh.advertiseService("generate", &GeneratorNode::onGenerate, this)) {}
@@ -36,8 +39,12 @@ class GeneratorNode {
     if (!parameters_.output_dir.empty()) checkOutputDirectory(parameters_.output_dir);
     ROS_INFO("generating %d PPPs (%s fitness, %ld matings, seed %lu)", options.population, options.fitness.c_str(),
              options.matings, static_cast<unsigned long>(options.seed));
+    const Fitness fitness =
+        options.fitness == kFailureFitness
+            ? makeRemoteFailureFitness(nh_, options, parameters_.evaluator, parameters_.evaluator_timeout)
+            : makeFitness(options.fitness, FitnessParameters{options.weights, options.seed});
     const EvolvedSet evolved = evolveSet(
-        options, makeFitness(options.fitness, FitnessParameters{options.weights, options.seed}),
+        options, fitness,
         [](long done, long total, double best) { ROS_INFO("%ld/%ld matings, best fitness %g", done, total, best); },
         std::max(1L, options.matings / 10));
     const ProblemSet& set = evolved.set;
@@ -63,6 +70,8 @@ class GeneratorNode {
 
   /// Whether to evolve at start-up.
   bool generateOnStart() const { return parameters_.generate_on_start; }
+  /// Whether to exit once the start-up set is published (a hunt launched on its own).
+  bool exitWhenDone() const { return parameters_.exit_when_done; }
 
  private:
   bool onGenerate(ppp_msgs::Generate::Request& request, ppp_msgs::Generate::Response& response) {
@@ -78,6 +87,7 @@ class GeneratorNode {
     return true;
   }
 
+  ros::NodeHandle& nh_;
   NodeParameters parameters_;
   ros::Publisher set_publisher_;
   ros::Publisher map_publisher_;
@@ -94,6 +104,7 @@ int main(int argc, char** argv) {
   try {
     ppp::generator::GeneratorNode node(nh, private_nh);
     if (node.generateOnStart()) node.generate(0);
+    if (node.exitWhenDone()) return 0;
     ros::spin();
   } catch (const ppp::Error& e) {
     ROS_FATAL("generator: %s", e.what());

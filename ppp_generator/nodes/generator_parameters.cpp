@@ -45,11 +45,11 @@ NodeParameters readNodeParameters(const ros::NodeHandle& nh) {
   readParameter(nh, "characters", &o.characters, "a string");
   readParameter(nh, "replacement", &o.replacement, "a string");
   readParameter(nh, "crowding_window", &o.crowding_window, "an integer");
-  readParameter(nh, "agents", &o.agents, "a list of strings");
+  ppp_msgs::readStringList(nh, "agents", &o.agents);
   readParameter(nh, "agents_file", &o.agents_file, "a string");
   readParameter(nh, "runs_per_eval", &o.runs_per_eval, "an integer");
   readParameter(nh, "archive", &o.archive, "a string");
-  readParameter(nh, "features", &o.features, "a list of strings");
+  ppp_msgs::readStringList(nh, "features", &o.features);
   readParameter(nh, "bins", &o.bins, "an integer");
   const std::pair<const char*, double*> weights[] = {
       {"weights/start", &o.weights.start},
@@ -67,6 +67,9 @@ NodeParameters readNodeParameters(const ros::NodeHandle& nh) {
   readParameter(nh, "publish_index", &p.publish_index, "an integer");
   readParameter(nh, "resolution", &p.resolution, "a number");
   readParameter(nh, "generate_on_start", &p.generate_on_start, "true or false");
+  readParameter(nh, "exit_when_done", &p.exit_when_done, "true or false");
+  readParameter(nh, "evaluator", &p.evaluator, "a service name");
+  readParameter(nh, "evaluator_timeout", &p.evaluator_timeout, "a number of seconds");
   try {
     o.validate();
   } catch (const InvalidArgument& e) {
@@ -77,6 +80,7 @@ NodeParameters readNodeParameters(const ros::NodeHandle& nh) {
                                                 "), got " + std::to_string(p.publish_index));
   }
   if (!(p.resolution > 0)) throw InvalidArgument("~resolution", "expected metres per cell > 0");
+  if (!(p.evaluator_timeout > 0)) throw InvalidArgument("~evaluator_timeout", "expected seconds > 0");
   return p;
 }
 

@@ -16,6 +16,9 @@ struct NodeParameters {
   int publish_index = 0;        ///< Which PPP of the set is published on `map`.
   double resolution = 1.0;      ///< Metres per cell of the published maps.
   bool generate_on_start = true;  ///< Evolve a set at start-up (otherwise only on the service call).
+  bool exit_when_done = false;    ///< Exit once the start-up set is published.
+  std::string evaluator = "/simulator/evaluate";  ///< Failure fitness: the simulator's EvaluateProblems service.
+  double evaluator_timeout = 120.0;  ///< Seconds to wait for that service to appear.
 };
 
 /// Reads and validates the `~` parameters. @throws InvalidArgument naming the parameter ("~population").

@@ -88,6 +88,10 @@ Fitness makeFitness(const std::string& name, const FitnessParameters& parameters
   throw InvalidArgument("fitness", "unknown fitness '" + name + "'; valid: " + fitnessNames());
 }
 
+FitnessScore failureScore(double failure_rate, double budget_used) {
+  return {failure_rate, failure_rate + 0.001 * budget_used};
+}
+
 bool fitnessMaximises(const std::string& name) {
   for (const FitnessInfo& info : fitnessCatalogue()) {
     if (name == info.name) return info.maximise;

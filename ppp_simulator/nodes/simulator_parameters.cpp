@@ -1,6 +1,5 @@
 #include "simulator_parameters.hpp"
 
-#include <sstream>
 
 #include "ppp_core/error.hpp"
 #include "ppp_msgs/node_parameters.h"
@@ -13,6 +12,7 @@ using ppp_msgs::requirePositive;
 
 SimulatorParameters readSimulatorParameters(const ros::NodeHandle& nh) {
   SimulatorParameters p;
+  readParameter(nh, "mode", &p.mode, "experiment or hunt");
   readParameter(nh, "config", &p.config, "the path of an experiment YAML");
   readParameter(nh, "output_dir", &p.output_dir, "a directory path");
   readParameter(nh, "batch_size", &p.batch_size, "an integer");
@@ -20,22 +20,19 @@ SimulatorParameters readSimulatorParameters(const ros::NodeHandle& nh) {
   readParameter(nh, "planner_step_timeout", &p.planner_step_timeout, "a number of seconds");
   readParameter(nh, "timeouts_before_giving_up", &p.timeouts_before_giving_up, "an integer");
   readParameter(nh, "connect_timeout", &p.connect_timeout, "a number of seconds");
-  if (nh.hasParam("wait_for_sets") && !nh.getParam("wait_for_sets", p.wait_for_sets)) {
-    // Also accepted as one comma-separated string (what `_wait_for_sets:=a,b` gives on a command line).
-    std::string topics;
-    if (!nh.getParam("wait_for_sets", topics)) throw InvalidArgument("~wait_for_sets", "expected a list of topics");
-    std::stringstream stream(topics);
-    for (std::string topic; std::getline(stream, topic, ',');) {
-      if (!topic.empty()) p.wait_for_sets.push_back(topic);
-    }
-  }
+  ppp_msgs::readStringList(nh, "wait_for_sets", &p.wait_for_sets);
   readParameter(nh, "set_timeout", &p.set_timeout, "a number of seconds");
   readParameter(nh, "record", &p.record, "true or false");
   readParameter(nh, "record_runs", &p.record_runs, "an integer");
   readParameter(nh, "record_problems", &p.record_problems, "an integer");
   readParameter(nh, "resolution", &p.resolution, "a number of metres per cell");
   if (p.config.empty()) throw InvalidArgument("~config", "required: the experiment YAML (e.g. config/experiment.yaml)");
-  if (p.output_dir.empty()) throw InvalidArgument("~output_dir", "required: where results, report and bag go");
+  if (p.mode != kExperimentMode && p.mode != kHuntMode) {
+    throw InvalidArgument("~mode", "expected experiment or hunt, got '" + p.mode + "'");
+  }
+  if (p.mode == kExperimentMode && p.output_dir.empty()) {
+    throw InvalidArgument("~output_dir", "required: where results, report and bag go");
+  }
   if (p.batch_size < 1) throw InvalidArgument("~batch_size", "expected at least 1, got " + std::to_string(p.batch_size));
   requirePositive(p.step_timeout, "~step_timeout");
   requirePositive(p.planner_step_timeout, "~planner_step_timeout");

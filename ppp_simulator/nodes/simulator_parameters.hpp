@@ -8,10 +8,16 @@
 namespace ppp {
 namespace simulator {
 
+/// ~mode: run the experiment of ~config (the default).
+constexpr const char* kExperimentMode = "experiment";
+/// ~mode: serve ~evaluate, playing a hunt's candidate PPPs with ~config's agents, until shut down.
+constexpr const char* kHuntMode = "hunt";
+
 /// The simulator node's `~` parameters.
 struct SimulatorParameters {
+  std::string mode = kExperimentMode;       ///< kExperimentMode or kHuntMode.
   std::string config;                       ///< Experiment YAML (required), as for `ppp experiment`.
-  std::string output_dir;                   ///< Output directory (required); rerun on it to resume.
+  std::string output_dir;                   ///< Output directory (required for an experiment); rerun to resume.
   int batch_size = 2000;                    ///< Episodes per agent per message, >= 1.
   double step_timeout = 5.0;                ///< Seconds an agent has to answer a batch.
   double planner_step_timeout = 30.0;       ///< Seconds a planner agent's bridge has to answer a step.

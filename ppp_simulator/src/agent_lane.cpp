@@ -11,14 +11,11 @@ namespace simulator {
 AgentLane::AgentLane(const agents::AgentConfig& config, const EpisodeOptions& options,
                      const std::vector<PreparedSet>& sets, std::uint64_t experiment_seed, int runs,
                      const std::set<RunKey>& done, int batch_size)
-    : config_((config.validate(), config)),
-      options_((options.validate(), options)),
-      sets_(sets),
-      experiment_seed_(experiment_seed),
-      batch_size_(agents::isPlanner(config) ? 1 : batch_size),
-      reads_window_(agents::readsScanWindow(config)),
-      sensor_(SensorOptions{options.sensor_range, config.sensor_noise}) {
-  if (batch_size < 1) throw InvalidArgument("batch_size", "expected at least 1, got " + std::to_string(batch_size));
+    : AgentLane(config, options, sets,
+                [&sets, experiment_seed, name = config.name](int set, int problem, int run) {
+                  return runSeed(experiment_seed, sets[set].name, sets[set].set.ids[problem], name, run);
+                },
+                0, batch_size) {
   for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
     for (int p = 0; p < static_cast<int>(sets[s].set.ids.size()); ++p) {
       for (int run = 0; run < runs; ++run) {
@@ -28,13 +25,29 @@ AgentLane::AgentLane(const agents::AgentConfig& config, const EpisodeOptions& op
   }
 }
 
+AgentLane::AgentLane(const agents::AgentConfig& config, const EpisodeOptions& options,
+                     const std::vector<PreparedSet>& sets, SeedFunction seed_of, int runs, int batch_size)
+    : config_((config.validate(), config)),
+      options_((options.validate(), options)),
+      sets_(sets),
+      seed_of_(std::move(seed_of)),
+      batch_size_(agents::isPlanner(config) ? 1 : batch_size),
+      reads_window_(agents::readsScanWindow(config)),
+      sensor_(SensorOptions{options.sensor_range, config.sensor_noise}) {
+  if (batch_size < 1) throw InvalidArgument("batch_size", "expected at least 1, got " + std::to_string(batch_size));
+  for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
+    for (int p = 0; p < static_cast<int>(sets[s].set.ids.size()); ++p) {
+      for (int run = 0; run < runs; ++run) queue_.push_back({s, p, run});
+    }
+  }
+}
+
 void AgentLane::scans(std::vector<ScanRequest>* requests) {
   while (static_cast<int>(active_.size()) < batch_size_ && !queue_.empty()) {
     const Work work = queue_.front();
     queue_.pop_front();
     const PreparedSet& set = sets_[work.set];
-    const std::uint64_t seed =
-        runSeed(experiment_seed_, set.name, set.set.ids[work.problem], config_.name, work.run);
+    const std::uint64_t seed = seed_of_(work.set, work.problem, work.run);
     active_.push_back({next_id_++, work, seed,
                        Episode(set.set.problems[work.problem], set.grids[work.problem], sensor_, seed, options_.budget,
                                false, windowsOf(set, work.problem)),
@@ -132,11 +145,9 @@ std::vector<EpisodeResult> AgentLane::failAll(const char* why) {
   }
   active_.clear();
   for (const Work& work : queue_) {
-    const PreparedSet& set = sets_[work.set];
     EpisodeOutcome outcome;
     outcome.reason = why;
-    failed.push_back(
-        result(work, runSeed(experiment_seed_, set.name, set.set.ids[work.problem], config_.name, work.run), outcome));
+    failed.push_back(result(work, seed_of_(work.set, work.problem, work.run), outcome));
   }
   queue_.clear();
   return failed;

@@ -95,12 +95,27 @@ void checkExperimentDirectory(const ExperimentConfig& config, const std::string&
                          std::to_string(line) + "); use another output directory");
 }
 
+PreparedSet prepareSet(const std::string& name, generator::ProblemSet set, int sensor_range) {
+  PreparedSet p;
+  p.name = name;
+  p.set = std::move(set);
+  DpaSolver dpa;
+  for (const Problem& problem : p.set.problems) {
+    p.grids.push_back(decodeGrid(problem));
+    const DpaResult& result = dpa.solve(p.grids.back(), problem.start, problem.goal);
+    if (!result.reachable) throw InvalidArgument("sets", "set '" + name + "' holds an unsolvable PPP");
+    p.optimal.push_back(result.advances);
+    p.windows.push_back(WindowAtlas::bytes(p.grids.back(), sensor_range) <= kMaxWindowAtlasBytes
+                            ? std::optional<WindowAtlas>(std::in_place, p.grids.back(), sensor_range)
+                            : std::nullopt);
+  }
+  return p;
+}
+
 std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::string& dir,
                                      const std::function<void(const std::string&)>& log) {
   std::vector<PreparedSet> prepared;
   for (const SetSpec& spec : config.sets) {
-    PreparedSet p;
-    p.name = spec.name;
     std::string set_dir = spec.directory;
     if (spec.generator) {
       set_dir = (fs::path(dir) / "sets" / spec.name).string();
@@ -112,19 +127,8 @@ std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::
         say(log, "set '" + spec.name + "': " + evolved.summary);
       }
     }
+    PreparedSet p = prepareSet(spec.name, generator::readProblemSetDirectory(set_dir), config.episode.sensor_range);
     p.directory = set_dir;
-    p.set = generator::readProblemSetDirectory(set_dir);
-    DpaSolver dpa;
-    for (const Problem& problem : p.set.problems) {
-      p.grids.push_back(decodeGrid(problem));
-      const DpaResult& result = dpa.solve(p.grids.back(), problem.start, problem.goal);
-      if (!result.reachable) throw InvalidArgument("sets", "set '" + spec.name + "' holds an unsolvable PPP");
-      p.optimal.push_back(result.advances);
-      const int range = config.episode.sensor_range;
-      p.windows.push_back(WindowAtlas::bytes(p.grids.back(), range) <= kMaxWindowAtlasBytes
-                              ? std::optional<WindowAtlas>(std::in_place, p.grids.back(), range)
-                              : std::nullopt);
-    }
     prepared.push_back(std::move(p));
   }
   return prepared;

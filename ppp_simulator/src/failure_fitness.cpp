@@ -17,8 +17,6 @@ namespace simulator {
 
 namespace {
 
-constexpr double kBudgetTieBreak = 0.001;
-
 std::uint64_t hashName(const std::string& name) {
   std::uint64_t hash = 0xcbf29ce484222325ULL;
   for (unsigned char c : name) hash = (hash ^ c) * 0x100000001b3ULL;
@@ -41,6 +39,16 @@ void checkPanel(const std::vector<agents::AgentConfig>& panel) {
 std::uint64_t failureRunSeed(std::uint64_t generator_seed, std::uint64_t grid_hash, const std::string& agent,
                              int run) {
   return deriveSeed(generator_seed, {0x6661696c, grid_hash, hashName(agent), static_cast<std::uint64_t>(run)});
+}
+
+FailureEstimate estimateOf(const PanelTally& tally, int runs, int budget) {
+  FailureEstimate estimate;
+  const double agents = static_cast<double>(tally.failures.size());
+  for (std::size_t a = 0; a < tally.failures.size(); ++a) {
+    estimate.failure_rate += tally.failures[a] / static_cast<double>(runs) / agents;
+    estimate.budget_used += tally.steps[a] / (static_cast<double>(runs) * budget) / agents;
+  }
+  return estimate;
 }
 
 std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const std::vector<const Problem*>& problems,
@@ -94,13 +102,14 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
   worker();
   for (std::thread& t : threads) t.join();
   if (error) std::rethrow_exception(error);
-  std::vector<FailureEstimate> estimates(problems.size());
-  const double runs = panel.runs_per_eval;
+  std::vector<FailureEstimate> estimates;
   for (std::size_t p = 0; p < problems.size(); ++p) {
-    for (std::size_t a = 0; a < agent_count; ++a) {
-      estimates[p].failure_rate += failures[p * agent_count + a] / runs / agent_count;
-      estimates[p].budget_used += steps[p * agent_count + a] / (runs * panel.episode.budget) / agent_count;
-    }
+    PanelTally tally;
+    tally.failures.assign(failures.begin() + static_cast<long>(p * agent_count),
+                          failures.begin() + static_cast<long>((p + 1) * agent_count));
+    tally.steps.assign(steps.begin() + static_cast<long>(p * agent_count),
+                       steps.begin() + static_cast<long>((p + 1) * agent_count));
+    estimates.push_back(estimateOf(tally, panel.runs_per_eval, panel.episode.budget));
   }
   return estimates;
 }
@@ -111,11 +120,11 @@ generator::Fitness makeFailureFitness(const FailurePanel& panel) {
   generator::Fitness fitness;
   fitness.name = generator::kFailureFitness;
   fitness.maximise = true;
-  fitness.batch_size = kFailureBatchSize;
+  fitness.batch_size = generator::kFailureBatchSize;
   fitness.batch = [panel](const std::vector<const Problem*>& problems, const std::vector<const Grid*>& grids) {
     std::vector<generator::FitnessScore> scores;
     for (const FailureEstimate& e : estimateFailures(panel, problems, grids)) {
-      scores.push_back({e.failure_rate, e.failure_rate + kBudgetTieBreak * e.budget_used});
+      scores.push_back(generator::failureScore(e.failure_rate, e.budget_used));
     }
     return scores;
   };
@@ -138,10 +147,14 @@ generator::Fitness fitnessFor(const generator::GeneratorOptions& options,
 }
 
 std::vector<agents::AgentConfig> resolvePanel(const std::vector<std::string>& names,
-                                              const std::vector<agents::AgentConfig>& available) {
+                                              const std::vector<agents::AgentConfig>& available,
+                                              bool allow_planners) {
   if (names.empty()) throw InvalidArgument("agents", "empty panel: the failure fitness needs at least one agent name");
   std::vector<agents::AgentConfig> panel;
   for (const std::string& name : names) {
+    if (std::any_of(panel.begin(), panel.end(), [&](const agents::AgentConfig& a) { return a.name == name; })) {
+      throw InvalidArgument("agents", "'" + name + "' named twice");
+    }
     if (available.empty()) {
       const auto& types = agents::agentTypeNames();
       if (std::find(types.begin(), types.end(), name) == types.end()) {
@@ -165,7 +178,11 @@ std::vector<agents::AgentConfig> resolvePanel(const std::vector<std::string>& na
     }
     panel.push_back(*found);
   }
-  checkPanel(panel);
+  if (allow_planners) {
+    for (const agents::AgentConfig& a : panel) a.validate();
+  } else {
+    checkPanel(panel);
+  }
   return panel;
 }
 

@@ -61,7 +61,7 @@ TEST(FailureFitnessTest, HandWorkedFiguresOnTheIsland) {
   const auto scores = fitness.batch({&problem}, {&grid});
   EXPECT_DOUBLE_EQ(scores[0].value, 0.5);
   EXPECT_NEAR(scores[0].score, 0.5 + 0.001 * (1.0 + 38.0 / 300.0) / 2.0, 1e-12);
-  EXPECT_EQ(fitness.batch_size, kFailureBatchSize);
+  EXPECT_EQ(fitness.batch_size, generator::kFailureBatchSize);
 }
 
 TEST(FailureFitnessTest, APppIsJudgedTheSameWhateverItsBatchPositionOrThreads) {

@@ -60,6 +60,14 @@ std::string fitnessNames();
 /// makeFailureFitness (ppp_simulator), or through ROS by the simulator node, not by makeFitness.
 constexpr const char* kFailureFitness = "failure";
 
+/// PPPs a failure fitness scores per batch (and matings per round of a hunt), in process and through ROS.
+constexpr int kFailureBatchSize = 16;
+
+/// The failure fitness's score of a PPP: its failure rate plus 0.001 x the mean share of the move budget the
+/// panel used, so that among PPPs failed equally often the one that kept the panel busy longest wins (a
+/// gradient before the first failure is found).
+FitnessScore failureScore(double failure_rate, double budget_used);
+
 /// Builds a fitness function by name. @throws InvalidArgument("fitness", ...) listing the valid names, and
 /// for kFailureFitness, which needs an agent panel.
 Fitness makeFitness(const std::string& name, const FitnessParameters& parameters = {});

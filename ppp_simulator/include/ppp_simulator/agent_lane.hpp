@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <optional>
 #include <set>
 #include <vector>
@@ -53,9 +54,16 @@ struct MoveReply {
 /// are the agent's own, so the results equal the in-process runner's for the same seeds.
 class AgentLane {
  public:
-  /// Queues every run of `config` on every PPP of `sets` not in `done`. @throws InvalidArgument.
+  /// The seed of run `run` of the lane's agent on PPP `problem` of set `set` (indices into the lane's sets).
+  using SeedFunction = std::function<std::uint64_t(int set, int problem, int run)>;
+  /// Queues every run of `config` on every PPP of `sets` not in `done`; run seeds from runSeed() with
+  /// `experiment_seed`. @throws InvalidArgument.
   AgentLane(const agents::AgentConfig& config, const EpisodeOptions& options, const std::vector<PreparedSet>& sets,
             std::uint64_t experiment_seed, int runs, const std::set<RunKey>& done, int batch_size);
+  /// Queues `runs` runs of `config` on every PPP of `sets`, seeded by `seed_of` (a hunt's evaluations).
+  /// @throws InvalidArgument.
+  AgentLane(const agents::AgentConfig& config, const EpisodeOptions& options, const std::vector<PreparedSet>& sets,
+            SeedFunction seed_of, int runs, int batch_size);
   /// True when no run is waiting or active.
   bool finished() const { return queue_.empty() && active_.empty(); }
   /// Runs not yet finished (active or queued).
@@ -95,7 +103,7 @@ class AgentLane {
   agents::AgentConfig config_;
   EpisodeOptions options_;
   const std::vector<PreparedSet>& sets_;
-  std::uint64_t experiment_seed_;
+  SeedFunction seed_of_;
   int batch_size_;
   bool reads_window_;
   SensorModel sensor_;

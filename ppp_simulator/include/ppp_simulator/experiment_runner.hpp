@@ -43,6 +43,10 @@ std::uint64_t runSeed(std::uint64_t experiment_seed, const std::string& set, con
 EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::string& agent, int run,
                             std::uint64_t seed, const EpisodeOutcome& outcome);
 
+/// A set ready to play: its grids, fewest moves and window atlases at `sensor_range`.
+/// @throws InvalidArgument naming "sets" for an unsolvable PPP.
+PreparedSet prepareSet(const std::string& name, generator::ProblemSet set, int sensor_range);
+
 /// Generates (or reads) every set of the experiment into `dir`/sets/<name>/, reusing sets already there.
 /// @throws IoError, ParseError, InvalidArgument.
 std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::string& dir,

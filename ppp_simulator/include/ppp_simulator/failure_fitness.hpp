@@ -12,9 +12,6 @@
 namespace ppp {
 namespace simulator {
 
-/// PPPs scored per call of the failure fitness's batch scorer (and matings per round of a hunt).
-constexpr int kFailureBatchSize = 16;
-
 /// The agents and rules of a failure fitness (SPEC 6b).
 struct FailurePanel {
   std::vector<agents::AgentConfig> agents;  ///< The panel, each run `runs_per_eval` times per PPP.
@@ -35,14 +32,22 @@ struct FailureEstimate {
   double budget_used = 0;   ///< Mean share of the budget the panel's runs used.
 };
 
+/// What a panel's runs on one PPP came to: per panel agent, its failed runs and the steps of all its runs.
+struct PanelTally {
+  std::vector<int> failures;  ///< Failed runs per agent.
+  std::vector<long> steps;    ///< Steps of all runs per agent.
+};
+
+/// The figures of a tally of `runs` runs per agent with move budget `budget`.
+FailureEstimate estimateOf(const PanelTally& tally, int runs, int budget);
+
 /// Plays every panel agent runs_per_eval times on each PPP (in parallel over PPPs and agents) and returns
 /// the figures in input order. @throws InvalidArgument for a planner agent (those run only through ROS).
 std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const std::vector<const Problem*>& problems,
                                               const std::vector<const Grid*>& grids);
 
-/// The failure fitness: value = the failure rate, maximised; score = value + 0.001 × budget_used, so that
-/// among PPPs the panel passes equally often, the one that keeps it busy longest wins (a gradient for the
-/// search before the first failure is found). Scores kFailureBatchSize PPPs per call.
+/// The failure fitness: value = the failure rate, maximised; score = generator::failureScore. Scores
+/// generator::kFailureBatchSize PPPs per call.
 /// @throws InvalidArgument("agents", ...) for an empty panel or a planner agent.
 generator::Fitness makeFailureFitness(const FailurePanel& panel);
 
@@ -54,10 +59,13 @@ generator::Fitness fitnessFor(const generator::GeneratorOptions& options,
                               int threads);
 
 /// Looks up the panel `names` among `available` configurations (an experiment's agents or an agents file);
-/// with no configurations available, each name must be a built-in agent type (no handicaps).
-/// @throws InvalidArgument("agents", ...) naming an unknown name (listing the valid ones) or a planner agent.
+/// with no configurations available, each name must be a built-in agent type (no handicaps). Planner agents
+/// are refused unless `allow_planners` (a hunt through ROS, where the simulator node plays them).
+/// @throws InvalidArgument("agents", ...) for an empty panel, a name given twice, an unknown name (listing the
+/// valid ones) or a refused planner agent.
 std::vector<agents::AgentConfig> resolvePanel(const std::vector<std::string>& names,
-                                              const std::vector<agents::AgentConfig>& available);
+                                              const std::vector<agents::AgentConfig>& available,
+                                              bool allow_planners = false);
 
 }  // namespace simulator
 }  // namespace ppp

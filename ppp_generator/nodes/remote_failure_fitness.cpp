@@ -1,0 +1,53 @@
+#include "remote_failure_fitness.hpp"
+
+#include <memory>
+
+#include "ppp_core/error.hpp"
+#include "ppp_msgs/EvaluateProblems.h"
+#include "ppp_msgs/conversions.h"
+
+namespace ppp {
+namespace generator {
+
+Fitness makeRemoteFailureFitness(ros::NodeHandle& nh, const GeneratorOptions& options, const std::string& service,
+                                 double wait_seconds) {
+  if (!ros::service::waitForService(service, ros::Duration(wait_seconds))) {
+    throw IoError(service, "no ppp_msgs/EvaluateProblems service within " + std::to_string(wait_seconds) +
+                               " s (start the simulator node with ~mode hunt, e.g. launch/hunt.launch)");
+  }
+  auto client = std::make_shared<ros::ServiceClient>(nh.serviceClient<ppp_msgs::EvaluateProblems>(service, true));
+  Fitness fitness;
+  fitness.name = kFailureFitness;
+  fitness.maximise = true;
+  fitness.batch_size = kFailureBatchSize;
+  fitness.batch = [client, options, service](const std::vector<const Problem*>& problems,
+                                             const std::vector<const Grid*>&) {
+    ppp_msgs::EvaluateProblems call;
+    for (std::size_t i = 0; i < problems.size(); ++i) {
+      call.request.problems.push_back(ppp_msgs::toMessage(*problems[i], "c" + std::to_string(i), 1.0));
+    }
+    call.request.agents = options.agents;
+    call.request.runs = static_cast<std::uint32_t>(options.runs_per_eval);
+    call.request.seed = options.seed;
+    if (!client->call(call)) throw IoError(service, "the evaluation call failed (is the simulator node still up?)");
+    if (!call.response.error.empty()) throw InvalidArgument("agents", "the simulator refused: " + call.response.error);
+    if (call.response.evaluations.size() != problems.size()) {
+      throw IoError(service, "answered " + std::to_string(call.response.evaluations.size()) + " evaluations for " +
+                                 std::to_string(problems.size()) + " PPPs");
+    }
+    std::vector<FitnessScore> scores;
+    for (const ppp_msgs::ProblemEvaluation& e : call.response.evaluations) {
+      scores.push_back(failureScore(e.failure_rate, e.budget_used));
+      for (std::size_t r = 0; r < e.reasons.size() && r < e.reason_counts.size(); ++r) {
+        if (e.reasons[r] != "budget_exhausted") {
+          ROS_WARN_THROTTLE(10, "hunt: %u runs of a candidate failed as %s", e.reason_counts[r], e.reasons[r].c_str());
+        }
+      }
+    }
+    return scores;
+  };
+  return fitness;
+}
+
+}  // namespace generator
+}  // namespace ppp

@@ -1,0 +1,23 @@
+#pragma once
+
+#include <string>
+
+#include <ros/ros.h>
+
+#include "ppp_generator/fitness.hpp"
+#include "ppp_generator/generator_options.hpp"
+
+namespace ppp {
+namespace generator {
+
+/// The failure fitness of a hunt through ROS: each batch of candidate PPPs goes to the simulator node's
+/// `service` (ppp_msgs/EvaluateProblems) with the panel options.agents, options.runs_per_eval runs and the
+/// generator seed, and comes back as failure rates; scores by failureScore(), batches of kFailureBatchSize,
+/// so built-in agents give the set an in-process hunt gives. Waits up to `wait_seconds` for the service.
+/// @throws IoError when the service does not come or a call fails, InvalidArgument("agents", ...) when the
+/// simulator refuses the request (its message is passed on).
+Fitness makeRemoteFailureFitness(ros::NodeHandle& nh, const GeneratorOptions& options, const std::string& service,
+                                 double wait_seconds);
+
+}  // namespace generator
+}  // namespace ppp

@@ -1,0 +1,57 @@
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "ppp_agents/agent_config.hpp"
+#include "ppp_simulator/agent_lane.hpp"
+#include "ppp_simulator/episode_result.hpp"
+#include "ppp_simulator/experiment_runner.hpp"
+#include "ppp_simulator/failure_fitness.hpp"
+
+namespace ppp {
+namespace simulator {
+
+/// What a panel's runs on one PPP of a hunt came to, with why runs failed.
+struct PanelEvaluation {
+  FailureEstimate estimate;             ///< Failure rate and budget used, as the in-process fitness computes them.
+  int episodes = 0;                     ///< Runs played.
+  int failed = 0;                       ///< Of them, failed.
+  std::map<std::string, int> reasons;   ///< Failed runs per reason (budget_exhausted, planner_timeout, ...).
+};
+
+/// One evaluation request of a hunt, played through agent lanes (the simulator node's ~evaluate): one lane per
+/// panel agent with `runs` runs on every candidate, seeded by failureRunSeed() exactly as the in-process failure
+/// fitness, so built-in agents give the same estimates through ROS as in process. Lanes may be played on
+/// separate threads; record() is thread-safe.
+class HuntEvaluation {
+ public:
+  /// Prepares the candidates (each must be solvable) and one lane per panel agent.
+  /// @throws InvalidArgument naming "problems" (an unsolvable or invalid PPP), "runs" or the lane's options.
+  HuntEvaluation(const std::vector<Problem>& problems, const std::vector<agents::AgentConfig>& panel,
+                 const EpisodeOptions& episode, int runs, std::uint64_t generator_seed, int batch_size);
+  /// The lanes, one per panel agent in panel order.
+  std::vector<std::unique_ptr<AgentLane>>& lanes() { return lanes_; }
+  /// Takes finished episodes of any lane.
+  void record(const std::vector<EpisodeResult>& ended);
+  /// Per candidate, in request order: what the recorded runs came to.
+  std::vector<PanelEvaluation> evaluations() const;
+
+ private:
+  std::vector<agents::AgentConfig> panel_;
+  EpisodeOptions episode_;
+  int runs_;
+  std::vector<PreparedSet> sets_;  // one set of the candidates; the lanes refer to it
+  std::vector<std::unique_ptr<AgentLane>> lanes_;
+  mutable std::mutex mutex_;
+  std::vector<PanelTally> tallies_;
+  std::vector<PanelEvaluation> evaluations_;
+  std::map<std::string, int> agent_index_;
+};
+
+}  // namespace simulator
+}  // namespace ppp

@@ -1,0 +1,179 @@
+#include "lane_runner.hpp"
+
+#include <algorithm>
+
+#include "ppp_msgs/ScanBatch.h"
+#include "ppp_msgs/node_liveness.h"
+
+namespace ppp {
+namespace simulator {
+
+namespace {
+
+const ros::WallDuration kShutdownCheck(0.1);  // a lane waiting for a reply notices a shutdown this often
+
+ppp_msgs::GridCell toCell(Cell c) {
+  ppp_msgs::GridCell m;
+  m.x = c.x;
+  m.y = c.y;
+  return m;
+}
+
+/// Fills `message` with `scans`, reusing its buffers.
+void toMessage(const std::vector<ScanRequest>& scans, ppp_msgs::ScanBatch* message) {
+  ppp_msgs::ScanBatch& m = *message;
+  const std::size_t n = scans.size();
+  m.range = n == 0 ? 0 : static_cast<std::uint8_t>(scans[0].range);
+  m.starts.clear();
+  m.episodes.resize(n);
+  m.steps.resize(n);
+  m.positions.resize(n);
+  m.bumped.resize(n);
+  m.cells.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    const ScanRequest& r = scans[i];
+    m.episodes[i] = r.episode;
+    m.steps[i] = static_cast<std::uint32_t>(r.step);
+    m.positions[i] = toCell(r.position);
+    m.bumped[i] = r.bumped ? 1 : 0;
+    m.cells.insert(m.cells.end(), r.cells.begin(), r.cells.end());
+    if (!r.start) continue;
+    ppp_msgs::EpisodeStart start;
+    start.episode = r.episode;
+    start.width = static_cast<std::uint32_t>(r.start->width);
+    start.height = static_cast<std::uint32_t>(r.start->height);
+    start.start = toCell(r.start->start);
+    start.goal = toCell(r.goal);
+    start.agent_seed = r.start->agent_seed;
+    start.prior_map = r.start->prior_map;
+    m.starts.push_back(std::move(start));
+  }
+}
+
+}  // namespace
+
+LaneRunner::LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameters, const agents::AgentConfig& agent,
+                       ResultSink sink, ScanObserver observer, bool log_rates)
+    : parameters_(parameters),
+      agent_(agent),
+      sink_(std::move(sink)),
+      observer_(std::move(observer)),
+      log_rates_(log_rates) {
+  const std::string graph_name = agents::agentGraphName(agent.name);
+  scans_ = nh.advertise<ppp_msgs::ScanBatch>("/" + graph_name + "/scans", 2);
+  // The lane's own callback queue, served by the lane's thread while it waits for the answer: the reply
+  // wakes that thread directly, not a spinner thread that would then wake it.
+  ros::SubscribeOptions options = ros::SubscribeOptions::create<ppp_msgs::MoveBatch>(
+      "/" + graph_name + "/moves", 2, [this](const ppp_msgs::MoveBatch::ConstPtr& m) { onMoves(m); },
+      ros::VoidConstPtr(), &replies_);
+  options.transport_hints = ros::TransportHints().tcpNoDelay();
+  moves_ = nh.subscribe(options);
+}
+
+void LaneRunner::run(AgentLane* lane) {
+  lane_ = lane;
+  const std::string& name = agent_.name;
+  const double step_timeout =
+      agents::isPlanner(agent_) ? parameters_.planner_step_timeout : parameters_.step_timeout;
+  if (!connected_ && !waitForAgent()) {
+    ROS_ERROR("agent '%s' never connected within %.0f s: its %ld runs fail as agent_lost", name.c_str(),
+              parameters_.connect_timeout, lane_->remaining());
+    report(lane_->failAll(reason::kAgentLost));
+    return;
+  }
+  connected_ = true;
+  const ros::WallTime started = ros::WallTime::now();
+  const long episodes = lane_->remaining();
+  // Both buffers live across batches, so a batch allocates (almost) nothing.
+  std::vector<ScanRequest> scans;
+  ppp_msgs::ScanBatch message;
+  message.agent = name;
+  while (!lane_->finished() && ros::ok()) {
+    const std::uint32_t batch = ++batch_;
+    lane_->scans(&scans);
+    message.header.stamp = ros::Time::now();
+    message.batch = batch;
+    toMessage(scans, &message);
+    if (observer_) observer_(name, scans);
+    expected_batch_ = batch;
+    reply_.reset();
+    scans_.publish(message);
+    if (awaitReply(step_timeout)) {
+      report(lane_->answer(*reply_, missing_reason_));
+    } else if (!agentAlive()) {
+      ROS_ERROR("agent '%s' is gone: its %ld unfinished runs fail as agent_lost", name.c_str(), lane_->remaining());
+      report(lane_->failAll(reason::kAgentLost));
+    } else {
+      const auto ended = lane_->unanswered(reason::kTimeout, parameters_.timeouts_before_giving_up);
+      if (lane_->finished() && lane_->silentBatches() >= parameters_.timeouts_before_giving_up) {
+        ROS_ERROR("agent '%s' did not answer %d batches in a row: its unfinished runs fail as timeout",
+                  name.c_str(), lane_->silentBatches());
+      } else {
+        ROS_WARN("agent '%s' did not answer batch %u within %.1f s: its episodes fail as timeout", name.c_str(),
+                 batch, step_timeout);
+      }
+      report(ended);
+    }
+  }
+  const double seconds = (ros::WallTime::now() - started).toSec();
+  if (log_rates_) {
+    ROS_INFO("agent '%s': %ld episodes in %.1f s (%.1f episodes/s)", name.c_str(), episodes, seconds,
+             seconds > 0 ? episodes / seconds : 0.0);
+  }
+}
+
+bool LaneRunner::awaitReply(double seconds) {
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(seconds);
+  while (!reply_ && ros::ok()) {
+    const ros::WallDuration left = deadline - ros::WallTime::now();
+    if (left <= ros::WallDuration(0)) break;
+    replies_.callAvailable(std::min(left, kShutdownCheck));
+  }
+  return reply_.has_value();
+}
+
+bool LaneRunner::waitForAgent() {
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(parameters_.connect_timeout);
+  while (ros::ok() && ros::WallTime::now() < deadline) {
+    if (scans_.getNumSubscribers() > 0 && moves_.getNumPublishers() > 0) return true;
+    ros::WallDuration(0.05).sleep();  // polling a connection count: there is no event to wait on
+  }
+  return false;
+}
+
+bool LaneRunner::agentAlive() const { return ppp_msgs::publisherAlive(moves_.getTopic()); }
+
+void LaneRunner::onMoves(const ppp_msgs::MoveBatch::ConstPtr& message) {
+  if (message->batch != expected_batch_ || reply_) return;  // late answer to an earlier batch
+  const std::size_t n = message->episodes.size();
+  if (message->steps.size() != n || message->actions.size() != n) {
+    // A malformed batch answers no episode: all of them fail as invalid_action.
+    ROS_WARN_ONCE("agent '%s': a MoveBatch whose episodes, steps and actions differ in length",
+                  agent_.name.c_str());
+    reply_ = std::vector<MoveReply>();
+    missing_reason_ = reason::kInvalidAction;
+    return;
+  }
+  std::vector<MoveReply> moves(n);
+  for (std::size_t i = 0; i < n; ++i) moves[i] = {message->episodes[i], message->steps[i], message->actions[i]};
+  for (const ppp_msgs::EpisodeFailure& f : message->failures) {
+    const char* reason = reason::agentReportedReason(f.reason);
+    if (reason == nullptr) {
+      ROS_WARN_ONCE("agent '%s' gave an episode up for an unknown reason '%s': recorded as invalid_action",
+                    agent_.name.c_str(), f.reason.c_str());
+      reason = reason::kInvalidAction;
+    }
+    for (MoveReply& m : moves) {
+      if (m.episode == f.episode) m.failure = reason;
+    }
+  }
+  reply_ = std::move(moves);
+  missing_reason_ = reason::kTimeout;
+}
+
+void LaneRunner::report(const std::vector<EpisodeResult>& results) {
+  if (!results.empty()) sink_(results);
+}
+
+}  // namespace simulator
+}  // namespace ppp

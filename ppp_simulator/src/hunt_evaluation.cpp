@@ -1,0 +1,73 @@
+#include "ppp_simulator/hunt_evaluation.hpp"
+
+
+#include "ppp_core/error.hpp"
+
+namespace ppp {
+namespace simulator {
+
+namespace {
+
+/// Candidate ids within the request ("c000", ...): results name their PPP by id.
+std::string candidateId(std::size_t index) { return "c" + std::to_string(index); }
+
+}  // namespace
+
+HuntEvaluation::HuntEvaluation(const std::vector<Problem>& problems, const std::vector<agents::AgentConfig>& panel,
+                               const EpisodeOptions& episode, int runs, std::uint64_t generator_seed, int batch_size)
+    : panel_(panel), episode_(episode), runs_(runs) {
+  if (runs < 1 || runs > generator::kMaxRunsPerEval) {
+    throw InvalidArgument("runs", "expected runs in [1, " + std::to_string(generator::kMaxRunsPerEval) + "], got " +
+                                      std::to_string(runs));
+  }
+  generator::ProblemSet set;
+  for (std::size_t i = 0; i < problems.size(); ++i) {
+    set.ids.push_back(candidateId(i));
+    set.problems.push_back(problems[i]);
+  }
+  try {
+    sets_.push_back(prepareSet("candidates", std::move(set), episode.sensor_range));
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument("problems", e.what());
+  }
+  std::vector<std::uint64_t> hashes;
+  for (const Grid& grid : sets_[0].grids) hashes.push_back(grid.hash());
+  for (std::size_t a = 0; a < panel.size(); ++a) {
+    agent_index_[panel[a].name] = static_cast<int>(a);
+    lanes_.push_back(std::make_unique<AgentLane>(
+        panel[a], episode, sets_,
+        [hashes, generator_seed, name = panel[a].name](int, int problem, int run) {
+          return failureRunSeed(generator_seed, hashes[static_cast<std::size_t>(problem)], name, run);
+        },
+        runs, batch_size));
+  }
+  tallies_.assign(problems.size(), PanelTally{std::vector<int>(panel.size(), 0), std::vector<long>(panel.size(), 0)});
+  evaluations_.assign(problems.size(), PanelEvaluation{});
+}
+
+void HuntEvaluation::record(const std::vector<EpisodeResult>& ended) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (const EpisodeResult& r : ended) {
+    const std::size_t p = static_cast<std::size_t>(std::stoi(r.problem.substr(1)));
+    const auto a = static_cast<std::size_t>(agent_index_.at(r.agent));
+    PanelEvaluation& e = evaluations_.at(p);
+    ++e.episodes;
+    // A run that ended before its budget without reaching the goal (timeout, lost agent) counts its whole budget.
+    tallies_[p].steps[a] += r.passed ? r.steps : episode_.budget;
+    if (!r.passed) {
+      ++tallies_[p].failures[a];
+      ++e.failed;
+      ++e.reasons[r.reason];
+    }
+  }
+}
+
+std::vector<PanelEvaluation> HuntEvaluation::evaluations() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<PanelEvaluation> result = evaluations_;
+  for (std::size_t p = 0; p < result.size(); ++p) result[p].estimate = estimateOf(tallies_[p], runs_, episode_.budget);
+  return result;
+}
+
+}  // namespace simulator
+}  // namespace ppp
