@@ -4,7 +4,8 @@
 launch/experiment.launch must start one agent node per entry of config/agents.yaml (node name = the agent's
 ROS name, ~type/~memory/~sensor_noise as in the file, topics /NAME/scans and /NAME/moves), one generator node
 per set of config/experiment.yaml with that set's options, and the simulator waiting for their sets.
-launch/inspect.launch must load with and without a bag. Loads the files with roslaunch's own parser; starts
+launch/inspect.launch must load with and without a bag. launch/hunt.launch must start the simulator in hunt mode,
+the hunter with the failure fitness and the panel, the same agent nodes, and a planner's bridge when asked. Loads the files with roslaunch's own parser; starts
 nothing. Usage: launch_files_test.py REPOSITORY_ROOT
 """
 import os
@@ -139,6 +140,35 @@ class InspectLaunchTest(unittest.TestCase):
         self.assertIn('--clock', players[0].args)
         self.assertIn('/data/x.bag', players[0].args)
         self.assertIs(config.params['/use_sim_time'].value, True)
+
+
+class HuntLaunchTest(unittest.TestCase):
+    def test_hunt_starts_the_simulator_in_hunt_mode_and_the_hunter_with_the_panel(self):
+        config = load('hunt.launch', 'output_dir:=relative/hunt', 'agents:=wall_follower_left,explorer_noise_0.1',
+                      'matings:=77')
+        nodes = {n.name: n for n in config.nodes}
+        params = {k: p.value for k, p in config.params.items()}
+        self.assertTrue(nodes['simulator'].required)
+        self.assertTrue(nodes['hunter'].required)
+        self.assertEqual(params['/simulator/mode'], 'hunt')
+        self.assertTrue(os.path.isfile(params['/simulator/config']))
+        self.assertEqual(params['/hunter/fitness'], 'failure')
+        self.assertEqual(params['/hunter/agents'], ['wall_follower_left', 'explorer_noise_0.1'])
+        self.assertEqual(params['/hunter/matings'], 77)
+        self.assertEqual(params['/hunter/crowding_window'], 4)
+        self.assertEqual(params['/hunter/evaluator'], '/simulator/evaluate')
+        self.assertTrue(params['/hunter/exit_when_done'])
+        self.assertEqual(params['/hunter/output_dir'], os.path.join(os.getcwd(), 'relative', 'hunt'))
+        self.assertEqual(len([n for n in config.nodes if n.type == 'agent_node']), 10)
+        self.assertEqual([n for n in config.nodes if n.type == 'planner_bridge_node'], [])
+
+    def test_a_planner_hunt_starts_its_bridge_and_planner_only(self):
+        config = load('hunt.launch', 'output_dir:=/tmp/h', 'agents:=mine', 'planner:=mine', 'built_in_agents:=false',
+                      'planner_pkg:=ppp_agents', 'planner_type:=simple_planner.py')
+        self.assertEqual([n for n in config.nodes if n.type == 'agent_node'], [])
+        started = sorted((n.namespace, n.name, n.type) for n in config.nodes if n.namespace.startswith('/mine/'))
+        self.assertEqual(started, [('/mine/', 'bridge', 'planner_bridge_node'),
+                                   ('/mine/robot/', 'planner', 'simple_planner.py')])
 
 
 if __name__ == '__main__':
