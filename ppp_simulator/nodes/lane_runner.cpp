@@ -81,6 +81,12 @@ void LaneRunner::run(AgentLane* lane) {
     report(lane_->failAll(reason::kAgentLost));
     return;
   }
+  if (suspect_ && !agentAlive()) {  // lost in an earlier lane: fail at once instead of after a timeout
+    ROS_ERROR("agent '%s' is still gone: its %ld runs fail as agent_lost", name.c_str(), lane_->remaining());
+    report(lane_->failAll(reason::kAgentLost));
+    return;
+  }
+  suspect_ = false;
   connected_ = true;
   const ros::WallTime started = ros::WallTime::now();
   const long episodes = lane_->remaining();
@@ -103,6 +109,7 @@ void LaneRunner::run(AgentLane* lane) {
     } else if (!agentAlive()) {
       ROS_ERROR("agent '%s' is gone: its %ld unfinished runs fail as agent_lost", name.c_str(), lane_->remaining());
       report(lane_->failAll(reason::kAgentLost));
+      suspect_ = true;
     } else {
       const auto ended = lane_->unanswered(reason::kTimeout, parameters_.timeouts_before_giving_up);
       if (lane_->finished() && lane_->silentBatches() >= parameters_.timeouts_before_giving_up) {

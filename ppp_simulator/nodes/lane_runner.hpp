@@ -48,6 +48,7 @@ class LaneRunner {
   bool log_rates_;
   AgentLane* lane_ = nullptr;
   bool connected_ = false;
+  bool suspect_ = false;        // the agent was lost in an earlier lane: check before playing the next
   ros::CallbackQueue replies_;  // the moves subscription's callbacks, called by the lane's thread
   ros::Publisher scans_;
   ros::Subscriber moves_;       // after replies_: unsubscribes before the queue goes
