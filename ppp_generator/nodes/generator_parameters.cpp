@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "ppp_core/error.hpp"
+#include "ppp_generator/fitness.hpp"
 #include "ppp_msgs/node_parameters.h"
 
 namespace ppp {
@@ -81,6 +82,9 @@ NodeParameters readNodeParameters(const ros::NodeHandle& nh) {
   }
   if (!(p.resolution > 0)) throw InvalidArgument("~resolution", "expected metres per cell > 0");
   if (!(p.evaluator_timeout > 0)) throw InvalidArgument("~evaluator_timeout", "expected seconds > 0");
+  if (o.fitness == kFailureFitness && !o.agents_file.empty()) {
+    throw InvalidArgument("~agents_file", "a hunt through ROS names the simulator's agents (its ~config); leave it empty");
+  }
   return p;
 }
 

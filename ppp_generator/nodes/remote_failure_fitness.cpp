@@ -30,7 +30,7 @@ Fitness makeRemoteFailureFitness(ros::NodeHandle& nh, const GeneratorOptions& op
     call.request.runs = static_cast<std::uint32_t>(options.runs_per_eval);
     call.request.seed = options.seed;
     if (!client->call(call)) throw IoError(service, "the evaluation call failed (is the simulator node still up?)");
-    if (!call.response.error.empty()) throw InvalidArgument("agents", "the simulator refused: " + call.response.error);
+    if (!call.response.error.empty()) throw IoError(service, "the simulator refused: " + call.response.error);
     if (call.response.evaluations.size() != problems.size()) {
       throw IoError(service, "answered " + std::to_string(call.response.evaluations.size()) + " evaluations for " +
                                  std::to_string(problems.size()) + " PPPs");

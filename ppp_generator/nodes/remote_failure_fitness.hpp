@@ -14,8 +14,8 @@ namespace generator {
 /// `service` (ppp_msgs/EvaluateProblems) with the panel options.agents, options.runs_per_eval runs and the
 /// generator seed, and comes back as failure rates; scores by failureScore(), batches of kFailureBatchSize,
 /// so built-in agents give the set an in-process hunt gives. Waits up to `wait_seconds` for the service.
-/// @throws IoError when the service does not come or a call fails, InvalidArgument("agents", ...) when the
-/// simulator refuses the request (its message is passed on).
+/// @throws IoError when the service does not come, a call fails or the simulator refuses the request (its
+/// message, naming the field, is passed on).
 Fitness makeRemoteFailureFitness(ros::NodeHandle& nh, const GeneratorOptions& options, const std::string& service,
                                  double wait_seconds);
 

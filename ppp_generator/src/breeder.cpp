@@ -1,6 +1,9 @@
 #include "ppp_generator/breeder.hpp"
 
 #include <algorithm>
+#include <string>
+
+#include "ppp_core/error.hpp"
 
 #include "ppp_core/random_problem.hpp"
 
@@ -59,6 +62,18 @@ void Breeder::mutate(Problem* problem) {
   }
 }
 
+Individual Breeder::randomSolvable(long* redraws) {
+  for (;;) {
+    Individual individual;
+    individual.problem = randomChromosome();
+    if (decode(&individual)) return individual;
+    if (++*redraws > kMaxRandomRedraws) {
+      throw InvalidArgument("population", "no solvable random PPP in " + std::to_string(kMaxRandomRedraws) +
+                                              " draws; lower the obstacle budget or sizes, or enlarge the grid");
+    }
+  }
+}
+
 bool Breeder::decode(Individual* individual) {
   individual->grid = decodeGrid(individual->problem);
   individual->grid_hash = individual->grid.hash();
@@ -83,6 +98,10 @@ void Breeder::score(const std::vector<Individual*>& individuals) {
       grids.push_back(&individuals[i]->grid);
     }
     const std::vector<FitnessScore> scores = fitness_.batch(problems, grids);
+    if (scores.size() != problems.size()) {
+      throw InvalidArgument("fitness", fitness_.name + " answered " + std::to_string(scores.size()) + " scores for " +
+                                           std::to_string(problems.size()) + " PPPs");
+    }
     for (std::size_t i = begin; i < end; ++i) {
       individuals[i]->value = scores.at(i - begin).value;
       individuals[i]->score = scores.at(i - begin).score;

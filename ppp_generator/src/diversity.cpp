@@ -34,35 +34,34 @@ double cellDifference(const Grid& a, const Grid& b) {
   return static_cast<double>(differingCells(a, b)) / static_cast<double>(a.size());
 }
 
-double setDiversity(const std::vector<Grid>& grids) {
-  if (grids.size() < 2) return 0.0;
+DiversityFigures measureDiversity(const std::vector<Grid>& grids) {
+  DiversityFigures figures;
+  figures.nearest.assign(grids.size(), grids.size() < 2 ? 0.0 : 1.0);
+  if (grids.size() < 2) return figures;
   double obstacles = 0.0;
   for (const Grid& g : grids) {
     checkSameSize(grids[0], g);
-    obstacles += static_cast<double>(std::count_if(g.cells().begin(), g.cells().end(), [](auto c) { return c != 0; }));
+    obstacles += static_cast<double>(g.obstacleCount());
   }
-  const double density = obstacles / (static_cast<double>(grids.size()) * static_cast<double>(grids[0].size()));
-  const double expected = 2.0 * density * (1.0 - density);
-  if (expected <= 0.0) return 0.0;
   double total = 0.0;
-  for (std::size_t i = 0; i < grids.size(); ++i) {
-    for (std::size_t j = i + 1; j < grids.size(); ++j) total += cellDifference(grids[i], grids[j]);
-  }
-  const double pairs = static_cast<double>(grids.size()) * static_cast<double>(grids.size() - 1) / 2.0;
-  return total / pairs / expected;
-}
-
-std::vector<double> nearestDifferences(const std::vector<Grid>& grids) {
-  std::vector<double> nearest(grids.size(), grids.size() < 2 ? 0.0 : 1.0);
   for (std::size_t i = 0; i < grids.size(); ++i) {
     for (std::size_t j = i + 1; j < grids.size(); ++j) {
       const double d = cellDifference(grids[i], grids[j]);
-      nearest[i] = std::min(nearest[i], d);
-      nearest[j] = std::min(nearest[j], d);
+      total += d;
+      figures.nearest[i] = std::min(figures.nearest[i], d);
+      figures.nearest[j] = std::min(figures.nearest[j], d);
     }
   }
-  return nearest;
+  const double density = obstacles / (static_cast<double>(grids.size()) * static_cast<double>(grids[0].size()));
+  const double expected = 2.0 * density * (1.0 - density);
+  const double pairs = static_cast<double>(grids.size()) * static_cast<double>(grids.size() - 1) / 2.0;
+  figures.diversity = expected > 0.0 ? total / pairs / expected : 0.0;
+  return figures;
 }
+
+double setDiversity(const std::vector<Grid>& grids) { return measureDiversity(grids).diversity; }
+
+std::vector<double> nearestDifferences(const std::vector<Grid>& grids) { return measureDiversity(grids).nearest; }
 
 }  // namespace generator
 }  // namespace ppp

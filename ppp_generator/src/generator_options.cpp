@@ -72,9 +72,7 @@ void validateHuntOptions(const GeneratorOptions& o) {
   const std::vector<std::string>& names = characterNames();
   for (std::size_t i = 0; i < o.features.size(); ++i) {
     if (std::find(names.begin(), names.end(), o.features[i]) == names.end()) {
-      std::string valid;
-      for (const std::string& n : names) valid += (valid.empty() ? "" : ", ") + n;
-      throw InvalidArgument("features", "unknown character '" + o.features[i] + "'; valid: " + valid);
+      throw InvalidArgument("features", "unknown character '" + o.features[i] + "'; valid: " + joinNames(names));
     }
     for (std::size_t j = 0; j < i; ++j) {
       if (o.features[i] == o.features[j]) throw InvalidArgument("features", "'" + o.features[i] + "' named twice");

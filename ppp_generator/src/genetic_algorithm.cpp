@@ -10,12 +10,6 @@
 namespace ppp {
 namespace generator {
 
-namespace {
-
-constexpr long kMaxInitialRedraws = 1000000;
-
-}  // namespace
-
 std::vector<int> drawDistinct(Rng* rng, int size, int count) {
   std::vector<int> order(static_cast<std::size_t>(size));
   std::iota(order.begin(), order.end(), 0);
@@ -42,13 +36,12 @@ std::vector<Individual> GeneticAlgorithm::initialPool() {
   std::vector<Individual> pool;
   pool.reserve(static_cast<std::size_t>(options_.population));
   while (static_cast<int>(pool.size()) < options_.population) {
-    Individual individual;
-    individual.problem = breeder_.randomChromosome();
-    if (breeder_.decode(&individual) && !gridInPool(pool, individual)) {
+    Individual individual = breeder_.randomSolvable(&stats_.initial_redraws);
+    if (!gridInPool(pool, individual)) {
       pool.push_back(std::move(individual));
-    } else if (++stats_.initial_redraws > kMaxInitialRedraws) {
+    } else if (++stats_.initial_redraws > kMaxRandomRedraws) {
       throw InvalidArgument("population", "only " + std::to_string(pool.size()) + " distinct solvable PPPs in " +
-                                              std::to_string(kMaxInitialRedraws) +
+                                              std::to_string(kMaxRandomRedraws) +
                                               " random draws; lower the population, the obstacle budget or sizes, "
                                               "or enlarge the grid");
     }

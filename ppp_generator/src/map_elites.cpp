@@ -7,6 +7,7 @@
 
 #include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/text_format.hpp"
 #include "ppp_generator/taxonomy.hpp"
 
 namespace ppp {
@@ -28,17 +29,6 @@ std::size_t characterIndex(const std::string& name) {
   const auto found = std::find(names.begin(), names.end(), name);
   if (found == names.end()) throw InvalidArgument("features", "unknown character '" + name + "'");
   return static_cast<std::size_t>(found - names.begin());
-}
-
-std::string xmlEscape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
-  }
-  return out;
 }
 
 }  // namespace
@@ -134,13 +124,8 @@ std::vector<Individual> MapElites::run(const ProgressCallback& progress, long pr
   };
   // Seed the archive with random valid PPPs.
   std::vector<Individual> batch;
-  long draws = 0;
-  while (static_cast<int>(batch.size()) < options_.population) {
-    Individual individual;
-    individual.problem = breeder_.randomChromosome();
-    if (breeder_.decode(&individual)) batch.push_back(std::move(individual));
-    if (++draws > 1000000) throw InvalidArgument("population", "no solvable random PPPs in a million draws");
-  }
+  long redraws = 0;
+  while (static_cast<int>(batch.size()) < options_.population) batch.push_back(breeder_.randomSolvable(&redraws));
   offerAll(batch);
   auto best = [&]() {
     double value = 0, score = -1e300;
@@ -211,13 +196,14 @@ std::string archiveHeatMapSvg(const Archive& archive, const std::vector<std::str
   const int bins = archive.bins();
   // The fittest elite per (first, second) bin pair.
   std::map<std::pair<int, int>, const Elite*> shown;
-  double low = 1e300, high = -1e300;
+  double low = 1e300, high = -1e300;  // scores: fitter is higher whatever the fitness's direction
+  double low_value = 0, high_value = 0;
   for (const auto& [cell, elite] : archive.elites()) {
     const std::pair<int, int> key{elite.bins[0], elite.bins[1]};
     auto& slot = shown[key];
     if (slot == nullptr || elite.individual.score > slot->individual.score) slot = &elite;
-    low = std::min(low, elite.individual.value);
-    high = std::max(high, elite.individual.value);
+    if (elite.individual.score < low) low = elite.individual.score, low_value = elite.individual.value;
+    if (elite.individual.score > high) high = elite.individual.score, high_value = elite.individual.value;
   }
   const int size = bins * kCellPixels;
   const int width = std::max(size + kMargin + 20, 480);  // room for the title and the caption
@@ -226,7 +212,7 @@ std::string archiveHeatMapSvg(const Archive& archive, const std::vector<std::str
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
       << "\" font-family=\"sans-serif\" font-size=\"11\">\n"
       << "<rect x=\"0\" y=\"0\" width=\"" << width << "\" height=\"" << height << "\" fill=\"#ffffff\"/>\n"
-      << "<text x=\"" << kMargin << "\" y=\"16\" font-size=\"13\">" << xmlEscape(title) << "</text>\n";
+      << "<text x=\"" << kMargin << "\" y=\"16\" font-size=\"13\">" << escapeMarkup(title) << "</text>\n";
   for (int bx = 0; bx < bins; ++bx) {
     for (int by = 0; by < bins; ++by) {
       const int x = kMargin + bx * kCellPixels;
@@ -235,7 +221,7 @@ std::string archiveHeatMapSvg(const Archive& archive, const std::vector<std::str
       std::string fill = "#dddddd";
       std::string tip = "empty";
       if (found != shown.end()) {
-        const double share = high > low ? (found->second->individual.value - low) / (high - low) : 1.0;
+        const double share = high > low ? (found->second->individual.score - low) / (high - low) : 1.0;
         char colour[8];
         std::snprintf(colour, sizeof colour, "#%02x%02x%02x", 255 - static_cast<int>(75 * share),
                       static_cast<int>(235 - 215 * share), static_cast<int>(200 - 180 * share));
@@ -251,16 +237,16 @@ std::string archiveHeatMapSvg(const Archive& archive, const std::vector<std::str
       << "<text x=\"" << kMargin + size << "\" y=\"" << axis_y + 14 << "\" text-anchor=\"end\">"
       << formatNumber(ranges[0].high) << "</text>\n"
       << "<text x=\"" << kMargin + size / 2 << "\" y=\"" << axis_y + 28 << "\" text-anchor=\"middle\">"
-      << xmlEscape(features[0]) << "</text>\n"
+      << escapeMarkup(features[0]) << "</text>\n"
       << "<text x=\"" << kMargin - 4 << "\" y=\"" << axis_y << "\" text-anchor=\"end\">"
       << formatNumber(ranges[1].low) << "</text>\n"
       << "<text x=\"" << kMargin - 4 << "\" y=\"40\" text-anchor=\"end\">" << formatNumber(ranges[1].high)
       << "</text>\n"
       << "<text transform=\"translate(14," << 30 + size / 2 << ") rotate(-90)\" text-anchor=\"middle\">"
-      << xmlEscape(features[1]) << "</text>\n"
+      << escapeMarkup(features[1]) << "</text>\n"
       << "<text x=\"" << kMargin << "\" y=\"" << axis_y + 42 << "\">" << archive.elites().size() << " of "
       << static_cast<long>(std::pow(bins, static_cast<double>(features.size())))
-      << " cells filled; darker = higher fitness (" << formatNumber(low) << " to " << formatNumber(high)
+      << " cells filled; darker = fitter (fitness " << formatNumber(low_value) << " to " << formatNumber(high_value)
       << ")</text>\n</svg>\n";
   return svg.str();
 }

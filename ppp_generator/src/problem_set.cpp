@@ -36,11 +36,12 @@ std::vector<std::string> setCsvHeader() {
 }
 
 /// Fills the set's diversity figures from its PPPs.
-void measureDiversity(ProblemSet* set) {
+void fillDiversity(ProblemSet* set) {
   std::vector<Grid> grids;
   for (const Problem& p : set->problems) grids.push_back(decodeGrid(p));
-  set->nearest = nearestDifferences(grids);
-  set->diversity = setDiversity(grids);
+  DiversityFigures figures = measureDiversity(grids);
+  set->nearest = std::move(figures.nearest);
+  set->diversity = figures.diversity;
 }
 
 std::string idOf(std::size_t index, std::size_t count) {
@@ -92,7 +93,7 @@ ProblemSet makeProblemSet(const GeneratorOptions& options, const std::vector<Ind
     set.evaluations.push_back(evaluation);
     set.fitness_values.push_back(individual.value);
   }
-  measureDiversity(&set);
+  fillDiversity(&set);
   return set;
 }
 
@@ -208,7 +209,11 @@ ProblemSet readProblemSetDirectory(const std::string& dir) {
     set.problems.push_back(std::move(problem));
   }
   if (set.problems.empty()) throw ParseError(csv_path, line_number, "set", "lists no PPPs");
-  measureDiversity(&set);
+  try {
+    fillDiversity(&set);
+  } catch (const InvalidArgument& e) {
+    throw ParseError(csv_path, 0, "set", std::string("PPPs of different sizes: ") + e.what());
+  }
   set.maximise = fitnessMaximises(set.fitness);
   return set;
 }

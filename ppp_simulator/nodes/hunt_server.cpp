@@ -1,5 +1,6 @@
 #include "hunt_server.hpp"
 
+#include <exception>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -32,15 +33,29 @@ class HuntServer {
       HuntEvaluation evaluation(problems, panel, config_.episode, static_cast<int>(request.runs), request.seed,
                                 parameters_.batch_size);
       const ros::WallTime started = ros::WallTime::now();
+      std::vector<LaneRunner*> runners;
+      for (const agents::AgentConfig& agent : panel) runners.push_back(&runnerFor(agent));
       target_ = &evaluation;  // the runners' sink
+      std::vector<std::exception_ptr> failures(panel.size());
       std::vector<std::thread> threads;
       for (std::size_t a = 0; a < panel.size(); ++a) {
-        LaneRunner& runner = runnerFor(panel[a]);
         AgentLane* lane = evaluation.lanes()[a].get();
-        threads.emplace_back([&runner, lane] { runner.run(lane); });
+        threads.emplace_back([runner = runners[a], lane, failure = &failures[a]] {
+          try {
+            runner->run(lane);
+          } catch (...) {
+            *failure = std::current_exception();
+          }
+        });
       }
       for (std::thread& t : threads) t.join();
       target_ = nullptr;
+      for (const std::exception_ptr& failure : failures) {
+        if (failure) std::rethrow_exception(failure);
+      }
+      for (const auto& lane : evaluation.lanes()) {
+        if (!lane->finished()) throw IoError("~evaluate", "shutting down before every run was played");
+      }
       for (const PanelEvaluation& e : evaluation.evaluations()) response.evaluations.push_back(toMessage(e));
       const double seconds = (ros::WallTime::now() - started).toSec();
       episodes_ += static_cast<long>(problems.size() * panel.size()) * request.runs;
@@ -53,6 +68,10 @@ class HuntServer {
       response.evaluations.clear();
       response.error = e.what();
       ROS_ERROR("evaluation refused: %s", e.what());
+    } catch (const std::exception& e) {
+      response.evaluations.clear();
+      response.error = std::string("unexpected failure: ") + e.what();
+      ROS_ERROR("evaluation failed: %s", e.what());
     }
     return true;
   }

@@ -1,6 +1,5 @@
 #include "simulator_parameters.hpp"
 
-
 #include "ppp_core/error.hpp"
 #include "ppp_msgs/node_parameters.h"
 

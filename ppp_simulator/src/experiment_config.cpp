@@ -17,7 +17,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kMaxRuns = 100000000;
-constexpr int kMaxThreads = 1024;
 
 std::string resolve(const fs::path& base, const std::string& path) {
   const fs::path p(path);

@@ -27,12 +27,6 @@ namespace {
 constexpr const char* kFingerprintFile = "experiment.yaml";
 constexpr const char* kResultsFile = "results.csv";
 
-std::uint64_t hashName(const std::string& name) {
-  std::uint64_t hash = 0xcbf29ce484222325ULL;
-  for (unsigned char c : name) hash = (hash ^ c) * 0x100000001b3ULL;
-  return hash;
-}
-
 /// One batch of work: every remaining run of one agent on one PPP.
 struct Unit {
   int set;
@@ -50,7 +44,7 @@ void say(const std::function<void(const std::string&)>& log, const std::string& 
 std::uint64_t runSeed(std::uint64_t experiment_seed, const std::string& set, const std::string& problem,
                       const std::string& agent, int run) {
   return deriveSeed(experiment_seed,
-                    {hashName(set), hashName(problem), hashName(agent), static_cast<std::uint64_t>(run)});
+                    {nameHash(set), nameHash(problem), nameHash(agent), static_cast<std::uint64_t>(run)});
 }
 
 EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::string& agent, int run,

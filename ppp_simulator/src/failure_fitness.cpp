@@ -10,18 +10,13 @@
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/rng.hpp"
+#include "ppp_core/text_format.hpp"
 #include "ppp_core/window_atlas.hpp"
 
 namespace ppp {
 namespace simulator {
 
 namespace {
-
-std::uint64_t hashName(const std::string& name) {
-  std::uint64_t hash = 0xcbf29ce484222325ULL;
-  for (unsigned char c : name) hash = (hash ^ c) * 0x100000001b3ULL;
-  return hash;
-}
 
 void checkPanel(const std::vector<agents::AgentConfig>& panel) {
   if (panel.empty()) throw InvalidArgument("agents", "empty panel: the failure fitness needs at least one agent");
@@ -38,7 +33,7 @@ void checkPanel(const std::vector<agents::AgentConfig>& panel) {
 
 std::uint64_t failureRunSeed(std::uint64_t generator_seed, std::uint64_t grid_hash, const std::string& agent,
                              int run) {
-  return deriveSeed(generator_seed, {0x6661696c, grid_hash, hashName(agent), static_cast<std::uint64_t>(run)});
+  return deriveSeed(generator_seed, {0x6661696c, grid_hash, nameHash(agent), static_cast<std::uint64_t>(run)});
 }
 
 FailureEstimate estimateOf(const PanelTally& tally, int runs, int budget) {
@@ -117,6 +112,14 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
 generator::Fitness makeFailureFitness(const FailurePanel& panel) {
   checkPanel(panel.agents);
   panel.episode.validate();
+  if (panel.runs_per_eval < 1 || panel.runs_per_eval > generator::kMaxRunsPerEval) {
+    throw InvalidArgument("runs_per_eval", "expected runs in [1, " + std::to_string(generator::kMaxRunsPerEval) +
+                                               "], got " + std::to_string(panel.runs_per_eval));
+  }
+  if (panel.threads < 0 || panel.threads > kMaxThreads) {
+    throw InvalidArgument("threads", "expected 0 (every core) or a count up to " + std::to_string(kMaxThreads) +
+                                         ", got " + std::to_string(panel.threads));
+  }
   generator::Fitness fitness;
   fitness.name = generator::kFailureFitness;
   fitness.maximise = true;
@@ -158,10 +161,8 @@ std::vector<agents::AgentConfig> resolvePanel(const std::vector<std::string>& na
     if (available.empty()) {
       const auto& types = agents::agentTypeNames();
       if (std::find(types.begin(), types.end(), name) == types.end()) {
-        std::string valid;
-        for (const std::string& t : types) valid += (valid.empty() ? "" : ", ") + t;
         throw InvalidArgument("agents", "unknown agent '" + name + "'; with no agents file the names are built-in "
-                                        "types: " + valid);
+                                        "types: " + joinNames(types));
       }
       agents::AgentConfig config;
       config.name = name;
@@ -172,9 +173,9 @@ std::vector<agents::AgentConfig> resolvePanel(const std::vector<std::string>& na
     const auto found = std::find_if(available.begin(), available.end(),
                                     [&](const agents::AgentConfig& a) { return a.name == name; });
     if (found == available.end()) {
-      std::string valid;
-      for (const agents::AgentConfig& a : available) valid += (valid.empty() ? "" : ", ") + a.name;
-      throw InvalidArgument("agents", "unknown agent '" + name + "'; valid: " + valid);
+      std::vector<std::string> valid;
+      for (const agents::AgentConfig& a : available) valid.push_back(a.name);
+      throw InvalidArgument("agents", "unknown agent '" + name + "'; valid: " + joinNames(valid));
     }
     panel.push_back(*found);
   }

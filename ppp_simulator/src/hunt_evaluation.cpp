@@ -1,6 +1,5 @@
 #include "ppp_simulator/hunt_evaluation.hpp"
 
-
 #include "ppp_core/error.hpp"
 
 namespace ppp {
@@ -8,14 +7,14 @@ namespace simulator {
 
 namespace {
 
-/// Candidate ids within the request ("c000", ...): results name their PPP by id.
+/// Candidate ids within the request ("c0", "c1", ...): results name their PPP by id.
 std::string candidateId(std::size_t index) { return "c" + std::to_string(index); }
 
 }  // namespace
 
 HuntEvaluation::HuntEvaluation(const std::vector<Problem>& problems, const std::vector<agents::AgentConfig>& panel,
                                const EpisodeOptions& episode, int runs, std::uint64_t generator_seed, int batch_size)
-    : panel_(panel), episode_(episode), runs_(runs) {
+    : episode_(episode), runs_(runs) {
   if (runs < 1 || runs > generator::kMaxRunsPerEval) {
     throw InvalidArgument("runs", "expected runs in [1, " + std::to_string(generator::kMaxRunsPerEval) + "], got " +
                                       std::to_string(runs));

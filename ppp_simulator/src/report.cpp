@@ -560,7 +560,8 @@ void faultSection(const ReportInput& input, const std::vector<Picture>& pictures
   out->html += "<h2>Faults found</h2>\n";
   const std::string intro =
       "Per agent and set: the PPPs the agent passes in fewer than half of its runs, out of the set's PPPs. "
-      "Below, every agent that fails somewhere (but the random baseline) with a failing run on its worst PPP.";
+      "Below, every agent that fails somewhere with a failing run on its worst PPP (not the astar control, the "
+      "random baseline or planner agents, whose runs cannot be replayed in process).";
   out->md += mdText(intro) + "\n\n";
   out->html += "<p>" + escapeMarkup(intro) + "</p>\n";
   std::map<std::pair<std::string, std::string>, std::pair<int, int>> failed;  // (set, agent) -> (failed, PPPs)
@@ -585,8 +586,8 @@ void faultSection(const ReportInput& input, const std::vector<Picture>& pictures
     if (set.archive_svg.empty()) continue;
     const std::string caption = "The MAP-Elites archive of set " + set.name +
                                 ": each cell keeps the fittest PPP whose characters fall into it; darker is fitter.";
-    out->md += "### Archive of " + mdCode(set.name, false) + "\n\n" + mdText(caption) + " (sets/" +
-               mdText(set.name) + "/archive.svg)\n\n";
+    out->md += "### Archive of " + mdCode(set.name, false) + "\n\n" + mdText(caption) +
+               " (archive.svg in the set's directory)\n\n";
     const std::string inline_svg = set.archive_svg.substr(std::min(set.archive_svg.find("<svg"), set.archive_svg.size()));
     out->html += "<h3>Archive of <code>" + escapeMarkup(set.name) + "</code></h3>\n<figure>\n" + inline_svg +
                  "<figcaption>" + escapeMarkup(caption) + "</figcaption>\n</figure>\n";

@@ -48,6 +48,13 @@ struct Layout {
   double plotRight() const { return kLeft + plot_width; }
 };
 
+/// Displayed characters of the longest series name (capped at kMaxLegendChars).
+std::size_t longestSeriesName(const Chart& chart) {
+  std::size_t longest = 0;
+  for (const PlotSeries& s : chart.series) longest = std::max(longest, std::min(displayLength(s.name), kMaxLegendChars));
+  return longest;
+}
+
 Layout layOut(const Chart& chart, double min_band) {
   Layout layout;
   const std::size_t n = chart.categories.size();
@@ -61,10 +68,7 @@ Layout layOut(const Chart& chart, double min_band) {
   // Slanted at 40°, a label of w pixels reaches w · sin 40° ≈ 0.64 w below the axis; kCharWidth is generous,
   // so 0.57 of it is about the real reach.
   layout.label_height = layout.rotate ? 14 + static_cast<double>(longest_label) * kCharWidth * 0.57 : 22;
-  std::size_t longest_name = 0;
-  for (const PlotSeries& s : chart.series) {
-    longest_name = std::max(longest_name, std::min(displayLength(s.name), kMaxLegendChars));
-  }
+  const std::size_t longest_name = longestSeriesName(chart);
   layout.legend_x = layout.plotRight() + 24;
   layout.width = layout.legend_x + 26 + static_cast<double>(longest_name) * kCharWidth + 12;
   const double below = layout.label_height + (chart.x_label.empty() ? 8 : 30);
@@ -199,11 +203,7 @@ std::string heatMapSvg(const Chart& chart, bool standalone) {
   chart.validate();
   const std::size_t columns = chart.categories.size();
   const std::size_t rows = chart.series.size();
-  std::size_t longest_name = 0;
-  for (const PlotSeries& s : chart.series) {
-    longest_name = std::max(longest_name, std::min(displayLength(s.name), kMaxLegendChars));
-  }
-  const double left = 12 + static_cast<double>(longest_name) * kCharWidth;
+  const double left = 12 + static_cast<double>(longestSeriesName(chart)) * kCharWidth;
   const double cell_width = columns > 0 ? std::clamp(900.0 / static_cast<double>(columns), 6.0, 24.0) : 24.0;
   const double cell_height = 18;
   const double plot_width = std::max(kMinPlotWidth, cell_width * static_cast<double>(columns));

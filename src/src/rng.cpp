@@ -62,6 +62,12 @@ bool Rng::bernoulli(double p) {
   return uniform01() < p;
 }
 
+std::uint64_t nameHash(const std::string& name) {
+  std::uint64_t hash = 0xcbf29ce484222325ULL;
+  for (unsigned char c : name) hash = (hash ^ c) * 0x100000001b3ULL;
+  return hash;
+}
+
 std::uint64_t deriveSeed(std::uint64_t parent, std::initializer_list<std::uint64_t> path) {
   std::uint64_t state = parent;
   std::uint64_t seed = splitMix64(&state);

@@ -70,6 +70,12 @@ std::string escapeMarkup(const std::string& text) {
   return out;
 }
 
+std::string joinNames(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
 double tickStep(double top) {
   const double raw = top / 5;
   const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));

@@ -32,6 +32,9 @@ class Breeder {
 
   /// A chromosome of 1..max_obstacles random descriptors.
   Problem randomChromosome();
+  /// A random chromosome that decodes to a solvable PPP (decode() done); unsolvable draws are counted in
+  /// `redraws`. @throws InvalidArgument("population", ...) once `redraws` passes kMaxRandomRedraws.
+  Individual randomSolvable(long* redraws);
   /// One-point crossover of descriptor lists: a[0, i) + b[j, end) and b[0, j) + a[i, end), capped to the budget.
   void crossover(const Problem& a, const Problem& b, Problem* child_a, Problem* child_b);
   /// With probability mutation_rate: change, add or remove one descriptor.
@@ -40,6 +43,7 @@ class Breeder {
   /// without a batch scorer the value and score are set too.
   bool decode(Individual* individual);
   /// Scores decoded individuals that have no score yet (a batch fitness: in calls of batch_size).
+  /// @throws InvalidArgument("fitness", ...) when a batch scorer answers with the wrong number of scores.
   void score(const std::vector<Individual*>& individuals);
   /// True when the fitness scores in batches (then decode() leaves value and score unset).
   bool batched() const { return static_cast<bool>(fitness_.batch); }
@@ -53,6 +57,9 @@ class Breeder {
   DpaSolver dpa_;
   Problem shape_;
 };
+
+/// Most unsolvable or repeated random chromosomes drawn for a starting pool before giving up.
+constexpr long kMaxRandomRedraws = 1000000;
 
 /// True when `candidate`'s grid equals the grid of a member of `pool`.
 bool gridInPool(const std::vector<Individual>& pool, const Individual& candidate);

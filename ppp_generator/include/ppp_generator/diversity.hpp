@@ -19,5 +19,14 @@ double setDiversity(const std::vector<Grid>& grids);
 /// For each grid, cellDifference to the most similar other grid of the set (0 for a set of one).
 std::vector<double> nearestDifferences(const std::vector<Grid>& grids);
 
+/// Both figures of a set, from one pass over its pairs.
+struct DiversityFigures {
+  double diversity = 0;         ///< setDiversity of the grids.
+  std::vector<double> nearest;  ///< nearestDifferences of the grids.
+};
+
+/// setDiversity and nearestDifferences at once. @throws InvalidArgument when the grids differ in size.
+DiversityFigures measureDiversity(const std::vector<Grid>& grids);
+
 }  // namespace generator
 }  // namespace ppp

@@ -25,8 +25,9 @@ constexpr const char* kMapElitesArchive = "map_elites";
 constexpr int kMaxCrowdingWindow = 100000;
 /// Most runs per evaluation of the failure fitness.
 constexpr int kMaxRunsPerEval = 10000;
-/// Most bins per feature of a MAP-Elites archive, and most cells in all.
+/// Most bins per feature of a MAP-Elites archive.
 constexpr int kMaxBins = 100;
+/// Most cells of a MAP-Elites archive in all (bins to the power of the features).
 constexpr long kMaxArchiveCells = 100000;
 
 /// Everything that shapes one run of the generator. Defaults match config/generator.yaml.

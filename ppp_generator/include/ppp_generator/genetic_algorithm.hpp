@@ -33,7 +33,9 @@ using ProgressCallback = std::function<void(long done, long total, double best_v
 /// a good layout can only push out its own near-copies and the pool keeps many layouts. A child whose
 /// grid is already in the pool is discarded, so the pool holds distinct PPPs.
 /// A batch fitness (failure) is scored a round of batch_size matings at a time: the round's parents are
-/// drawn from the pool as it was before the round, and the children enter in mating order afterwards.
+/// drawn from the pool as it was before the round, and the children enter in mating order afterwards (under
+/// `tournament` replacement into the tournament slots drawn before the round, so a later mating of the round
+/// may replace an earlier one's child).
 /// Deterministic for a seed.
 class GeneticAlgorithm {
  public:
@@ -41,6 +43,8 @@ class GeneticAlgorithm {
   explicit GeneticAlgorithm(const GeneratorOptions& options);
   /// Prepares a run with a fitness built elsewhere (the failure fitness). @throws InvalidArgument.
   GeneticAlgorithm(const GeneratorOptions& options, Fitness fitness);
+  GeneticAlgorithm(const GeneticAlgorithm&) = delete;             ///< Its breeder refers to its own members.
+  GeneticAlgorithm& operator=(const GeneticAlgorithm&) = delete;  ///< As the copy constructor.
 
   /// Builds the initial pool and runs every mating event; returns the final pool in pool order.
   std::vector<Individual> run(const ProgressCallback& progress = {}, long progress_interval = 1000);

@@ -75,6 +75,8 @@ class MapElites {
  public:
   /// @throws InvalidArgument for bad options (features, bins, ...).
   MapElites(const GeneratorOptions& options, Fitness fitness);
+  MapElites(const MapElites&) = delete;             ///< Its breeder refers to its own members.
+  MapElites& operator=(const MapElites&) = delete;  ///< As the copy constructor.
   /// Runs the search and returns the elites, fittest first (ties in cell order), at most `population` of them.
   std::vector<Individual> run(const ProgressCallback& progress = {}, long progress_interval = 1000);
   /// The archive after run().
@@ -100,8 +102,8 @@ std::string archiveCsv(const Archive& archive, const std::vector<std::string>& f
                        const std::map<std::uint64_t, std::string>& set_ids);
 
 /// The archive as an SVG heat map over its first two features (the fittest elite over any further ones):
-/// one square per cell, shaded by the elite's fitness value from `low` (pale) to `high` (dark red), empty
-/// cells grey, axes named after the features.
+/// one square per cell, shaded from the least fit elite (pale) to the fittest (dark red) whatever the fitness's
+/// direction, empty cells grey, axes named after the features.
 std::string archiveHeatMapSvg(const Archive& archive, const std::vector<std::string>& features,
                               const std::vector<FeatureRange>& ranges, const std::string& title);
 

@@ -12,6 +12,9 @@
 namespace ppp {
 namespace simulator {
 
+/// Most worker threads a failure fitness or an experiment may ask for.
+constexpr int kMaxThreads = 1024;
+
 /// The agents and rules of a failure fitness (SPEC 6b).
 struct FailurePanel {
   std::vector<agents::AgentConfig> agents;  ///< The panel, each run `runs_per_eval` times per PPP.
@@ -47,7 +50,8 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
                                               const std::vector<const Grid*>& grids);
 
 /// The failure fitness: value = the failure rate, maximised; score = generator::failureScore. Scores
-/// generator::kFailureBatchSize PPPs per call.
+/// generator::kFailureBatchSize PPPs per call. @throws InvalidArgument naming "agents", "runs_per_eval",
+/// "threads" or an episode option.
 /// @throws InvalidArgument("agents", ...) for an empty panel or a planner agent.
 generator::Fitness makeFailureFitness(const FailurePanel& panel);
 

@@ -42,7 +42,6 @@ class HuntEvaluation {
   std::vector<PanelEvaluation> evaluations() const;
 
  private:
-  std::vector<agents::AgentConfig> panel_;
   EpisodeOptions episode_;
   int runs_;
   std::vector<PreparedSet> sets_;  // one set of the candidates; the lanes refer to it

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <string>
 #include <limits>
 
 namespace ppp {
@@ -37,6 +38,9 @@ class Rng {
  private:
   std::uint64_t s_[4];
 };
+
+/// FNV-1a hash of a name, to derive seeds from names (not positions) with deriveSeed.
+std::uint64_t nameHash(const std::string& name);
 
 /// Derives an independent seed from a parent seed and a path of stream ids (set, PPP, agent, run...).
 std::uint64_t deriveSeed(std::uint64_t parent, std::initializer_list<std::uint64_t> path);

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace ppp {
 
@@ -26,6 +27,9 @@ std::string shortenText(const std::string& text, std::size_t limit);
 
 /// Escapes `& < > " '` so text can go into HTML or SVG, as element text or inside a quoted attribute.
 std::string escapeMarkup(const std::string& text);
+
+/// The items separated by ", " (for error messages listing the valid names).
+std::string joinNames(const std::vector<std::string>& items);
 
 /// A 1-2-5 step (..., 0.5, 1, 2, 5, 10, ...) giving about five axis ticks from 0 up to `top` (> 0).
 double tickStep(double top);
