@@ -49,7 +49,7 @@ for threads in 1 2; do
   start=$(date +%s.%N)
   scripts/ppp experiment config/experiment.yaml -o "${out}/experiment" --threads "${threads}" --quiet > /dev/null
   end=$(date +%s.%N)
-  echo "== default experiment (2 x 60 PPPs x 10 built-in agents x 1000 runs), ${threads} thread(s): $(awk "BEGIN { printf \"%.1f\", ${end} - ${start} }") s"
+  echo "== default experiment (3 x 60 PPPs x 10 built-in agents x 1000 runs), ${threads} thread(s): $(awk "BEGIN { printf \"%.1f\", ${end} - ${start} }") s"
   rm -rf "${out}"
 done
 echo "JSON results: ${repo}/${results_dir}/"
