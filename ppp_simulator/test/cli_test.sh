@@ -10,6 +10,15 @@ for sub in random evaluate convert generate tree select; do
   grep -q "Usage" "$work/out" && pass || fail "help $sub has no usage"
 done
 
+# The wrapper passes the user's arguments to the binary untouched (catkin's setup script must not see them).
+wrapper="$(dirname "${BASH_SOURCE[0]}")/../../scripts/ppp"
+if PPP_BUILD_DIR="$(cd "$(dirname "$ppp")/../../.." && pwd)" "$wrapper" generate --help > "$work/wrapper.out" 2> "$work/wrapper.err" \
+  && [ ! -s "$work/wrapper.err" ] && grep -q "Usage" "$work/wrapper.out"; then
+  pass
+else
+  fail "scripts/ppp generate --help: $(head -3 "$work/wrapper.err")"
+fi
+
 expect_ok "random" "$ppp" random --size 12x9 --obstacles 6 --seed 7 -o "$work/a.ppp"
 expect_ok "random again" "$ppp" random --size 12x9 --obstacles 6 --seed 7 -o "$work/b.ppp"
 cmp -s "$work/a.ppp" "$work/b.ppp" && pass || fail "same seed gave different files"
