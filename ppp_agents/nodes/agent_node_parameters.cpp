@@ -1,17 +1,14 @@
 #include "agent_node_parameters.hpp"
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/text_format.hpp"
 
 namespace ppp {
 namespace agents {
 
 namespace {
 
-std::string typeList() {
-  std::string list;
-  for (const std::string& name : agentTypeNames()) list += (list.empty() ? "" : ", ") + name;
-  return list;
-}
+std::string typeList() { return joinNames(agentTypeNames()); }
 
 }  // namespace
 

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <map>
 
+#include "ppp_agents/agent_registry.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/grid.hpp"
 
@@ -14,19 +15,6 @@ namespace {
 /// Largest memory window side: centred anywhere on the largest map, it covers the whole map.
 constexpr int kMaxMemoryWindow = 2 * kMaxGridSide - 1;
 
-std::string typeList() {
-  std::string list;
-  for (const std::string& name : agentTypeNames()) list += name + ", ";
-  return list + kPlannerType;
-}
-
-bool isAgentType(const std::string& type) {
-  for (const std::string& name : agentTypeNames()) {
-    if (name == type) return true;
-  }
-  return type == kPlannerType;
-}
-
 /// What is wrong with a per-agent run count, or "" when nothing is.
 std::string runsProblem(int runs) {
   if (runs >= 0) return "";
@@ -37,10 +25,6 @@ std::string runsProblem(int runs) {
 std::string priorMapProblem(const AgentConfig& config) {
   if (!config.prior_map || config.type == kPlannerType) return "";
   return "only planner agents take prior_map (astar always has the map; the other agents never do)";
-}
-
-void validateType(const std::string& type) {
-  if (!isAgentType(type)) throw InvalidArgument("type", "unknown agent type '" + type + "'; valid: " + typeList());
 }
 
 void validateMemoryWindow(int window) {
@@ -88,7 +72,7 @@ std::string memoryWindowProblem(const std::string& text, int* window) {
 }  // namespace
 
 void AgentConfig::validate() const {
-  validateType(type);
+  agentType(type);
   validateMemoryWindow(memory_window);
   const std::string noise_problem = sensorNoiseProblem(sensor_noise);
   if (!noise_problem.empty()) throw InvalidArgument("sensor_noise", noise_problem);
@@ -99,10 +83,13 @@ void AgentConfig::validate() const {
 bool isPlanner(const AgentConfig& config) { return config.type == kPlannerType; }
 
 const std::vector<std::string>& agentTypeNames() {
-  static const std::vector<std::string> names = {
-      "astar",    "random",           "wall_follower_left", "wall_follower_right", "explorer", "long_term_explorer",
-      "bumper",   "decision_bumper",
-  };
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> built_in;
+    for (const AgentType& type : agentRegistry()) {
+      if (type.make != nullptr) built_in.push_back(type.name);
+    }
+    return built_in;
+  }();
   return names;
 }
 
@@ -133,9 +120,9 @@ std::vector<AgentConfig> readAgentConfigs(YamlMapReader& reader, const std::stri
     item.read("prior_map", &config.prior_map);
     item.rejectUnknownKeys();
 
-    if (!has_type) item.fail(node, "type", "missing; valid: " + typeList());
-    if (!isAgentType(config.type)) {
-      item.fail(item.lookup("type"), "type", "unknown agent type '" + config.type + "'; valid: " + typeList());
+    if (!has_type) item.fail(node, "type", "missing; valid: " + agentTypeList());
+    if (findAgentType(config.type) == nullptr) {
+      item.fail(item.lookup("type"), "type", "unknown agent type '" + config.type + "'; valid: " + agentTypeList());
     }
     if (!has_name) config.name = config.type;
     if (config.name.empty()) item.fail(item.lookup("name"), "name", "expected a non-empty name");

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_options.hpp"
+#include "ppp_core/text_format.hpp"
 #include "commands.hpp"
 #include "ppp_agents/agent_config.hpp"
 #include "ppp_core/csv.hpp"
@@ -41,10 +42,7 @@ struct ReplayFlags : AgentFlags {
 };
 
 void addAgentOptions(CLI::App* command, AgentFlags* f) {
-  command->add_option("--agent", f->agent,
-                      "Agent type: astar, random, wall_follower_left, wall_follower_right, explorer, "
-                      "long_term_explorer, bumper, decision_bumper")
-      ->required();
+  command->add_option("--agent", f->agent, "Agent type: " + joinNames(agents::agentTypeNames()))->required();
   command->add_option("--memory", f->memory, "Memory window KxK (odd K) or full")->capture_default_str();
   command->add_option("--sensor-noise", f->sensor_noise, "Probability a sensed cell is reported flipped")
       ->capture_default_str();

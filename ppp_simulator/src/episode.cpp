@@ -84,7 +84,7 @@ agents::EpisodeInfo episodeInfo(const Problem& problem, const Grid& grid, const 
   info.start = problem.start;
   info.goal = problem.goal;
   info.seed = agentSeed(run_seed);
-  info.prior_map = config.type == "astar" || (agents::isPlanner(config) && config.prior_map) ? &grid : nullptr;
+  info.prior_map = agents::givenPriorMap(config) ? &grid : nullptr;
   return info;
 }
 

@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "ppp_agents/agent_registry.hpp"
 #include "ppp_core/csv.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_simulator/episode.hpp"
@@ -14,9 +15,6 @@ namespace ppp {
 namespace simulator {
 
 namespace {
-
-/// The control agent type, left out when ranking PPPs by difficulty (it always passes a valid PPP).
-constexpr const char* kControlType = "astar";
 
 /// The first failing run of `agent` on PPP `problem` of `set`, replayed for its path.
 FailureExample failingRun(const ExperimentConfig& config, const PreparedSet& set, int problem,
@@ -62,7 +60,7 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
   for (const EpisodeResult& r : rows) {
     // The control always passes; a planner's path cannot be replayed in-process for the picture.
     const agents::AgentConfig& agent = *agent_by_name.at(r.agent);
-    if (agent.type == kControlType || agents::isPlanner(agent)) continue;
+    if (agents::agentType(agent.type).is_control || agents::isPlanner(agent)) continue;
     auto& c = counts[{r.set, r.problem, r.agent}];
     c.first += r.passed ? 1 : 0;
     ++c.second;
@@ -115,7 +113,8 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
                                           const std::vector<EpisodeResult>& rows) {
   std::vector<FailureExample> worst;
   for (const agents::AgentConfig& agent : config.agents) {
-    if (agent.type == kControlType || agent.type == "random" || agents::isPlanner(agent)) continue;
+    const agents::AgentType& type = agents::agentType(agent.type);
+    if (type.is_control || type.is_baseline || agents::isPlanner(agent)) continue;
     std::map<std::pair<int, int>, std::pair<int, int>> counts;  // (set, problem) -> (passes, runs)
     std::map<std::string, int> set_index;
     for (int s = 0; s < static_cast<int>(sets.size()); ++s) set_index[sets[s].name] = s;
@@ -161,6 +160,11 @@ void writeExperimentReport(const std::string& dir, const ExperimentConfig& confi
                 std::to_string(agent_names.size()) + " agents, " + std::to_string(config.runs) + " runs each" +
                 (other_runs.empty() ? "" : " (" + other_runs + ")");
   input.config_text = config_text;
+  for (const auto& a : config.agents) {
+    if (agents::agentType(a.type).is_control && agents_run.count(a.name) > 0 && input.control.empty()) {
+      input.control = a.name;
+    }
+  }
   input.rates = computePassRates(rows, set_names, agent_names);
   for (std::size_t a = 0; a < sets.size(); ++a) {
     for (std::size_t b = a + 1; b < sets.size(); ++b) input.comparisons.emplace_back(sets[a].name, sets[b].name);

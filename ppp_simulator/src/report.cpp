@@ -308,8 +308,8 @@ std::string readingGuide(const ReportInput& input) {
       "runs). Low pass rates point at faults: the PPP plots show which PPPs an agent fails on. The Mann\xE2\x80\x93"
       "Whitney U test compares, per agent, the per-PPP pass rates of two sets: p below 0.05 says the agent "
       "finds one set harder than the other, and z > 0 means higher pass rates on the first set.";
-  if (std::find(input.rates.agents.begin(), input.rates.agents.end(), "astar") != input.rates.agents.end()) {
-    guide += " The astar agent knows the map and is the control: it should pass every valid PPP.";
+  if (!input.control.empty()) {
+    guide += " The " + input.control + " agent knows the map and is the control: it should pass every valid PPP.";
   }
   guide +=
       " The hardest PPPs are shown with a failed run's path (blue; start green, goal red, obstacles grey) and "
@@ -560,8 +560,8 @@ void faultSection(const ReportInput& input, const std::vector<Picture>& pictures
   out->html += "<h2>Faults found</h2>\n";
   const std::string intro =
       "Per agent and set: the PPPs the agent passes in fewer than half of its runs, out of the set's PPPs. "
-      "Below, every agent that fails somewhere with a failing run on its worst PPP (not the astar control, the "
-      "random baseline or planner agents, whose runs cannot be replayed in process).";
+      "Below, every agent that fails somewhere with a failing run on its worst PPP (not the control, the random "
+      "baseline or planner agents, whose runs cannot be replayed in process).";
   out->md += mdText(intro) + "\n\n";
   out->html += "<p>" + escapeMarkup(intro) + "</p>\n";
   std::map<std::pair<std::string, std::string>, std::pair<int, int>> failed;  // (set, agent) -> (failed, PPPs)

@@ -80,6 +80,7 @@ ReportInput handMadeInput() {
   ReportInput input;
   input.title = "Faults <&> of agents";
   input.config_text = "# experiment\nruns: 4\nseed: 7\nnote: \"<script>alert(1)</script>\"\n";
+  input.control = "astar";
   input.rates = computePassRates(results, {"alpha", "beta"}, {"astar", "explorer", "random"});
   input.comparisons = {{"alpha", "beta"}};
   FailureExample failure;

@@ -29,8 +29,7 @@ constexpr const char* kPlannerType = "planner";
 /// True for an external planner agent (type kPlannerType), which cannot be built in-process.
 bool isPlanner(const AgentConfig& config);
 
-/// The built-in agent types: astar, random, wall_follower_left, wall_follower_right, explorer,
-/// long_term_explorer, bumper, decision_bumper (configurations may also name kPlannerType).
+/// The built-in agent types of agentRegistry(), in its order (configurations may also name kPlannerType).
 const std::vector<std::string>& agentTypeNames();
 
 /// Builds an agent for a configuration (validated first). @throws InvalidArgument (also for planners).
@@ -38,6 +37,9 @@ std::unique_ptr<Agent> makeAgent(const AgentConfig& config);
 
 /// False for agent types that never look at their scan window (random): the simulator node sends them none.
 bool readsScanWindow(const AgentConfig& config);
+
+/// True when the agent is given the true map at the start of each episode (astar, planners with prior_map).
+bool givenPriorMap(const AgentConfig& config);
 
 /// Parses a memory window "KxK" (e.g. "5x5"; "full" means 0). @throws InvalidArgument naming `option`.
 int parseMemoryWindow(const std::string& text, const std::string& option);

@@ -41,6 +41,7 @@ constexpr double kFailedBelow = 0.5;
 struct ReportInput {
   std::string title;        ///< Report heading.
   std::string config_text;  ///< The experiment YAML, shown verbatim.
+  std::string control;      ///< Name of the control agent (it knows the map), explained in the guide; may be empty.
   PassRateTable rates;      ///< Pass rates of every agent on every PPP and set.
   std::vector<std::pair<std::string, std::string>> comparisons;  ///< Set pairs to compare, usually the first two.
   std::vector<FailureExample> failures;                          ///< Hardest PPPs with a failing path each.

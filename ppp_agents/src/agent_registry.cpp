@@ -1,0 +1,83 @@
+#include "ppp_agents/agent_registry.hpp"
+
+#include "ppp_agents/agent_config.hpp"
+#include "ppp_agents/astar_agent.hpp"
+#include "ppp_agents/bumper_agent.hpp"
+#include "ppp_agents/explorer_agent.hpp"
+#include "ppp_agents/random_agent.hpp"
+#include "ppp_agents/wall_follower_agent.hpp"
+#include "ppp_core/error.hpp"
+#include "ppp_core/text_format.hpp"
+
+namespace ppp {
+namespace agents {
+
+const std::vector<AgentType>& agentRegistry() {
+  // Sensor noise is applied by the sensor; the agents only see its effect in their scans.
+  static const std::vector<AgentType> registry = {
+      {"astar", "A* on the true map, follows the plan (the control)", true, true, true, false,
+       [](int window) -> std::unique_ptr<Agent> { return std::make_unique<AstarAgent>(window); }},
+      {"random", "uniform over the five actions (the baseline)", false, false, false, true,
+       [](int window) -> std::unique_ptr<Agent> { return std::make_unique<RandomAgent>(window); }},
+      {"wall_follower_left", "heads for the goal, then keeps the first wall met on its left", true, false, false,
+       false,
+       [](int window) -> std::unique_ptr<Agent> {
+         return std::make_unique<WallFollowerAgent>(WallFollowerAgent::Side::Left, window);
+       }},
+      {"wall_follower_right", "heads for the goal, then keeps the first wall met on its right", true, false, false,
+       false,
+       [](int window) -> std::unique_ptr<Agent> {
+         return std::make_unique<WallFollowerAgent>(WallFollowerAgent::Side::Right, window);
+       }},
+      {"explorer", "moves to the neighbour revealing most unknown cells", true, false, false, false,
+       [](int window) -> std::unique_ptr<Agent> { return std::make_unique<ExplorerAgent>(false, window); }},
+      {"long_term_explorer", "the explorer, walking to the nearest frontier when nothing is new nearby", true, false,
+       false, false,
+       [](int window) -> std::unique_ptr<Agent> { return std::make_unique<ExplorerAgent>(true, window); }},
+      {"bumper", "straight until a bump, then a random new direction", true, false, false, false,
+       [](int window) -> std::unique_ptr<Agent> { return std::make_unique<BumperAgent>(false, window); }},
+      {"decision_bumper", "the bumper, trying untried directions at each bump cell first", true, false, false, false,
+       [](int window) -> std::unique_ptr<Agent> { return std::make_unique<BumperAgent>(true, window); }},
+      {kPlannerType, "an external ROS planner played through planner_bridge_node", true, false, false, false,
+       nullptr},
+  };
+  return registry;
+}
+
+const AgentType* findAgentType(const std::string& name) {
+  for (const AgentType& type : agentRegistry()) {
+    if (name == type.name) return &type;
+  }
+  return nullptr;
+}
+
+const AgentType& agentType(const std::string& name) {
+  const AgentType* type = findAgentType(name);
+  if (type == nullptr) throw InvalidArgument("type", "unknown agent type '" + name + "'; valid: " + agentTypeList());
+  return *type;
+}
+
+std::string agentTypeList() {
+  std::vector<std::string> names;
+  for (const AgentType& type : agentRegistry()) names.push_back(type.name);
+  return joinNames(names);
+}
+
+std::unique_ptr<Agent> makeAgent(const AgentConfig& config) {
+  config.validate();
+  const AgentType& type = agentType(config.type);
+  if (type.make == nullptr) {
+    throw InvalidArgument("type", "'" + config.name + "' is a planner agent: an external ROS planner played through "
+                                  "planner_bridge_node (docs/planner-interface.md), never built in-process");
+  }
+  return type.make(config.memory_window);
+}
+
+bool readsScanWindow(const AgentConfig& config) { return agentType(config.type).reads_scan_window; }
+
+bool givenPriorMap(const AgentConfig& config) {
+  return agentType(config.type).needs_prior_map || (isPlanner(config) && config.prior_map);
+}
+
+}  // namespace agents
+}  // namespace ppp
