@@ -35,7 +35,7 @@ int checkedSide(std::uint32_t side, const char* field) {
 }
 
 /// The grid cell of a map-frame cell index message; `field` names it when it lies off the map.
-ppp::Cell gridCellOf(const ppp_msgs::GridCell& cell, const ppp::MapFrame& frame, const char* field) {
+ppp::Cell gridCellOf(const ppp_msgs::MapCell& cell, const ppp::MapFrame& frame, const char* field) {
   if (cell.x < 0 || cell.y < 0 || cell.x >= frame.width || cell.y >= frame.height) {
     throw ppp::InvalidArgument(field, "map-frame cell (column, row from the bottom) " + cellText(cell.x, cell.y) +
                                           " is outside the " + sizeText(frame.width, frame.height) + " map");
@@ -44,8 +44,8 @@ ppp::Cell gridCellOf(const ppp_msgs::GridCell& cell, const ppp::MapFrame& frame,
 }
 
 /// The map-frame cell index message of a grid cell.
-ppp_msgs::GridCell mapCellOf(ppp::Cell cell, const ppp::MapFrame& frame) {
-  ppp_msgs::GridCell message;
+ppp_msgs::MapCell mapCellOf(ppp::Cell cell, const ppp::MapFrame& frame) {
+  ppp_msgs::MapCell message;
   message.x = cell.x;
   message.y = frame.mapRow(cell);
   return message;
