@@ -56,26 +56,45 @@ ppp_msgs::MapCell mapCellOf(ppp::Cell cell, const ppp::MapFrame& frame) {
 nav_msgs::OccupancyGrid toOccupancyGrid(const ppp::Grid& grid, double resolution, const std::string& frame_id) {
   checkResolution(resolution, "resolution");
   ppp::validateGridSize(grid.width(), grid.height(), "grid");
-  const ppp::MapFrame frame{grid.width(), grid.height(), resolution};
+  std::vector<std::int8_t> cells(grid.cells().size());
+  for (std::size_t i = 0; i < cells.size(); ++i) cells[i] = grid.cells()[i] != 0 ? kObstacleValue : kFreeValue;
+  return toOccupancyGrid(cells, grid.width(), grid.height(), resolution, frame_id);
+}
 
+nav_msgs::OccupancyGrid toOccupancyGrid(const std::vector<std::int8_t>& cells, int width, int height,
+                                        double resolution, const std::string& frame_id) {
+  checkResolution(resolution, "resolution");
+  ppp::validateGridSize(width, height, "grid");
+  if (cells.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {
+    throw ppp::InvalidArgument("cells", "expected " + sizeText(width, height) + " = " +
+                                            std::to_string(width * height) + " cells, got " +
+                                            std::to_string(cells.size()));
+  }
+  const ppp::MapFrame frame{width, height, resolution};
   nav_msgs::OccupancyGrid map;
   map.header.frame_id = frame_id;
   map.info.resolution = static_cast<float>(resolution);
-  map.info.width = static_cast<std::uint32_t>(grid.width());
-  map.info.height = static_cast<std::uint32_t>(grid.height());
-  map.info.origin.position.x = 0.0;
-  map.info.origin.position.y = 0.0;
-  map.info.origin.position.z = 0.0;
-  map.info.origin.orientation.x = 0.0;
-  map.info.origin.orientation.y = 0.0;
-  map.info.origin.orientation.z = 0.0;
+  map.info.width = static_cast<std::uint32_t>(width);
+  map.info.height = static_cast<std::uint32_t>(height);
   map.info.origin.orientation.w = 1.0;
-  map.data.assign(static_cast<std::size_t>(grid.size()), kFreeValue);
-  for (int i = 0; i < grid.size(); ++i) {
-    const ppp::Cell cell = grid.cellAt(i);
-    if (grid.isObstacle(cell)) map.data[static_cast<std::size_t>(frame.mapIndex(cell))] = kObstacleValue;
+  map.data.resize(cells.size());
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      map.data[static_cast<std::size_t>(frame.mapIndex(ppp::Cell{x, y}))] = cells[static_cast<std::size_t>(y * width + x)];
+    }
   }
   return map;
+}
+
+geometry_msgs::TransformStamped cellTransform(const ppp::MapFrame& frame, ppp::Cell cell, const std::string& parent,
+                                              const std::string& child) {
+  geometry_msgs::TransformStamped transform;
+  transform.header.frame_id = parent;
+  transform.child_frame_id = child;
+  transform.transform.translation.x = frame.centreX(cell);
+  transform.transform.translation.y = frame.centreY(cell);
+  transform.transform.rotation.w = 1.0;
+  return transform;
 }
 
 ppp::Grid fromOccupancyGrid(const nav_msgs::OccupancyGrid& map) {

@@ -341,4 +341,25 @@ TEST(ToLaserScan, RaysInMetresFromTheWindow) {
   EXPECT_TRUE(std::isinf(laser.ranges[ppp_msgs::kLaserRays / 2]));
 }
 
+TEST(ToOccupancyGrid, KnownCellsKeepTheirValuesAndTheRowsAreFlipped) {
+  // A 2x2 memory, grid rows (y down): top row unknown, free; bottom row obstacle, free.
+  const std::vector<std::int8_t> cells{-1, 0, 100, 0};
+  const nav_msgs::OccupancyGrid map = ppp_msgs::toOccupancyGrid(cells, 2, 2, 0.5, "map");
+  EXPECT_EQ(map.info.width, 2u);
+  EXPECT_EQ(map.info.resolution, 0.5f);
+  // Map row 0 is the grid's bottom row.
+  EXPECT_EQ(map.data, (std::vector<std::int8_t>{100, 0, -1, 0}));
+  EXPECT_THROW(ppp_msgs::toOccupancyGrid(std::vector<std::int8_t>(3, 0), 2, 2, 1.0, "map"), ppp::InvalidArgument);
+}
+
+TEST(CellTransform, PutsTheChildOnTheCellCentre) {
+  const ppp::MapFrame frame{4, 3, 2.0};
+  const geometry_msgs::TransformStamped t = ppp_msgs::cellTransform(frame, ppp::Cell{1, 0}, "map", "robot");
+  EXPECT_EQ(t.header.frame_id, "map");
+  EXPECT_EQ(t.child_frame_id, "robot");
+  EXPECT_DOUBLE_EQ(t.transform.translation.x, 3.0);  // column 1: (1 + 0.5) * 2
+  EXPECT_DOUBLE_EQ(t.transform.translation.y, 5.0);  // grid row 0 is map row 2: (2 + 0.5) * 2
+  EXPECT_DOUBLE_EQ(t.transform.rotation.w, 1.0);
+}
+
 }  // namespace

@@ -144,13 +144,7 @@ void EpisodeRecorder::recordScans(const std::string& agent, const std::vector<Sc
       paths_[agent] = nav_msgs::Path();
       paths_[agent].header.frame_id = "map";
     }
-    geometry_msgs::TransformStamped transform;
-    transform.header.stamp = stamp;
-    transform.header.frame_id = "map";
-    transform.child_frame_id = base_link;
-    transform.transform.translation.x = frame.centreX(s.position);
-    transform.transform.translation.y = frame.centreY(s.position);
-    transform.transform.rotation.w = 1.0;
+    geometry_msgs::TransformStamped transform = ppp_msgs::cellTransform(frame, s.position, "map", base_link);
     transform.header.stamp = ros::Time::now();
     broadcaster_.sendTransform(transform);
     transform.header.stamp = stamp;

@@ -111,27 +111,27 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
 
 std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
                                           const std::vector<EpisodeResult>& rows) {
+  std::map<std::string, int> set_index;
+  std::vector<std::map<std::string, int>> problem_index(sets.size());
+  for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
+    set_index[sets[s].name] = s;
+    for (int p = 0; p < static_cast<int>(sets[s].set.ids.size()); ++p) problem_index[s][sets[s].set.ids[p]] = p;
+  }
+  // (agent, set, problem) -> (passes, runs), in one pass over the rows.
+  std::map<std::string, std::map<std::pair<int, int>, std::pair<int, int>>> counts;
+  for (const EpisodeResult& r : rows) {
+    const int s = set_index.at(r.set);
+    auto& c = counts[r.agent][{s, problem_index[s].at(r.problem)}];
+    c.first += r.passed ? 1 : 0;
+    ++c.second;
+  }
   std::vector<FailureExample> worst;
   for (const agents::AgentConfig& agent : config.agents) {
     const agents::AgentType& type = agents::agentType(agent.type);
     if (type.is_control || type.is_baseline || agents::isPlanner(agent)) continue;
-    std::map<std::pair<int, int>, std::pair<int, int>> counts;  // (set, problem) -> (passes, runs)
-    std::map<std::string, int> set_index;
-    for (int s = 0; s < static_cast<int>(sets.size()); ++s) set_index[sets[s].name] = s;
-    std::vector<std::map<std::string, int>> problem_index(sets.size());
-    for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
-      for (int p = 0; p < static_cast<int>(sets[s].set.ids.size()); ++p) problem_index[s][sets[s].set.ids[p]] = p;
-    }
-    for (const EpisodeResult& r : rows) {
-      if (r.agent != agent.name) continue;
-      const int s = set_index.at(r.set);
-      auto& c = counts[{s, problem_index[s].at(r.problem)}];
-      c.first += r.passed ? 1 : 0;
-      ++c.second;
-    }
     double lowest = 1.0;
     std::pair<int, int> at{-1, -1};
-    for (const auto& [where, c] : counts) {  // set order, then PPP order: the first of equals wins
+    for (const auto& [where, c] : counts[agent.name]) {  // set order, then PPP order: the first of equals wins
       const double rate = static_cast<double>(c.first) / c.second;
       if (rate < lowest) lowest = rate, at = where;
     }

@@ -1,12 +1,15 @@
 #pragma once
 
+#include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <sensor_msgs/LaserScan.h>
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "ppp_core/grid.hpp"
+#include "ppp_core/map_frame.hpp"
 #include "ppp_core/problem.hpp"
 #include "ppp_msgs/Obstacle.h"
 #include "ppp_msgs/Problem.h"
@@ -37,6 +40,16 @@ nav_msgs::OccupancyGrid toOccupancyGrid(const ppp::Grid& grid, double resolution
 ///         map.data, map.data[i]) for sides outside [kMinGridSide, kMaxGridSide], a non-positive
 ///         resolution, a data size other than width*height, or a value outside [-1, 100].
 ppp::Grid fromOccupancyGrid(const nav_msgs::OccupancyGrid& map);
+
+/// An OccupancyGrid of cells already holding its values (-1 unknown, 0 free, 100 obstacle: the kScan* values),
+/// row-major in the grid convention (y down) as a robot's memory keeps them; the rows are flipped as for
+/// toOccupancyGrid. @throws ppp::InvalidArgument naming "resolution" or "cells" (not width x height of them).
+nav_msgs::OccupancyGrid toOccupancyGrid(const std::vector<std::int8_t>& cells, int width, int height,
+                                        double resolution, const std::string& frame_id);
+
+/// The transform `parent` -> `child` placing `child` on the centre of `cell` (identity rotation), unstamped.
+geometry_msgs::TransformStamped cellTransform(const ppp::MapFrame& frame, ppp::Cell cell, const std::string& parent,
+                                              const std::string& child);
 
 /// Rays of the laser scans made by toLaserScan (one every 5 degrees).
 constexpr int kLaserRays = 72;

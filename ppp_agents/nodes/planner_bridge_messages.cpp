@@ -1,0 +1,30 @@
+#include "planner_bridge_messages.hpp"
+
+#include <cmath>
+
+namespace ppp {
+namespace agents {
+
+std::string bareFrame(const std::string& frame) { return frame.empty() || frame[0] != '/' ? frame : frame.substr(1); }
+
+std::string pathPoints(const nav_msgs::Path& path, const std::string& map_frame, std::vector<MapPoint>* points) {
+  points->clear();
+  if (bareFrame(path.header.frame_id) != map_frame) {
+    return "the path is in frame '" + path.header.frame_id + "'; expected '" + map_frame + "'";
+  }
+  for (const geometry_msgs::PoseStamped& pose : path.poses) {
+    const std::string frame = bareFrame(pose.header.frame_id);
+    if (!frame.empty() && frame != map_frame) {
+      return "a pose of the path is in frame '" + pose.header.frame_id + "'; expected '" + map_frame +
+             "'";
+    }
+    if (!std::isfinite(pose.pose.position.x) || !std::isfinite(pose.pose.position.y)) {
+      return "a pose of the path is not a finite point";
+    }
+    points->push_back(MapPoint{pose.pose.position.x, pose.pose.position.y});
+  }
+  return "";
+}
+
+}  // namespace agents
+}  // namespace ppp

@@ -1,0 +1,194 @@
+#include "planner_link.hpp"
+
+#include <geometry_msgs/PoseStamped.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/master.h>
+#include <sensor_msgs/LaserScan.h>
+
+#include <algorithm>
+
+#include "ppp_core/error.hpp"
+#include "ppp_msgs/conversions.h"
+#include "ppp_msgs/node_liveness.h"
+
+namespace ppp {
+namespace agents {
+
+namespace {
+
+constexpr double kProbePeriod = 0.2;  // seconds between asks whether the planner's process is alive
+
+/// The type the master has for `topic` ("" when nobody advertises it).
+std::string advertisedType(const std::string& topic) {
+  ros::master::V_TopicInfo topics;
+  if (!ros::master::getTopics(topics)) return "";
+  for (const ros::master::TopicInfo& t : topics) {
+    if (t.name == topic) return t.datatype;
+  }
+  return "";
+}
+
+}  // namespace
+
+PlannerLink::PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters)
+    : parameters_(parameters), nh_(nh, "robot"), spinner_(1, &queue_) {
+  map_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
+  odom_ = nh_.advertise<nav_msgs::Odometry>("odom", 10);
+  scan_ = nh_.advertise<sensor_msgs::LaserScan>("scan", 10);
+  goal_ = nh_.advertise<geometry_msgs::PoseStamped>("move_base_simple/goal", 10);
+  ros::SubscribeOptions options = ros::SubscribeOptions::create<nav_msgs::Path>(
+      "plan", 10, [this](const nav_msgs::Path::ConstPtr& path) { onPlan(path); }, ros::VoidPtr(), &queue_);
+  options.transport_hints = ros::TransportHints().tcpNoDelay();  // Nagle would hold each path back 40 ms
+  plan_ = nh_.subscribe(options);
+  spinner_.start();
+}
+
+PlannerLink::~PlannerLink() { spinner_.stop(); }
+
+std::string PlannerLink::topics() const {
+  return map_.getTopic() + ", " + odom_.getTopic() + ", " + scan_.getTopic() + ", " + goal_.getTopic() + " -> " +
+         plan_.getTopic() + "; tf " + parameters_.map_frame + " -> " + parameters_.base_frame;
+}
+
+void PlannerLink::waitForPlanner() {
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(parameters_.connect_timeout);
+  std::string wrong_type;
+  for (int poll = 0; ros::ok(); ++poll) {
+    if (goal_.getNumSubscribers() > 0 && connected()) return;
+    if (poll % 10 == 0) {
+      const std::string type = advertisedType(plan_.getTopic());
+      if (!type.empty() && type != "nav_msgs/Path") {
+        wrong_type = plan_.getTopic() + " is published as " + type + "; expected nav_msgs/Path";
+        break;
+      }
+    }
+    if (ros::WallTime::now() >= deadline) break;
+    ros::WallDuration(0.05).sleep();  // polling connection counts: there is no event to wait on
+  }
+  if (!ros::ok()) return;
+  std::string missing = wrong_type;
+  const auto add = [&missing](const std::string& text) { missing += (missing.empty() ? "" : "; ") + text; };
+  if (wrong_type.empty() && !connected()) add("nothing publishes " + plan_.getTopic() + " (nav_msgs/Path)");
+  if (goal_.getNumSubscribers() == 0) {
+    add("nothing subscribes to " + goal_.getTopic() +
+        " (geometry_msgs/PoseStamped; a subscriber of another type cannot connect)");
+  }
+  throw InvalidArgument("planner", missing + ". Start the planner in namespace " + nh_.getNamespace() +
+                                       " or remap its topics to these names (docs/planner-interface.md)");
+}
+
+void PlannerLink::onPlan(const nav_msgs::Path::ConstPtr& path) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  latest_ = *path;
+  ++received_;
+  arrived_.notify_one();
+}
+
+void PlannerLink::newEpisode() {
+  answered_ = false;
+  std::lock_guard<std::mutex> lock(mutex_);
+  used_ = received_;  // a path sent for an earlier episode is not this one's
+}
+
+std::optional<nav_msgs::Path> PlannerLink::takeUnasked() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::optional<nav_msgs::Path> unasked;
+  if (received_ > used_) unasked = latest_;
+  used_ = received_;
+  return unasked;
+}
+
+bool PlannerLink::gone() {
+  if (!answered_) return false;
+  if (!connected()) return true;
+  // A killed process leaves its link retrying and its registration in place: ask it, a few times a second.
+  const ros::WallTime now = ros::WallTime::now();
+  if (now < next_probe_) return false;
+  next_probe_ = now + ros::WallDuration(kProbePeriod);
+  return !ppp_msgs::publisherAlive(plan_.getTopic());
+}
+
+bool PlannerLink::alive() const { return connected() && ppp_msgs::publisherAlive(plan_.getTopic()); }
+
+std::optional<nav_msgs::Path> PlannerLink::waitForPath(const ros::Time& request,
+                                                       const std::function<bool(const nav_msgs::Path&)>& fits,
+                                                       const std::function<void(const ros::Time&)>& resend) {
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(parameters_.plan_timeout);
+  ros::WallTime resend_at = ros::WallTime::now() + ros::WallDuration(1.0);
+  std::optional<nav_msgs::Path> unusable;  // the last path that does not fit the request
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (ros::ok()) {
+    if (received_ > used_) {
+      used_ = received_;
+      // A path stamped before the request answers an earlier one (stamp 0 means "now"). One that does not fit
+      // (not from the robot's cell, not to the goal, through a known wall) may still be a late answer to an
+      // earlier request carrying a newer map's stamp: wait for another, and judge it if none comes.
+      const nav_msgs::Path& path = *latest_;
+      if (path.header.stamp.isZero() || path.header.stamp >= request) {
+        if (fits(path)) {
+          answered_ = true;
+          return path;
+        }
+        unusable = path;
+      }
+    }
+    // A planner that answered in this episode and is gone now died mid-episode: no point waiting.
+    if (gone()) break;
+    const ros::WallTime now = ros::WallTime::now();
+    if (now >= deadline) break;
+    if (now >= resend_at) {
+      // A planner that (re)started since the request missed it: send the state and the goal again.
+      lock.unlock();
+      resend(ros::Time::now());
+      lock.lock();
+      resend_at = now + ros::WallDuration(1.0);
+      continue;
+    }
+    // Wake at least every 50 ms to see whether the planner is still connected (no event says it left).
+    const ros::WallTime until = std::min({deadline, resend_at, now + ros::WallDuration(0.05)});
+    arrived_.wait_for(lock, std::chrono::nanoseconds((until - now).toNSec()));
+  }
+  if (unusable) answered_ = true;
+  return unusable;
+}
+
+void PlannerLink::publishState(const ros::Time& stamp, const PlannerEpisode& episode, Cell robot,
+                               const std::int8_t* window, int range) {
+  const MapFrame& frame = episode.frame();
+  nav_msgs::OccupancyGrid map = ppp_msgs::toOccupancyGrid(episode.known().cells, frame.width, frame.height,
+                                                          parameters_.resolution, parameters_.map_frame);
+  map.header.stamp = stamp;
+  map.info.map_load_time = stamp;
+  map_.publish(map);
+
+  geometry_msgs::TransformStamped transform =
+      ppp_msgs::cellTransform(frame, robot, parameters_.map_frame, parameters_.base_frame);
+  transform.header.stamp = stamp;
+  tf_.sendTransform(transform);
+
+  nav_msgs::Odometry odom;
+  odom.header = transform.header;
+  odom.child_frame_id = parameters_.base_frame;
+  odom.pose.pose.position.x = transform.transform.translation.x;
+  odom.pose.pose.position.y = transform.transform.translation.y;
+  odom.pose.pose.orientation.w = 1.0;
+  odom_.publish(odom);
+
+  sensor_msgs::LaserScan laser = ppp_msgs::toLaserScan(window, range, parameters_.resolution, parameters_.base_frame);
+  laser.header.stamp = stamp;
+  scan_.publish(laser);
+}
+
+void PlannerLink::publishGoal(const ros::Time& stamp, const PlannerEpisode& episode) {
+  geometry_msgs::PoseStamped goal;
+  goal.header.stamp = stamp;
+  goal.header.frame_id = parameters_.map_frame;
+  goal.pose.position.x = episode.frame().centreX(episode.goal());
+  goal.pose.position.y = episode.frame().centreY(episode.goal());
+  goal.pose.orientation.w = 1.0;
+  goal_.publish(goal);
+}
+
+}  // namespace agents
+}  // namespace ppp

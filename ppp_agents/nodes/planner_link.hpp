@@ -1,0 +1,78 @@
+#pragma once
+
+#include <ros/callback_queue.h>
+#include <ros/ros.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include "nav_msgs/Path.h"
+#include "planner_bridge_parameters.hpp"
+#include "ppp_agents/planner_episode.hpp"
+
+namespace ppp {
+namespace agents {
+
+/// The planner bridge's side towards the external planner (docs/planner-interface.md): publishes what the robot
+/// knows (map, odom, tf, scan) and plan requests (goal) in robot/..., and takes the planner's paths on a callback
+/// queue of its own, so that a step can wait for one.
+class PlannerLink {
+ public:
+  /// Advertises and subscribes in `nh`'s robot/ namespace.
+  PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters);
+  ~PlannerLink();
+  /// Waits up to connect_timeout for the planner to subscribe to the goal and publish the plan topic.
+  /// @throws InvalidArgument naming each topic that is missing or has the wrong type.
+  void waitForPlanner();
+  /// The planner-side topic names, for the log.
+  std::string topics() const;
+  /// Publishes the robot's world at `stamp`: the episode's known map, the robot's pose (tf and odom) and scan.
+  void publishState(const ros::Time& stamp, const PlannerEpisode& episode, Cell robot, const std::int8_t* window,
+                    int range);
+  /// Publishes a plan request: the episode's goal, stamped `stamp`.
+  void publishGoal(const ros::Time& stamp, const PlannerEpisode& episode);
+  /// A new episode: paths sent so far answer an earlier one, and the planner has not answered in this one.
+  void newEpisode();
+  /// The newest path the planner published on its own since the last look, if any.
+  std::optional<nav_msgs::Path> takeUnasked();
+  /// Waits up to plan_timeout for a path stamped at or after `request` (or unstamped) that `fits`; a path that
+  /// does not fit is kept and returned when no better one comes. `resend(stamp)` sends the request again every
+  /// second (a restarted planner missed it). Marks the planner as having answered when a path is returned.
+  std::optional<nav_msgs::Path> waitForPath(const ros::Time& request,
+                                            const std::function<bool(const nav_msgs::Path&)>& fits,
+                                            const std::function<void(const ros::Time&)>& resend);
+  /// True when the planner that answered in this episode is gone: disconnected, or its process dead
+  /// (asked over XML-RPC at most every 0.2 s).
+  bool gone();
+  /// True when a planner is connected and its process answers.
+  bool alive() const;
+
+ private:
+  void onPlan(const nav_msgs::Path::ConstPtr& path);
+  bool connected() const { return plan_.getNumPublishers() > 0; }
+
+  BridgeParameters parameters_;
+  ros::NodeHandle nh_;  // robot/..., its plan subscription on queue_
+  ros::CallbackQueue queue_;
+  ros::AsyncSpinner spinner_;
+  ros::Publisher map_, odom_, scan_, goal_;
+  ros::Subscriber plan_;
+  tf2_ros::TransformBroadcaster tf_;
+  bool answered_ = false;     // the planner sent a path during this episode
+  ros::WallTime next_probe_;  // when gone() may ask the planner's process again
+
+  // Paths from the planner (written on the queue's thread).
+  std::mutex mutex_;
+  std::condition_variable arrived_;
+  std::optional<nav_msgs::Path> latest_;
+  std::uint64_t received_ = 0;
+  std::uint64_t used_ = 0;
+};
+
+}  // namespace agents
+}  // namespace ppp
