@@ -1,5 +1,7 @@
 #include "ppp_agents/agent_config.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <map>
 
@@ -25,6 +27,35 @@ std::string runsProblem(int runs) {
 std::string priorMapProblem(const AgentConfig& config) {
   if (!config.prior_map || config.type == kPlannerType) return "";
   return "only planner agents take prior_map (astar always has the map; the other agents never do)";
+}
+
+/// Whether `name` is a legal ROS package or executable name: letters, digits, '_', '-' and '.', not empty.
+bool isFileName(const std::string& name) {
+  if (name.empty() || name[0] == '.') return false;
+  return std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '-' || c == '.';
+  });
+}
+
+/// What is wrong with a planner node "package/executable", or "" when nothing is.
+std::string plannerNodeProblem(const AgentConfig& config) {
+  if (config.planner_node.empty()) return "";
+  if (config.type != kPlannerType) return "only planner agents start a planner node";
+  const std::size_t slash = config.planner_node.find('/');
+  if (slash == std::string::npos || !isFileName(config.planner_node.substr(0, slash)) ||
+      !isFileName(config.planner_node.substr(slash + 1))) {
+    return "expected package/executable (e.g. ppp_agents/ompl_planner_node), got '" + config.planner_node + "'";
+  }
+  return "";
+}
+
+/// What is wrong with a host name or address, or "" when nothing is.
+std::string hostProblem(const std::string& host) {
+  const bool legal = std::all_of(host.begin(), host.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '.' || c == '-' || c == ':' || c == '_';
+  });
+  if (legal && host.size() <= 253) return "";
+  return "expected a host name or IP address (letters, digits, '.', '-', ':'), got '" + host + "'";
 }
 
 void validateMemoryWindow(int window) {
@@ -78,6 +109,8 @@ void AgentConfig::validate() const {
   if (!noise_problem.empty()) throw InvalidArgument("sensor_noise", noise_problem);
   if (!runsProblem(runs).empty()) throw InvalidArgument("runs", runsProblem(runs));
   if (!priorMapProblem(*this).empty()) throw InvalidArgument("prior_map", priorMapProblem(*this));
+  if (!plannerNodeProblem(*this).empty()) throw InvalidArgument("planner_node", plannerNodeProblem(*this));
+  if (!hostProblem(host).empty()) throw InvalidArgument("host", hostProblem(host));
 }
 
 bool isPlanner(const AgentConfig& config) { return config.type == kPlannerType; }
@@ -100,6 +133,10 @@ int parseMemoryWindow(const std::string& text, const std::string& option) {
   return window;
 }
 
+std::string memoryWindowText(int window) {
+  return window == 0 ? std::string("full") : std::to_string(window) + "x" + std::to_string(window);
+}
+
 std::vector<AgentConfig> readAgentConfigs(YamlMapReader& reader, const std::string& key) {
   const YAML::Node list = reader.lookup(key);
   if (!list) throw ParseError(reader.source(), 0, reader.fieldName(key), "missing; expected a list of agents");
@@ -118,6 +155,8 @@ std::vector<AgentConfig> readAgentConfigs(YamlMapReader& reader, const std::stri
     item.read("sensor_noise", &config.sensor_noise);
     item.read("runs", &config.runs);
     item.read("prior_map", &config.prior_map);
+    item.read("planner_node", &config.planner_node);
+    item.read("host", &config.host);
     item.rejectUnknownKeys();
 
     if (!has_type) item.fail(node, "type", "missing; valid: " + agentTypeList());
@@ -136,6 +175,10 @@ std::vector<AgentConfig> readAgentConfigs(YamlMapReader& reader, const std::stri
     if (!priorMapProblem(config).empty()) {
       item.fail(item.lookup("prior_map"), "prior_map", priorMapProblem(config));
     }
+    if (!plannerNodeProblem(config).empty()) {
+      item.fail(item.lookup("planner_node"), "planner_node", plannerNodeProblem(config));
+    }
+    if (!hostProblem(config.host).empty()) item.fail(item.lookup("host"), "host", hostProblem(config.host));
     const auto inserted = names.emplace(config.name, i);
     if (!inserted.second) {
       item.fail(has_name ? item.lookup("name") : node, "name",

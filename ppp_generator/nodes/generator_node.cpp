@@ -3,7 +3,8 @@
 //              map         (nav_msgs/OccupancyGrid, latched) the set's PPP number ~publish_index
 //   service    ~generate   (ppp_msgs/Generate)              evolve again (optionally with another seed)
 //   parameters see config/generator.yaml (same names) plus ~output_dir, ~publish_index, ~resolution,
-//              ~generate_on_start, ~exit_when_done, and for fitness failure ~evaluator (the simulator node's
+//              ~options (the generator options as YAML text), ~set_name, ~resume (publish the set already
+//              in ~output_dir), ~generate_on_start, ~exit_when_done, and for fitness failure ~evaluator (the simulator node's
 //              ppp_msgs/EvaluateProblems service that plays the panel) and ~evaluator_timeout
 #include <ros/ros.h>
 
@@ -32,31 +33,19 @@ class GeneratorNode {
         map_publisher_(nh.advertise<nav_msgs::OccupancyGrid>("map", 1, true)),
         service_(private_nh.advertiseService("generate", &GeneratorNode::onGenerate, this)) {}
 
-  /// Evolves a set with `seed` (0: the configured one), writes and publishes it; returns its size.
+  /// Evolves a set with `seed` (0: the configured one), or with ~resume reads the one already in ~output_dir;
+  /// writes and publishes it; returns its size.
   std::size_t generate(std::uint64_t seed) {
     GeneratorOptions options = parameters_.options;
     if (seed != 0) options.seed = seed;
     if (!parameters_.output_dir.empty()) checkOutputDirectory(parameters_.output_dir);
-    ROS_INFO("generating %d PPPs (%s fitness, %ld matings, seed %lu)", options.population, options.fitness.c_str(),
-             options.matings, static_cast<unsigned long>(options.seed));
-    const Fitness fitness =
-        options.fitness == kFailureFitness
-            ? makeRemoteFailureFitness(nh_, options, parameters_.evaluator, parameters_.evaluator_timeout)
-            : makeFitness(options.fitness, FitnessParameters{options.weights, options.seed});
-    const EvolvedSet evolved = evolveSet(
-        options, fitness,
-        [](long done, long total, double best) { ROS_INFO("%ld/%ld matings, best fitness %g", done, total, best); },
-        std::max(1L, options.matings / 10));
-    const ProblemSet& set = evolved.set;
-    ROS_INFO("%s", evolved.summary.c_str());
-    if (!parameters_.output_dir.empty()) {
-      writeProblemSetDirectory(parameters_.output_dir, set, options, evolved.extra_files);
-      ROS_INFO("wrote the set to %s", parameters_.output_dir.c_str());
-    }
+    const ProblemSet set = seed == 0 && parameters_.resume && hasProblemSet(parameters_.output_dir)
+                               ? readExistingSet(options)
+                               : evolve(options);
     ppp_msgs::ProblemSet message;
     message.header.stamp = ros::Time::now();
     message.header.frame_id = "map";
-    message.name = options.fitness;
+    message.name = parameters_.set_name.empty() ? options.fitness : parameters_.set_name;
     for (std::size_t i = 0; i < set.problems.size(); ++i) {
       message.problems.push_back(ppp_msgs::toMessage(set.problems[i], set.ids[i], parameters_.resolution));
     }
@@ -85,6 +74,36 @@ class GeneratorNode {
       ROS_ERROR("generate failed: %s", e.what());
     }
     return true;
+  }
+
+  /// Evolves a set with `options` and writes it to ~output_dir (when set).
+  ProblemSet evolve(const GeneratorOptions& options) {
+    ROS_INFO("generating %d PPPs (%s fitness, %ld matings, seed %lu)", options.population, options.fitness.c_str(),
+             options.matings, static_cast<unsigned long>(options.seed));
+    const Fitness fitness =
+        options.fitness == kFailureFitness
+            ? makeRemoteFailureFitness(nh_, options, parameters_.evaluator, parameters_.evaluator_timeout)
+            : makeFitness(options.fitness, FitnessParameters{options.weights, options.seed});
+    EvolvedSet evolved = evolveSet(
+        options, fitness,
+        [](long done, long total, double best) { ROS_INFO("%ld/%ld matings, best fitness %g", done, total, best); },
+        std::max(1L, options.matings / 10));
+    ROS_INFO("%s", evolved.summary.c_str());
+    if (!parameters_.output_dir.empty()) {
+      writeProblemSetDirectory(parameters_.output_dir, evolved.set, options, evolved.extra_files);
+      ROS_INFO("wrote the set to %s", parameters_.output_dir.c_str());
+    }
+    return std::move(evolved.set);
+  }
+
+  /// The set ~output_dir already holds. @throws IoError when it was evolved with other options.
+  ProblemSet readExistingSet(const GeneratorOptions& options) {
+    const std::string stored = readGeneratorOptionsOf(parameters_.output_dir);
+    if (stored != generatorOptionsYaml(options)) {
+      throw IoError(parameters_.output_dir, "holds a set evolved with other options; remove it or use another output_dir");
+    }
+    ROS_INFO("resuming: publishing the set already in %s", parameters_.output_dir.c_str());
+    return readProblemSetDirectory(parameters_.output_dir);
   }
 
   ros::NodeHandle& nh_;

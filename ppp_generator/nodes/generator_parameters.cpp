@@ -25,6 +25,10 @@ std::optional<Cell> readCell(const ros::NodeHandle& nh, const std::string& name)
 NodeParameters readNodeParameters(const ros::NodeHandle& nh) {
   NodeParameters p;
   GeneratorOptions& o = p.options;
+  std::string options_yaml;
+  if (readParameter(nh, "options", &options_yaml, "generator options as YAML text")) {
+    o = parseGeneratorOptions(options_yaml, "~options");
+  }
   readParameter(nh, "fitness", &o.fitness, "a string");
   readParameter(nh, "population", &o.population, "an integer");
   int matings = static_cast<int>(o.matings);
@@ -64,7 +68,9 @@ NodeParameters readNodeParameters(const ros::NodeHandle& nh) {
       {"weights/one_turn_penalty", &o.weights.one_turn_penalty},
   };
   for (const auto& w : weights) readParameter(nh, w.first, w.second, "a number");
+  readParameter(nh, "set_name", &p.set_name, "a string");
   readParameter(nh, "output_dir", &p.output_dir, "a string");
+  readParameter(nh, "resume", &p.resume, "true or false");
   readParameter(nh, "publish_index", &p.publish_index, "an integer");
   readParameter(nh, "resolution", &p.resolution, "a number");
   readParameter(nh, "generate_on_start", &p.generate_on_start, "true or false");

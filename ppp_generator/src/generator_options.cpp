@@ -7,6 +7,7 @@
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/problem.hpp"
+#include "ppp_core/text_file.hpp"
 #include "ppp_core/text_format.hpp"
 #include "ppp_generator/fitness.hpp"
 #include "ppp_generator/taxonomy.hpp"
@@ -15,6 +16,9 @@ namespace ppp {
 namespace generator {
 
 namespace {
+
+/// Largest generator options file read (the options are a few hundred bytes).
+constexpr std::size_t kMaxOptionsBytes = 1u << 20;
 
 std::optional<Cell> readCell(YamlMapReader& reader, const std::string& key) {
   std::vector<int> pair;
@@ -157,9 +161,13 @@ void applyGeneratorYaml(YamlMapReader& reader, GeneratorOptions* o) {
 }
 
 GeneratorOptions loadGeneratorOptions(const std::string& path) {
-  const YAML::Node root = loadYamlFile(path);
+  return parseGeneratorOptions(readTextFile(path, kMaxOptionsBytes), path);
+}
+
+GeneratorOptions parseGeneratorOptions(const std::string& yaml_text, const std::string& source) {
+  const YAML::Node root = parseYaml(yaml_text, source);
   GeneratorOptions options;
-  YamlMapReader reader(root, path);
+  YamlMapReader reader(root, source);
   applyGeneratorYaml(reader, &options);
   reader.rejectUnknownKeys();
   return options;

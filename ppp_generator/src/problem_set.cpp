@@ -58,6 +58,33 @@ std::string readRequiredMetadata(const Problem& p, const std::string& key, const
 
 void writeText(const fs::path& path, const std::string& text) { writeFileAtomically(path.string(), text); }
 
+/// The set of `problems` (problem i read from where[i]), re-evaluated with `weights`. @throws ParseError.
+ProblemSet buildSet(std::vector<Problem> problems, const std::vector<std::string>& where,
+                    const DifficultyWeights& weights, const std::string& source) {
+  ProblemSet set;
+  Evaluator evaluator(weights);
+  for (std::size_t i = 0; i < problems.size(); ++i) {
+    Problem& problem = problems[i];
+    set.fitness = readRequiredMetadata(problem, "fitness", where[i]);
+    set.ids.push_back(readRequiredMetadata(problem, "id", where[i]));
+    const std::string value = readRequiredMetadata(problem, "fitness_value", where[i]);
+    char* end = nullptr;
+    set.fitness_values.push_back(std::strtod(value.c_str(), &end));
+    if (end == value.c_str() || *end != '\0') {
+      throw ParseError(where[i], 0, "meta fitness_value", "not a number: " + value);
+    }
+    set.evaluations.push_back(evaluator.evaluate(problem));
+    set.problems.push_back(std::move(problem));
+  }
+  try {
+    fillDiversity(&set);
+  } catch (const InvalidArgument& e) {
+    throw ParseError(source, 0, "set", std::string("PPPs of different sizes: ") + e.what());
+  }
+  set.maximise = fitnessMaximises(set.fitness);
+  return set;
+}
+
 }  // namespace
 
 std::vector<double> ProblemSet::hardness() const {
@@ -183,10 +210,10 @@ ProblemSet readProblemSetDirectory(const std::string& dir) {
   if (line != csvLine(setCsvHeader()) && line != csvLine(before_diversity)) {
     throw ParseError(csv_path, 1, "header", "not a PPP set file (expected the header written by ppp generate)");
   }
-  ProblemSet set;
   GeneratorOptions options;
   if (fs::exists(root / kOptionsFile)) options = loadGeneratorOptions((root / kOptionsFile).string());
-  Evaluator evaluator(options.weights);
+  std::vector<Problem> problems;
+  std::vector<std::string> files;
   int line_number = 1;
   while (std::getline(lines, line)) {
     ++line_number;
@@ -196,26 +223,26 @@ ProblemSet readProblemSetDirectory(const std::string& dir) {
     if (comma == std::string::npos || second == std::string::npos) {
       throw ParseError(csv_path, line_number, "file", "expected id,file,...");
     }
-    const std::string file = line.substr(comma + 1, second - comma - 1);
-    const std::string path = (root / file).string();
-    Problem problem = readPppFile(path);
-    set.fitness = readRequiredMetadata(problem, "fitness", path);
-    set.ids.push_back(readRequiredMetadata(problem, "id", path));
-    const std::string value = readRequiredMetadata(problem, "fitness_value", path);
-    char* end = nullptr;
-    set.fitness_values.push_back(std::strtod(value.c_str(), &end));
-    if (end == value.c_str() || *end != '\0') throw ParseError(path, 0, "meta fitness_value", "not a number: " + value);
-    set.evaluations.push_back(evaluator.evaluate(problem));
-    set.problems.push_back(std::move(problem));
+    const std::string path = (root / line.substr(comma + 1, second - comma - 1)).string();
+    problems.push_back(readPppFile(path));
+    files.push_back(path);
   }
-  if (set.problems.empty()) throw ParseError(csv_path, line_number, "set", "lists no PPPs");
-  try {
-    fillDiversity(&set);
-  } catch (const InvalidArgument& e) {
-    throw ParseError(csv_path, 0, "set", std::string("PPPs of different sizes: ") + e.what());
-  }
-  set.maximise = fitnessMaximises(set.fitness);
-  return set;
+  if (problems.empty()) throw ParseError(csv_path, line_number, "set", "lists no PPPs");
+  return buildSet(std::move(problems), files, options.weights, csv_path);
+}
+
+bool hasProblemSet(const std::string& dir) { return fs::exists(fs::path(dir) / kSetFile); }
+
+std::string readGeneratorOptionsOf(const std::string& dir) {
+  const fs::path file = fs::path(dir) / kOptionsFile;
+  return fs::exists(file) ? readTextFile(file.string(), 1u << 20) : "";
+}
+
+ProblemSet problemSetFromProblems(std::vector<Problem> problems, const DifficultyWeights& weights,
+                                  const std::string& source) {
+  if (problems.empty()) throw ParseError(source, 0, "set", "holds no PPPs");
+  const std::vector<std::string> sources(problems.size(), source);
+  return buildSet(std::move(problems), sources, weights, source);
 }
 
 }  // namespace generator

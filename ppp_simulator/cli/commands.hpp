@@ -23,6 +23,8 @@ void addSimulateCommand(CLI::App& app);
 void addReplayCommand(CLI::App& app);
 /// Adds `ppp experiment`: the full experiment with resume and report.
 void addExperimentCommand(CLI::App& app);
+/// Adds `ppp launch-file`: the roslaunch XML of an experiment's ROS graph.
+void addLaunchFileCommand(CLI::App& app);
 /// Adds `ppp compare`: Mann-Whitney comparison of two sets' pass rates.
 void addCompareCommand(CLI::App& app);
 

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   ppp::cli::addReplayCommand(app);
   ppp::cli::addExperimentCommand(app);
   ppp::cli::addCompareCommand(app);
+  ppp::cli::addLaunchFileCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,116 +1,92 @@
 #include "hunt_server.hpp"
 
 #include <exception>
-#include <map>
-#include <memory>
-#include <mutex>
 #include <thread>
 
-#include "lane_runner.hpp"
 #include "ppp_core/error.hpp"
-#include "ppp_msgs/EvaluateProblems.h"
 #include "ppp_msgs/conversions.h"
-#include "ppp_simulator/experiment_config.hpp"
-#include "ppp_simulator/hunt_evaluation.hpp"
 
 namespace ppp {
 namespace simulator {
 
-namespace {
+HuntServer::HuntServer(ros::NodeHandle& nh, const SimulatorParameters& parameters)
+    : nh_(nh), parameters_(parameters), config_(loadExperimentConfig(parameters.config)) {}
 
-/// Plays evaluation requests on one persistent runner per agent configuration.
-class HuntServer {
- public:
-  HuntServer(ros::NodeHandle& nh, const SimulatorParameters& parameters)
-      : nh_(nh), parameters_(parameters), config_(loadExperimentConfig(parameters.config)) {}
+HuntServer::~HuntServer() = default;
 
-  bool evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs::EvaluateProblems::Response& response) {
-    std::lock_guard<std::mutex> serving(serving_);  // one request at a time: the agents serve one lane each
-    try {
-      const std::vector<agents::AgentConfig> panel = resolvePanel(request.agents, config_.agents, true);
-      std::vector<Problem> problems;
-      for (const ppp_msgs::Problem& m : request.problems) problems.push_back(ppp_msgs::fromMessage(m));
-      HuntEvaluation evaluation(problems, panel, config_.episode, static_cast<int>(request.runs), request.seed,
-                                parameters_.batch_size);
-      const ros::WallTime started = ros::WallTime::now();
-      std::vector<LaneRunner*> runners;
-      for (const agents::AgentConfig& agent : panel) runners.push_back(&runnerFor(agent));
-      target_ = &evaluation;  // the runners' sink
-      std::vector<std::exception_ptr> failures(panel.size());
-      std::vector<std::thread> threads;
-      for (std::size_t a = 0; a < panel.size(); ++a) {
-        AgentLane* lane = evaluation.lanes()[a].get();
-        threads.emplace_back([runner = runners[a], lane, failure = &failures[a]] {
-          try {
-            runner->run(lane);
-          } catch (...) {
-            *failure = std::current_exception();
-          }
-        });
-      }
-      for (std::thread& t : threads) t.join();
-      target_ = nullptr;
-      for (const std::exception_ptr& failure : failures) {
-        if (failure) std::rethrow_exception(failure);
-      }
-      for (const auto& lane : evaluation.lanes()) {
-        if (!lane->finished()) throw IoError("~evaluate", "shutting down before every run was played");
-      }
-      for (const PanelEvaluation& e : evaluation.evaluations()) response.evaluations.push_back(toMessage(e));
-      const double seconds = (ros::WallTime::now() - started).toSec();
-      episodes_ += static_cast<long>(problems.size() * panel.size()) * request.runs;
-      seconds_ += seconds;
-      ++requests_;
-      ROS_INFO("evaluation %ld: %zu PPPs x %zu agents x %u runs in %.2f s (%.0f episodes/s over the hunt so far)",
-               requests_, problems.size(), panel.size(), request.runs, seconds,
-               seconds_ > 0 ? episodes_ / seconds_ : 0.0);
-    } catch (const Error& e) {
-      response.evaluations.clear();
-      response.error = e.what();
-      ROS_ERROR("evaluation refused: %s", e.what());
-    } catch (const std::exception& e) {
-      response.evaluations.clear();
-      response.error = std::string("unexpected failure: ") + e.what();
-      ROS_ERROR("evaluation failed: %s", e.what());
+bool HuntServer::evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs::EvaluateProblems::Response& response) {
+  std::lock_guard<std::mutex> serving(serving_);  // one request at a time: the agents serve one lane each
+  try {
+    const std::vector<agents::AgentConfig> panel = resolvePanel(request.agents, config_.agents, true);
+    std::vector<Problem> problems;
+    for (const ppp_msgs::Problem& m : request.problems) problems.push_back(ppp_msgs::fromMessage(m));
+    HuntEvaluation evaluation(problems, panel, config_.episode, static_cast<int>(request.runs), request.seed,
+                              parameters_.batch_size);
+    const ros::WallTime started = ros::WallTime::now();
+    std::vector<LaneRunner*> runners;
+    for (const agents::AgentConfig& agent : panel) runners.push_back(&runnerFor(agent));
+    target_ = &evaluation;  // the runners' sink
+    std::vector<std::exception_ptr> failures(panel.size());
+    std::vector<std::thread> threads;
+    for (std::size_t a = 0; a < panel.size(); ++a) {
+      AgentLane* lane = evaluation.lanes()[a].get();
+      threads.emplace_back([runner = runners[a], lane, failure = &failures[a]] {
+        try {
+          runner->run(lane);
+        } catch (...) {
+          *failure = std::current_exception();
+        }
+      });
     }
-    return true;
-  }
-
- private:
-  static ppp_msgs::ProblemEvaluation toMessage(const PanelEvaluation& e) {
-    ppp_msgs::ProblemEvaluation m;
-    m.failure_rate = e.estimate.failure_rate;
-    m.budget_used = e.estimate.budget_used;
-    m.episodes = static_cast<std::uint32_t>(e.episodes);
-    m.failed = static_cast<std::uint32_t>(e.failed);
-    for (const auto& [reason, count] : e.reasons) {
-      m.reasons.push_back(reason);
-      m.reason_counts.push_back(static_cast<std::uint32_t>(count));
+    for (std::thread& t : threads) t.join();
+    target_ = nullptr;
+    for (const std::exception_ptr& failure : failures) {
+      if (failure) std::rethrow_exception(failure);
     }
-    return m;
+    for (const auto& lane : evaluation.lanes()) {
+      if (!lane->finished()) throw IoError("~evaluate", "shutting down before every run was played");
+    }
+    for (const PanelEvaluation& e : evaluation.evaluations()) response.evaluations.push_back(toMessage(e));
+    const double seconds = (ros::WallTime::now() - started).toSec();
+    episodes_ += static_cast<long>(problems.size() * panel.size()) * request.runs;
+    seconds_ += seconds;
+    ++requests_;
+    ROS_INFO("evaluation %ld: %zu PPPs x %zu agents x %u runs in %.2f s (%.0f episodes/s over the hunt so far)",
+             requests_, problems.size(), panel.size(), request.runs, seconds,
+             seconds_ > 0 ? episodes_ / seconds_ : 0.0);
+  } catch (const Error& e) {
+    response.evaluations.clear();
+    response.error = e.what();
+    ROS_ERROR("evaluation refused: %s", e.what());
+  } catch (const std::exception& e) {
+    response.evaluations.clear();
+    response.error = std::string("unexpected failure: ") + e.what();
+    ROS_ERROR("evaluation failed: %s", e.what());
   }
+  return true;
+}
 
-  LaneRunner& runnerFor(const agents::AgentConfig& agent) {
-    auto found = runners_.find(agent.name);
-    if (found != runners_.end()) return *found->second;
-    auto runner = std::make_unique<LaneRunner>(
-        nh_, parameters_, agent, [this](const std::vector<EpisodeResult>& ended) { target_->record(ended); },
-        LaneRunner::ScanObserver{}, false);
-    return *runners_.emplace(agent.name, std::move(runner)).first->second;
+ppp_msgs::ProblemEvaluation HuntServer::toMessage(const PanelEvaluation& e) {
+  ppp_msgs::ProblemEvaluation m;
+  m.failure_rate = e.estimate.failure_rate;
+  m.budget_used = e.estimate.budget_used;
+  m.episodes = static_cast<std::uint32_t>(e.episodes);
+  m.failed = static_cast<std::uint32_t>(e.failed);
+  for (const auto& [reason, count] : e.reasons) {
+    m.reasons.push_back(reason);
+    m.reason_counts.push_back(static_cast<std::uint32_t>(count));
   }
+  return m;
+}
 
-  ros::NodeHandle& nh_;
-  SimulatorParameters parameters_;
-  ExperimentConfig config_;
-  std::mutex serving_;
-  std::map<std::string, std::unique_ptr<LaneRunner>> runners_;
-  HuntEvaluation* target_ = nullptr;  // the request in flight, where the runners' results go
-  long requests_ = 0;
-  long episodes_ = 0;
-  double seconds_ = 0;
-};
-
-}  // namespace
+LaneRunner& HuntServer::runnerFor(const agents::AgentConfig& agent) {
+  auto found = runners_.find(agent.name);
+  if (found != runners_.end()) return *found->second;
+  auto runner = std::make_unique<LaneRunner>(
+      nh_, parameters_, agent, [this](const std::vector<EpisodeResult>& ended) { target_->record(ended); },
+      LaneRunner::ScanObserver{}, false);
+  return *runners_.emplace(agent.name, std::move(runner)).first->second;
+}
 
 int runHuntServer(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const SimulatorParameters& parameters) {
   HuntServer server(nh, parameters);

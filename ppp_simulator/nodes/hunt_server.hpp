@@ -1,17 +1,52 @@
 #pragma once
 
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+
 #include <ros/ros.h>
 
+#include "lane_runner.hpp"
+#include "ppp_msgs/EvaluateProblems.h"
+#include "ppp_simulator/experiment_config.hpp"
+#include "ppp_simulator/hunt_evaluation.hpp"
 #include "simulator_parameters.hpp"
 
 namespace ppp {
 namespace simulator {
 
-/// The simulator node in hunt mode: serves ~evaluate (ppp_msgs/EvaluateProblems) until shut down. Each
-/// request's PPPs are played by the named agents of ~config (agent nodes on /NAME/scans and /NAME/moves,
-/// planner bridges, exactly as in an experiment), `runs` times each, seeded as the in-process failure fitness
-/// does; the answer says per PPP how often the panel failed and why. Agents that time out or die fail their
-/// runs with that reason, so a hunt never hangs on them. Returns the exit status.
+/// Answers ~evaluate (ppp_msgs/EvaluateProblems) for hunts. Each request's PPPs are played by the named agents
+/// of ~config (agent nodes on /NAME/scans and /NAME/moves, planner bridges, exactly as in an experiment), `runs`
+/// times each, seeded as the in-process failure fitness does; the answer says per PPP how often the panel failed
+/// and why. Agents that time out or die fail their runs with that reason, so a hunt never hangs on them.
+class HuntServer {
+ public:
+  /// Reads ~config's agents. @throws IoError, ParseError, InvalidArgument.
+  HuntServer(ros::NodeHandle& nh, const SimulatorParameters& parameters);
+  ~HuntServer();
+  HuntServer(const HuntServer&) = delete;
+  HuntServer& operator=(const HuntServer&) = delete;
+
+  /// The service callback: plays one request (one at a time).
+  bool evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs::EvaluateProblems::Response& response);
+
+ private:
+  static ppp_msgs::ProblemEvaluation toMessage(const PanelEvaluation& e);
+  LaneRunner& runnerFor(const agents::AgentConfig& agent);
+
+  ros::NodeHandle& nh_;
+  SimulatorParameters parameters_;
+  ExperimentConfig config_;
+  std::mutex serving_;
+  std::map<std::string, std::unique_ptr<LaneRunner>> runners_;
+  HuntEvaluation* target_ = nullptr;  // the request in flight, where the runners' results go
+  long requests_ = 0;
+  long episodes_ = 0;
+  double seconds_ = 0;
+};
+
+/// The simulator node in hunt mode: serves ~evaluate with a HuntServer until shut down. Returns the exit status.
 int runHuntServer(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const SimulatorParameters& parameters);
 
 }  // namespace simulator

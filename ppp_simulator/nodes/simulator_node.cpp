@@ -1,28 +1,26 @@
 // simulator_node: runs an experiment with every agent in its own process (~mode experiment, the default), or
-// serves ~evaluate for a hunt (~mode hunt: see hunt_server.hpp). For each agent configuration NAME
-// of the experiment it publishes ppp_msgs/ScanBatch on /NAME/scans (one scan per active episode) and takes
-// ppp_msgs/MoveBatch from /NAME/moves, in lockstep, through the same AgentLane and episode code as the
-// in-process runner, so the results equal `ppp experiment`'s. Results go to results.csv as episodes end;
-// summary.csv and the report are written when all runs are done; a sample of episodes and every result are
-// recorded in experiment.bag. The node exits when the experiment is finished.
+// serves ~evaluate for a hunt (~mode hunt: see hunt_server.hpp). With ~generator_nodes it plays the sets the
+// generator nodes publish (serving ~evaluate to hunting ones meanwhile), as launch/experiment.launch runs it.
+// For each agent configuration NAME of the experiment it publishes ppp_msgs/ScanBatch on /NAME/scans (one scan
+// per active episode) and takes ppp_msgs/MoveBatch from /NAME/moves, in lockstep, through the same AgentLane and
+// episode code as the in-process runner, so the results equal `ppp experiment`'s. Results go to results.csv as
+// episodes end; summary.csv and the report are written when all runs are done; a sample of episodes and every
+// result are recorded in experiment.bag. The node exits when the experiment is finished.
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
-#include <ros/topic.h>
 
 #include <algorithm>
 #include <memory>
-#include <optional>
 #include <thread>
 
 #include "episode_recorder.hpp"
 #include "hunt_server.hpp"
 #include "lane_runner.hpp"
+#include "set_receiver.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_msgs/MoveBatch.h"
-#include "ppp_msgs/ProblemSet.h"
 #include "ppp_msgs/ScanBatch.h"
-#include "ppp_msgs/conversions.h"
 #include "ppp_msgs/node_liveness.h"
 #include "ppp_simulator/agent_lane.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
@@ -31,37 +29,27 @@
 namespace ppp {
 namespace simulator {
 
-/// Waits for the generator nodes' sets, then runs the experiment.
-int runSimulator(ros::NodeHandle& nh, const SimulatorParameters& parameters) {
+/// Takes the sets (from the generator nodes, or made here), then runs the experiment.
+int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const SimulatorParameters& parameters) {
   const ExperimentConfig config = loadExperimentConfig(parameters.config);
   const std::string config_text = readTextFile(parameters.config, 1u << 20);
-  checkExperimentDirectory(config, parameters.output_dir);
-  for (const std::string& topic : parameters.wait_for_sets) {
-    ROS_INFO("waiting for the PPP set on %s", topic.c_str());
-    if (!ros::topic::waitForMessage<ppp_msgs::ProblemSet>(topic, nh, ros::Duration(parameters.set_timeout))) {
-      throw InvalidArgument("~wait_for_sets", "no ppp_msgs/ProblemSet on " + topic + " within " +
-                                                  std::to_string(parameters.set_timeout) + " s");
-    }
+  ReceivedSets received;
+  if (parameters.generator_nodes) {
+    openExperimentDirectory(config, parameters.output_dir);
+    received = receiveSets(nh, private_nh, config, parameters);
+    if (received.sets.empty()) return 130;  // shut down while waiting
+  } else {
+    received.sets = beginExperiment(config, parameters.output_dir, [](const std::string& line) {
+      ROS_INFO("%s", line.c_str());
+    });
+    for (const PreparedSet& set : received.sets) received.messages.push_back(setMessage(set, parameters.resolution));
   }
-  const std::vector<PreparedSet> sets = beginExperiment(config, parameters.output_dir, [](const std::string& line) {
-    ROS_INFO("%s", line.c_str());
-  });
+  const std::vector<PreparedSet>& sets = received.sets;
   ResultsFile results(resultsPath(parameters.output_dir));
   std::vector<std::string> agent_names;
   for (const auto& a : config.agents) agent_names.push_back(a.name);
   EpisodeRecorder recorder(nh, parameters, sets, agent_names, config.episode.budget);
-  std::vector<ppp_msgs::ProblemSet> set_messages;
-  for (const PreparedSet& set : sets) {
-    ppp_msgs::ProblemSet m;
-    m.header.stamp = ros::Time::now();
-    m.header.frame_id = "map";
-    m.name = set.name;
-    for (std::size_t i = 0; i < set.set.problems.size(); ++i) {
-      m.problems.push_back(ppp_msgs::toMessage(set.set.problems[i], set.set.ids[i], parameters.resolution));
-    }
-    set_messages.push_back(std::move(m));
-  }
-  recorder.recordSets(set_messages);
+  recorder.recordSets(received.messages);
 
   std::vector<std::unique_ptr<AgentLane>> lanes;
   std::vector<std::unique_ptr<LaneRunner>> runners;
@@ -111,7 +99,7 @@ int main(int argc, char** argv) {
   try {
     const ppp::simulator::SimulatorParameters parameters = ppp::simulator::readSimulatorParameters(private_nh);
     status = parameters.mode == ppp::simulator::kHuntMode ? ppp::simulator::runHuntServer(nh, private_nh, parameters)
-                                                          : ppp::simulator::runSimulator(nh, parameters);
+                                                          : ppp::simulator::runSimulator(nh, private_nh, parameters);
   } catch (const ppp::Error& e) {
     ROS_FATAL("simulator: %s", e.what());
   } catch (const std::exception& e) {

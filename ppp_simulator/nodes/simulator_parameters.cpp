@@ -19,7 +19,7 @@ SimulatorParameters readSimulatorParameters(const ros::NodeHandle& nh) {
   readParameter(nh, "planner_step_timeout", &p.planner_step_timeout, "a number of seconds");
   readParameter(nh, "timeouts_before_giving_up", &p.timeouts_before_giving_up, "an integer");
   readParameter(nh, "connect_timeout", &p.connect_timeout, "a number of seconds");
-  ppp_msgs::readStringList(nh, "wait_for_sets", &p.wait_for_sets);
+  readParameter(nh, "generator_nodes", &p.generator_nodes, "true or false");
   readParameter(nh, "set_timeout", &p.set_timeout, "a number of seconds");
   readParameter(nh, "record", &p.record, "true or false");
   readParameter(nh, "record_runs", &p.record_runs, "an integer");

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <string>
-#include <vector>
 
 #include <ros/node_handle.h>
 
@@ -23,8 +22,10 @@ struct SimulatorParameters {
   double planner_step_timeout = 30.0;       ///< Seconds a planner agent's bridge has to answer a step.
   int timeouts_before_giving_up = 3;        ///< Consecutive unanswered batches after which an agent's runs all fail.
   double connect_timeout = 60.0;            ///< Seconds to wait for each agent node to connect.
-  std::vector<std::string> wait_for_sets;   ///< ppp_msgs/ProblemSet topics to wait for (a list, or "a,b").
-  double set_timeout = 900.0;               ///< Seconds to wait for each of them.
+  /// Play the evolved sets the generator nodes publish (setTopic() of each set, as launch/experiment.launch starts
+  /// them) instead of evolving them here; sets given as directories are read from disk either way.
+  bool generator_nodes = false;
+  double set_timeout = 60.0;                ///< Seconds a set's topic may go without a publisher before giving up.
   bool record = true;                       ///< Write <output_dir>/experiment.bag.
   int record_runs = 1;                      ///< Runs 0 .. record_runs-1 of ...
   int record_problems = 1;                  ///< ... the first record_problems PPPs of each set are recorded in detail.

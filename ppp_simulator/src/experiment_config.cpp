@@ -144,9 +144,7 @@ std::string experimentFingerprint(const ExperimentConfig& c) {
   }
   out << "agents:\n";
   for (const agents::AgentConfig& a : c.agents) {
-    out << "  - {name: " << a.name << ", type: " << a.type << ", memory: "
-        << (a.memory_window == 0 ? std::string("full")
-                                 : std::to_string(a.memory_window) + "x" + std::to_string(a.memory_window))
+    out << "  - {name: " << a.name << ", type: " << a.type << ", memory: " << agents::memoryWindowText(a.memory_window)
         << ", sensor_noise: " << a.sensor_noise << (a.runs > 0 ? ", runs: " + std::to_string(a.runs) : "")
         << (a.prior_map ? ", prior_map: true" : "") << "}\n";
   }

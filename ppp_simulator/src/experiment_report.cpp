@@ -40,10 +40,7 @@ FailureExample failingRun(const ExperimentConfig& config, const PreparedSet& set
   example.path = outcome.path;
   example.reason = outcome.reason;
   example.replay_flags = "--agent " + agent_config.type + " --memory " +
-                         (agent_config.memory_window == 0 ? std::string("full")
-                                                          : std::to_string(agent_config.memory_window) + "x" +
-                                                                std::to_string(agent_config.memory_window)) +
-                         " --sensor-noise " + formatNumber(agent_config.sensor_noise) + " --budget " +
+                         agents::memoryWindowText(agent_config.memory_window) + " --sensor-noise " + formatNumber(agent_config.sensor_noise) + " --budget " +
                          std::to_string(config.episode.budget) + " --sensor-range " +
                          std::to_string(config.episode.sensor_range);
   return example;

@@ -128,12 +128,16 @@ std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::
   return prepared;
 }
 
-std::vector<PreparedSet> beginExperiment(const ExperimentConfig& config, const std::string& dir,
-                                         const std::function<void(const std::string&)>& log) {
+void openExperimentDirectory(const ExperimentConfig& config, const std::string& dir) {
   config.validate();
   checkExperimentDirectory(config, dir);
   fs::create_directories(dir);
   writeFileAtomically((fs::path(dir) / kFingerprintFile).string(), experimentFingerprint(config));
+}
+
+std::vector<PreparedSet> beginExperiment(const ExperimentConfig& config, const std::string& dir,
+                                         const std::function<void(const std::string&)>& log) {
+  openExperimentDirectory(config, dir);
   return prepareSets(config, dir, log);
 }
 

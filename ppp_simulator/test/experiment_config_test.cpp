@@ -33,6 +33,15 @@ TEST(ExperimentConfigTest, ShippedDefaultExperiment) {
   EXPECT_EQ(c.agents[6].name, "explorer_memory_5x5");
   EXPECT_EQ(c.agents[6].memory_window, 5);
   EXPECT_EQ(c.agents[7].sensor_noise, 0.1);
+  EXPECT_EQ(c.agents[10].planner_node, "ppp_agents/ompl_planner_node");
+}
+
+TEST(ExperimentConfigTest, ShippedPlannerExperimentLoads) {
+  const ExperimentConfig c = loadExperimentConfig(PPP_CONFIG_DIR "/planner_experiment.yaml");
+  ASSERT_EQ(c.agents.size(), 2u);
+  EXPECT_EQ(c.agents[1].type, "planner");
+  EXPECT_EQ(c.agents[1].planner_node, "");  // the user starts their planner
+  EXPECT_EQ(c.sets.size(), 2u);
 }
 
 class ExperimentYaml : public ::testing::Test {
@@ -77,6 +86,14 @@ TEST_F(ExperimentYaml, BadInputNamesKeyAndLine) {
   // The agents file is named with its full path (the message starts with it, not with experiment.yaml's).
   EXPECT_NE(errorOf("agents: missing.yaml\n" + sets).find("missing.yaml: cannot open"), std::string::npos);
   EXPECT_EQ(errorOf("agents: agents.yaml\n").rfind(" sets: an experiment needs at least one PPP set", 0), 0u);
+  const std::string agent = "agents:\n  - {name: a, type: ";
+  EXPECT_NE(errorOf(agent + "astar, host: 'a b'}\n" + sets).find("2: agents[0].host: expected a host name"),
+            std::string::npos);
+  EXPECT_NE(errorOf(agent + "astar, planner_node: p/e}\n" + sets).find("agents[0].planner_node: only planner"),
+            std::string::npos);
+  EXPECT_NE(errorOf(agent + "planner, planner_node: p/}\n" + sets).find("expected package/executable"),
+            std::string::npos);
+  EXPECT_EQ(errorOf(agent + "planner, planner_node: p/e, host: robot-2.lab}\n" + sets), "no error");
 }
 
 TEST_F(ExperimentYaml, HuntedSetsNameTheirPanelFromTheExperimentsAgents) {

@@ -12,12 +12,13 @@ constexpr std::size_t kMaxYamlBytes = 16u << 20;
 
 }  // namespace
 
-YAML::Node loadYamlFile(const std::string& path) {
-  const std::string text = readTextFile(path, kMaxYamlBytes);
+YAML::Node loadYamlFile(const std::string& path) { return parseYaml(readTextFile(path, kMaxYamlBytes), path); }
+
+YAML::Node parseYaml(const std::string& text, const std::string& source) {
   try {
     return YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    throw ParseError(path, e.mark.line + 1, "yaml", e.msg);
+    throw ParseError(source, e.mark.line + 1, "yaml", e.msg);
   }
 }
 

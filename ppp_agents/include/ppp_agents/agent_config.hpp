@@ -18,8 +18,10 @@ struct AgentConfig {
   double sensor_noise = 0.0;   ///< Probability that a sensed cell is reported flipped (applied by the sensor).
   int runs = 0;                ///< Runs per PPP for this agent; 0 = the experiment's `runs`.
   bool prior_map = false;      ///< Planner agents only: the planner is given the true map instead of the memory.
-  /// @throws InvalidArgument naming "type" (listing the valid ones), "memory", "sensor_noise", "runs" or
-  /// "prior_map".
+  std::string planner_node;    ///< Planner agents only: "package/executable" of the planner to start ("" = the user's).
+  std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
+  /// @throws InvalidArgument naming "type" (listing the valid ones), "memory", "sensor_noise", "runs",
+  /// "prior_map", "planner_node" or "host".
   void validate() const;
 };
 
@@ -43,6 +45,9 @@ bool givenPriorMap(const AgentConfig& config);
 
 /// Parses a memory window "KxK" (e.g. "5x5"; "full" means 0). @throws InvalidArgument naming `option`.
 int parseMemoryWindow(const std::string& text, const std::string& option);
+
+/// A memory window as configs write it: "KxK", or "full" for 0.
+std::string memoryWindowText(int window);
 
 /// Reads a list of agent configurations (each a mapping with name, type, memory, sensor_noise) from the
 /// sequence under `key` of `reader`. @throws ParseError naming file, line and key.

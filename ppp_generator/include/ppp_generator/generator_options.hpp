@@ -71,6 +71,10 @@ void applyGeneratorYaml(YamlMapReader& reader, GeneratorOptions* options);
 /// @throws IoError, ParseError, InvalidArgument.
 GeneratorOptions loadGeneratorOptions(const std::string& path);
 
+/// Parses generator options from YAML text (as generatorOptionsYaml() writes it) coming from `source` (the file
+/// or parameter named in errors), over the defaults. @throws ParseError.
+GeneratorOptions parseGeneratorOptions(const std::string& yaml_text, const std::string& source);
+
 /// The options as YAML in the config file's format (written with every generated set).
 std::string generatorOptionsYaml(const GeneratorOptions& options);
 

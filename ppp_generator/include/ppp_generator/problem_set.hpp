@@ -63,5 +63,16 @@ void writeTreeFiles(const std::string& dir, const ProblemSet& set, const Taxonom
 /// re-evaluates every PPP. @throws IoError, ParseError.
 ProblemSet readProblemSetDirectory(const std::string& dir);
 
+/// Whether `dir` holds a set written by writeProblemSetDirectory (its set.csv).
+bool hasProblemSet(const std::string& dir);
+
+/// The generator options YAML stored with the set in `dir` ("" when it has none). @throws IoError.
+std::string readGeneratorOptionsOf(const std::string& dir);
+
+/// A set rebuilt from its PPPs as written or published (each carrying the metadata id, fitness and
+/// fitness_value), re-evaluated with `weights`; errors name `source` (a file or topic). @throws ParseError.
+ProblemSet problemSetFromProblems(std::vector<Problem> problems, const DifficultyWeights& weights,
+                                  const std::string& source);
+
 }  // namespace generator
 }  // namespace ppp

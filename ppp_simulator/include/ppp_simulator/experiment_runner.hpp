@@ -52,7 +52,11 @@ PreparedSet prepareSet(const std::string& name, generator::ProblemSet set, int s
 std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::string& dir,
                                      const std::function<void(const std::string&)>& log = {});
 
-/// Checks `dir`, records the experiment's fingerprint in it and prepares its sets (the first half of an
+/// Validates the experiment, checks `dir` and records the experiment's fingerprint in it.
+/// @throws IoError, InvalidArgument.
+void openExperimentDirectory(const ExperimentConfig& config, const std::string& dir);
+
+/// openExperimentDirectory(), then prepareSets() (the first half of an
 /// experiment, shared by runExperiment() and the ROS simulator node). @throws IoError, ParseError, InvalidArgument.
 std::vector<PreparedSet> beginExperiment(const ExperimentConfig& config, const std::string& dir,
                                          const std::function<void(const std::string&)>& log = {});

@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# The ROS experiment as a user starts it: roslaunch launch/experiment.launch on a small config (three sets of 60
-# PPPs: two evolved by generator nodes, one hunted by the simulator; the ten agents with 2 runs each and the two example planners with their own 3), on a private
-# master. Checks the experiment finishes with exactly sets x PPPs x agents x runs rows, the report and bag
-# exist, and rviz (headless) shows the recorded map.
+# The ROS experiment as a user starts it: roslaunch launch/experiment.launch, on a private master.
+# First a small config (one set, two agents): exactly its nodes start, OUTPUT_DIR/sets holds only its set,
+# results.csv equals `ppp experiment`'s byte for byte, a rerun resumes from the generator's stored set, and
+# configs naming an unknown agent type or an unreachable host stop before any node starts.
+# Then the default config with 2 runs (three sets of 60 PPPs from three generator nodes, one of them hunting
+# through the simulator; the ten agents with 2 runs each and the two example planners with their own 3):
+# exactly sets x PPPs x agents x runs rows, the report and bag exist, and rviz (headless) shows the recorded map.
 # Usage: launch_experiment_test.sh DEVEL_DIR
 devel="$1"
 source "$devel/setup.bash"  # before set -u: setup.bash reads unset variables
@@ -12,6 +15,46 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
 export PATH="/usr/bin:$PATH"
 port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
 export ROS_MASTER_URI="http://127.0.0.1:$port" ROS_IP=127.0.0.1 ROS_HOME="$work/ros"
+
+# started LOG: the processes roslaunch started (both the entry's and the experiment graph's), sorted.
+started() { sed -n 's/.*process\[\([A-Za-z0-9_]*\)-[0-9]*\]: started with pid.*/\1/p' "$1" | sort | tr '\n' ' '; }
+
+mkdir -p "$work/small"
+cat > "$work/small/experiment.yaml" <<'EOF2'
+seed: 5
+runs: 3
+agents:
+  - {name: astar, type: astar}
+  - {name: explorer, type: explorer}
+sets:
+  - name: mine
+    generator: {fitness: advances, population: 6, matings: 50, seed: 4}
+EOF2
+cp "$root/config/generator.yaml" "$work/small/"
+timeout 300 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/out" \
+  config:="$work/small/experiment.yaml" > "$work/small/launch.log" 2>&1
+[ "$(started "$work/small/launch.log")" = "astar experiment explorer gen_mine rosout simulator " ] && pass || \
+  fail "the small config started other processes: $(started "$work/small/launch.log")"
+[ "$(ls "$work/small/out/sets")" = "mine" ] && pass || fail "sets/ holds $(ls "$work/small/out/sets")"
+"$devel/lib/ppp_simulator/ppp" experiment "$work/small/experiment.yaml" -o "$work/small/cli" --quiet > /dev/null 2>&1
+cmp -s "$work/small/out/results.csv" "$work/small/cli/results.csv" && pass || \
+  fail "roslaunch and ppp experiment differ on the small config: $(tail -20 "$work/small/launch.log")"
+# A rerun publishes the stored set instead of evolving again, and changes nothing.
+cp "$work/small/out/results.csv" "$work/small/first.csv"
+timeout 300 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/out" \
+  config:="$work/small/experiment.yaml" > "$work/small/rerun.log" 2>&1
+grep -q "resuming: publishing the set already in" "$work/small/rerun.log" && pass || fail "the rerun evolved again"
+cmp -s "$work/small/out/results.csv" "$work/small/first.csv" && pass || fail "the rerun changed results.csv"
+# Bad configs stop before any node of the experiment starts, naming the agent type or the host.
+sed 's/type: explorer}/type: flier}/' "$work/small/experiment.yaml" > "$work/small/flier.yaml"
+sed 's/type: explorer}/type: explorer, host: no-such-host.invalid}/' "$work/small/experiment.yaml" > "$work/small/host.yaml"
+for bad in "flier.yaml:unknown agent type 'flier'" "host.yaml:host 'no-such-host.invalid' of agent(s) explorer does not resolve"; do
+  timeout 120 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/bad" \
+    config:="$work/small/${bad%%:*}" > "$work/small/bad.log" 2>&1
+  grep -qF "${bad#*:}" "$work/small/bad.log" && pass || fail "${bad%%:*}: no error naming it: $(tail "$work/small/bad.log")"
+  [ "$(started "$work/small/bad.log")" = "experiment rosout " ] && [ ! -e "$work/small/bad" ] && pass || \
+    fail "${bad%%:*} started nodes or wrote output: $(started "$work/small/bad.log")"
+done
 
 sed 's/^runs: 1000 .*/runs: 2/' "$root/config/experiment.yaml" > "$work/experiment.yaml"
 cp "$root/config/agents.yaml" "$root/config/generator.yaml" "$work/"

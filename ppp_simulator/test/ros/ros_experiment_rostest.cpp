@@ -19,8 +19,11 @@
 
 #include "ppp_core/ppp_file.hpp"
 #include "ppp_core/text_file.hpp"
+#include "ppp_generator/problem_set.hpp"
 #include "ppp_msgs/EpisodeResults.h"
+#include "ppp_msgs/ProblemSet.h"
 #include "ppp_msgs/conversions.h"
+#include "ppp_simulator/experiment_graph.hpp"
 #include "ppp_simulator/results_file.hpp"
 #include "ros_test_support.hpp"
 
@@ -114,6 +117,32 @@ TEST(RosExperimentTest, ResultsEqualTheInProcessRunAndTheBagHoldsTheMaps) {
   EXPECT_EQ(keys.size(), 2u * 3 * 3 * 40);
 }
 
+TEST(RosExperimentTest, EvolvedSetsComeFromTheGeneratorNodesMessages) {
+  // The reference run's sets, published as generator nodes publish them; the simulator's directory gets none.
+  ros::NodeHandle nh;
+  std::vector<ros::Publisher> publishers;
+  for (const std::string name : {"turns", "difficulty"}) {
+    const generator::ProblemSet set = generator::readProblemSetDirectory(referenceRun() + "/sets/" + name);
+    ppp_msgs::ProblemSet message;
+    message.name = name;
+    for (std::size_t i = 0; i < set.problems.size(); ++i) {
+      message.problems.push_back(ppp_msgs::toMessage(set.problems[i], set.ids[i], 1.0));
+    }
+    publishers.push_back(nh.advertise<ppp_msgs::ProblemSet>(setTopic(name), 1, true));
+    publishers.back().publish(message);
+  }
+  const std::string out = scratch("from_messages");
+  Child simulator(simulatorCommand("sim_messages", kTestDir + "/experiment.yaml", out, "_generator_nodes:=true"),
+                  out + ".log");
+  ASSERT_EQ(simulator.wait(), 0) << simulator.output();
+  EXPECT_FALSE(fs::exists(out + "/sets")) << "the simulator evolved or wrote sets itself";
+  EXPECT_EQ(readTextFile(out + "/results.csv", 1u << 26), readTextFile(referenceRun() + "/results.csv", 1u << 26));
+  rosbag::Bag bag(out + "/experiment.bag");
+  rosbag::View view(bag, rosbag::TopicQuery("/ppp/sets/turns"));
+  ASSERT_EQ(view.size(), 1u);
+  EXPECT_EQ(view.begin()->instantiate<ppp_msgs::ProblemSet>()->problems.size(), 3u);
+}
+
 TEST(RosExperimentTest, RestartedSimulatorResumesAfterSigkill) {
   const std::string out = scratch("resume");
   ResultCounter counter;
@@ -164,9 +193,8 @@ TEST(RosExperimentTest, BadParametersStopTheNodeNamingThem) {
       {"_config:=" + kTestDir + "/experiment.yaml _output_dir:=" + out + " _step_timeout:=-1",
        "~step_timeout: expected a positive number"},
       {"_config:=" + kTestDir + "/bad_agent_experiment.yaml _output_dir:=" + out, "unknown agent type 'flier'"},
-      {"_config:=" + kTestDir + "/experiment.yaml _output_dir:=" + out +
-           " _wait_for_sets:=/nobody/problem_set _set_timeout:=0.5",
-       "~wait_for_sets: no ppp_msgs/ProblemSet on /nobody/problem_set"},
+      {"_config:=" + kTestDir + "/experiment.yaml _output_dir:=" + out + " _generator_nodes:=true _set_timeout:=0.5",
+       "/gen_turns/problem_set: no generator node publishes set 'turns' (node gen_turns"},
   };
   int index = 0;
   for (const auto& c : cases) {

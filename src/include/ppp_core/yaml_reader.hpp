@@ -13,6 +13,9 @@ namespace ppp {
 /// Loads a YAML file. @throws IoError when unreadable, ParseError "<file>:<line>: yaml: ..." on bad syntax.
 YAML::Node loadYamlFile(const std::string& path);
 
+/// Parses YAML text from `source` (a file or parameter name for errors). @throws ParseError.
+YAML::Node parseYaml(const std::string& text, const std::string& source);
+
 /// Reads the keys of one YAML mapping into typed fields, remembering which keys were used so that an
 /// unknown (misspelt) key is reported with its line instead of being silently ignored.
 class YamlMapReader {

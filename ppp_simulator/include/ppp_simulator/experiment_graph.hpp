@@ -1,0 +1,45 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ppp_simulator/experiment_config.hpp"
+
+namespace ppp {
+namespace simulator {
+
+/// A planner node to start for a planner agent, given on the command line instead of in the config.
+struct PlannerNode {
+  std::string agent;    ///< The planner agent's name in the config.
+  std::string package;  ///< Package of the planner executable.
+  std::string type;     ///< The executable.
+};
+
+/// What the ROS graph of an experiment needs beyond its config: where things are and the simulator's pace.
+struct GraphOptions {
+  std::string config_path;      ///< The experiment YAML, absolute (the simulator reads it).
+  std::string output_dir;       ///< The output directory, absolute.
+  int batch_size = 2000;        ///< Episodes per agent per message, >= 1.
+  double step_timeout = 5.0;    ///< Seconds an agent node has to answer a batch, > 0.
+  bool record = true;           ///< Write OUTPUT_DIR/experiment.bag.
+  std::vector<PlannerNode> planners;  ///< Planner nodes to start, overriding the agents' planner_node.
+  /// The env-loader script remote machines run nodes through (the workspace's devel/env.sh at the same path).
+  std::string env_loader;
+  /// @throws InvalidArgument naming the option.
+  void validate(const ExperimentConfig& config) const;
+};
+
+/// The generator node that evolves set `set_name` ("gen_" + its name as a ROS name).
+std::string generatorNodeName(const std::string& set_name);
+
+/// The latched topic the generator node of `set_name` publishes the set on ("/gen_NAME/problem_set").
+std::string setTopic(const std::string& set_name);
+
+/// The roslaunch XML of `config`'s experiment, and nothing else: one generator_node per evolved set (options
+/// from the config, resuming a set already written), the simulator_node (required; it plays the sets the
+/// generator nodes publish), one agent_node per built-in agent and a planner_bridge_node (plus the planner
+/// when one is named) per planner agent, each on its agent's host. @throws InvalidArgument.
+std::string experimentLaunchXml(const ExperimentConfig& config, const GraphOptions& options);
+
+}  // namespace simulator
+}  // namespace ppp

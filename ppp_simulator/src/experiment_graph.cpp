@@ -1,0 +1,168 @@
+#include "ppp_simulator/experiment_graph.hpp"
+
+#include <map>
+#include <sstream>
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/text_format.hpp"
+
+namespace ppp {
+namespace simulator {
+
+namespace {
+
+/// `text` as a double-quoted XML attribute value; line breaks survive as character references.
+/// @throws InvalidArgument naming `what` for text roslaunch would substitute ("$(").
+std::string attribute(const std::string& text, const std::string& what) {
+  if (text.find("$(") != std::string::npos) {
+    throw InvalidArgument(what, "must not contain \"$(\" (roslaunch would substitute it): " + text);
+  }
+  std::string out;
+  for (const char c : escapeMarkup(text)) {
+    if (c == '\n') {
+      out += "&#10;";
+    } else if (c == '\t') {
+      out += "&#9;";
+    } else if (c == '\r') {
+      out += "&#13;";
+    } else {
+      out += c;
+    }
+  }
+  return "\"" + out + "\"";
+}
+
+/// `<param name="NAME" type="TYPE" value="VALUE"/>`.
+std::string param(const std::string& name, const std::string& type, const std::string& value) {
+  return "<param name=\"" + name + "\" type=\"" + type + "\" value=" + attribute(value, "~" + name) + "/>";
+}
+
+/// The machine name of a host.
+std::string machineName(const std::string& host) { return "host_" + agents::agentGraphName(host); }
+
+/// ` machine="..."` for an agent on another host, or "".
+std::string machineOf(const agents::AgentConfig& agent) {
+  return agent.host.empty() ? "" : " machine=" + attribute(machineName(agent.host), "host");
+}
+
+/// The planner node of a planner agent: from the command line, else its planner_node ("" when none).
+std::pair<std::string, std::string> plannerOf(const agents::AgentConfig& agent, const GraphOptions& options) {
+  for (const PlannerNode& p : options.planners) {
+    if (p.agent == agent.name) return {p.package, p.type};
+  }
+  const std::size_t slash = agent.planner_node.find('/');
+  if (slash == std::string::npos) return {"", ""};
+  return {agent.planner_node.substr(0, slash), agent.planner_node.substr(slash + 1)};
+}
+
+void writeGenerator(std::ostream& out, const SetSpec& set, const GraphOptions& options) {
+  out << "  <node pkg=\"ppp_generator\" type=\"generator_node\" name=" << attribute(generatorNodeName(set.name), "sets")
+      << " output=\"screen\">\n"
+      << "    " << param("options", "str", generator::generatorOptionsYaml(*set.generator)) << "\n"
+      << "    " << param("set_name", "str", set.name) << "\n"
+      << "    " << param("output_dir", "str", options.output_dir + "/sets/" + set.name) << "\n"
+      << "    " << param("resume", "bool", "true") << "\n"
+      << "    <remap from=\"problem_set\" to=\"~problem_set\"/>\n"
+      << "    <remap from=\"map\" to=\"~map\"/>\n"
+      << "  </node>\n";
+}
+
+void writeAgent(std::ostream& out, const agents::AgentConfig& agent) {
+  out << "  <node pkg=\"ppp_agents\" type=\"agent_node\" name=" << attribute(agents::agentGraphName(agent.name), "name")
+      << machineOf(agent) << " output=\"screen\">\n"
+      << "    " << param("name", "str", agent.name) << "\n"
+      << "    " << param("type", "str", agent.type) << "\n"
+      << "    " << param("memory", "str", agents::memoryWindowText(agent.memory_window)) << "\n"
+      << "    " << param("sensor_noise", "double", formatShortest(agent.sensor_noise)) << "\n"
+      << "    <remap from=\"scans\" to=\"~scans\"/>\n"
+      << "    <remap from=\"moves\" to=\"~moves\"/>\n"
+      << "  </node>\n";
+}
+
+void writePlanner(std::ostream& out, const agents::AgentConfig& agent, const GraphOptions& options) {
+  const auto [package, type] = plannerOf(agent, options);
+  out << "  <group ns=" << attribute(agents::agentGraphName(agent.name), "name") << ">\n"
+      << "    <node pkg=\"ppp_agents\" type=\"planner_bridge_node\" name=\"bridge\"" << machineOf(agent)
+      << " output=\"screen\">\n"
+      << "      " << param("memory", "str", agents::memoryWindowText(agent.memory_window)) << "\n"
+      // A planner the user starts by hand gets five minutes to appear; one started here, 20 s.
+      << "      " << param("connect_timeout", "double", type.empty() ? "300.0" : "20.0") << "\n"
+      << "    </node>\n";
+  if (!type.empty()) {
+    out << "    <node pkg=" << attribute(package, "planner_node") << " type=" << attribute(type, "planner_node")
+        << " name=\"planner\" ns=\"robot\"" << machineOf(agent) << " output=\"screen\"/>\n";
+  }
+  out << "  </group>\n";
+}
+
+}  // namespace
+
+void GraphOptions::validate(const ExperimentConfig& config) const {
+  if (config_path.empty() || config_path[0] != '/') throw InvalidArgument("config", "expected an absolute path");
+  if (output_dir.empty() || output_dir[0] != '/') throw InvalidArgument("output_dir", "expected an absolute path");
+  if (batch_size < 1) throw InvalidArgument("batch_size", "expected episodes per message >= 1");
+  if (!(step_timeout > 0)) throw InvalidArgument("step_timeout", "expected seconds > 0");
+  std::vector<std::string> planner_agents;
+  bool remote = false;
+  for (const agents::AgentConfig& agent : config.agents) {
+    if (agents::isPlanner(agent)) planner_agents.push_back(agent.name);
+    remote = remote || !agent.host.empty();
+  }
+  for (const PlannerNode& p : planners) {
+    bool found = false;
+    for (const std::string& name : planner_agents) found = found || name == p.agent;
+    if (!found) {
+      throw InvalidArgument("planner", "the config has no planner agent named '" + p.agent + "' (its planner agents: " +
+                                           (planner_agents.empty() ? "none" : joinNames(planner_agents)) + ")");
+    }
+    if (p.package.empty() != p.type.empty()) {
+      throw InvalidArgument("planner", "give both the planner's package and its executable, or neither");
+    }
+  }
+  if (remote && (env_loader.empty() || env_loader[0] != '/')) {
+    throw InvalidArgument("env_loader", "agents on other hosts need the absolute path of the workspace's env.sh");
+  }
+}
+
+std::string generatorNodeName(const std::string& set_name) { return "gen_" + agents::agentGraphName(set_name); }
+
+std::string setTopic(const std::string& set_name) { return "/" + generatorNodeName(set_name) + "/problem_set"; }
+
+std::string experimentLaunchXml(const ExperimentConfig& config, const GraphOptions& options) {
+  config.validate();
+  options.validate(config);
+  std::ostringstream out;
+  out << "<launch>\n"
+      << "  <!-- The ROS graph of the experiment " << escapeMarkup(options.config_path)
+      << ", written by `ppp launch-file`. -->\n";
+  std::map<std::string, bool> hosts;
+  for (const agents::AgentConfig& agent : config.agents) {
+    if (agent.host.empty() || !hosts.emplace(agent.host, true).second) continue;
+    out << "  <machine name=" << attribute(machineName(agent.host), "host")
+        << " address=" << attribute(agent.host, "host") << " env-loader=" << attribute(options.env_loader, "env_loader")
+        << "/>\n";
+  }
+  for (const SetSpec& set : config.sets) {
+    if (set.generator) writeGenerator(out, set, options);
+  }
+  out << "  <node pkg=\"ppp_simulator\" type=\"simulator_node\" name=\"simulator\" output=\"screen\" required=\"true\">\n"
+      << "    " << param("config", "str", options.config_path) << "\n"
+      << "    " << param("output_dir", "str", options.output_dir) << "\n"
+      << "    " << param("batch_size", "int", std::to_string(options.batch_size)) << "\n"
+      << "    " << param("step_timeout", "double", formatShortest(options.step_timeout)) << "\n"
+      << "    " << param("record", "bool", options.record ? "true" : "false") << "\n"
+      << "    " << param("generator_nodes", "bool", "true") << "\n"
+      << "  </node>\n";
+  for (const agents::AgentConfig& agent : config.agents) {
+    if (agents::isPlanner(agent)) {
+      writePlanner(out, agent, options);
+    } else {
+      writeAgent(out, agent);
+    }
+  }
+  out << "</launch>\n";
+  return out.str();
+}
+
+}  // namespace simulator
+}  // namespace ppp

@@ -1,0 +1,244 @@
+#!/usr/bin/python3
+"""The shipped launch files, and the graphs `ppp launch-file` writes from experiment configs.
+
+launch/experiment.launch starts one node, ppp_simulator/experiment_launcher, with absolute paths and the
+arguments. The graph of config/experiment.yaml holds one agent node per built-in agent of config/agents.yaml
+(node name = the agent's ROS name, ~type/~memory/~sensor_noise as in the file, topics /NAME/scans and
+/NAME/moves), a bridge and its planner per planner agent, one generator node per set with that set's options,
+and the simulator taking the sets from them; a small config's graph holds only its own nodes, on the hosts it
+names. launch/inspect.launch must load with and without a bag. launch/hunt.launch must start the simulator in
+hunt mode, the hunter with the failure fitness and the panel, the agent nodes, and a planner's bridge when asked.
+Loads everything with roslaunch's own parser; starts nothing. Usage: launch_files_test.py REPOSITORY_ROOT PPP
+"""
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import roslaunch.config
+import yaml
+
+ROOT = os.path.abspath(sys.argv.pop(1))
+PPP = sys.argv.pop(1)
+
+
+def graph_name(name):
+    """ppp::agents::agentGraphName: the agent name as a legal ROS name."""
+    prefixed = name if re.match('[A-Za-z]', name) else 'agent_' + name
+    return re.sub('[^A-Za-z0-9_]', '_', prefixed)
+
+
+def load(launch, *args):
+    # The launch files resolve relative paths against $PWD, as a shell keeps it; ctest changes directory without.
+    os.environ['PWD'] = os.getcwd()
+    path = os.path.join(ROOT, 'launch', launch)
+    return roslaunch.config.load_config_default([(path, list(args))], None, assign_machines=False)
+
+
+def launch_file(config, *flags):
+    """What `ppp launch-file CONFIG -o DIR FLAGS` prints, and its exit status and errors."""
+    out = os.path.join(tempfile.mkdtemp(), 'out')
+    result = subprocess.run([PPP, 'launch-file', config, '-o', out] + list(flags), stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, universal_newlines=True)
+    return result.stdout, result.returncode, result.stderr, out
+
+
+def load_graph(config, *flags):
+    xml, status, errors, out = launch_file(config, *flags)
+    if status != 0:
+        raise AssertionError('ppp launch-file failed: ' + errors)
+    return roslaunch.config.load_config_default([], None, roslaunch_strs=[xml], assign_machines=False), out
+
+
+def write_config(directory, text):
+    path = os.path.join(directory, 'experiment.yaml')
+    with open(path, 'w') as f:
+        f.write(text)
+    return path
+
+
+class ExperimentLaunchTest(unittest.TestCase):
+    def test_the_entry_runs_the_launcher_with_absolute_paths_and_the_arguments(self):
+        config = load('experiment.launch', 'output_dir:=relative/out', 'step_timeout:=2', 'batch_size:=7',
+                      'record:=false', 'planner:=mine', 'planner_pkg:=ppp_agents', 'planner_type:=simple_planner.py')
+        self.assertEqual([(n.package, n.type, n.name) for n in config.nodes],
+                         [('ppp_simulator', 'experiment_launcher', 'experiment')])
+        launcher = config.nodes[0]
+        self.assertTrue(launcher.required)
+        args = launcher.args.split()
+        value = lambda flag: args[args.index(flag) + 1].strip("'")
+        self.assertEqual(value('--output-dir'), os.path.join(os.getcwd(), 'relative', 'out'))
+        self.assertEqual(os.path.realpath(value('--config')), os.path.join(ROOT, 'config', 'experiment.yaml'))
+        self.assertEqual((value('--batch-size'), value('--step-timeout'), value('--record')), ('7', '2', 'false'))
+        self.assertEqual((value('--planner'), value('--planner-pkg'), value('--planner-type')),
+                         ('mine', 'ppp_agents', 'simple_planner.py'))
+
+
+class DefaultGraphTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.config, cls.out = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'))
+        cls.nodes = {n.name: n for n in cls.config.nodes}
+        cls.params = {k: p.value for k, p in cls.config.params.items()}
+        with open(os.path.join(ROOT, 'config', 'experiment.yaml')) as f:
+            cls.experiment = yaml.safe_load(f)
+        with open(os.path.join(ROOT, 'config', cls.experiment['agents'])) as f:
+            cls.agents = yaml.safe_load(f)['agents']
+
+    def test_one_agent_node_per_configured_agent(self):
+        built_in = [a for a in self.agents if a['type'] != 'planner']
+        agent_nodes = sorted(n.name for n in self.config.nodes if n.type == 'agent_node')
+        self.assertEqual(agent_nodes, sorted(graph_name(a['name']) for a in built_in))
+        for agent in built_in:
+            node_name = graph_name(agent['name'])
+            node = self.nodes[node_name]
+            self.assertEqual(node.package, 'ppp_agents')
+            self.assertEqual(node.namespace, '/')
+            self.assertIsNone(node.machine_name)
+            self.assertIn(['scans', '~scans'], [list(r) for r in node.remap_args])
+            self.assertIn(['moves', '~moves'], [list(r) for r in node.remap_args])
+            prefix = '/%s/' % node_name
+            self.assertEqual(self.params[prefix + 'type'], agent['type'], node_name)
+            self.assertEqual(self.params[prefix + 'memory'], agent.get('memory', 'full'), node_name)
+            self.assertEqual(self.params[prefix + 'sensor_noise'], agent.get('sensor_noise', 0.0), node_name)
+            self.assertEqual(self.params[prefix + 'name'], agent['name'], node_name)
+
+    def test_one_bridge_and_its_planner_per_planner_agent(self):
+        planners = [a for a in self.agents if a['type'] == 'planner']
+        self.assertEqual(len(planners), 2)
+        bridges = sorted(n.namespace for n in self.config.nodes if n.type == 'planner_bridge_node')
+        self.assertEqual(bridges, sorted('/%s/' % graph_name(a['name']) for a in planners))
+        for agent in planners:
+            namespace = '/%s/' % graph_name(agent['name'])
+            self.assertEqual(self.params[namespace + 'bridge/memory'], agent.get('memory', 'full'))
+            planner_nodes = [n for n in self.config.nodes if n.namespace == namespace + 'robot/']
+            self.assertEqual(['%s/%s' % (n.package, n.type) for n in planner_nodes], [agent['planner_node']])
+
+    def test_one_generator_node_per_set_with_its_options(self):
+        with open(os.path.join(ROOT, 'config', 'generator.yaml')) as f:
+            defaults = yaml.safe_load(f)
+        generators = sorted(n.name for n in self.config.nodes if n.type == 'generator_node')
+        self.assertEqual(generators, sorted('gen_' + s['name'] for s in self.experiment['sets']))
+        for s in self.experiment['sets']:
+            name = 'gen_' + s['name']
+            self.assertIn(['problem_set', '~problem_set'], [list(r) for r in self.nodes[name].remap_args])
+            options = yaml.safe_load(self.params['/%s/options' % name])
+            for key, value in dict(defaults, **s['generator']).items():
+                self.assertEqual(options[key], value, name + ' ' + key)
+            self.assertEqual(self.params['/%s/set_name' % name], s['name'])
+            self.assertIs(self.params['/%s/resume' % name], True)
+            self.assertEqual(self.params['/%s/output_dir' % name], os.path.join(self.out, 'sets', s['name']))
+
+    def test_the_simulator_is_required_and_takes_the_sets_from_the_generators(self):
+        self.assertTrue(self.nodes['simulator'].required)
+        self.assertEqual(self.params['/simulator/output_dir'], self.out)
+        self.assertEqual(self.params['/simulator/config'], os.path.join(ROOT, 'config', 'experiment.yaml'))
+        self.assertIs(self.params['/simulator/generator_nodes'], True)
+        self.assertEqual(self.params['/simulator/batch_size'], 2000)
+        self.assertIsInstance(self.params['/simulator/step_timeout'], float)
+
+    def test_a_planner_named_on_the_command_line_replaces_the_configured_one(self):
+        config, _ = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--planner',
+                               'optimistic=ppp_agents/simple_planner.py', '--planner', 'ompl=')
+        robots = sorted((n.namespace, n.type) for n in config.nodes if n.namespace.endswith('/robot/'))
+        self.assertEqual(robots, [('/optimistic/robot/', 'simple_planner.py')])
+
+    def test_your_own_planner_gets_a_bridge_and_optionally_its_node(self):
+        config_path = os.path.join(ROOT, 'config', 'planner_experiment.yaml')
+        bridge_only, _ = load_graph(config_path)
+        mine = [(n.namespace, n.name, n.type) for n in bridge_only.nodes if n.namespace.startswith('/mine/')]
+        self.assertEqual(mine, [('/mine/', 'bridge', 'planner_bridge_node')])
+        started, _ = load_graph(config_path, '--planner', 'mine=ppp_agents/simple_planner.py')
+        planner = [(n.name, n.package, n.type) for n in started.nodes if n.namespace == '/mine/robot/']
+        self.assertEqual(planner, [('planner', 'ppp_agents', 'simple_planner.py')])
+
+
+class SmallGraphTest(unittest.TestCase):
+    def test_only_the_configs_own_nodes_on_the_hosts_it_names(self):
+        directory = tempfile.mkdtemp()
+        path = write_config(directory, """
+seed: 5
+runs: 3
+agents:
+  - {name: astar, type: astar}
+  - {name: explorer, type: explorer, memory: 5x5, host: 10.0.0.2}
+sets:
+  - name: mine
+    generator: {fitness: advances, population: 6, matings: 50, seed: 4}
+""")
+        config, _ = load_graph(path, '--env-loader', '/ws/devel/env.sh')
+        self.assertEqual(sorted((n.type, n.name) for n in config.nodes),
+                         [('agent_node', 'astar'), ('agent_node', 'explorer'), ('generator_node', 'gen_mine'),
+                          ('simulator_node', 'simulator')])
+        explorer = [n for n in config.nodes if n.name == 'explorer'][0]
+        machine = config.machines[explorer.machine_name]
+        self.assertEqual((machine.address, machine.env_loader), ('10.0.0.2', '/ws/devel/env.sh'))
+        self.assertIsNone([n for n in config.nodes if n.name == 'astar'][0].machine_name)
+        self.assertEqual(config.params['/explorer/memory'].value, '5x5')
+
+    def test_bad_configs_and_flags_are_refused_naming_the_problem(self):
+        directory = tempfile.mkdtemp()
+        agents = "agents:\n  - {name: a, type: %s%s}\n"
+        sets = "sets:\n  - name: s\n    generator: {fitness: turns, population: 4, matings: 5}\n"
+        cases = [
+            (agents % ('flier', '') + sets, [], "unknown agent type 'flier'"),
+            (agents % ('astar', ', host: "bad host"') + sets, [], 'host'),
+            (agents % ('astar', ', host: 10.0.0.9') + sets, [], 'env_loader'),
+            (agents % ('astar', ', planner_node: pkg/exe') + sets, [], 'planner_node: only planner agents'),
+            (agents % ('planner', ', planner_node: nopackage') + sets, [], 'expected package/executable'),
+            (agents % ('planner', '') + sets, ['--planner', 'other=p/t'], "no planner agent named 'other'"),
+            (agents % ('planner', '') + sets, ['--planner', 'a'], 'expected NAME=PACKAGE/EXECUTABLE'),
+        ]
+        for text, flags, expected in cases:
+            xml, status, errors, _ = launch_file(write_config(directory, text), *flags)
+            self.assertNotEqual(status, 0, text)
+            self.assertEqual(xml, '', text)
+            self.assertIn(expected, errors, text)
+
+
+class InspectLaunchTest(unittest.TestCase):
+    def test_rviz_alone_or_with_a_bag(self):
+        config = load('inspect.launch')
+        self.assertEqual([(n.package, n.type) for n in config.nodes], [('rviz', 'rviz')])
+        self.assertEqual(os.path.normpath(config.nodes[0].args.split()[-1]), os.path.join(ROOT, 'launch', 'ppp.rviz'))
+        config = load('inspect.launch', 'bag:=/data/x.bag')
+        players = [n for n in config.nodes if n.package == 'rosbag']
+        self.assertEqual(len(players), 1)
+        self.assertIn('--clock', players[0].args)
+        self.assertIn('/data/x.bag', players[0].args)
+        self.assertIs(config.params['/use_sim_time'].value, True)
+
+
+class HuntLaunchTest(unittest.TestCase):
+    def test_hunt_starts_the_simulator_in_hunt_mode_and_the_hunter_with_the_panel(self):
+        config = load('hunt.launch', 'output_dir:=relative/hunt', 'agents:=wall_follower_left,explorer_noise_0.1',
+                      'matings:=77')
+        nodes = {n.name: n for n in config.nodes}
+        params = {k: p.value for k, p in config.params.items()}
+        self.assertTrue(nodes['simulator'].required)
+        self.assertTrue(nodes['hunter'].required)
+        self.assertEqual(params['/simulator/mode'], 'hunt')
+        self.assertTrue(os.path.isfile(params['/simulator/config']))
+        self.assertEqual(params['/hunter/fitness'], 'failure')
+        self.assertEqual(params['/hunter/agents'], ['wall_follower_left', 'explorer_noise_0.1'])
+        self.assertEqual(params['/hunter/matings'], 77)
+        self.assertEqual(params['/hunter/crowding_window'], 4)
+        self.assertEqual(params['/hunter/evaluator'], '/simulator/evaluate')
+        self.assertTrue(params['/hunter/exit_when_done'])
+        self.assertEqual(params['/hunter/output_dir'], os.path.join(os.getcwd(), 'relative', 'hunt'))
+        self.assertEqual(len([n for n in config.nodes if n.type == 'agent_node']), 10)
+        self.assertEqual([n for n in config.nodes if n.type == 'planner_bridge_node'], [])
+
+    def test_a_planner_hunt_starts_its_bridge_and_planner_only(self):
+        config = load('hunt.launch', 'output_dir:=/tmp/h', 'agents:=mine', 'planner:=mine', 'built_in_agents:=false',
+                      'planner_pkg:=ppp_agents', 'planner_type:=simple_planner.py')
+        self.assertEqual([n for n in config.nodes if n.type == 'agent_node'], [])
+        started = sorted((n.namespace, n.name, n.type) for n in config.nodes if n.namespace.startswith('/mine/'))
+        self.assertEqual(started, [('/mine/', 'bridge', 'planner_bridge_node'),
+                                   ('/mine/robot/', 'planner', 'simple_planner.py')])
+
+
+if __name__ == '__main__':
+    unittest.main()
