@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_generator/problem_set.hpp"
 #include "ppp_simulator/experiment_graph.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
 
@@ -44,7 +45,8 @@ void runLaunchFile(LaunchFileFlags flags) {
   flags.graph.config_path = fs::absolute(flags.config).lexically_normal().string();
   flags.graph.output_dir = fs::absolute(flags.output).lexically_normal().string();
   for (const std::string& p : flags.planners) flags.graph.planners.push_back(parsePlanner(p));
-  simulator::checkExperimentDirectory(config, flags.graph.output_dir);
+  if (flags.graph.hunt.empty()) simulator::checkExperimentDirectory(config, flags.graph.output_dir);
+  if (!flags.graph.hunt.empty()) generator::checkOutputDirectory(flags.graph.output_dir);
   std::cout << simulator::experimentLaunchXml(config, flags.graph);
 }
 
@@ -65,6 +67,8 @@ void addLaunchFileCommand(CLI::App& app) {
   command->add_option("--planner", flags->planners,
                       "NAME=PACKAGE/EXECUTABLE: start this planner for planner agent NAME (NAME=: start none, the "
                       "user runs it in /NAME/robot); overrides the agent's planner_node");
+  command->add_option("--hunt", flags->graph.hunt,
+                      "SET: the graph of hunting this failure set of the config into OUTPUT instead (panel agents only)");
   command->add_option("--env-loader", flags->graph.env_loader,
                       "Script remote machines run nodes through (the workspace's devel/env.sh, same path there)");
   command->callback([flags] { runLaunchFile(*flags); });

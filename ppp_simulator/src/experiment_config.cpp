@@ -84,7 +84,7 @@ void ExperimentConfig::validate() const {
         if (!s.generator->agents_file.empty()) {
           throw InvalidArgument("agents_file", "in an experiment the panel's names come from its agents");
         }
-        resolvePanel(s.generator->agents, agents);
+        resolvePanel(s.generator->agents, agents, true);  // planners hunt through ROS; ppp experiment refuses them
       }
     } catch (const InvalidArgument& e) {
       const std::string field = "sets[" + std::to_string(i) + "].generator." + e.name();

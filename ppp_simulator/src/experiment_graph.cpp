@@ -1,10 +1,12 @@
 #include "ppp_simulator/experiment_graph.hpp"
 
-#include <map>
+#include <algorithm>
+#include <set>
 #include <sstream>
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/text_format.hpp"
+#include "ppp_generator/fitness.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -55,13 +57,15 @@ std::pair<std::string, std::string> plannerOf(const agents::AgentConfig& agent, 
   return {agent.planner_node.substr(0, slash), agent.planner_node.substr(slash + 1)};
 }
 
-void writeGenerator(std::ostream& out, const SetSpec& set, const GraphOptions& options) {
+/// A generator node for `set` writing `output_dir`; a hunt's is required and exits when its set is written.
+void writeGenerator(std::ostream& out, const SetSpec& set, const std::string& output_dir, bool hunt) {
   out << "  <node pkg=\"ppp_generator\" type=\"generator_node\" name=" << attribute(generatorNodeName(set.name), "sets")
-      << " output=\"screen\">\n"
+      << " output=\"screen\"" << (hunt ? " required=\"true\"" : "") << ">\n"
       << "    " << param("options", "str", generator::generatorOptionsYaml(*set.generator)) << "\n"
       << "    " << param("set_name", "str", set.name) << "\n"
-      << "    " << param("output_dir", "str", options.output_dir + "/sets/" + set.name) << "\n"
+      << "    " << param("output_dir", "str", output_dir) << "\n"
       << "    " << param("resume", "bool", "true") << "\n"
+      << "    " << param("exit_when_done", "bool", hunt ? "true" : "false") << "\n"
       << "    <remap from=\"problem_set\" to=\"~problem_set\"/>\n"
       << "    <remap from=\"map\" to=\"~map\"/>\n"
       << "  </node>\n";
@@ -93,6 +97,18 @@ void writePlanner(std::ostream& out, const agents::AgentConfig& agent, const Gra
         << " name=\"planner\" ns=\"robot\"" << machineOf(agent) << " output=\"screen\"/>\n";
   }
   out << "  </group>\n";
+}
+
+/// The set a hunt graph evolves. @throws InvalidArgument naming "hunt" unless it is a `failure` set of `config`.
+const SetSpec& huntedSet(const ExperimentConfig& config, const std::string& name) {
+  std::vector<std::string> hunted;
+  for (const SetSpec& set : config.sets) {
+    if (!set.generator || set.generator->fitness != generator::kFailureFitness) continue;
+    if (set.name == name) return set;
+    hunted.push_back(set.name);
+  }
+  throw InvalidArgument("hunt", "the config has no set '" + name + "' evolved with the failure fitness (its hunted sets: " +
+                                    (hunted.empty() ? "none" : joinNames(hunted)) + ")");
 }
 
 }  // namespace
@@ -131,29 +147,44 @@ std::string setTopic(const std::string& set_name) { return "/" + generatorNodeNa
 std::string experimentLaunchXml(const ExperimentConfig& config, const GraphOptions& options) {
   config.validate();
   options.validate(config);
+  const SetSpec* hunted = options.hunt.empty() ? nullptr : &huntedSet(config, options.hunt);
   std::ostringstream out;
   out << "<launch>\n"
-      << "  <!-- The ROS graph of the experiment " << escapeMarkup(options.config_path)
-      << ", written by `ppp launch-file`. -->\n";
-  std::map<std::string, bool> hosts;
+      << "  <!-- The ROS graph of " << (hunted ? "the hunt of set " + escapeMarkup(hunted->name) + " of " : "")
+      << "the experiment " << escapeMarkup(options.config_path) << ", written by `ppp launch-file`. -->\n";
+  std::vector<agents::AgentConfig> agents;
   for (const agents::AgentConfig& agent : config.agents) {
-    if (agent.host.empty() || !hosts.emplace(agent.host, true).second) continue;
+    const std::vector<std::string>* panel = hunted ? &hunted->generator->agents : nullptr;
+    if (!panel || std::find(panel->begin(), panel->end(), agent.name) != panel->end()) agents.push_back(agent);
+  }
+  std::set<std::string> hosts;
+  for (const agents::AgentConfig& agent : agents) {
+    if (agent.host.empty() || !hosts.insert(agent.host).second) continue;
     out << "  <machine name=" << attribute(machineName(agent.host), "host")
         << " address=" << attribute(agent.host, "host") << " env-loader=" << attribute(options.env_loader, "env_loader")
         << "/>\n";
   }
-  for (const SetSpec& set : config.sets) {
-    if (set.generator) writeGenerator(out, set, options);
+  if (hunted) {
+    writeGenerator(out, *hunted, options.output_dir, true);
+  } else {
+    for (const SetSpec& set : config.sets) {
+      if (set.generator) writeGenerator(out, set, options.output_dir + "/sets/" + set.name, false);
+    }
   }
-  out << "  <node pkg=\"ppp_simulator\" type=\"simulator_node\" name=\"simulator\" output=\"screen\" required=\"true\">\n"
+  out << "  <node pkg=\"ppp_simulator\" type=\"simulator_node\" name=\"simulator\" output=\"screen\""
+      << (hunted ? "" : " required=\"true\"") << ">\n"
       << "    " << param("config", "str", options.config_path) << "\n"
-      << "    " << param("output_dir", "str", options.output_dir) << "\n"
-      << "    " << param("batch_size", "int", std::to_string(options.batch_size)) << "\n"
       << "    " << param("step_timeout", "double", formatShortest(options.step_timeout)) << "\n"
-      << "    " << param("record", "bool", options.record ? "true" : "false") << "\n"
-      << "    " << param("generator_nodes", "bool", "true") << "\n"
-      << "  </node>\n";
-  for (const agents::AgentConfig& agent : config.agents) {
+      << "    " << param("batch_size", "int", std::to_string(options.batch_size)) << "\n";
+  if (hunted) {
+    out << "    " << param("mode", "str", "hunt") << "\n";
+  } else {
+    out << "    " << param("output_dir", "str", options.output_dir) << "\n"
+        << "    " << param("record", "bool", options.record ? "true" : "false") << "\n"
+        << "    " << param("generator_nodes", "bool", "true") << "\n";
+  }
+  out << "  </node>\n";
+  for (const agents::AgentConfig& agent : agents) {
     if (agents::isPlanner(agent)) {
       writePlanner(out, agent, options);
     } else {

@@ -116,8 +116,13 @@ std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::
       if (!fs::exists(fs::path(set_dir) / "set.csv")) {
         say(log, "generating set '" + spec.name + "' (" + spec.generator->fitness + ", " +
                      std::to_string(spec.generator->matings) + " matings)");
-        const generator::EvolvedSet evolved = generator::evolveSetDirectory(
-            set_dir, *spec.generator, fitnessFor(*spec.generator, config.agents, config.episode, config.threads));
+        generator::Fitness fitness;
+        try {
+          fitness = fitnessFor(*spec.generator, config.agents, config.episode, config.threads);
+        } catch (const InvalidArgument& e) {
+          throw InvalidArgument("sets", "set '" + spec.name + "': " + e.what());
+        }
+        const generator::EvolvedSet evolved = generator::evolveSetDirectory(set_dir, *spec.generator, fitness);
         say(log, "set '" + spec.name + "': " + evolved.summary);
       }
     }

@@ -107,7 +107,14 @@ TEST_F(ExperimentYaml, HuntedSetsNameTheirPanelFromTheExperimentsAgents) {
   EXPECT_EQ(errorOf(hunt("agents: [explorer]")), " sets[0].generator.agents: unknown agent 'explorer'; valid: random, slow, mine");
   EXPECT_EQ(errorOf(hunt("agents: []")),
             " sets[0].generator.agents: empty panel: the failure fitness needs at least one agent name");
-  EXPECT_EQ(errorOf(hunt("agents: [mine]")).rfind(" sets[0].generator.agents: 'mine' is a ROS planner agent", 0), 0u);
+  // A planner panel is a valid config (hunted through ROS); `ppp experiment` refuses it when it gets there.
+  EXPECT_EQ(errorOf(hunt("agents: [mine]")), "no error");
+  try {
+    prepareSets(loadExperimentConfig((dir_ / "experiment.yaml").string()), (dir_ / "out").string());
+    ADD_FAILURE() << "a planner panel was hunted in process";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("sets: set 'h': agents: 'mine' is a ROS planner agent", 0), 0u) << e.what();
+  }
   EXPECT_EQ(errorOf(hunt("agents: [slow], runs_per_eval: 0")),
             " sets[0].generator.runs_per_eval: expected runs in [1, 10000], got 0");
   EXPECT_EQ(errorOf(hunt("agents: [slow], runs_per_eval: 10001")),

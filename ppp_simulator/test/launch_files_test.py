@@ -6,8 +6,8 @@ arguments. The graph of config/experiment.yaml holds one agent node per built-in
 (node name = the agent's ROS name, ~type/~memory/~sensor_noise as in the file, topics /NAME/scans and
 /NAME/moves), a bridge and its planner per planner agent, one generator node per set with that set's options,
 and the simulator taking the sets from them; a small config's graph holds only its own nodes, on the hosts it
-names. launch/inspect.launch must load with and without a bag. launch/hunt.launch must start the simulator in
-hunt mode, the hunter with the failure fitness and the panel, the agent nodes, and a planner's bridge when asked.
+names. launch/inspect.launch must load with and without a bag. A hunt's graph holds its set's generator node,
+the simulator in hunt mode and the nodes of the panel's agents only.
 Loads everything with roslaunch's own parser; starts nothing. Usage: launch_files_test.py REPOSITORY_ROOT PPP
 """
 import os
@@ -212,32 +212,38 @@ class InspectLaunchTest(unittest.TestCase):
 
 
 class HuntLaunchTest(unittest.TestCase):
-    def test_hunt_starts_the_simulator_in_hunt_mode_and_the_hunter_with_the_panel(self):
-        config = load('hunt.launch', 'output_dir:=relative/hunt', 'agents:=wall_follower_left,explorer_noise_0.1',
-                      'matings:=77')
-        nodes = {n.name: n for n in config.nodes}
+    def test_the_entry_runs_the_launcher_for_one_set(self):
+        config = load('hunt.launch', 'output_dir:=relative/hunt', 'set:=mine')
+        self.assertEqual([(n.type, n.name, n.required) for n in config.nodes], [('experiment_launcher', 'hunt', True)])
+        args = config.nodes[0].args.split()
+        self.assertEqual(args[args.index('--hunt') + 1], "'mine'")
+        self.assertEqual(args[args.index('--output-dir') + 1], "'%s'" % os.path.join(os.getcwd(), 'relative', 'hunt'))
+
+    def test_the_hunt_graph_starts_the_hunter_the_simulator_and_the_panel_only(self):
+        config, out = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--hunt', 'hunted')
         params = {k: p.value for k, p in config.params.items()}
-        self.assertTrue(nodes['simulator'].required)
-        self.assertTrue(nodes['hunter'].required)
+        self.assertEqual(sorted((n.type, n.name) for n in config.nodes),
+                         [('agent_node', 'bumper'), ('agent_node', 'explorer'), ('agent_node', 'wall_follower_left'),
+                          ('generator_node', 'gen_hunted'), ('simulator_node', 'simulator')])
+        self.assertTrue([n for n in config.nodes if n.name == 'gen_hunted'][0].required)
         self.assertEqual(params['/simulator/mode'], 'hunt')
-        self.assertTrue(os.path.isfile(params['/simulator/config']))
-        self.assertEqual(params['/hunter/fitness'], 'failure')
-        self.assertEqual(params['/hunter/agents'], ['wall_follower_left', 'explorer_noise_0.1'])
-        self.assertEqual(params['/hunter/matings'], 77)
-        self.assertEqual(params['/hunter/crowding_window'], 4)
-        self.assertEqual(params['/hunter/evaluator'], '/simulator/evaluate')
-        self.assertTrue(params['/hunter/exit_when_done'])
-        self.assertEqual(params['/hunter/output_dir'], os.path.join(os.getcwd(), 'relative', 'hunt'))
-        self.assertEqual(len([n for n in config.nodes if n.type == 'agent_node']), 10)
-        self.assertEqual([n for n in config.nodes if n.type == 'planner_bridge_node'], [])
+        self.assertIs(params['/gen_hunted/exit_when_done'], True)
+        self.assertEqual(params['/gen_hunted/output_dir'], out)
+        self.assertEqual(yaml.safe_load(params['/gen_hunted/options'])['agents'],
+                         ['wall_follower_left', 'explorer', 'bumper'])
 
     def test_a_planner_hunt_starts_its_bridge_and_planner_only(self):
-        config = load('hunt.launch', 'output_dir:=/tmp/h', 'agents:=mine', 'planner:=mine', 'built_in_agents:=false',
-                      'planner_pkg:=ppp_agents', 'planner_type:=simple_planner.py')
-        self.assertEqual([n for n in config.nodes if n.type == 'agent_node'], [])
+        config, _ = load_graph(os.path.join(ROOT, 'config', 'planner_hunt.yaml'), '--hunt', 'hunted_mine',
+                               '--planner', 'mine=ppp_agents/simple_planner.py')
         started = sorted((n.namespace, n.name, n.type) for n in config.nodes if n.namespace.startswith('/mine/'))
         self.assertEqual(started, [('/mine/', 'bridge', 'planner_bridge_node'),
                                    ('/mine/robot/', 'planner', 'simple_planner.py')])
+        self.assertEqual([n for n in config.nodes if n.type == 'agent_node'], [])
+
+    def test_only_failure_sets_can_be_hunted(self):
+        _, status, errors, _ = launch_file(os.path.join(ROOT, 'config', 'experiment.yaml'), '--hunt', 'turns')
+        self.assertNotEqual(status, 0)
+        self.assertIn("no set 'turns' evolved with the failure fitness (its hunted sets: hunted)", errors)
 
 
 if __name__ == '__main__':

@@ -22,6 +22,8 @@ struct GraphOptions {
   int batch_size = 2000;        ///< Episodes per agent per message, >= 1.
   double step_timeout = 5.0;    ///< Seconds an agent node has to answer a batch, > 0.
   bool record = true;           ///< Write OUTPUT_DIR/experiment.bag.
+  /// When set, the graph of a hunt instead: only this `failure` set of the config is evolved, into OUTPUT_DIR.
+  std::string hunt;
   std::vector<PlannerNode> planners;  ///< Planner nodes to start, overriding the agents' planner_node.
   /// The env-loader script remote machines run nodes through (the workspace's devel/env.sh at the same path).
   std::string env_loader;
@@ -38,7 +40,9 @@ std::string setTopic(const std::string& set_name);
 /// The roslaunch XML of `config`'s experiment, and nothing else: one generator_node per evolved set (options
 /// from the config, resuming a set already written), the simulator_node (required; it plays the sets the
 /// generator nodes publish), one agent_node per built-in agent and a planner_bridge_node (plus the planner
-/// when one is named) per planner agent, each on its agent's host. @throws InvalidArgument.
+/// when one is named) per planner agent, each on its agent's host. With `options.hunt`, the graph of that
+/// set's hunt: its generator node (required, writing OUTPUT_DIR), the simulator serving hunts, and the nodes of
+/// the panel's agents only. @throws InvalidArgument.
 std::string experimentLaunchXml(const ExperimentConfig& config, const GraphOptions& options);
 
 }  // namespace simulator

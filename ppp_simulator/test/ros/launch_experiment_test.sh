@@ -2,7 +2,8 @@
 # The ROS experiment as a user starts it: roslaunch launch/experiment.launch, on a private master.
 # First a small config (one set, two agents): exactly its nodes start, OUTPUT_DIR/sets holds only its set,
 # results.csv equals `ppp experiment`'s byte for byte, a rerun resumes from the generator's stored set, and
-# configs naming an unknown agent type or an unreachable host stop before any node starts.
+# configs naming an unknown agent type or an unreachable host stop before any node starts; launch/hunt.launch
+# hunts a small set with only its panel's nodes.
 # Then the default config with 2 runs (three sets of 60 PPPs from three generator nodes, one of them hunting
 # through the simulator; the ten agents with 2 runs each and the two example planners with their own 3):
 # exactly sets x PPPs x agents x runs rows, the report and bag exist, and rviz (headless) shows the recorded map.
@@ -55,6 +56,27 @@ for bad in "flier.yaml:unknown agent type 'flier'" "host.yaml:host 'no-such-host
   [ "$(started "$work/small/bad.log")" = "experiment rosout " ] && [ ! -e "$work/small/bad" ] && pass || \
     fail "${bad%%:*} started nodes or wrote output: $(started "$work/small/bad.log")"
 done
+
+# launch/hunt.launch on a small hunted set: only the hunter, the simulator and the panel's nodes start, and the
+# set equals the one `ppp generate` makes in process with the options it stored.
+cat > "$work/small/hunt.yaml" <<'EOF2'
+seed: 1
+runs: 1
+agents:
+  - {name: wall_follower_left, type: wall_follower_left}
+  - {name: bumper, type: bumper}
+  - {name: astar, type: astar}
+sets:
+  - name: h
+    generator: {fitness: failure, agents: [bumper, wall_follower_left], runs_per_eval: 5, population: 8, matings: 40}
+EOF2
+timeout 300 roslaunch -p "$port" "$root/launch/hunt.launch" output_dir:="$work/small/hunt" set:=h \
+  config:="$work/small/hunt.yaml" > "$work/small/hunt.log" 2>&1
+[ "$(started "$work/small/hunt.log")" = "bumper gen_h hunt rosout simulator wall_follower_left " ] && pass || \
+  fail "the hunt started other processes: $(started "$work/small/hunt.log")"
+"$devel/lib/ppp_simulator/ppp" generate --config "$work/small/hunt/generator.yaml" -o "$work/small/hunt_cli" > /dev/null 2>&1
+diff -r "$work/small/hunt" "$work/small/hunt_cli" > /dev/null && pass || \
+  fail "the hunt through ROS differs from ppp generate's: $(tail -20 "$work/small/hunt.log")"
 
 sed 's/^runs: 1000 .*/runs: 2/' "$root/config/experiment.yaml" > "$work/experiment.yaml"
 cp "$root/config/agents.yaml" "$root/config/generator.yaml" "$work/"
