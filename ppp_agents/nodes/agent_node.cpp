@@ -7,8 +7,9 @@
 #include <ros/ros.h>
 
 #include "agent_node_parameters.hpp"
-#include "batch_responder.hpp"
+#include "ppp_agents/protocol/batch_responder.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_msgs/topic_names.h"
 
 namespace ppp {
 namespace agents {
@@ -19,8 +20,8 @@ class AgentNode {
   /// Subscribes and advertises in the node's namespace. @throws InvalidArgument for a bad configuration.
   AgentNode(ros::NodeHandle& nh, const AgentConfig& config)
       : responder_(config),
-        moves_(nh.advertise<ppp_msgs::MoveBatch>("moves", 10)),
-        scans_(nh.subscribe("scans", 10, &AgentNode::onScans, this, ros::TransportHints().tcpNoDelay())) {}
+        moves_(nh.advertise<ppp_msgs::MoveBatch>(ppp_msgs::topics::kMoves, 10)),
+        scans_(nh.subscribe(ppp_msgs::topics::kScans, 10, &AgentNode::onScans, this, ros::TransportHints().tcpNoDelay())) {}
 
   /// The resolved topic names, for the log.
   std::string topics() const { return scans_.getTopic() + " -> " + moves_.getTopic(); }
@@ -32,7 +33,7 @@ class AgentNode {
     moves_.publish(moves);
   }
 
-  BatchResponder responder_;
+  protocol::BatchResponder responder_;
   ros::Publisher moves_;
   ros::Subscriber scans_;
 };
@@ -48,11 +49,11 @@ int main(int argc, char** argv) {
     const ppp::agents::AgentConfig config =
         ppp::agents::readAgentNodeParameters(private_nh, ppp::agents::baseName(ros::this_node::getName()));
     ppp::agents::AgentNode node(nh, config);
-    const std::string side = std::to_string(config.memory_window);
-    const std::string memory = config.memory_window == 0 ? "full" : side + "x" + side;
     ROS_INFO("agent '%s': type %s, memory %s, sensor noise %g (applied by the simulator); %s", config.name.c_str(),
-             config.type.c_str(), memory.c_str(), config.sensor_noise, node.topics().c_str());
-    const std::string expected = "/" + ppp::agents::agentGraphName(config.name) + "/scans";
+             config.type.c_str(), ppp::agents::memoryWindowText(config.memory_window).c_str(), config.sensor_noise,
+             node.topics().c_str());
+    const std::string expected =
+        ppp_msgs::topics::under(ppp::agents::agentGraphName(config.name), ppp_msgs::topics::kScans);
     if (node.topics().rfind(expected + " ", 0) != 0) {
       ROS_WARN("agent '%s' listens on %s, but the simulator sends its scans to %s: remap scans/moves or rename "
                "the node", config.name.c_str(), node.topics().c_str(), expected.c_str());

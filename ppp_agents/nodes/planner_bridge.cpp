@@ -1,18 +1,19 @@
 #include "planner_bridge.hpp"
 
-#include "batch_responder.hpp"
-#include "ppp_core/error.hpp"
 #include "planner_bridge_messages.hpp"
+#include "ppp_agents/protocol/batch_codec.hpp"
+#include "ppp_agents/protocol/batch_responder.hpp"
+#include "ppp_core/error.hpp"
 #include "ppp_core/sensor.hpp"
-#include "scan_batch_checks.hpp"
+#include "ppp_msgs/topic_names.h"
 
 namespace ppp {
 namespace agents {
 
 PlannerBridge::PlannerBridge(ros::NodeHandle& nh, const BridgeParameters& parameters)
     : parameters_(parameters), link_(nh, parameters) {
-  moves_ = nh.advertise<ppp_msgs::MoveBatch>("moves", 10);
-  scans_ = nh.subscribe("scans", 10, &PlannerBridge::onScans, this, ros::TransportHints().tcpNoDelay());
+  moves_ = nh.advertise<ppp_msgs::MoveBatch>(ppp_msgs::topics::kMoves, 10);
+  scans_ = nh.subscribe(ppp_msgs::topics::kScans, 10, &PlannerBridge::onScans, this, ros::TransportHints().tcpNoDelay());
 }
 
 void PlannerBridge::warnOnce(const std::string& kind, const std::string& text) {
@@ -24,15 +25,12 @@ void PlannerBridge::warnOnce(const std::string& kind, const std::string& text) {
 
 void PlannerBridge::onScans(const ppp_msgs::ScanBatch::ConstPtr& batch) {
   const std::size_t n = batch->episodes.size();
-  ppp_msgs::MoveBatch moves;
-  moves.agent = parameters_.config.name;
-  moves.batch = batch->batch;
-  moves.episodes = batch->episodes;
-  moves.steps = batch->steps;
-  moves.steps.resize(n);
-  moves.actions.assign(n, kRejectedAction);
+  std::vector<protocol::MoveReply> replies(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    replies[i] = {batch->episodes[i], i < batch->steps.size() ? batch->steps[i] : 0, protocol::kRejectedAction};
+  }
   std::string what;
-  const std::string fault = checkBatchShape(*batch, true, &what);
+  const std::string fault = protocol::checkScanBatch(*batch, true, &what);
   if (!fault.empty()) {
     warnOnce(fault, "rejected a malformed batch: " + what);
   } else {
@@ -43,16 +41,11 @@ void PlannerBridge::onScans(const ppp_msgs::ScanBatch::ConstPtr& batch) {
     }
     if (n > 0) {
       const StepOutcome outcome = step(*batch);
-      if (outcome.failure.empty()) {
-        moves.actions[0] = outcome.action;
-      } else {
-        ppp_msgs::EpisodeFailure failure;
-        failure.episode = batch->episodes[0];
-        failure.reason = outcome.failure;
-        moves.failures.push_back(failure);
-      }
+      replies[0].action = outcome.action;
+      replies[0].failure = outcome.failure;
     }
   }
+  ppp_msgs::MoveBatch moves = protocol::encodeMoves(parameters_.config.name, batch->batch, replies);
   moves.header.stamp = ros::Time::now();
   moves_.publish(moves);
 }
@@ -60,9 +53,11 @@ void PlannerBridge::onScans(const ppp_msgs::ScanBatch::ConstPtr& batch) {
 void PlannerBridge::start(const ppp_msgs::EpisodeStart& s) {
   active_ = false;
   try {
-    const ParsedStart parsed = parseEpisodeStart(s);
+    const protocol::EpisodeStart decoded = protocol::decodeEpisodeStart(s);
+    const std::unique_ptr<Grid> prior = protocol::priorGrid(decoded);
     episode_id_ = s.episode;
-    episode_.start(parsed.info, parsed.prior.get(), parameters_.config.memory_window, parameters_.resolution);
+    episode_.start(protocol::episodeInfo(decoded, nullptr), prior.get(), parameters_.config.memory_window,
+                   parameters_.resolution);
     link_.newEpisode();
     active_ = true;
   } catch (const InvalidArgument& e) {
@@ -72,32 +67,30 @@ void PlannerBridge::start(const ppp_msgs::EpisodeStart& s) {
 
 PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch) {
   const std::uint32_t id = batch.episodes[0];
-  const StepOutcome rejected{kRejectedAction, ""};
+  const StepOutcome rejected{protocol::kRejectedAction, nullptr};
   if (!active_ || id != episode_id_) {
     warnOnce("episode", "episode " + std::to_string(id) + " was never started (no EpisodeStart)");
     return rejected;
   }
-  const Cell robot = toCell(batch.positions[0]);
+  const Cell robot = protocol::toCell(batch.positions[0]);
   const int range = batch.range;
-  const std::size_t count = static_cast<std::size_t>(2 * range + 1) * (2 * range + 1);
   try {
-    requireOnGrid(robot, episode_.frame().width, episode_.frame().height, "position");
-    episode_.observe(Scan(range, batch.cells.data(), count, robot, episode_.goal(), batch.bumped[0] != 0,
+    protocol::requireOnGrid(robot, episode_.frame().width, episode_.frame().height, "position");
+    episode_.observe(Scan(range, batch.cells.data(), protocol::windowCells(range), robot, episode_.goal(), batch.bumped[0] != 0,
                           static_cast<int>(batch.steps[0])));
   } catch (const InvalidArgument& e) {
     warnOnce(e.name(), std::string("rejected a scan: ") + e.what());
     active_ = false;
     return rejected;
   }
-  const auto fail = [&](const std::string& reason, const std::string& detail) {
-    ROS_INFO("bridge '%s': episode %u fails as %s: %s", parameters_.config.name.c_str(), id, reason.c_str(),
-             detail.c_str());
+  const auto fail = [&](const char* reason, const std::string& detail) {
+    ROS_INFO("bridge '%s': episode %u fails as %s: %s", parameters_.config.name.c_str(), id, reason, detail.c_str());
     active_ = false;
     return StepOutcome{0, reason};
   };
   const ros::Time stamp = ros::Time::now();
   link_.publishState(stamp, episode_, robot, batch.cells.data(), range);
-  if (link_.gone()) return fail(ppp_msgs::EpisodeFailure::PLANNER_LOST, "the planner's process is gone");
+  if (link_.gone()) return fail(protocol::reason::kPlannerLost, "the planner's process is gone");
 
   // A path the planner published on its own (re-planning on the new map) replaces the current one if usable.
   std::vector<MapPoint> points;
@@ -113,20 +106,20 @@ PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch)
           link_.publishGoal(again, episode_);
         });
     if (!path) {
-      if (!link_.alive()) return fail(ppp_msgs::EpisodeFailure::PLANNER_LOST, "the planner's process is gone");
-      return fail(ppp_msgs::EpisodeFailure::PLANNER_TIMEOUT,
+      if (!link_.alive()) return fail(protocol::reason::kPlannerLost, "the planner's process is gone");
+      return fail(protocol::reason::kPlannerTimeout,
                   "no path within " + std::to_string(parameters_.plan_timeout) + " s");
     }
     const std::string frame_problem = pathPoints(*path, parameters_.map_frame, &points);
-    if (!frame_problem.empty()) return fail(ppp_msgs::EpisodeFailure::INVALID_PATH, frame_problem);
+    if (!frame_problem.empty()) return fail(protocol::reason::kInvalidPath, frame_problem);
     const Answer answer = episode_.answer(points, robot);
-    if (answer.verdict == AnswerVerdict::NoPath) return fail(ppp_msgs::EpisodeFailure::NO_PATH, answer.detail);
+    if (answer.verdict == AnswerVerdict::NoPath) return fail(protocol::reason::kNoPath, answer.detail);
     if (answer.verdict == AnswerVerdict::InvalidPath) {
-      return fail(ppp_msgs::EpisodeFailure::INVALID_PATH, answer.detail);
+      return fail(protocol::reason::kInvalidPath, answer.detail);
     }
     action = answer.action;
   }
-  return StepOutcome{static_cast<std::uint8_t>(*action), ""};
+  return StepOutcome{static_cast<std::uint8_t>(*action), nullptr};
 }
 
 bool PlannerBridge::answers(const nav_msgs::Path& path, Cell robot) const {

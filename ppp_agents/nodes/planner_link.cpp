@@ -11,6 +11,7 @@
 #include "ppp_core/error.hpp"
 #include "ppp_msgs/conversions.h"
 #include "ppp_msgs/node_liveness.h"
+#include "ppp_msgs/topic_names.h"
 
 namespace ppp {
 namespace agents {
@@ -32,13 +33,13 @@ std::string advertisedType(const std::string& topic) {
 }  // namespace
 
 PlannerLink::PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters)
-    : parameters_(parameters), nh_(nh, "robot"), spinner_(1, &queue_) {
-  map_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
-  odom_ = nh_.advertise<nav_msgs::Odometry>("odom", 10);
-  scan_ = nh_.advertise<sensor_msgs::LaserScan>("scan", 10);
-  goal_ = nh_.advertise<geometry_msgs::PoseStamped>("move_base_simple/goal", 10);
+    : parameters_(parameters), nh_(nh, ppp_msgs::topics::kRobotNamespace), spinner_(1, &queue_) {
+  map_ = nh_.advertise<nav_msgs::OccupancyGrid>(ppp_msgs::topics::kPlannerMap, 1, true);
+  odom_ = nh_.advertise<nav_msgs::Odometry>(ppp_msgs::topics::kPlannerOdom, 10);
+  scan_ = nh_.advertise<sensor_msgs::LaserScan>(ppp_msgs::topics::kPlannerScan, 10);
+  goal_ = nh_.advertise<geometry_msgs::PoseStamped>(ppp_msgs::topics::kPlannerGoal, 10);
   ros::SubscribeOptions options = ros::SubscribeOptions::create<nav_msgs::Path>(
-      "plan", 10, [this](const nav_msgs::Path::ConstPtr& path) { onPlan(path); }, ros::VoidPtr(), &queue_);
+      ppp_msgs::topics::kPlannerPath, 10, [this](const nav_msgs::Path::ConstPtr& path) { onPlan(path); }, ros::VoidPtr(), &queue_);
   options.transport_hints = ros::TransportHints().tcpNoDelay();  // Nagle would hold each path back 40 ms
   plan_ = nh_.subscribe(options);
   spinner_.start();

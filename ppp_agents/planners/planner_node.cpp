@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "ppp_core/error.hpp"
+#include "ppp_msgs/topic_names.h"
 
 namespace ppp {
 namespace planners {
@@ -37,11 +38,11 @@ PlannerNode::PlannerNode(ros::NodeHandle& nh, PlannerNodeOptions options, PlanFu
       plan_(std::move(plan)),
       // No Nagle delay on any input: a message held back 40 ms is a plan 40 ms late.
       tf_listener_(tf_buffer_, true, ros::TransportHints().tcpNoDelay()),
-      plan_publisher_(nh.advertise<nav_msgs::Path>("plan", 1, true)),
-      map_subscriber_(nh.subscribe("map", 1, &PlannerNode::onMap, this, ros::TransportHints().tcpNoDelay())),
-      odom_subscriber_(nh.subscribe("odom", 1, &PlannerNode::onOdom, this, ros::TransportHints().tcpNoDelay())),
+      plan_publisher_(nh.advertise<nav_msgs::Path>(ppp_msgs::topics::kPlannerPath, 1, true)),
+      map_subscriber_(nh.subscribe(ppp_msgs::topics::kPlannerMap, 1, &PlannerNode::onMap, this, ros::TransportHints().tcpNoDelay())),
+      odom_subscriber_(nh.subscribe(ppp_msgs::topics::kPlannerOdom, 1, &PlannerNode::onOdom, this, ros::TransportHints().tcpNoDelay())),
       goal_subscriber_(
-          nh.subscribe("move_base_simple/goal", 1, &PlannerNode::onGoal, this, ros::TransportHints().tcpNoDelay())) {}
+          nh.subscribe(ppp_msgs::topics::kPlannerGoal, 1, &PlannerNode::onGoal, this, ros::TransportHints().tcpNoDelay())) {}
 
 std::string PlannerNode::topics() const {
   return map_subscriber_.getTopic() + ", " + goal_subscriber_.getTopic() + " -> " + plan_publisher_.getTopic() +

@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "batch_responder.hpp"
+#include "ppp_agents/protocol/batch_responder.hpp"
 #include "ppp_core/sensor.hpp"
 #include "ppp_msgs/MoveBatch.h"
 #include "ppp_msgs/ScanBatch.h"
@@ -69,12 +69,11 @@ test::TestScan cornerScan(std::uint32_t episode, bool prior_map) {
   s.position = Cell{0, 0};
   const std::int8_t o = kScanOutOfBounds;
   s.cells = {o, o, o, o, kScanFree, kScanObstacle, o, kScanFree, kScanFree};
-  ppp_msgs::EpisodeStart start;
-  start.episode = episode;
+  protocol::EpisodeStart start;
   start.width = 2;
   start.height = 2;
-  start.start = test::cellMessage(Cell{0, 0});
-  start.goal = test::cellMessage(Cell{1, 1});
+  start.start = Cell{0, 0};
+  start.goal = Cell{1, 1};
   start.agent_seed = 3;
   if (prior_map) start.prior_map = {kScanFree, kScanObstacle, kScanFree, kScanFree};
   s.start = start;
@@ -109,7 +108,7 @@ TEST(AgentNodeTest, AnswersEachBatchUnderItsNameAndRejectsMalformedScans) {
   EXPECT_EQ(moves->steps, steps);
   ASSERT_EQ(moves->actions.size(), 3u);
   EXPECT_TRUE(isAction(moves->actions[0]));
-  EXPECT_EQ(moves->actions[1], kRejectedAction);
+  EXPECT_EQ(moves->actions[1], protocol::kRejectedAction);
   EXPECT_TRUE(isAction(moves->actions[2]));
 
   const auto again = agent.exchange(batchOf(18, {next(cornerScan(1, false))}));
@@ -128,7 +127,7 @@ TEST(AgentNodeTest, AstarPlansOnThePriorMap) {
   ASSERT_EQ(moves->actions.size(), 2u);
   EXPECT_EQ(moves->agent, "astar");
   EXPECT_EQ(moves->actions[0], static_cast<std::uint8_t>(Action::South));  // east is the obstacle
-  EXPECT_EQ(moves->actions[1], kRejectedAction);                           // astar without its map
+  EXPECT_EQ(moves->actions[1], protocol::kRejectedAction);                           // astar without its map
 }
 
 TEST(FaultyAgentNodeTest, SilentGarbageAndStopAfter) {

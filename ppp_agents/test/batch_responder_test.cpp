@@ -1,6 +1,6 @@
 // The agent node's message handling without a master: batched play equals in-process play, episodes missing
 // from a batch are finished, and malformed scans are answered with the rejected action, never a crash.
-#include "batch_responder.hpp"
+#include "ppp_agents/protocol/batch_responder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +13,9 @@
 namespace ppp {
 namespace agents {
 namespace {
+
+using protocol::BatchResponder;
+using protocol::kRejectedAction;
 
 using test::config;
 using test::world;
@@ -40,18 +43,17 @@ struct Played {
 test::TestScan scanOf(const Played& p, const SensorModel& sensor, bool prior_map) {
   test::TestScan m;
   m.episode = p.id;
-  m.step = static_cast<std::uint32_t>(p.steps);
+  m.step = p.steps;
   m.position = p.position;
   m.bumped = p.bumped;
   m.cells.resize(static_cast<std::size_t>(sensor.side() * sensor.side()));
   sensor.scan(kWorld.grid, p.position, deriveSeed(p.seed, {1}), p.steps, m.cells.data());
   if (p.steps == 0) {
-    ppp_msgs::EpisodeStart start;
-    start.episode = p.id;
-    start.width = static_cast<std::uint32_t>(kWorld.grid.width());
-    start.height = static_cast<std::uint32_t>(kWorld.grid.height());
-    start.start = test::cellMessage(kWorld.start);
-    start.goal = test::cellMessage(kWorld.goal);
+    protocol::EpisodeStart start;
+    start.width = kWorld.grid.width();
+    start.height = kWorld.grid.height();
+    start.start = kWorld.start;
+    start.goal = kWorld.goal;
     start.agent_seed = p.seed;
     if (prior_map) {
       for (int i = 0; i < kWorld.grid.size(); ++i) {
@@ -155,7 +157,7 @@ test::TestScan startScan(std::uint32_t id, bool prior_map = false) {
 }
 
 /// `scan` at a later step, without its EpisodeStart.
-test::TestScan later(test::TestScan scan, std::uint32_t step) {
+test::TestScan later(test::TestScan scan, int step) {
   scan.step = step;
   scan.start.reset();
   return scan;

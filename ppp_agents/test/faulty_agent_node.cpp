@@ -11,7 +11,7 @@
 #include <string>
 
 #include "agent_node_parameters.hpp"
-#include "batch_responder.hpp"
+#include "ppp_agents/protocol/batch_responder.hpp"
 #include "ppp_core/error.hpp"
 
 namespace ppp {
@@ -45,7 +45,7 @@ class FaultyAgentNode {
       AgentConfig config;
       config.name = name_;
       config.type = "random";
-      responder_ = std::make_unique<BatchResponder>(config);
+      responder_ = std::make_unique<protocol::BatchResponder>(config);
     } else {
       throw InvalidArgument("~mode", "unknown mode '" + mode + "'; valid: silent, garbage, stop_after");
     }
@@ -81,7 +81,7 @@ class FaultyAgentNode {
   std::string name_;
   int steps_ = 0;
   int answered_ = 0;
-  std::unique_ptr<BatchResponder> responder_;
+  std::unique_ptr<protocol::BatchResponder> responder_;
   ros::Publisher moves_;
   ros::Subscriber scans_;
 };

@@ -18,6 +18,7 @@
 #include "ppp_msgs/Generate.h"
 #include "ppp_msgs/ProblemSet.h"
 #include "ppp_msgs/conversions.h"
+#include "ppp_msgs/topic_names.h"
 
 namespace ppp {
 namespace generator {
@@ -29,9 +30,9 @@ class GeneratorNode {
   GeneratorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
       : nh_(nh),
         parameters_(readNodeParameters(private_nh)),
-        set_publisher_(nh.advertise<ppp_msgs::ProblemSet>("problem_set", 1, true)),
-        map_publisher_(nh.advertise<nav_msgs::OccupancyGrid>("map", 1, true)),
-        service_(private_nh.advertiseService("generate", &GeneratorNode::onGenerate, this)) {}
+        set_publisher_(nh.advertise<ppp_msgs::ProblemSet>(ppp_msgs::topics::kProblemSet, 1, true)),
+        map_publisher_(nh.advertise<nav_msgs::OccupancyGrid>(ppp_msgs::topics::kMap, 1, true)),
+        service_(private_nh.advertiseService(ppp_msgs::topics::kGenerate, &GeneratorNode::onGenerate, this)) {}
 
   /// Evolves a set with `seed` (0: the configured one), or with ~resume reads the one already in ~output_dir;
   /// writes and publishes it; returns its size.
@@ -99,7 +100,8 @@ class GeneratorNode {
   /// The set ~output_dir already holds. @throws IoError when it was evolved with other options.
   ProblemSet readExistingSet(const GeneratorOptions& options) {
     const std::string stored = readGeneratorOptionsOf(parameters_.output_dir);
-    if (stored != generatorOptionsYaml(options)) {
+    const std::string source = parameters_.output_dir + "/generator.yaml";
+    if (stored.empty() || generatorOptionsYaml(parseGeneratorOptions(stored, source)) != generatorOptionsYaml(options)) {
       throw IoError(parameters_.output_dir, "holds a set evolved with other options; remove it or use another output_dir");
     }
     ROS_INFO("resuming: publishing the set already in %s", parameters_.output_dir.c_str());

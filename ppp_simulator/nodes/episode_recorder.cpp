@@ -1,4 +1,5 @@
 #include "episode_recorder.hpp"
+#include "ppp_msgs/topic_names.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -50,16 +51,16 @@ EpisodeRecorder::EpisodeRecorder(ros::NodeHandle& nh, const SimulatorParameters&
                                  const std::vector<PreparedSet>& sets, const std::vector<std::string>& agent_names,
                                  int budget)
     : parameters_(parameters), sets_(sets), budget_(budget) {
-  map_publisher_ = nh.advertise<nav_msgs::OccupancyGrid>("/map", 1, true);
-  markers_publisher_ = nh.advertise<visualization_msgs::MarkerArray>("/ppp/markers", 1, true);
-  results_publisher_ = nh.advertise<ppp_msgs::EpisodeResults>("/ppp/results", 100);
+  map_publisher_ = nh.advertise<nav_msgs::OccupancyGrid>(ppp_msgs::topics::kRecordedMap, 1, true);
+  markers_publisher_ = nh.advertise<visualization_msgs::MarkerArray>(ppp_msgs::topics::kMarkers, 1, true);
+  results_publisher_ = nh.advertise<ppp_msgs::EpisodeResults>(ppp_msgs::topics::kResults, 100);
   for (const PreparedSet& set : sets) {
-    set_publishers_[set.name] = nh.advertise<ppp_msgs::ProblemSet>("/ppp/sets/" + set.name, 1, true);
+    set_publishers_[set.name] = nh.advertise<ppp_msgs::ProblemSet>(ppp_msgs::topics::kSetsPrefix + set.name, 1, true);
   }
   for (const std::string& agent : agent_names) {
     const std::string graph_name = agents::agentGraphName(agent);
-    path_publishers_[agent] = nh.advertise<nav_msgs::Path>("/" + graph_name + "/path", 10, true);
-    scan_publishers_[agent] = nh.advertise<sensor_msgs::LaserScan>("/" + graph_name + "/scan", 10);
+    path_publishers_[agent] = nh.advertise<nav_msgs::Path>(ppp_msgs::topics::under(graph_name, ppp_msgs::topics::kPath), 10, true);
+    scan_publishers_[agent] = nh.advertise<sensor_msgs::LaserScan>(ppp_msgs::topics::under(graph_name, ppp_msgs::topics::kScan), 10);
   }
   bag_start_ = ros::Time::now();
   latest_stamp_ = bag_start_;

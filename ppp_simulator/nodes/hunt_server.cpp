@@ -5,6 +5,7 @@
 
 #include "ppp_core/error.hpp"
 #include "ppp_msgs/conversions.h"
+#include "ppp_msgs/topic_names.h"
 
 namespace ppp {
 namespace simulator {
@@ -90,7 +91,7 @@ LaneRunner& HuntServer::runnerFor(const agents::AgentConfig& agent) {
 
 int runHuntServer(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const SimulatorParameters& parameters) {
   HuntServer server(nh, parameters);
-  ros::ServiceServer service = private_nh.advertiseService("evaluate", &HuntServer::evaluate, &server);
+  ros::ServiceServer service = private_nh.advertiseService(ppp_msgs::topics::kEvaluate, &HuntServer::evaluate, &server);
   ROS_INFO("serving %s for hunts with the agents of %s", service.getService().c_str(), parameters.config.c_str());
   ros::waitForShutdown();
   return 0;

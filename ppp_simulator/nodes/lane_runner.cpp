@@ -2,8 +2,9 @@
 
 #include <algorithm>
 
-#include "ppp_msgs/ScanBatch.h"
+#include "ppp_agents/protocol/batch_codec.hpp"
 #include "ppp_msgs/node_liveness.h"
+#include "ppp_msgs/topic_names.h"
 
 namespace ppp {
 namespace simulator {
@@ -11,44 +12,6 @@ namespace simulator {
 namespace {
 
 const ros::WallDuration kShutdownCheck(0.1);  // a lane waiting for a reply notices a shutdown this often
-
-ppp_msgs::GridCell toCell(Cell c) {
-  ppp_msgs::GridCell m;
-  m.x = c.x;
-  m.y = c.y;
-  return m;
-}
-
-/// Fills `message` with `scans`, reusing its buffers.
-void toMessage(const std::vector<ScanRequest>& scans, ppp_msgs::ScanBatch* message) {
-  ppp_msgs::ScanBatch& m = *message;
-  const std::size_t n = scans.size();
-  m.range = n == 0 ? 0 : static_cast<std::uint8_t>(scans[0].range);
-  m.starts.clear();
-  m.episodes.resize(n);
-  m.steps.resize(n);
-  m.positions.resize(n);
-  m.bumped.resize(n);
-  m.cells.clear();
-  for (std::size_t i = 0; i < n; ++i) {
-    const ScanRequest& r = scans[i];
-    m.episodes[i] = r.episode;
-    m.steps[i] = static_cast<std::uint32_t>(r.step);
-    m.positions[i] = toCell(r.position);
-    m.bumped[i] = r.bumped ? 1 : 0;
-    m.cells.insert(m.cells.end(), r.cells.begin(), r.cells.end());
-    if (!r.start) continue;
-    ppp_msgs::EpisodeStart start;
-    start.episode = r.episode;
-    start.width = static_cast<std::uint32_t>(r.start->width);
-    start.height = static_cast<std::uint32_t>(r.start->height);
-    start.start = toCell(r.start->start);
-    start.goal = toCell(r.goal);
-    start.agent_seed = r.start->agent_seed;
-    start.prior_map = r.start->prior_map;
-    m.starts.push_back(std::move(start));
-  }
-}
 
 }  // namespace
 
@@ -60,11 +23,11 @@ LaneRunner::LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameter
       observer_(std::move(observer)),
       log_rates_(log_rates) {
   const std::string graph_name = agents::agentGraphName(agent.name);
-  scans_ = nh.advertise<ppp_msgs::ScanBatch>("/" + graph_name + "/scans", 2);
+  scans_ = nh.advertise<ppp_msgs::ScanBatch>(ppp_msgs::topics::under(graph_name, ppp_msgs::topics::kScans), 2);
   // The lane's own callback queue, served by the lane's thread while it waits for the answer: the reply
   // wakes that thread directly, not a spinner thread that would then wake it.
   ros::SubscribeOptions options = ros::SubscribeOptions::create<ppp_msgs::MoveBatch>(
-      "/" + graph_name + "/moves", 2, [this](const ppp_msgs::MoveBatch::ConstPtr& m) { onMoves(m); },
+      ppp_msgs::topics::under(graph_name, ppp_msgs::topics::kMoves), 2, [this](const ppp_msgs::MoveBatch::ConstPtr& m) { onMoves(m); },
       ros::VoidConstPtr(), &replies_);
   options.transport_hints = ros::TransportHints().tcpNoDelay();
   moves_ = nh.subscribe(options);
@@ -99,7 +62,7 @@ void LaneRunner::run(AgentLane* lane) {
     lane_->scans(&scans);
     message.header.stamp = ros::Time::now();
     message.batch = batch;
-    toMessage(scans, &message);
+    protocol::encodeScans(scans, &message);
     if (observer_) observer_(name, scans);
     expected_batch_ = batch;
     reply_.reset();
@@ -152,30 +115,10 @@ bool LaneRunner::agentAlive() const { return ppp_msgs::publisherAlive(moves_.get
 
 void LaneRunner::onMoves(const ppp_msgs::MoveBatch::ConstPtr& message) {
   if (message->batch != expected_batch_ || reply_) return;  // late answer to an earlier batch
-  const std::size_t n = message->episodes.size();
-  if (message->steps.size() != n || message->actions.size() != n) {
-    // A malformed batch answers no episode: all of them fail as invalid_action.
-    ROS_WARN_ONCE("agent '%s': a MoveBatch whose episodes, steps and actions differ in length",
-                  agent_.name.c_str());
-    reply_ = std::vector<MoveReply>();
-    missing_reason_ = reason::kInvalidAction;
-    return;
-  }
-  std::vector<MoveReply> moves(n);
-  for (std::size_t i = 0; i < n; ++i) moves[i] = {message->episodes[i], message->steps[i], message->actions[i]};
-  for (const ppp_msgs::EpisodeFailure& f : message->failures) {
-    const char* reason = reason::agentReportedReason(f.reason);
-    if (reason == nullptr) {
-      ROS_WARN_ONCE("agent '%s' gave an episode up for an unknown reason '%s': recorded as invalid_action",
-                    agent_.name.c_str(), f.reason.c_str());
-      reason = reason::kInvalidAction;
-    }
-    for (MoveReply& m : moves) {
-      if (m.episode == f.episode) m.failure = reason;
-    }
-  }
-  reply_ = std::move(moves);
-  missing_reason_ = reason::kTimeout;
+  protocol::DecodedMoves decoded = protocol::decodeMoves(*message);
+  if (!decoded.fault.empty()) ROS_WARN_ONCE("agent '%s': %s", agent_.name.c_str(), decoded.fault.c_str());
+  reply_ = std::move(decoded.moves);
+  missing_reason_ = decoded.missing_reason;
 }
 
 void LaneRunner::report(const std::vector<EpisodeResult>& results) {

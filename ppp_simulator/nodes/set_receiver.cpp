@@ -9,6 +9,7 @@
 #include "ppp_generator/fitness.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_msgs/conversions.h"
+#include "ppp_msgs/topic_names.h"
 #include "ppp_simulator/experiment_graph.hpp"
 
 namespace ppp {
@@ -68,7 +69,7 @@ ReceivedSets receiveSets(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const
   ros::ServiceServer hunt_service;
   if (hunting) {
     hunt_server = std::make_unique<HuntServer>(nh, parameters);
-    hunt_service = private_nh.advertiseService("evaluate", &HuntServer::evaluate, hunt_server.get());
+    hunt_service = private_nh.advertiseService(ppp_msgs::topics::kEvaluate, &HuntServer::evaluate, hunt_server.get());
     ROS_INFO("serving %s for the hunting generator nodes", hunt_service.getService().c_str());
   }
   for (;;) {

@@ -78,10 +78,8 @@ void AgentLane::scans(std::vector<ScanRequest>* requests) {
       const PreparedSet& set = sets_[a.work.set];
       const Grid& grid = set.grids[a.work.problem];
       const agents::EpisodeInfo info = episodeInfo(set.set.problems[a.work.problem], grid, config_, a.seed);
-      EpisodeStart start{info.width, info.height, info.start, info.seed, {}};
-      if (info.prior_map != nullptr) {
-        for (std::uint8_t cell : grid.cells()) start.prior_map.push_back(cell != 0 ? kScanObstacle : kScanFree);
-      }
+      EpisodeStart start{info.width, info.height, info.start, info.goal, info.seed, {}};
+      if (info.prior_map != nullptr) start.prior_map = protocol::priorMapCells(grid);
       r.start = std::move(start);
       a.started = true;
     }

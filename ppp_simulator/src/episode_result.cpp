@@ -89,12 +89,5 @@ std::vector<std::string> splitCsvLine(const std::string& line, const std::string
   return fields;
 }
 
-const char* reason::agentReportedReason(const std::string& text) {
-  for (const char* r : {kNoPath, kInvalidPath, kPlannerTimeout, kPlannerLost}) {
-    if (text == r) return r;
-  }
-  return nullptr;
-}
-
 }  // namespace simulator
 }  // namespace ppp

@@ -7,6 +7,7 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/text_format.hpp"
 #include "ppp_generator/fitness.hpp"
+#include "ppp_msgs/topic_names.h"
 
 namespace ppp {
 namespace simulator {
@@ -39,6 +40,11 @@ std::string param(const std::string& name, const std::string& type, const std::s
   return "<param name=\"" + name + "\" type=\"" + type + "\" value=" + attribute(value, "~" + name) + "/>";
 }
 
+/// `<remap from="TOPIC" to="~TOPIC"/>`: the node's topic under its own name.
+std::string privateTopic(const char* topic) {
+  return std::string("<remap from=\"") + topic + "\" to=\"~" + topic + "\"/>";
+}
+
 /// The machine name of a host.
 std::string machineName(const std::string& host) { return "host_" + agents::agentGraphName(host); }
 
@@ -66,8 +72,8 @@ void writeGenerator(std::ostream& out, const SetSpec& set, const std::string& ou
       << "    " << param("output_dir", "str", output_dir) << "\n"
       << "    " << param("resume", "bool", "true") << "\n"
       << "    " << param("exit_when_done", "bool", hunt ? "true" : "false") << "\n"
-      << "    <remap from=\"problem_set\" to=\"~problem_set\"/>\n"
-      << "    <remap from=\"map\" to=\"~map\"/>\n"
+      << "    " << privateTopic(ppp_msgs::topics::kProblemSet) << "\n"
+      << "    " << privateTopic(ppp_msgs::topics::kMap) << "\n"
       << "  </node>\n";
 }
 
@@ -78,8 +84,8 @@ void writeAgent(std::ostream& out, const agents::AgentConfig& agent) {
       << "    " << param("type", "str", agent.type) << "\n"
       << "    " << param("memory", "str", agents::memoryWindowText(agent.memory_window)) << "\n"
       << "    " << param("sensor_noise", "double", formatShortest(agent.sensor_noise)) << "\n"
-      << "    <remap from=\"scans\" to=\"~scans\"/>\n"
-      << "    <remap from=\"moves\" to=\"~moves\"/>\n"
+      << "    " << privateTopic(ppp_msgs::topics::kScans) << "\n"
+      << "    " << privateTopic(ppp_msgs::topics::kMoves) << "\n"
       << "  </node>\n";
 }
 
@@ -94,7 +100,7 @@ void writePlanner(std::ostream& out, const agents::AgentConfig& agent, const Gra
       << "    </node>\n";
   if (!type.empty()) {
     out << "    <node pkg=" << attribute(package, "planner_node") << " type=" << attribute(type, "planner_node")
-        << " name=\"planner\" ns=\"robot\"" << machineOf(agent) << " output=\"screen\"/>\n";
+        << " name=\"planner\" ns=\"" << ppp_msgs::topics::kRobotNamespace << "\"" << machineOf(agent) << " output=\"screen\"/>\n";
   }
   out << "  </group>\n";
 }
@@ -142,7 +148,9 @@ void GraphOptions::validate(const ExperimentConfig& config) const {
 
 std::string generatorNodeName(const std::string& set_name) { return "gen_" + agents::agentGraphName(set_name); }
 
-std::string setTopic(const std::string& set_name) { return "/" + generatorNodeName(set_name) + "/problem_set"; }
+std::string setTopic(const std::string& set_name) {
+  return ppp_msgs::topics::under(generatorNodeName(set_name), ppp_msgs::topics::kProblemSet);
+}
 
 std::string experimentLaunchXml(const ExperimentConfig& config, const GraphOptions& options) {
   config.validate();

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "ppp_agents/agent_host.hpp"
+#include "ppp_agents/protocol/batch_responder.hpp"
 #include "ppp_core/error.hpp"
 
 namespace ppp {
@@ -37,32 +37,23 @@ agents::AgentConfig config(const std::string& type, int memory = 0, double noise
   return agents::AgentConfig{type + "_" + std::to_string(memory), type, memory, noise};
 }
 
-/// Plays a lane to the end the way the agent node does: an AgentHost answers every scan batch.
+/// Plays a lane to the end through the real protocol: each batch is encoded as the simulator node sends it,
+/// answered by the agent node's BatchResponder and the answer decoded as the simulator node reads it.
 std::vector<EpisodeResult> playLane(AgentLane& lane) {
-  agents::AgentHost host(lane.config());
+  protocol::BatchResponder responder(lane.config());
   std::vector<EpisodeResult> results;
   std::vector<ScanRequest> scans;
-  while (!lane.finished()) {
-    std::vector<MoveReply> moves;
+  ppp_msgs::ScanBatch message;
+  for (std::uint32_t batch = 1; !lane.finished(); ++batch) {
     lane.scans(&scans);
-    for (const ScanRequest& s : scans) {
-      if (s.start) {
-        agents::EpisodeInfo info{s.start->width, s.start->height, s.start->start, s.goal, s.start->agent_seed, nullptr};
-        Grid prior(s.start->width, s.start->height);
-        for (int i = 0; i < prior.size(); ++i) prior.setObstacle(prior.cellAt(i), s.start->prior_map.size() > 0 &&
-                                                                                      s.start->prior_map[i] == kScanObstacle);
-        host.start(s.episode, info, s.start->prior_map.empty() ? nullptr : &prior);
-      }
-      // The lane sends no window to agents that never read one; an all-unknown window stands in for it.
-      const int side = 2 * s.range + 1;
-      EXPECT_EQ(s.cells.empty(), !agents::readsScanWindow(lane.config()));
-      const std::vector<std::int8_t> cells =
-          s.cells.empty() ? std::vector<std::int8_t>(static_cast<std::size_t>(side * side), kScanUnknown) : s.cells;
-      const Scan scan(s.range, cells, s.position, s.goal, s.bumped, s.step);
-      moves.push_back({s.episode, static_cast<std::uint32_t>(s.step), static_cast<int>(host.act(s.episode, scan))});
-    }
-    for (EpisodeResult& r : lane.answer(moves, reason::kTimeout)) results.push_back(std::move(r));
+    protocol::encodeScans(scans, &message);
+    message.batch = batch;
+    EXPECT_EQ(message.cells.empty(), !agents::readsScanWindow(lane.config()) || scans.empty());
+    const protocol::DecodedMoves moves = protocol::decodeMoves(responder.answer(message));
+    EXPECT_EQ(moves.fault, "");
+    for (EpisodeResult& r : lane.answer(moves.moves, moves.missing_reason)) results.push_back(std::move(r));
   }
+  EXPECT_EQ(responder.rejections().size(), 0u);
   return results;
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ppp_agents/agent_config.hpp"
+#include "ppp_agents/protocol/batch_types.hpp"
 #include "ppp_simulator/episode.hpp"
 #include "ppp_simulator/episode_result.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
@@ -16,37 +17,10 @@
 namespace ppp {
 namespace simulator {
 
-/// What an agent is told when an episode starts (sent with its first scan).
-struct EpisodeStart {
-  int width = 0;                    ///< Map columns.
-  int height = 0;                   ///< Map rows.
-  Cell start;                       ///< Start cell.
-  std::uint64_t agent_seed = 0;     ///< Seed of the agent's own choices.
-  std::vector<std::int8_t> prior_map;  ///< The true map (kScanFree / kScanObstacle per cell) for astar; else empty.
-};
-
-/// One scan of a batch, for one episode and step.
-struct ScanRequest {
-  std::uint32_t episode = 0;         ///< Episode id, unique within the lane.
-  int step = 0;                      ///< Steps taken so far.
-  Cell position;                     ///< The agent's cell.
-  Cell goal;                         ///< The goal cell.
-  bool bumped = false;               ///< The last move bumped.
-  int range = 0;                     ///< Window radius.
-  std::vector<std::int8_t> cells;    ///< The window, row-major; empty for agents that never read it (random).
-  std::optional<EpisodeStart> start;  ///< Set on step 0.
-  int set = 0;                       ///< Index of the PPP's set.
-  int problem = 0;                   ///< Index of the PPP in its set.
-  int run = 0;                       ///< Run number.
-};
-
-/// One move of a batch, as received from an agent.
-struct MoveReply {
-  std::uint32_t episode = 0;  ///< The episode answered.
-  std::uint32_t step = 0;     ///< The step answered.
-  int action = 0;             ///< An agents::Action number (anything else is invalid).
-  const char* failure = nullptr;  ///< The agent gives the episode up for this reason (a reason:: constant).
-};
+// The lane speaks the batch protocol's plain types (ppp_agents/protocol/batch_types.hpp).
+using protocol::EpisodeStart;
+using protocol::MoveReply;
+using protocol::ScanRequest;
 
 /// All the runs of one agent configuration in an experiment, played in lockstep batches: up to `batch_size`
 /// episodes are active at once; each round the lane hands out one scan per active episode and takes one move

@@ -4,24 +4,13 @@
 #include <string>
 #include <vector>
 
+#include "ppp_agents/protocol/batch_types.hpp"
+
 namespace ppp {
 namespace simulator {
 
-/// Why an episode ended.
-namespace reason {
-constexpr const char* kGoalReached = "goal_reached";          ///< Pass: the agent stands on the goal.
-constexpr const char* kBudgetExhausted = "budget_exhausted";  ///< Fail: the move budget is spent.
-constexpr const char* kTimeout = "timeout";                   ///< Fail (ROS): the agent did not answer in time.
-constexpr const char* kAgentLost = "agent_lost";              ///< Fail (ROS): the agent process went away.
-constexpr const char* kInvalidAction = "invalid_action";      ///< Fail (ROS): the agent sent something unusable.
-constexpr const char* kNoPath = "no_path";                    ///< Fail (planner): it published an empty path.
-constexpr const char* kInvalidPath = "invalid_path";          ///< Fail (planner): its path was unusable.
-constexpr const char* kPlannerTimeout = "planner_timeout";    ///< Fail (planner): no path in time.
-constexpr const char* kPlannerLost = "planner_lost";          ///< Fail (planner): its process went away.
-/// The reason constant equal to `text` among those an agent may report itself (the four planner ones), or
-/// nullptr.
-const char* agentReportedReason(const std::string& text);
-}  // namespace reason
+/// Why an episode ended: the batch protocol's reasons (ppp_agents/protocol/batch_types.hpp).
+namespace reason = protocol::reason;
 
 /// One row of results.csv: one agent's run on one PPP.
 struct EpisodeResult {

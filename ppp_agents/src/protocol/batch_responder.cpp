@@ -1,4 +1,4 @@
-#include "batch_responder.hpp"
+#include "ppp_agents/protocol/batch_responder.hpp"
 
 #include <ros/console.h>
 
@@ -7,10 +7,9 @@
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/sensor.hpp"
-#include "scan_batch_checks.hpp"
 
 namespace ppp {
-namespace agents {
+namespace protocol {
 
 namespace {
 
@@ -18,41 +17,35 @@ constexpr std::size_t kPrefetchAhead = 2;  // scans between fetching an agent in
 
 }  // namespace
 
-BatchResponder::BatchResponder(const AgentConfig& config)
-    : config_(config), reads_window_(readsScanWindow(config)), host_(config) {}
+BatchResponder::BatchResponder(const agents::AgentConfig& config)
+    : config_(config), reads_window_(agents::readsScanWindow(config)), host_(config) {}
 
 ppp_msgs::MoveBatch BatchResponder::answer(const ppp_msgs::ScanBatch& batch) {
   ++round_;
   const std::size_t n = batch.episodes.size();
-  ppp_msgs::MoveBatch moves;
-  moves.agent = config_.name;
-  moves.batch = batch.batch;
-  moves.episodes = batch.episodes;
-  moves.steps.resize(n);
-  moves.actions.resize(n, kRejectedAction);
+  replies_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    replies_[i] = {batch.episodes[i], i < batch.steps.size() ? batch.steps[i] : 0, kRejectedAction, nullptr};
+  }
   std::string what;
-  const std::string fault = checkBatchShape(batch, reads_window_, &what);
+  const std::string fault = checkScanBatch(batch, reads_window_, &what);
   if (!fault.empty()) {
-    for (std::size_t i = 0; i < n; ++i) {
-      moves.steps[i] = i < batch.steps.size() ? batch.steps[i] : 0;
-      reject(batch.episodes[i], moves.steps[i], fault, what);
-    }
+    for (const MoveReply& r : replies_) reject(r.episode, r.step, fault, what);
     finishAbsent();
-    return moves;
+    return encodeMoves(config_.name, batch.batch, replies_);
   }
   failed_starts_.clear();
   for (const ppp_msgs::EpisodeStart& s : batch.starts) {
     try {
-      start(s);
+      start(s.episode, decodeEpisodeStart(s));
     } catch (const InvalidArgument& e) {
       failed_starts_.emplace(s.episode, e);  // rejected with the episode's scan
     }
   }
-  const std::size_t window = static_cast<std::size_t>(2 * batch.range + 1) * (2 * batch.range + 1);
+  const std::size_t window = windowCells(batch.range);
   if (!reads_window_) unknown_window_.assign(window, kScanUnknown);
   next_ = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    moves.steps[i] = batch.steps[i];
     // Scans come in id order, so the agents acted on a few scans from now are known: their state is fetched
     // into cache meanwhile (a thousand agents' memories do not fit).
     if (next_ + 2 * kPrefetchAhead < episodes_.size()) __builtin_prefetch(episodes_[next_ + 2 * kPrefetchAhead].agent);
@@ -61,7 +54,7 @@ ppp_msgs::MoveBatch BatchResponder::answer(const ppp_msgs::ScanBatch& batch) {
     }
     const std::int8_t* cells = reads_window_ ? batch.cells.data() + i * window : unknown_window_.data();
     try {
-      moves.actions[i] = act(batch, i, cells);
+      replies_[i].action = act(batch, i, cells);
     } catch (const InvalidArgument& e) {
       reject(batch.episodes[i], batch.steps[i], e.name(), e.what());
     } catch (const std::exception& e) {
@@ -69,7 +62,7 @@ ppp_msgs::MoveBatch BatchResponder::answer(const ppp_msgs::ScanBatch& batch) {
     }
   }
   finishAbsent();
-  return moves;
+  return encodeMoves(config_.name, batch.batch, replies_);
 }
 
 std::vector<BatchResponder::Episode>::iterator BatchResponder::firstNotBefore(std::uint32_t id) {
@@ -103,18 +96,16 @@ std::uint8_t BatchResponder::act(const ppp_msgs::ScanBatch& batch, std::size_t i
   episode->round = round_;
   const Cell position = toCell(batch.positions[i]);
   requireOnGrid(position, episode->width, episode->height, "position");
-  const std::size_t count = static_cast<std::size_t>(2 * batch.range + 1) * (2 * batch.range + 1);
-  const Scan view(batch.range, window, count, position, episode->goal, batch.bumped[i] != 0, static_cast<int>(step));
+  const Scan view(batch.range, window, windowCells(batch.range), position, episode->goal, batch.bumped[i] != 0, static_cast<int>(step));
   return static_cast<std::uint8_t>(episode->agent->act(view));
 }
 
-void BatchResponder::start(const ppp_msgs::EpisodeStart& start) {
-  const ParsedStart parsed = parseEpisodeStart(start);
-  const EpisodeInfo& info = parsed.info;
-  Agent& agent = host_.start(start.episode, info, parsed.prior.get());  // a restarted id gets a fresh agent
-  const Episode episode{start.episode, info.width, info.height, info.goal, &agent, 0, false};
-  const auto it = firstNotBefore(start.episode);
-  if (it != episodes_.end() && it->id == start.episode) {
+void BatchResponder::start(std::uint32_t id, const EpisodeStart& start) {
+  const std::unique_ptr<Grid> prior = priorGrid(start);
+  agents::Agent& agent = host_.start(id, episodeInfo(start, nullptr), prior.get());  // a restarted id: a fresh one
+  const Episode episode{id, start.width, start.height, start.goal, &agent, 0, false};
+  const auto it = firstNotBefore(id);
+  if (it != episodes_.end() && it->id == id) {
     *it = episode;
   } else {
     episodes_.insert(it, episode);  // new ids are the largest: normally an append
@@ -149,5 +140,5 @@ void BatchResponder::reject(std::uint32_t episode, std::uint32_t step, const std
   }
 }
 
-}  // namespace agents
+}  // namespace protocol
 }  // namespace ppp

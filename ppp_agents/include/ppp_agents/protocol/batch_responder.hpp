@@ -7,24 +7,24 @@
 #include <vector>
 
 #include "ppp_agents/agent_host.hpp"
+#include "ppp_agents/protocol/batch_codec.hpp"
 #include "ppp_core/error.hpp"
-#include "ppp_msgs/MoveBatch.h"
-#include "ppp_msgs/ScanBatch.h"
 
 namespace ppp {
-namespace agents {
+namespace protocol {
 
 /// The action sent for a scan the agent cannot use (malformed, or of an episode never started); not an Action,
 /// so the simulator fails that episode as invalid_action.
 constexpr std::uint8_t kRejectedAction = 255;
 
-/// Answers scan batches with an AgentHost: message -> ppp types -> agents -> message. An episode is started by
+/// The agent side of the batch protocol (agent_node): answers scan batches with an AgentHost, message -> ppp types
+/// -> agents -> message. An episode is started by
 /// its EpisodeStart and finished when a batch no longer holds it. A malformed scan is answered with
 /// kRejectedAction (and its episode dropped); each kind of fault is logged once. Never throws on input.
 class BatchResponder {
  public:
   /// Agents of one configuration. @throws InvalidArgument for a bad configuration.
-  explicit BatchResponder(const AgentConfig& config);
+  explicit BatchResponder(const agents::AgentConfig& config);
   /// One move per scan of `batch`, in order, with the batch number, agent name and episode/step echoed; the
   /// header stamp is left for the caller.
   ppp_msgs::MoveBatch answer(const ppp_msgs::ScanBatch& batch);
@@ -39,20 +39,20 @@ class BatchResponder {
     int width;
     int height;
     Cell goal;
-    Agent* agent;         // owned by host_
+    agents::Agent* agent;  // owned by host_
     std::uint32_t round;  // the last batch that held the episode's scan
     bool rejected;        // a scan of it was rejected: it ends with this batch
   };
-  void start(const ppp_msgs::EpisodeStart& start);
+  void start(std::uint32_t id, const EpisodeStart& start);
   std::vector<Episode>::iterator firstNotBefore(std::uint32_t id);  // in episodes_, by id
   Episode* find(std::uint32_t id);
   std::uint8_t act(const ppp_msgs::ScanBatch& batch, std::size_t i, const std::int8_t* window);
   void reject(std::uint32_t episode, std::uint32_t step, const std::string& kind, const std::string& what);
   void finishAbsent();
 
-  AgentConfig config_;
+  agents::AgentConfig config_;
   bool reads_window_;
-  AgentHost host_;
+  agents::AgentHost host_;
   // Sorted by id, contiguous: the simulator sends each batch in id order, so the next scan's episode is
   // normally the one after the last found (a cache-friendly walk instead of a hash probe per step).
   std::vector<Episode> episodes_;
@@ -61,7 +61,8 @@ class BatchResponder {
   std::vector<std::int8_t> unknown_window_;  // what an agent that reads no window is given
   std::uint32_t round_ = 0;
   std::map<std::string, long> rejections_;
+  std::vector<MoveReply> replies_;  // this batch's answer, reused
 };
 
-}  // namespace agents
+}  // namespace protocol
 }  // namespace ppp

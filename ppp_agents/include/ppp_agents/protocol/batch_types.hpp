@@ -1,0 +1,84 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ppp_agents/agent.hpp"
+#include "ppp_core/grid.hpp"
+
+namespace ppp {
+namespace protocol {
+
+// The simulator <-> agent batch protocol (ppp_msgs/ScanBatch, ppp_msgs/MoveBatch) as plain types: the simulator's
+// lanes produce ScanRequests and take MoveReplys; batch_codec.hpp turns them into messages and back. ROS-free.
+// Cells are in the core grid convention (x right, y down).
+
+/// Why an episode ended: results.csv's `reason`, ppp_msgs/EpisodeResults and ppp_msgs/EpisodeFailure.
+namespace reason {
+constexpr const char* kGoalReached = "goal_reached";          ///< Pass: the agent stands on the goal.
+constexpr const char* kBudgetExhausted = "budget_exhausted";  ///< Fail: the move budget is spent.
+constexpr const char* kTimeout = "timeout";                   ///< Fail (ROS): the agent did not answer in time.
+constexpr const char* kAgentLost = "agent_lost";              ///< Fail (ROS): the agent process went away.
+constexpr const char* kInvalidAction = "invalid_action";      ///< Fail (ROS): the agent sent something unusable.
+constexpr const char* kNoPath = "no_path";                    ///< Fail (planner): it published an empty path.
+constexpr const char* kInvalidPath = "invalid_path";          ///< Fail (planner): its path was unusable.
+constexpr const char* kPlannerTimeout = "planner_timeout";    ///< Fail (planner): no path in time.
+constexpr const char* kPlannerLost = "planner_lost";          ///< Fail (planner): its process went away.
+/// The reason constant equal to `text` among those an agent may report itself (the four planner ones), or
+/// nullptr.
+const char* agentReportedReason(const std::string& text);
+}  // namespace reason
+
+/// What an agent is told when an episode starts (sent with its first scan).
+struct EpisodeStart {
+  int width = 0;                       ///< Map columns.
+  int height = 0;                      ///< Map rows.
+  Cell start;                          ///< Start cell.
+  Cell goal;                           ///< Goal cell (fixed for the episode).
+  std::uint64_t agent_seed = 0;        ///< Seed of the agent's own choices.
+  std::vector<std::int8_t> prior_map;  ///< The true map (kScanFree / kScanObstacle per cell) for astar; else empty.
+};
+
+/// One scan of a batch, for one episode and step.
+struct ScanRequest {
+  std::uint32_t episode = 0;          ///< Episode id, unique within the lane.
+  int step = 0;                       ///< Steps taken so far.
+  Cell position;                      ///< The agent's cell.
+  Cell goal;                          ///< The goal cell (on the wire only in the start).
+  bool bumped = false;                ///< The last move bumped.
+  int range = 0;                      ///< Window radius.
+  std::vector<std::int8_t> cells;     ///< The window, row-major; empty for agents that never read it (random).
+  std::optional<EpisodeStart> start;  ///< Set on the episode's first scan.
+  int set = 0;                        ///< Index of the PPP's set (the simulator's own; not sent).
+  int problem = 0;                    ///< Index of the PPP in its set (not sent).
+  int run = 0;                        ///< Run number (not sent).
+};
+
+/// One move of a batch, as an agent answers it.
+struct MoveReply {
+  std::uint32_t episode = 0;      ///< The episode answered.
+  std::uint32_t step = 0;         ///< The step answered.
+  int action = 0;                 ///< An agents::Action number (anything else is invalid).
+  const char* failure = nullptr;  ///< The agent gives the episode up for this reason (a reason:: constant).
+};
+
+/// Cells of the window of range `range`: (2 range + 1)^2.
+inline std::size_t windowCells(int range) { return static_cast<std::size_t>(2 * range + 1) * (2 * range + 1); }
+
+/// A grid as an EpisodeStart's prior_map.
+std::vector<std::int8_t> priorMapCells(const Grid& grid);
+
+/// The grid of a start's prior_map, or null when it has none. @throws InvalidArgument naming "prior_map".
+std::unique_ptr<Grid> priorGrid(const EpisodeStart& start);
+
+/// What an agent is given at the start: the start's size, cells and seed, with `prior` (may be null) as the map.
+agents::EpisodeInfo episodeInfo(const EpisodeStart& start, const Grid* prior);
+
+/// Throws InvalidArgument naming `field` unless `cell` lies on a width x height grid.
+void requireOnGrid(Cell cell, int width, int height, const char* field);
+
+}  // namespace protocol
+}  // namespace ppp

@@ -1,0 +1,159 @@
+#include "ppp_agents/protocol/batch_codec.hpp"
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/sensor.hpp"
+
+namespace ppp {
+namespace protocol {
+
+ppp_msgs::GridCell toGridCell(Cell cell) {
+  ppp_msgs::GridCell m;
+  m.x = cell.x;
+  m.y = cell.y;
+  return m;
+}
+
+void encodeScans(const std::vector<ScanRequest>& scans, ppp_msgs::ScanBatch* message) {
+  ppp_msgs::ScanBatch& m = *message;
+  const std::size_t n = scans.size();
+  m.range = n == 0 ? 0 : static_cast<std::uint8_t>(scans[0].range);
+  m.starts.clear();
+  m.episodes.resize(n);
+  m.steps.resize(n);
+  m.positions.resize(n);
+  m.bumped.resize(n);
+  m.cells.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    const ScanRequest& r = scans[i];
+    m.episodes[i] = r.episode;
+    m.steps[i] = static_cast<std::uint32_t>(r.step);
+    m.positions[i] = toGridCell(r.position);
+    m.bumped[i] = r.bumped ? 1 : 0;
+    m.cells.insert(m.cells.end(), r.cells.begin(), r.cells.end());
+    if (!r.start) continue;
+    ppp_msgs::EpisodeStart start;
+    start.episode = r.episode;
+    start.width = static_cast<std::uint32_t>(r.start->width);
+    start.height = static_cast<std::uint32_t>(r.start->height);
+    start.start = toGridCell(r.start->start);
+    start.goal = toGridCell(r.start->goal);
+    start.agent_seed = r.start->agent_seed;
+    start.prior_map = r.start->prior_map;
+    m.starts.push_back(std::move(start));
+  }
+}
+
+std::string checkScanBatch(const ppp_msgs::ScanBatch& batch, bool reads_window, std::string* what) {
+  const std::size_t n = batch.episodes.size();
+  if (batch.steps.size() != n || batch.positions.size() != n || batch.bumped.size() != n) {
+    *what = "episodes, steps, positions and bumped differ in length (" + std::to_string(n) + ", " +
+            std::to_string(batch.steps.size()) + ", " + std::to_string(batch.positions.size()) + ", " +
+            std::to_string(batch.bumped.size()) + ")";
+    return "batch";
+  }
+  if (n > 0 && (batch.range < 1 || batch.range > kMaxSensorRange)) {
+    *what = "range " + std::to_string(batch.range) + " is outside [1, " + std::to_string(kMaxSensorRange) + "]";
+    return "range";
+  }
+  if (reads_window && batch.cells.size() != n * windowCells(batch.range)) {
+    *what = "expected " + std::to_string(n) + " windows of " + std::to_string(windowCells(batch.range)) +
+            " cells, got " + std::to_string(batch.cells.size()) + " cells";
+    return "cells";
+  }
+  return "";
+}
+
+EpisodeStart decodeEpisodeStart(const ppp_msgs::EpisodeStart& message) {
+  const auto side_ok = [](std::uint32_t side) { return side >= kMinGridSide && side <= kMaxGridSide; };
+  if (!side_ok(message.width) || !side_ok(message.height)) {
+    throw InvalidArgument("size", "the map size " + std::to_string(message.width) + "x" +
+                                      std::to_string(message.height) + " is outside [" +
+                                      std::to_string(kMinGridSide) + ", " + std::to_string(kMaxGridSide) + "]");
+  }
+  EpisodeStart start;
+  start.width = static_cast<int>(message.width);
+  start.height = static_cast<int>(message.height);
+  start.start = toCell(message.start);
+  start.goal = toCell(message.goal);
+  start.agent_seed = message.agent_seed;
+  start.prior_map = message.prior_map;
+  requireOnGrid(start.start, start.width, start.height, "start");
+  requireOnGrid(start.goal, start.width, start.height, "goal");
+  priorGrid(start);  // checks the prior map
+  return start;
+}
+
+std::vector<ScanRequest> decodeScans(const ppp_msgs::ScanBatch& batch, bool reads_window) {
+  std::string what;
+  const std::string fault = checkScanBatch(batch, reads_window, &what);
+  if (!fault.empty()) throw InvalidArgument(fault, what);
+  std::vector<ScanRequest> scans(batch.episodes.size());
+  const std::size_t window = windowCells(batch.range);
+  for (std::size_t i = 0; i < scans.size(); ++i) {
+    ScanRequest& s = scans[i];
+    s.episode = batch.episodes[i];
+    s.step = static_cast<int>(batch.steps[i]);
+    s.position = toCell(batch.positions[i]);
+    s.bumped = batch.bumped[i] != 0;
+    s.range = batch.range;
+    if (reads_window) s.cells.assign(batch.cells.begin() + i * window, batch.cells.begin() + (i + 1) * window);
+  }
+  for (const ppp_msgs::EpisodeStart& m : batch.starts) {
+    bool found = false;
+    for (ScanRequest& s : scans) {
+      if (s.episode != m.episode) continue;
+      s.start = decodeEpisodeStart(m);
+      s.goal = s.start->goal;
+      found = true;
+    }
+    if (!found) throw InvalidArgument("starts", "episode " + std::to_string(m.episode) + " starts without a scan");
+  }
+  return scans;
+}
+
+ppp_msgs::MoveBatch encodeMoves(const std::string& agent, std::uint32_t batch, const std::vector<MoveReply>& moves) {
+  ppp_msgs::MoveBatch m;
+  m.agent = agent;
+  m.batch = batch;
+  m.episodes.resize(moves.size());
+  m.steps.resize(moves.size());
+  m.actions.resize(moves.size());
+  for (std::size_t i = 0; i < moves.size(); ++i) {
+    m.episodes[i] = moves[i].episode;
+    m.steps[i] = moves[i].step;
+    m.actions[i] = static_cast<std::uint8_t>(moves[i].action);
+    if (moves[i].failure == nullptr) continue;
+    ppp_msgs::EpisodeFailure failure;
+    failure.episode = moves[i].episode;
+    failure.reason = moves[i].failure;
+    m.failures.push_back(failure);
+  }
+  return m;
+}
+
+DecodedMoves decodeMoves(const ppp_msgs::MoveBatch& message) {
+  DecodedMoves decoded;
+  const std::size_t n = message.episodes.size();
+  if (message.steps.size() != n || message.actions.size() != n) {
+    decoded.missing_reason = reason::kInvalidAction;
+    decoded.fault = "a MoveBatch whose episodes, steps and actions differ in length (" + std::to_string(n) + ", " +
+                    std::to_string(message.steps.size()) + ", " + std::to_string(message.actions.size()) + ")";
+    return decoded;
+  }
+  decoded.moves.resize(n);
+  for (std::size_t i = 0; i < n; ++i) decoded.moves[i] = {message.episodes[i], message.steps[i], message.actions[i]};
+  for (const ppp_msgs::EpisodeFailure& f : message.failures) {
+    const char* why = reason::agentReportedReason(f.reason);
+    if (why == nullptr) {
+      decoded.fault = "an episode given up for an unknown reason '" + f.reason + "': recorded as invalid_action";
+      why = reason::kInvalidAction;
+    }
+    for (MoveReply& m : decoded.moves) {
+      if (m.episode == f.episode) m.failure = why;
+    }
+  }
+  return decoded;
+}
+
+}  // namespace protocol
+}  // namespace ppp

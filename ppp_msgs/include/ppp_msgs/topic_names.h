@@ -1,0 +1,41 @@
+#pragma once
+
+#include <string>
+
+// Every topic and service name of PPP Lab's ROS graph, in one place (header-only, no ROS headers: the graph
+// writer and the nodes share it).
+namespace ppp_msgs {
+namespace topics {
+
+// An agent's namespace /NAME (NAME = ppp::agents::agentGraphName of the agent's name).
+constexpr const char* kScans = "scans";  ///< ppp_msgs/ScanBatch, simulator -> agent node or planner bridge.
+constexpr const char* kMoves = "moves";  ///< ppp_msgs/MoveBatch, agent node or planner bridge -> simulator.
+constexpr const char* kPath = "path";    ///< nav_msgs/Path of a recorded episode (simulator).
+constexpr const char* kScan = "scan";    ///< sensor_msgs/LaserScan of a recorded episode (simulator).
+
+// The planner interface, relative to the planner's namespace /NAME/robot (docs/planner-interface.md).
+constexpr const char* kRobotNamespace = "robot";           ///< The planner's namespace inside the agent's.
+constexpr const char* kPlannerMap = "map";                 ///< nav_msgs/OccupancyGrid, bridge -> planner.
+constexpr const char* kPlannerOdom = "odom";               ///< nav_msgs/Odometry, bridge -> planner.
+constexpr const char* kPlannerScan = "scan";               ///< sensor_msgs/LaserScan, bridge -> planner.
+constexpr const char* kPlannerGoal = "move_base_simple/goal";  ///< geometry_msgs/PoseStamped, bridge -> planner.
+constexpr const char* kPlannerPath = "plan";               ///< nav_msgs/Path, planner -> bridge.
+
+// A generator node (private names once remapped to ~, as the experiment's graph does).
+constexpr const char* kProblemSet = "problem_set";  ///< ppp_msgs/ProblemSet (latched).
+constexpr const char* kMap = "map";                 ///< nav_msgs/OccupancyGrid of one PPP (latched).
+constexpr const char* kGenerate = "generate";       ///< ppp_msgs/Generate service (private).
+
+// The simulator node.
+constexpr const char* kEvaluate = "evaluate";                       ///< ppp_msgs/EvaluateProblems service (private).
+constexpr const char* kEvaluator = "/simulator/evaluate";           ///< ...its full name, as hunting generators call it.
+constexpr const char* kRecordedMap = "/map";                        ///< The recorded episode's map (latched).
+constexpr const char* kMarkers = "/ppp/markers";                    ///< Start and goal markers (latched).
+constexpr const char* kResults = "/ppp/results";                    ///< ppp_msgs/EpisodeResults as runs end.
+constexpr const char* kSetsPrefix = "/ppp/sets/";                   ///< + set name: the played ppp_msgs/ProblemSet.
+
+/// `/<graph_name>/<topic>`: a topic in an agent's (or node's) namespace.
+inline std::string under(const std::string& graph_name, const char* topic) { return "/" + graph_name + "/" + topic; }
+
+}  // namespace topics
+}  // namespace ppp_msgs
