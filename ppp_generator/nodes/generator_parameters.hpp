@@ -5,6 +5,7 @@
 #include <ros/node_handle.h>
 
 #include "ppp_generator/generator_options.hpp"
+#include "ppp_msgs/topic_names.h"
 
 namespace ppp {
 namespace generator {
@@ -19,7 +20,7 @@ struct NodeParameters {
   double resolution = 1.0;      ///< Metres per cell of the published maps.
   bool generate_on_start = true;  ///< Evolve a set at start-up (otherwise only on the service call).
   bool exit_when_done = false;    ///< Exit once the start-up set is published.
-  std::string evaluator = "/simulator/evaluate";  ///< Failure fitness: the simulator's EvaluateProblems service.
+  std::string evaluator = ppp_msgs::topics::kEvaluator;  ///< Failure fitness: the simulator's EvaluateProblems service.
   double evaluator_timeout = 120.0;  ///< Seconds to wait for that service to appear.
 };
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/option_yaml.hpp"
 #include "ppp_core/problem.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_core/text_format.hpp"
@@ -20,36 +21,6 @@ namespace {
 /// Largest generator options file read (the options are a few hundred bytes).
 constexpr std::size_t kMaxOptionsBytes = 1u << 20;
 
-std::optional<Cell> readCell(YamlMapReader& reader, const std::string& key) {
-  std::vector<int> pair;
-  if (!reader.read(key, &pair)) return std::nullopt;
-  if (pair.size() != 2) reader.fail(reader.lookup(key), key, "expected [x, y]");
-  return Cell{pair[0], pair[1]};
-}
-
-void readWeights(YamlMapReader& parent, DifficultyWeights* w) {
-  const YAML::Node node = parent.lookup("weights");
-  if (!node) return;
-  YamlMapReader reader(node, parent.source(), "weights");
-  reader.read("start", &w->start);
-  reader.read("centre", &w->centre);
-  reader.read("top_right", &w->top_right);
-  reader.read("bottom_left", &w->bottom_left);
-  reader.read("goal", &w->goal);
-  reader.read("unused_obstacles", &w->unused_obstacles);
-  reader.read("horizontal_openness", &w->horizontal_openness);
-  reader.read("vertical_openness", &w->vertical_openness);
-  reader.read("one_turn_penalty", &w->one_turn_penalty);
-  reader.rejectUnknownKeys();
-}
-
-/// A flow-style YAML list of plain names.
-std::string yamlList(const std::vector<std::string>& names) {
-  std::string text = "[";
-  for (std::size_t i = 0; i < names.size(); ++i) text += (i > 0 ? ", " : "") + names[i];
-  return text + "]";
-}
-
 /// The failure fitness's and the archive's options.
 void validateHuntOptions(const GeneratorOptions& o) {
   const bool failure = o.fitness == kFailureFitness;
@@ -62,10 +33,6 @@ void validateHuntOptions(const GeneratorOptions& o) {
     for (std::size_t j = 0; j < i; ++j) {
       if (o.agents[i] == o.agents[j]) throw InvalidArgument("agents", "'" + o.agents[i] + "' named twice");
     }
-  }
-  if (o.runs_per_eval < 1 || o.runs_per_eval > kMaxRunsPerEval) {
-    throw InvalidArgument("runs_per_eval", "expected runs in [1, " + std::to_string(kMaxRunsPerEval) + "], got " +
-                                               std::to_string(o.runs_per_eval));
   }
   if (o.archive != kNoArchive && o.archive != kMapElitesArchive) {
     throw InvalidArgument("archive", "unknown archive '" + o.archive + "'; valid: none, map_elites");
@@ -82,10 +49,6 @@ void validateHuntOptions(const GeneratorOptions& o) {
       if (o.features[i] == o.features[j]) throw InvalidArgument("features", "'" + o.features[i] + "' named twice");
     }
   }
-  if (o.bins < 2 || o.bins > kMaxBins) {
-    throw InvalidArgument("bins", "expected bins per feature in [2, " + std::to_string(kMaxBins) + "], got " +
-                                      std::to_string(o.bins));
-  }
   double cells = 1.0;
   for (std::size_t i = 0; i < o.features.size(); ++i) cells *= o.bins;
   if (cells > static_cast<double>(kMaxArchiveCells)) {
@@ -97,6 +60,7 @@ void validateHuntOptions(const GeneratorOptions& o) {
 }  // namespace
 
 void GeneratorOptions::validate() const {
+  checkOptionRanges(generatorOptionSpecs(), *this);
   if (fitness == kFailureFitness) {
     fitnessMaximises(fitness);
   } else {
@@ -106,26 +70,7 @@ void GeneratorOptions::validate() const {
   if (replacement != kCrowdingReplacement && replacement != kTournamentReplacement) {
     throw InvalidArgument("replacement", "unknown rule '" + replacement + "'; valid: crowding, tournament");
   }
-  if (crowding_window < 2 || crowding_window > kMaxCrowdingWindow) {
-    throw InvalidArgument("crowding_window", "expected pool members in [2, " + std::to_string(kMaxCrowdingWindow) +
-                                                 "], got " + std::to_string(crowding_window));
-  }
   weights.validate();
-  if (population < 2) throw InvalidArgument("population", "expected at least 2, got " + std::to_string(population));
-  if (matings < 0) throw InvalidArgument("matings", "expected a count >= 0, got " + std::to_string(matings));
-  if (tournament_size < 2) {
-    throw InvalidArgument("tournament_size", "expected at least 2, got " + std::to_string(tournament_size));
-  }
-  if (!(mutation_rate >= 0.0 && mutation_rate <= 1.0)) {
-    throw InvalidArgument("mutation_rate", "expected a probability in [0, 1], got " + std::to_string(mutation_rate));
-  }
-  validateGridSize(width, height, "size");
-  if (max_obstacles < 0 || max_obstacles > kMaxObstacleBudget) {
-    throw InvalidArgument("max_obstacles", "expected a budget in [0, " + std::to_string(kMaxObstacleBudget) +
-                                               "], got " + std::to_string(max_obstacles));
-  }
-  if (obstacle_shapes.max_bar_length < 0) throw InvalidArgument("max_bar_length", "expected >= 0 (0: automatic)");
-  if (obstacle_shapes.max_block_side < 0) throw InvalidArgument("max_block_side", "expected >= 0 (0: automatic)");
   Problem shape = Problem::empty(width, height, max_obstacles);
   shape.start = startCell();
   shape.goal = goalCell();
@@ -134,30 +79,7 @@ void GeneratorOptions::validate() const {
 }
 
 void applyGeneratorYaml(YamlMapReader& reader, GeneratorOptions* o) {
-  reader.read("fitness", &o->fitness);
-  reader.read("population", &o->population);
-  reader.read("matings", &o->matings);
-  reader.read("tournament_size", &o->tournament_size);
-  reader.read("mutation_rate", &o->mutation_rate);
-  reader.read("width", &o->width);
-  reader.read("height", &o->height);
-  if (auto cell = readCell(reader, "start")) o->start = cell;
-  if (auto cell = readCell(reader, "goal")) o->goal = cell;
-  reader.read("max_obstacles", &o->max_obstacles);
-  reader.read("max_bar_length", &o->obstacle_shapes.max_bar_length);
-  reader.read("max_block_side", &o->obstacle_shapes.max_block_side);
-  unsigned long seed = 0;
-  if (reader.read("seed", &seed)) o->seed = seed;
-  reader.read("characters", &o->characters);
-  reader.read("replacement", &o->replacement);
-  reader.read("crowding_window", &o->crowding_window);
-  reader.read("agents", &o->agents);
-  reader.read("agents_file", &o->agents_file);
-  reader.read("runs_per_eval", &o->runs_per_eval);
-  reader.read("archive", &o->archive);
-  reader.read("features", &o->features);
-  reader.read("bins", &o->bins);
-  readWeights(reader, &o->weights);
+  readOptionsYaml(reader, generatorOptionSpecs(), o);
 }
 
 GeneratorOptions loadGeneratorOptions(const std::string& path) {
@@ -173,41 +95,75 @@ GeneratorOptions parseGeneratorOptions(const std::string& yaml_text, const std::
   return options;
 }
 
-std::string generatorOptionsYaml(const GeneratorOptions& o) {
-  std::ostringstream out;
-  out << "fitness: " << o.fitness << "\n"
-      << "population: " << o.population << "\n"
-      << "matings: " << o.matings << "\n"
-      << "tournament_size: " << o.tournament_size << "\n"
-      << "mutation_rate: " << formatShortest(o.mutation_rate) << "\n"
-      << "width: " << o.width << "\n"
-      << "height: " << o.height << "\n"
-      << "start: [" << o.startCell().x << ", " << o.startCell().y << "]\n"
-      << "goal: [" << o.goalCell().x << ", " << o.goalCell().y << "]\n"
-      << "max_obstacles: " << o.max_obstacles << "\n"
-      << "max_bar_length: " << o.obstacle_shapes.max_bar_length << "\n"
-      << "max_block_side: " << o.obstacle_shapes.max_block_side << "\n"
-      << "seed: " << o.seed << "\n"
-      << "characters: " << o.characters << "\n"
-      << "replacement: " << o.replacement << "\n"
-      << "crowding_window: " << o.crowding_window << "\n"
-      << "agents: " << yamlList(o.agents) << "\n"
-      << "agents_file: '" << o.agents_file << "'\n"
-      << "runs_per_eval: " << o.runs_per_eval << "\n"
-      << "archive: " << o.archive << "\n"
-      << "features: " << yamlList(o.features) << "\n"
-      << "bins: " << o.bins << "\n"
-      << "weights:\n"
-      << "  start: " << formatShortest(o.weights.start) << "\n"
-      << "  centre: " << formatShortest(o.weights.centre) << "\n"
-      << "  top_right: " << formatShortest(o.weights.top_right) << "\n"
-      << "  bottom_left: " << formatShortest(o.weights.bottom_left) << "\n"
-      << "  goal: " << formatShortest(o.weights.goal) << "\n"
-      << "  unused_obstacles: " << formatShortest(o.weights.unused_obstacles) << "\n"
-      << "  horizontal_openness: " << formatShortest(o.weights.horizontal_openness) << "\n"
-      << "  vertical_openness: " << formatShortest(o.weights.vertical_openness) << "\n"
-      << "  one_turn_penalty: " << formatShortest(o.weights.one_turn_penalty) << "\n";
-  return out.str();
+std::string generatorOptionsYaml(const GeneratorOptions& options, bool docs) {
+  return optionsYaml(generatorOptionSpecs(), options, docs);
+}
+
+const std::vector<OptionSpec<GeneratorOptions>>& generatorOptionSpecs() {
+  using O = GeneratorOptions;
+  const double side_min = kMinGridSide, side_max = kMaxGridSide;
+  static const std::vector<OptionSpec<O>> specs = {
+      declareOption("fitness", "fitness function: " + fitnessNames(), +[](O& o) -> std::string& { return o.fitness; }),
+      declareOption("population", "PPPs in the pool", +[](O& o) -> int& { return o.population; },
+                    Bounds{2, kMaxPopulation}),
+      declareOption("matings", "steady-state mating events", +[](O& o) -> long& { return o.matings; },
+                    Bounds{0, static_cast<double>(kMaxMatings)}),
+      declareOption("tournament_size", "individuals per mating event; the fittest two mate",
+                    +[](O& o) -> int& { return o.tournament_size; }, Bounds{2, kMaxPopulation}),
+      declareOption("mutation_rate", "probability that a child gets one mutation (change, add or remove)",
+                    +[](O& o) -> double& { return o.mutation_rate; }, Bounds{0, 1}),
+      declareOption("width", "grid columns", +[](O& o) -> int& { return o.width; }, Bounds{side_min, side_max}),
+      declareOption("height", "grid rows", +[](O& o) -> int& { return o.height; }, Bounds{side_min, side_max}),
+      declareOption("start", "start cell [x, y], y down; default the top-left corner",
+                    +[](O& o) -> std::optional<Cell>& { return o.start; }),
+      declareOption("goal", "goal cell [x, y], y down; default the bottom-right corner",
+                    +[](O& o) -> std::optional<Cell>& { return o.goal; }),
+      declareOption("max_obstacles", "obstacle budget: most descriptors per chromosome",
+                    +[](O& o) -> int& { return o.max_obstacles; }, Bounds{0, kMaxObstacleBudget}),
+      declareOption("max_bar_length", "longest random bar; 0 = half the longer side",
+                    +[](O& o) -> int& { return o.obstacle_shapes.max_bar_length; }, Bounds{0, side_max}),
+      declareOption("max_block_side", "longest random block side; 0 = a quarter of the shorter side",
+                    +[](O& o) -> int& { return o.obstacle_shapes.max_block_side; }, Bounds{0, side_max}),
+      declareOption("seed", "seed of every random choice", +[](O& o) -> std::uint64_t& { return o.seed; }),
+      declareOption("characters", "taxonomy characters: wei (Wei's four) or extended (all 14)",
+                    +[](O& o) -> std::string& { return o.characters; }),
+      declareOption("replacement",
+                    "crowding: a child replaces the most similar of crowding_window PPPs if as fit; tournament: "
+                    "the least fit of its tournament",
+                    +[](O& o) -> std::string& { return o.replacement; }),
+      declareOption("crowding_window", "PPPs a child is compared with under crowding (capped at the population)",
+                    +[](O& o) -> int& { return o.crowding_window; }, Bounds{2, kMaxCrowdingWindow}),
+      declareOption("agents", "failure: the panel's agent names",
+                    +[](O& o) -> std::vector<std::string>& { return o.agents; }),
+      declareOption("agents_file", "failure: the agents file the names are looked up in ('': built-in types)",
+                    +[](O& o) -> std::string& { return o.agents_file; }),
+      declareOption("runs_per_eval", "failure: episodes per agent per evaluated PPP",
+                    +[](O& o) -> int& { return o.runs_per_eval; }, Bounds{1, kMaxRunsPerEval}),
+      declareOption("archive", "none, or map_elites: the set is the elites of an archive over features",
+                    +[](O& o) -> std::string& { return o.archive; }),
+      declareOption("features", "map_elites: taxonomic characters binned (two or more)",
+                    +[](O& o) -> std::vector<std::string>& { return o.features; }),
+      declareOption("bins", "map_elites: bins per feature", +[](O& o) -> int& { return o.bins; }, Bounds{2, kMaxBins}),
+      declareOption("weights.start", "difficulty: weight of the visibility from the start",
+                    +[](O& o) -> double& { return o.weights.start; }),
+      declareOption("weights.centre", "difficulty: weight of the visibility from the centre",
+                    +[](O& o) -> double& { return o.weights.centre; }),
+      declareOption("weights.top_right", "difficulty: weight of the visibility from the top-right corner",
+                    +[](O& o) -> double& { return o.weights.top_right; }),
+      declareOption("weights.bottom_left", "difficulty: weight of the visibility from the bottom-left corner",
+                    +[](O& o) -> double& { return o.weights.bottom_left; }),
+      declareOption("weights.goal", "difficulty: weight of the visibility from the goal",
+                    +[](O& o) -> double& { return o.weights.goal; }),
+      declareOption("weights.unused_obstacles", "difficulty: weight of 1 - obstacle use",
+                    +[](O& o) -> double& { return o.weights.unused_obstacles; }),
+      declareOption("weights.horizontal_openness", "difficulty: weight of the average horizontal openness",
+                    +[](O& o) -> double& { return o.weights.horizontal_openness; }),
+      declareOption("weights.vertical_openness", "difficulty: weight of the average vertical openness",
+                    +[](O& o) -> double& { return o.weights.vertical_openness; }),
+      declareOption("weights.one_turn_penalty", "difficulty: added when the optimal route turns exactly once",
+                    +[](O& o) -> double& { return o.weights.one_turn_penalty; }),
+  };
+  return specs;
 }
 
 }  // namespace generator

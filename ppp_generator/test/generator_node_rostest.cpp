@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "generator_option_cases.hpp"
 #include "generator_parameters.hpp"
 #include "ppp_core/ppp_file.hpp"
 #include "ppp_generator/genetic_algorithm.hpp"
@@ -93,7 +94,7 @@ TEST(GeneratorNodeTest, CommandLineWritesTheSameSetDirectory) {
   const std::string cli_dir = parameters.output_dir + "_cli";
   // The same options as generator_node.test's parameters; everything else is config/generator.yaml's.
   const std::string command = std::string(PPP_CLI) +
-                              " generate --quiet --fitness turns --population 8 --matings 200 --size 12x9"
+                              " generate --quiet --fitness turns --population 8 --matings 200 --width 12 --height 9"
                               " --max-obstacles 6 --seed 42 -o " + cli_dir;
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   const std::string diff = "diff -r " + parameters.output_dir + " " + cli_dir;
@@ -113,11 +114,11 @@ int runWithParameter(const std::string& assignment, int index, std::string* outp
 
 TEST(GeneratorNodeTest, BadParametersStopTheNodeNamingThem) {
   const std::pair<const char*, const char*> cases[] = {
-      {"_population:=1", "~population: expected at least 2"},
+      {"_population:=1", "~population: expected an integer in [2, 100000], got 1"},
       {"_fitness:=hardest", "~fitness: unknown fitness 'hardest'; valid: turns"},
-      {"_matings:=-5", "~matings: expected a count >= 0"},
-      {"_width:=1", "~size: expected width and height in [2, 4096]"},
-      {"_max_obstacles:=-1", "~max_obstacles: expected a budget"},
+      {"_matings:=-5", "~matings: expected an integer in [0, 1000000000], got -5"},
+      {"_width:=1", "~width: expected an integer in [2, 4096], got 1"},
+      {"_max_obstacles:=-1", "~max_obstacles: expected an integer in [0, 1048576], got -1"},
       {"_characters:=all", "~characters: unknown character set 'all'"},
       {"_population:=many", "~population: expected an integer"},
       {"_publish_index:=99", "~publish_index: expected an index in [0, population = 60)"},
@@ -129,6 +130,47 @@ TEST(GeneratorNodeTest, BadParametersStopTheNodeNamingThem) {
     const int status = runWithParameter(c.first, index++, &output);
     EXPECT_NE(status, 0) << c.first;
     EXPECT_NE(output.find(c.second), std::string::npos) << c.first << " printed:\n" << output;
+  }
+}
+
+/// A YAML value as rosparam would load it onto the parameter server.
+XmlRpc::XmlRpcValue parameterOf(const YAML::Node& node) {
+  XmlRpc::XmlRpcValue value;
+  if (node.IsSequence()) {
+    value.setSize(static_cast<int>(node.size()));
+    for (std::size_t i = 0; i < node.size(); ++i) value[static_cast<int>(i)] = parameterOf(node[i]);
+    return value;
+  }
+  if (node.IsMap()) {
+    for (const auto& entry : node) value[entry.first.as<std::string>()] = parameterOf(entry.second);
+    return value;
+  }
+  int integer = 0;
+  double number = 0;
+  if (YAML::convert<int>::decode(node, integer)) return XmlRpc::XmlRpcValue(integer);
+  if (YAML::convert<double>::decode(node, number)) return XmlRpc::XmlRpcValue(number);
+  return XmlRpc::XmlRpcValue(node.Scalar());
+}
+
+TEST(GeneratorNodeTest, ParametersAcceptAndRefuseWhatEverySourceDoes) {
+  // The cases YAML (generator_options_test) and the flags (option_flags_test) are held to as well.
+  int index = 0;
+  for (const test::OptionCase& c : test::generatorOptionCases()) {
+    std::string parameter = c.option;
+    for (char& ch : parameter) ch = ch == '.' ? '/' : ch;
+    const std::string ns = "/option_case_" + std::to_string(index++);
+    ros::param::set(ns + "/" + parameter, parameterOf(YAML::Load(c.value)));
+    std::string error;
+    try {
+      readNodeParameters(ros::NodeHandle(ns));
+    } catch (const Error& e) {
+      error = e.what();
+    }
+    if (c.accepted) {
+      EXPECT_EQ(error, "") << parameter << " = " << c.value;
+    } else {
+      EXPECT_EQ(error.rfind("~" + parameter + ": ", 0), 0u) << parameter << " = " << c.value << " gave: " << error;
+    }
   }
 }
 

@@ -66,7 +66,7 @@ expect_error "bad height" "height" "$ppp" convert "$work/a.ppp" "$work/z.bt" --h
 expect_error "no subcommand" "A subcommand is required" "$ppp"
 
 # --- generate, tree, select
-gen=(generate --population 12 --matings 300 --size 14x10 --max-obstacles 6 --quiet)
+gen=(generate --population 12 --matings 300 --width 14 --height 10 --max-obstacles 6 --quiet)
 expect_ok "generate" "$ppp" "${gen[@]}" --seed 5 -o "$work/set_a"
 expect_ok "generate same seed" "$ppp" "${gen[@]}" --seed 5 -o "$work/set_b"
 diff -r "$work/set_a" "$work/set_b" > /dev/null && pass || fail "same seed gave different set directories"
@@ -80,7 +80,7 @@ done
 grep -q "^meta fitness turns$" "$work/set_a/ppp_000.ppp" && pass || fail "PPP lacks its fitness metadata"
 expect_ok "generate over an old set" "$ppp" "${gen[@]}" --seed 6 -o "$work/set_a"
 diff -r "$work/set_a" "$work/set_c" > /dev/null && pass || fail "regenerating into a set directory did not replace it"
-expect_ok "generate difficulty" "$ppp" "${gen[@]}" --fitness difficulty --weight goal=3 --seed 1 -o "$work/set_d"
+expect_ok "generate difficulty" "$ppp" "${gen[@]}" --fitness difficulty --weights-goal 3 --seed 1 -o "$work/set_d"
 grep -q "^  goal: 3$" "$work/set_d/generator.yaml" && pass || fail "weight override not recorded"
 
 expect_ok "tree wei" "$ppp" tree "$work/set_a" --characters wei
@@ -93,14 +93,15 @@ expect_ok "select hardest" "$ppp" select "$work/set_a" -k 3 --prefer hardest --c
 # Bad options fail validation before any work, so these runs use the shipped defaults otherwise.
 expect_error "unknown fitness" "fitness: unknown fitness 'hardness'; valid: turns, advances" \
   "$ppp" generate --quiet --fitness hardness -o "$work/bad1"
-expect_error "population 1" "population: expected at least 2" "$ppp" generate --quiet --population 1 -o "$work/bad1"
-expect_error "negative matings" "matings: expected a count >= 0" "$ppp" generate --quiet --matings -1 -o "$work/bad1"
-expect_error "tiny size" "--size: expected width and height in [2, 4096], got 1x1" \
-  "$ppp" generate --quiet --size 1x1 -o "$work/bad1"
-expect_error "huge size" "--size: expected width and height in [2, 4096]" "$ppp" generate --quiet --size 9000x9 -o "$work/bad1"
-expect_error "negative budget" "max_obstacles: expected a budget" "$ppp" generate --quiet --max-obstacles -1 -o "$work/bad1"
-expect_error "goal outside" "goal: cell (14, 0) is outside the 14x10 grid" "$ppp" generate --quiet --size 14x10 --goal 14,0 -o "$work/bad1"
-expect_error "start is goal" "goal: must differ from start" "$ppp" generate --quiet --size 14x10 --start 13,9 -o "$work/bad1"
+expect_error "population 1" "--population: expected an integer in [2, 100000], got 1" "$ppp" generate --quiet --population 1 -o "$work/bad1"
+expect_error "negative matings" "--matings: expected an integer in [0, 1000000000], got -1" "$ppp" generate --quiet --matings -1 -o "$work/bad1"
+expect_error "tiny size" "width: expected an integer in [2, 4096], got 1" \
+  "$ppp" generate --quiet --width 1 -o "$work/bad1"
+expect_error "huge size" "height: expected an integer in [2, 4096], got 9000" "$ppp" generate --quiet --height 9000 -o "$work/bad1"
+expect_error "not a number" "--height: expected an integer, got 'tall'" "$ppp" generate --quiet --height tall -o "$work/bad1"
+expect_error "negative budget" "--max-obstacles: expected an integer in [0, 1048576], got -1" "$ppp" generate --quiet --max-obstacles -1 -o "$work/bad1"
+expect_error "goal outside" "goal: cell (14, 0) is outside the 14x10 grid" "$ppp" generate --quiet --width 14 --height 10 --goal 14,0 -o "$work/bad1"
+expect_error "start is goal" "goal: must differ from start" "$ppp" generate --quiet --width 14 --height 10 --start 13,9 -o "$work/bad1"
 expect_error "unknown characters" "characters: unknown character set 'all'" \
   "$ppp" generate --quiet --characters all -o "$work/bad1"
 expect_error "bad config key" "generator.yaml:1: populaton: unknown key" \
@@ -133,11 +134,11 @@ expect_error "empty panel" "agents: empty panel" "$ppp" "${hunt[@]}" -o "$work/b
 expect_error "unknown panel agent" "agents: unknown agent 'nobody'" "$ppp" "${hunt[@]}" --agents nobody -o "$work/bad2"
 expect_error "planner in process" "agents: 'optimistic' is a ROS planner agent" \
   "$ppp" "${hunt[@]}" --agents optimistic --agents-file "$config_dir/agents.yaml" -o "$work/bad2"
-expect_error "runs_per_eval 0" "runs_per_eval: expected runs in [1, 10000], got 0" \
+expect_error "runs_per_eval 0" "--runs-per-eval: expected an integer in [1, 10000], got 0" \
   "$ppp" generate --quiet --fitness failure --agents bumper --runs-per-eval 0 -o "$work/bad2"
 expect_error "unknown feature" "features: unknown character 'width'" \
   "$ppp" "${hunt[@]}" --agents bumper --archive map_elites --features turns,width -o "$work/bad2"
-expect_error "bins 1" "bins: expected bins per feature in [2, 100], got 1" \
+expect_error "bins 1" "--bins: expected an integer in [2, 100], got 1" \
   "$ppp" "${hunt[@]}" --agents bumper --archive map_elites --bins 1 -o "$work/bad2"
 expect_error "panel without failure" "agents: only the failure fitness uses an agent panel" \
   "$ppp" generate --quiet --agents bumper -o "$work/bad2"

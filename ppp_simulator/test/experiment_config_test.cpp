@@ -116,18 +116,18 @@ TEST_F(ExperimentYaml, HuntedSetsNameTheirPanelFromTheExperimentsAgents) {
     EXPECT_EQ(std::string(e.what()).rfind("sets: set 'h': agents: 'mine' is a ROS planner agent", 0), 0u) << e.what();
   }
   EXPECT_EQ(errorOf(hunt("agents: [slow], runs_per_eval: 0")),
-            " sets[0].generator.runs_per_eval: expected runs in [1, 10000], got 0");
+            " sets[0].generator.runs_per_eval: expected an integer in [1, 10000], got 0");
   EXPECT_EQ(errorOf(hunt("agents: [slow], runs_per_eval: 10001")),
-            " sets[0].generator.runs_per_eval: expected runs in [1, 10000], got 10001");
+            " sets[0].generator.runs_per_eval: expected an integer in [1, 10000], got 10001");
   EXPECT_EQ(errorOf(hunt("agents: [slow], archive: map_elites, features: [turns, width]"))
                 .rfind(" sets[0].generator.features: unknown character 'width'; valid: turns, ", 0),
             0u);
   EXPECT_EQ(errorOf(hunt("agents: [slow], archive: map_elites, features: [turns]")),
             " sets[0].generator.features: expected two or more character names, got 1");
   EXPECT_EQ(errorOf(hunt("agents: [slow], archive: map_elites, bins: 1")),
-            " sets[0].generator.bins: expected bins per feature in [2, 100], got 1");
+            " sets[0].generator.bins: expected an integer in [2, 100], got 1");
   EXPECT_EQ(errorOf(hunt("agents: [slow], archive: map_elites, bins: 101")),
-            " sets[0].generator.bins: expected bins per feature in [2, 100], got 101");
+            " sets[0].generator.bins: expected an integer in [2, 100], got 101");
   EXPECT_EQ(errorOf(hunt("agents: [slow], archive: map_elites, features: [turns, advances, obstacles], bins: 50")),
             " sets[0].generator.bins: bins^features = 125000 archive cells; at most 100000");
   EXPECT_EQ(errorOf(hunt("agents: [slow], archive: grid")),
@@ -139,7 +139,7 @@ TEST_F(ExperimentYaml, HuntedSetsNameTheirPanelFromTheExperimentsAgents) {
   EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - name: t\n    generator: {replacement: best}\n"),
             " sets[0].generator.replacement: unknown rule 'best'; valid: crowding, tournament");
   EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - name: t\n    generator: {crowding_window: 1}\n"),
-            " sets[0].generator.crowding_window: expected pool members in [2, 100000], got 1");
+            " sets[0].generator.crowding_window: expected an integer in [2, 100000], got 1");
 }
 
 TEST_F(ExperimentYaml, DirectoryHoldingAnotherExperimentIsRefused) {

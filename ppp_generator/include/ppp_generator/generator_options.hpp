@@ -7,6 +7,7 @@
 
 #include "ppp_core/evaluation.hpp"
 #include "ppp_core/grid.hpp"
+#include "ppp_core/option_spec.hpp"
 #include "ppp_core/random_problem.hpp"
 #include "ppp_core/yaml_reader.hpp"
 
@@ -29,6 +30,10 @@ constexpr int kMaxRunsPerEval = 10000;
 constexpr int kMaxBins = 100;
 /// Most cells of a MAP-Elites archive in all (bins to the power of the features).
 constexpr long kMaxArchiveCells = 100000;
+/// Largest population.
+constexpr int kMaxPopulation = 100000;
+/// Most mating events of one run.
+constexpr long kMaxMatings = 1000000000;
 
 /// Everything that shapes one run of the generator. Defaults match config/generator.yaml.
 struct GeneratorOptions {
@@ -63,6 +68,10 @@ struct GeneratorOptions {
   Cell goalCell() const { return goal ? *goal : Cell{width - 1, height - 1}; }
 };
 
+/// Every option of GeneratorOptions, declared once: the YAML keys, the generator node's `~` parameters and the
+/// `ppp generate` flags are these (config/generator.yaml is generatorOptionsYaml(defaults, true)).
+const std::vector<OptionSpec<GeneratorOptions>>& generatorOptionSpecs();
+
 /// Applies the keys of a generator YAML mapping (config/generator.yaml) over `options`.
 /// @throws ParseError naming the file, line and key for unknown keys and wrong types.
 void applyGeneratorYaml(YamlMapReader& reader, GeneratorOptions* options);
@@ -75,8 +84,9 @@ GeneratorOptions loadGeneratorOptions(const std::string& path);
 /// or parameter named in errors), over the defaults. @throws ParseError.
 GeneratorOptions parseGeneratorOptions(const std::string& yaml_text, const std::string& source);
 
-/// The options as YAML in the config file's format (written with every generated set).
-std::string generatorOptionsYaml(const GeneratorOptions& options);
+/// The options as YAML in the config file's format (written with every generated set); with `docs`, each with its
+/// one-line doc and range, as config/generator.yaml ships.
+std::string generatorOptionsYaml(const GeneratorOptions& options, bool docs = false);
 
 }  // namespace generator
 }  // namespace ppp

@@ -7,6 +7,8 @@
 #include <ros/node_handle.h>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/option_spec.hpp"
+#include "ppp_core/text_format.hpp"
 
 namespace ppp_msgs {
 
@@ -32,6 +34,42 @@ inline bool readStringList(const ros::NodeHandle& nh, const std::string& name, s
     if (!item.empty()) values->push_back(item);
   }
   return true;
+}
+
+/// A parameter value as the YAML node its config file would hold (so parameters and YAML read alike).
+/// @throws ppp::InvalidArgument naming `~name` for a struct or binary value.
+inline YAML::Node parameterYaml(const XmlRpc::XmlRpcValue& value, const std::string& name) {
+  XmlRpc::XmlRpcValue v = value;  // the accessors are not const
+  switch (v.getType()) {
+    case XmlRpc::XmlRpcValue::TypeBoolean: return YAML::Node(static_cast<bool>(v) ? "true" : "false");
+    case XmlRpc::XmlRpcValue::TypeInt: return YAML::Node(std::to_string(static_cast<int>(v)));
+    case XmlRpc::XmlRpcValue::TypeDouble: return YAML::Node(ppp::formatShortest(static_cast<double>(v)));
+    case XmlRpc::XmlRpcValue::TypeString: return YAML::Node(static_cast<std::string>(v));
+    case XmlRpc::XmlRpcValue::TypeArray: {
+      YAML::Node list(YAML::NodeType::Sequence);
+      for (int i = 0; i < v.size(); ++i) list.push_back(parameterYaml(v[i], name));
+      return list;
+    }
+    default: throw ppp::InvalidArgument("~" + name, "expected a value or a list of values, got a mapping or binary");
+  }
+}
+
+/// Reads every declared option that is set as a `~` parameter (dotted names as "~weights/goal") over `options`,
+/// each as its YAML value would be read. Returns how many were set. @throws ppp::InvalidArgument naming `~name`.
+template <typename Options>
+int readOptionParameters(const ros::NodeHandle& nh, const std::vector<ppp::OptionSpec<Options>>& specs,
+                         Options* options) {
+  int found = 0;
+  for (const ppp::OptionSpec<Options>& spec : specs) {
+    std::string name = spec.name;
+    for (char& c : name) c = c == '.' ? '/' : c;
+    XmlRpc::XmlRpcValue value;
+    if (!nh.hasParam(name) || !nh.getParam(name, value)) continue;
+    const std::string problem = spec.set(options, parameterYaml(value, name));
+    if (!problem.empty()) throw ppp::InvalidArgument("~" + name, problem);
+    ++found;
+  }
+  return found;
 }
 
 /// @throws ppp::InvalidArgument naming the parameter `name` unless `value` is a positive number.

@@ -1,0 +1,69 @@
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/option_spec.hpp"
+
+namespace ppp {
+namespace cli {
+
+/// The command-line flag of a declared option: "--" + its name with '_' and '.' as '-' ("--weights-goal").
+template <typename Options>
+std::string flagName(const OptionSpec<Options>& spec) {
+  std::string flag = "--" + spec.name;
+  for (char& c : flag) c = c == '_' || c == '.' ? '-' : c;
+  return flag;
+}
+
+/// Adds one flag per declared option to `command`, documented from its declaration with `defaults`' value; the
+/// texts given land in `given` (by flag name), for applyOptionFlags().
+template <typename Options>
+void addOptionFlags(CLI::App* command, const std::vector<OptionSpec<Options>>& specs, const Options& defaults,
+                    std::map<std::string, std::string>* given) {
+  for (const OptionSpec<Options>& spec : specs) {
+    const std::string range = spec.rangeText();
+    const std::string value = spec.text(defaults);
+    std::string& storage = (*given)[flagName(spec)];
+    command->add_option(flagName(spec), storage,
+                        spec.doc + " (" + spec.type + (range.empty() ? "" : " " + range) +
+                            (value.empty() ? "" : "; default " + value) + ")");
+  }
+}
+
+/// Applies the flags given on the command line over `options`, each read as its YAML value would be
+/// ("a,b" for a list, "X,Y" for a cell). @throws InvalidArgument naming the flag and what was expected.
+template <typename Options>
+void applyOptionFlags(const CLI::App& command, const std::vector<OptionSpec<Options>>& specs,
+                      const std::map<std::string, std::string>& given, Options* options) {
+  for (const OptionSpec<Options>& spec : specs) {
+    const std::string flag = flagName(spec);
+    if (command.count(flag) == 0) continue;
+    YAML::Node node;
+    try {
+      node = YAML::Load(given.at(flag));
+    } catch (const YAML::Exception& e) {
+      throw InvalidArgument(flag, "expected " + spec.type + ", got '" + given.at(flag) + "'");
+    }
+    const std::string problem = spec.set(options, node);
+    if (!problem.empty()) throw InvalidArgument(flag, problem);
+  }
+}
+
+/// `error` (from validating options) naming the flag when that option was given as one, else unchanged.
+template <typename Options>
+InvalidArgument namingTheFlag(const CLI::App& command, const std::vector<OptionSpec<Options>>& specs,
+                              const InvalidArgument& error) {
+  for (const OptionSpec<Options>& spec : specs) {
+    if (spec.name != error.name() || command.count(flagName(spec)) == 0) continue;
+    return InvalidArgument(flagName(spec), std::string(error.what()).substr(error.name().size() + 2));
+  }
+  return error;
+}
+
+}  // namespace cli
+}  // namespace ppp

@@ -1,0 +1,224 @@
+#pragma once
+
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "ppp_core/grid.hpp"
+#include "ppp_core/text_format.hpp"
+
+namespace ppp {
+
+// One declaration per option of an options struct: name, type, default, range and a one-line doc. The YAML
+// reader and writer (option_yaml.hpp), the ROS parameter reader (ppp_msgs/node_parameters.h) and the command-line
+// flags all work from the same list, so they accept and refuse the same values and --help, errors and config
+// docs say the same thing.
+
+/// Inclusive numeric bounds of an option (unbounded sides are infinite).
+struct Bounds {
+  double min = -std::numeric_limits<double>::infinity();  ///< Smallest value allowed.
+  double max = std::numeric_limits<double>::infinity();   ///< Largest value allowed.
+};
+
+/// One option of the struct `Options`.
+template <typename Options>
+struct OptionSpec {
+  std::string name;  ///< YAML key, dotted for nested mappings ("weights.goal"); ROS "weights/goal"; flag --weights-goal.
+  std::string type;  ///< What a value is, as errors say it ("an integer", "a list of strings", ...).
+  std::string doc;   ///< One line for --help, errors and the config file.
+  Bounds bounds;     ///< Numeric range (ignored for other types).
+  /// The value in `options` as YAML flow text ("" for an unset optional).
+  std::function<std::string(const Options& options)> text;
+  /// Sets the value from a YAML node; returns what is wrong with it ("" when nothing is).
+  std::function<std::string(Options* options, const YAML::Node& node)> set;
+  /// What is wrong with the value in `options` against the bounds ("" when nothing is).
+  std::function<std::string(const Options& options)> check;
+  /// The range as docs write it ("" when unbounded).
+  std::string rangeText() const {
+    const auto shown = [](double v) {
+      return v == std::floor(v) && std::fabs(v) < 1e15 ? std::to_string(static_cast<long long>(v)) : formatShortest(v);
+    };
+    const bool low = std::isfinite(bounds.min), high = std::isfinite(bounds.max);
+    if (low && high) return "[" + shown(bounds.min) + ", " + shown(bounds.max) + "]";
+    if (low) return ">= " + shown(bounds.min);
+    if (high) return "<= " + shown(bounds.max);
+    return "";
+  }
+};
+
+namespace option_detail {
+
+inline std::string nodeText(const YAML::Node& node) {
+  if (node.IsScalar()) return node.Scalar();
+  if (node.IsSequence()) return "a list";
+  if (node.IsMap()) return "a mapping";
+  return "nothing";
+}
+
+/// A string as a YAML flow scalar: plain when that reads back as the same string, else single-quoted.
+inline std::string quoted(const std::string& text) {
+  bool plain = !text.empty();
+  for (char c : text) {
+    const bool ok = std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '/' || c == '.' || c == '-';
+    plain = plain && ok;
+  }
+  if (plain && text.find_first_not_of("0123456789.-") != std::string::npos && text != "true" && text != "false" &&
+      text != "null" && text != "yes" && text != "no" && text != "on" && text != "off") {
+    return text;
+  }
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("''") : std::string(1, c);
+  return out + "'";
+}
+
+template <typename T>
+struct Value;
+
+template <>
+struct Value<int> {
+  static constexpr const char* kType = "an integer";
+  static bool parse(const YAML::Node& n, int* v) { return n.IsScalar() && YAML::convert<int>::decode(n, *v); }
+  static std::string text(int v) { return std::to_string(v); }
+  static double number(int v) { return v; }
+};
+template <>
+struct Value<long> {
+  static constexpr const char* kType = "an integer";
+  static bool parse(const YAML::Node& n, long* v) { return n.IsScalar() && YAML::convert<long>::decode(n, *v); }
+  static std::string text(long v) { return std::to_string(v); }
+  static double number(long v) { return static_cast<double>(v); }
+};
+template <>
+struct Value<std::uint64_t> {
+  static constexpr const char* kType = "a non-negative integer";
+  static bool parse(const YAML::Node& n, std::uint64_t* v) {
+    unsigned long long u = 0;
+    if (!n.IsScalar() || n.Scalar().empty() || n.Scalar()[0] == '-' || !YAML::convert<unsigned long long>::decode(n, u)) {
+      return false;
+    }
+    *v = u;
+    return true;
+  }
+  static std::string text(std::uint64_t v) { return std::to_string(v); }
+  static double number(std::uint64_t v) { return static_cast<double>(v); }
+};
+template <>
+struct Value<double> {
+  static constexpr const char* kType = "a number";
+  static bool parse(const YAML::Node& n, double* v) {
+    return n.IsScalar() && YAML::convert<double>::decode(n, *v) && std::isfinite(*v);
+  }
+  static std::string text(double v) { return formatShortest(v); }
+  static double number(double v) { return v; }
+};
+template <>
+struct Value<std::string> {
+  static constexpr const char* kType = "a string";
+  static bool parse(const YAML::Node& n, std::string* v) {
+    if (!n.IsScalar()) return false;
+    *v = n.Scalar();
+    return true;
+  }
+  static std::string text(const std::string& v) { return quoted(v); }
+  static double number(const std::string&) { return 0; }
+};
+template <>
+struct Value<std::vector<std::string>> {
+  static constexpr const char* kType = "a list of strings";
+  /// A list, or one comma-separated scalar ("a,b": what a command line or `_name:=a,b` gives).
+  static bool parse(const YAML::Node& n, std::vector<std::string>* v) {
+    v->clear();
+    if (n.IsScalar()) {
+      std::string item;
+      for (char c : n.Scalar() + ",") {
+        if (c != ',') {
+          item += c;
+        } else if (!item.empty()) {
+          v->push_back(item);
+          item.clear();
+        }
+      }
+      return true;
+    }
+    if (!n.IsSequence()) return false;
+    for (const YAML::Node& item : n) {
+      if (!item.IsScalar()) return false;
+      v->push_back(item.Scalar());
+    }
+    return true;
+  }
+  static std::string text(const std::vector<std::string>& v) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < v.size(); ++i) out += (i > 0 ? ", " : "") + quoted(v[i]);
+    return out + "]";
+  }
+  static double number(const std::vector<std::string>&) { return 0; }
+};
+template <>
+struct Value<std::optional<Cell>> {
+  static constexpr const char* kType = "a cell [x, y]";
+  /// [x, y], or "x,y" as one scalar.
+  static bool parse(const YAML::Node& n, std::optional<Cell>* v) {
+    std::vector<int> xy;
+    if (n.IsSequence()) {
+      for (const YAML::Node& item : n) {
+        int value = 0;
+        if (!Value<int>::parse(item, &value)) return false;
+        xy.push_back(value);
+      }
+    } else if (n.IsScalar()) {
+      const std::size_t comma = n.Scalar().find(',');
+      int x = 0, y = 0;
+      if (comma == std::string::npos || !Value<int>::parse(YAML::Node(n.Scalar().substr(0, comma)), &x) ||
+          !Value<int>::parse(YAML::Node(n.Scalar().substr(comma + 1)), &y)) {
+        return false;
+      }
+      xy = {x, y};
+    }
+    if (xy.size() != 2) return false;
+    *v = Cell{xy[0], xy[1]};
+    return true;
+  }
+  static std::string text(const std::optional<Cell>& v) {
+    return v ? "[" + std::to_string(v->x) + ", " + std::to_string(v->y) + "]" : "";
+  }
+  static double number(const std::optional<Cell>&) { return 0; }
+};
+
+}  // namespace option_detail
+
+/// Declares option `name` of type T, reached through `field` (a captureless lambda returning the member).
+template <typename Options, typename T>
+OptionSpec<Options> declareOption(const std::string& name, const std::string& doc, T& (*field)(Options&),
+                                  Bounds bounds = {}) {
+  using V = option_detail::Value<T>;
+  OptionSpec<Options> spec;
+  spec.name = name;
+  spec.type = V::kType;
+  spec.doc = doc;
+  spec.bounds = bounds;
+  spec.text = [field](const Options& o) { return V::text(field(const_cast<Options&>(o))); };
+  spec.set = [field](Options* o, const YAML::Node& node) -> std::string {
+    T value{};
+    if (!V::parse(node, &value)) return "expected " + std::string(V::kType) + ", got '" + option_detail::nodeText(node) + "'";
+    field(*o) = value;
+    return "";
+  };
+  const std::string range = spec.rangeText();
+  spec.check = [field, bounds, range](const Options& o) -> std::string {
+    const double value = V::number(field(const_cast<Options&>(o)));
+    if (value >= bounds.min && value <= bounds.max) return "";
+    return "expected " + std::string(V::kType) + (range[0] == '[' ? " in " : " ") + range + ", got " +
+           V::text(field(const_cast<Options&>(o)));
+  };
+  return spec;
+}
+
+}  // namespace ppp
