@@ -1,35 +1,35 @@
-// `ppp`: PPP Lab's command line. Each subcommand is a thin call into the ROS-free libraries.
-#include <iostream>
-
-#include <CLI/CLI.hpp>
-
+// `ppp`: PPP Lab's command line, one binary for the workspace: the core's subcommands (src/cli), the generator's
+// (ppp_generator/cli) and the simulator's (here), each a thin call into its ROS-free library.
 #include "commands.hpp"
-#include "ppp_core/error.hpp"
+#include "core_commands.hpp"
+#include "generator_commands.hpp"
+#include "ppp_agents/agent_config.hpp"
+#include "ppp_simulator/failure_fitness.hpp"
+
+namespace {
+
+/// The failure fitness of `ppp generate`: the panel from --agents-file (or built-in types) played in process.
+ppp::generator::Fitness failureFitness(const ppp::generator::GeneratorOptions& options, std::optional<int> budget,
+                                       int threads) {
+  ppp::simulator::EpisodeOptions episode;
+  if (budget) episode.budget = *budget;
+  episode.validate();
+  const std::vector<ppp::agents::AgentConfig> available =
+      options.agents_file.empty() ? std::vector<ppp::agents::AgentConfig>{}
+                                  : ppp::agents::loadAgentConfigs(options.agents_file);
+  return ppp::simulator::fitnessFor(options, available, episode, threads);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"ppp: evolve, evaluate, convert and simulate path-planning problems (PPPs)"};
-  app.require_subcommand(1);
-  ppp::cli::addRandomCommand(app);
-  ppp::cli::addEvaluateCommand(app);
-  ppp::cli::addConvertCommand(app);
-  ppp::cli::addGenerateCommand(app);
-  ppp::cli::addTreeCommand(app);
-  ppp::cli::addSelectCommand(app);
+  ppp::cli::addCoreCommands(app);
+  ppp::cli::addGeneratorCommands(app, failureFitness);
   ppp::cli::addSimulateCommand(app);
   ppp::cli::addReplayCommand(app);
   ppp::cli::addExperimentCommand(app);
   ppp::cli::addCompareCommand(app);
   ppp::cli::addLaunchFileCommand(app);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  } catch (const ppp::Error& e) {
-    std::cerr << "ppp: error: " << e.what() << "\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "ppp: internal error: " << e.what() << "\n";
-    return 3;
-  }
-  return 0;
+  return ppp::cli::runCommandLine(app, argc, argv, "ppp");
 }

@@ -3,7 +3,7 @@
 #include <memory>
 #include <string>
 
-#include "commands.hpp"
+#include "generator_commands.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/ppp_file.hpp"
 #include "ppp_generator/diverse_selection.hpp"

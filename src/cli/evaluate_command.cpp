@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "cli_options.hpp"
-#include "commands.hpp"
+#include "core_commands.hpp"
 #include "ppp_core/csv.hpp"
 #include "ppp_core/evaluation_json.hpp"
 #include "ppp_core/problem_io.hpp"

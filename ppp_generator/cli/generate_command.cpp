@@ -1,16 +1,15 @@
 #include <iostream>
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "generator_commands.hpp"
 #include "option_flags.hpp"
-#include "commands.hpp"
 #include "ppp_core/csv.hpp"
-#include "ppp_agents/agent_config.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_generator/set_evolution.hpp"
-#include "ppp_simulator/failure_fitness.hpp"
 #include "progress.hpp"
 
 namespace ppp {
@@ -40,7 +39,7 @@ generator::GeneratorOptions resolveOptions(const CLI::App& command, const Genera
   return o;
 }
 
-void runGenerate(const CLI::App& command, const GenerateFlags& flags) {
+void runGenerate(const CLI::App& command, const GenerateFlags& flags, const FailureFitnessMaker& make_failure) {
   if (flags.print_options) {
     std::cout << "# Default options of the PPP generator (ppp generate, generator_node, the sets of an experiment), as\n"
                  "# `ppp generate --print-options` prints them: flags (--max-obstacles) and node parameters (~max_obstacles,\n"
@@ -50,14 +49,17 @@ void runGenerate(const CLI::App& command, const GenerateFlags& flags) {
   }
   if (flags.output.empty()) throw InvalidArgument("--output", "required: the set's directory");
   const generator::GeneratorOptions options = resolveOptions(command, flags);
-  simulator::EpisodeOptions episode;
-  if (command.count("--budget") > 0) episode.budget = flags.budget;
-  episode.validate();
-  const std::vector<agents::AgentConfig> available =
-      options.agents_file.empty() ? std::vector<agents::AgentConfig>{} : agents::loadAgentConfigs(options.agents_file);
+  if (options.fitness != generator::kFailureFitness && (command.count("--budget") > 0 || command.count("--threads") > 0)) {
+    throw InvalidArgument("--budget", "--budget and --threads are for the failure fitness, which plays episodes");
+  }
+  const std::optional<int> budget = command.count("--budget") > 0 ? std::optional<int>(flags.budget) : std::nullopt;
+  const generator::Fitness fitness =
+      options.fitness == generator::kFailureFitness
+          ? make_failure(options, budget, flags.threads)
+          : generator::makeFitness(options.fitness, generator::FitnessParameters{options.weights, options.seed});
   Progress progress("matings", flags.quiet);
   const generator::EvolvedSet evolved = generator::evolveSetDirectory(
-      flags.output, options, simulator::fitnessFor(options, available, episode, flags.threads),
+      flags.output, options, fitness,
       [&](long done, long total, double best) {
         progress.update(done, total, "best " + options.fitness + " " + formatNumber(best));
       });
@@ -68,7 +70,7 @@ void runGenerate(const CLI::App& command, const GenerateFlags& flags) {
 
 }  // namespace
 
-void addGenerateCommand(CLI::App& app) {
+void addGenerateCommand(CLI::App& app, FailureFitnessMaker make_failure_fitness) {
   auto flags = std::make_shared<GenerateFlags>();
   CLI::App* command = app.add_subcommand(
       "generate", "Evolve a set of PPPs with the genetic algorithm; write the .ppp files, set.csv and the taxonomy");
@@ -81,7 +83,7 @@ void addGenerateCommand(CLI::App& app) {
   command->add_flag("--print-options", flags->print_options,
                     "Print every generator option with its default, range and doc as YAML (config/generator.yaml)");
   command->add_flag("--quiet", flags->quiet, "No progress output");
-  command->callback([command, flags] { runGenerate(*command, *flags); });
+  command->callback([command, flags, make_failure_fitness] { runGenerate(*command, *flags, make_failure_fitness); });
 }
 
 }  // namespace cli

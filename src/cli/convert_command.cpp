@@ -3,7 +3,7 @@
 #include <string>
 
 #include "cli_options.hpp"
-#include "commands.hpp"
+#include "core_commands.hpp"
 #include "ppp_core/dpa.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/problem_io.hpp"

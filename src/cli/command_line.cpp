@@ -1,0 +1,26 @@
+#include <iostream>
+
+#include "core_commands.hpp"
+#include "ppp_core/error.hpp"
+
+namespace ppp {
+namespace cli {
+
+int runCommandLine(CLI::App& app, int argc, char** argv, const char* program) {
+  app.require_subcommand(1);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const Error& e) {
+    std::cerr << program << ": error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << program << ": internal error: " << e.what() << "\n";
+    return 3;
+  }
+  return 0;
+}
+
+}  // namespace cli
+}  // namespace ppp
