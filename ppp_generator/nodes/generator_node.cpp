@@ -43,13 +43,9 @@ class GeneratorNode {
     const ProblemSet set = seed == 0 && parameters_.resume && hasProblemSet(parameters_.output_dir)
                                ? readExistingSet(options)
                                : evolve(options);
-    ppp_msgs::ProblemSet message;
-    message.header.stamp = ros::Time::now();
-    message.header.frame_id = "map";
-    message.name = parameters_.set_name.empty() ? options.fitness : parameters_.set_name;
-    for (std::size_t i = 0; i < set.problems.size(); ++i) {
-      message.problems.push_back(ppp_msgs::toMessage(set.problems[i], set.ids[i], parameters_.resolution));
-    }
+    const ppp_msgs::ProblemSet message = ppp_msgs::toSetMessage(
+        parameters_.set_name.empty() ? options.fitness : parameters_.set_name, set.problems, set.ids,
+        parameters_.resolution);
     nav_msgs::OccupancyGrid map = message.problems[parameters_.publish_index].map;
     map.header.stamp = message.header.stamp;
     set_publisher_.publish(message);
@@ -99,9 +95,7 @@ class GeneratorNode {
 
   /// The set ~output_dir already holds. @throws IoError when it was evolved with other options.
   ProblemSet readExistingSet(const GeneratorOptions& options) {
-    const std::string stored = readGeneratorOptionsOf(parameters_.output_dir);
-    const std::string source = parameters_.output_dir + "/generator.yaml";
-    if (stored.empty() || generatorOptionsYaml(parseGeneratorOptions(stored, source)) != generatorOptionsYaml(options)) {
+    if (!evolvedWith(parameters_.output_dir, options)) {
       throw IoError(parameters_.output_dir, "holds a set evolved with other options; remove it or use another output_dir");
     }
     ROS_INFO("resuming: publishing the set already in %s", parameters_.output_dir.c_str());

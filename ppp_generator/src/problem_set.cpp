@@ -233,9 +233,10 @@ ProblemSet readProblemSetDirectory(const std::string& dir) {
 
 bool hasProblemSet(const std::string& dir) { return fs::exists(fs::path(dir) / kSetFile); }
 
-std::string readGeneratorOptionsOf(const std::string& dir) {
+bool evolvedWith(const std::string& dir, const GeneratorOptions& options) {
   const fs::path file = fs::path(dir) / kOptionsFile;
-  return fs::exists(file) ? readTextFile(file.string(), 1u << 20) : "";
+  if (!fs::exists(file)) return false;
+  return generatorOptionsYaml(loadGeneratorOptions(file.string())) == generatorOptionsYaml(options);
 }
 
 ProblemSet problemSetFromProblems(std::vector<Problem> problems, const DifficultyWeights& weights,

@@ -171,6 +171,17 @@ ppp_msgs::Problem toMessage(const ppp::Problem& problem, const std::string& id, 
   return message;
 }
 
+ppp_msgs::ProblemSet toSetMessage(const std::string& name, const std::vector<ppp::Problem>& problems,
+                                  const std::vector<std::string>& ids, double resolution) {
+  if (problems.size() != ids.size()) throw ppp::InvalidArgument("ids", "expected one id per problem");
+  ppp_msgs::ProblemSet m;
+  m.header.stamp = ros::Time::now();
+  m.header.frame_id = "map";
+  m.name = name;
+  for (std::size_t i = 0; i < problems.size(); ++i) m.problems.push_back(toMessage(problems[i], ids[i], resolution));
+  return m;
+}
+
 ppp::Problem fromMessage(const ppp_msgs::Problem& message) {
   const ppp::Grid map_grid = fromOccupancyGrid(message.map);
   const ppp::MapFrame frame{map_grid.width(), map_grid.height(), message.map.info.resolution};

@@ -22,29 +22,22 @@ struct LaunchFileFlags {
   std::vector<std::string> planners;
 };
 
-/// "NAME=PACKAGE/EXECUTABLE" as a planner node. @throws InvalidArgument naming --planner.
-simulator::PlannerNode parsePlanner(const std::string& text) {
+/// Applies "NAME=PACKAGE/EXECUTABLE" (or "NAME=": the user starts it) to planner agent NAME of `config`.
+/// @throws InvalidArgument naming --planner, or the planner_node's problem.
+void applyPlanner(const std::string& text, simulator::ExperimentConfig* config) {
   const std::size_t equals = text.find('=');
-  const std::size_t slash = text.find('/', equals == std::string::npos ? 0 : equals);
   if (equals == std::string::npos || equals == 0) {
     throw InvalidArgument("--planner", "expected NAME=PACKAGE/EXECUTABLE or NAME=, got '" + text + "'");
   }
-  simulator::PlannerNode node{text.substr(0, equals), "", ""};
-  if (equals + 1 == text.size()) return node;  // NAME=: the user starts the planner
-  if (slash == std::string::npos || slash == equals + 1 || slash + 1 == text.size()) {
-    throw InvalidArgument("--planner", "expected NAME=PACKAGE/EXECUTABLE or NAME=, got '" + text + "'");
-  }
-  node.package = text.substr(equals + 1, slash - equals - 1);
-  node.type = text.substr(slash + 1);
-  return node;
+  simulator::assignPlannerNode(config, text.substr(0, equals), text.substr(equals + 1));
 }
 
 void runLaunchFile(LaunchFileFlags flags) {
   namespace fs = std::filesystem;
-  const simulator::ExperimentConfig config = simulator::loadExperimentConfig(flags.config);
+  simulator::ExperimentConfig config = simulator::loadExperimentConfig(flags.config);
+  for (const std::string& p : flags.planners) applyPlanner(p, &config);
   flags.graph.config_path = fs::absolute(flags.config).lexically_normal().string();
   flags.graph.output_dir = fs::absolute(flags.output).lexically_normal().string();
-  for (const std::string& p : flags.planners) flags.graph.planners.push_back(parsePlanner(p));
   if (flags.graph.hunt.empty()) simulator::checkExperimentDirectory(config, flags.graph.output_dir);
   if (!flags.graph.hunt.empty()) generator::checkOutputDirectory(flags.graph.output_dir);
   std::cout << simulator::experimentLaunchXml(config, flags.graph);

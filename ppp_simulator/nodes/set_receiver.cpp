@@ -35,34 +35,30 @@ PreparedSet prepareReceived(const SetSpec& spec, const ppp_msgs::ProblemSet& mes
 
 }  // namespace
 
-ppp_msgs::ProblemSet setMessage(const PreparedSet& set, double resolution) {
-  ppp_msgs::ProblemSet m;
-  m.header.stamp = ros::Time::now();
-  m.header.frame_id = "map";
-  m.name = set.name;
-  for (std::size_t i = 0; i < set.set.problems.size(); ++i) {
-    m.problems.push_back(ppp_msgs::toMessage(set.set.problems[i], set.set.ids[i], resolution));
-  }
-  return m;
-}
-
 ReceivedSets receiveSets(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const ExperimentConfig& config,
                          const SimulatorParameters& parameters) {
+  /// A set a generator node is to publish.
+  struct Awaited {
+    std::string name;
+    ros::Subscriber subscriber;
+    ros::WallTime last_seen;  // when the topic last had a publisher
+  };
   std::mutex mutex;
   std::map<std::string, ppp_msgs::ProblemSet::ConstPtr> received;
-  std::vector<ros::Subscriber> subscribers;
-  std::map<std::string, ros::WallTime> last_seen;
+  std::vector<Awaited> awaited;
   bool hunting = false;
   for (const SetSpec& spec : config.sets) {
     if (!spec.generator) continue;
     hunting = hunting || spec.generator->fitness == generator::kFailureFitness;
     const std::string name = spec.name;
-    subscribers.push_back(nh.subscribe<ppp_msgs::ProblemSet>(
-        setTopic(name), 1, [&mutex, &received, name](const ppp_msgs::ProblemSet::ConstPtr& m) {
-          std::lock_guard<std::mutex> lock(mutex);
-          received[name] = m;
-        }));
-    last_seen[name] = ros::WallTime::now();
+    awaited.push_back({name,
+                       nh.subscribe<ppp_msgs::ProblemSet>(
+                           setTopic(name), 1,
+                           [&mutex, &received, name](const ppp_msgs::ProblemSet::ConstPtr& m) {
+                             std::lock_guard<std::mutex> lock(mutex);
+                             received[name] = m;
+                           }),
+                       ros::WallTime::now()});
     ROS_INFO("waiting for set '%s' from %s", name.c_str(), setTopic(name).c_str());
   }
   std::unique_ptr<HuntServer> hunt_server;
@@ -76,17 +72,15 @@ ReceivedSets receiveSets(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const
     if (!ros::ok()) return {};
     {
       std::lock_guard<std::mutex> lock(mutex);
-      if (received.size() == last_seen.size()) break;
+      if (received.size() == awaited.size()) break;
     }
-    for (std::size_t i = 0, s = 0; s < config.sets.size(); ++s) {
-      if (!config.sets[s].generator) continue;
-      const std::string& name = config.sets[s].name;
-      const ros::WallTime now = ros::WallTime::now();
-      if (subscribers[i++].getNumPublishers() > 0) last_seen[name] = now;
-      if ((now - last_seen[name]).toSec() > parameters.set_timeout) {
-        throw IoError(setTopic(name), "no generator node publishes set '" + name + "' (node " +
-                                          generatorNodeName(name) + ", seen last " +
-                                          std::to_string(parameters.set_timeout) + " s ago or never); is it running?");
+    const ros::WallTime now = ros::WallTime::now();
+    for (Awaited& a : awaited) {
+      if (a.subscriber.getNumPublishers() > 0) a.last_seen = now;
+      if ((now - a.last_seen).toSec() > parameters.set_timeout) {
+        throw IoError(setTopic(a.name), "no generator node publishes set '" + a.name + "' (node " +
+                                            generatorNodeName(a.name) + ", seen last " +
+                                            std::to_string(parameters.set_timeout) + " s ago or never); is it running?");
       }
     }
     ros::WallDuration(0.2).sleep();
@@ -102,7 +96,8 @@ ReceivedSets receiveSets(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const
       result.sets.push_back(prepareSet(spec.name, generator::readProblemSetDirectory(spec.directory),
                                        config.episode.sensor_range));
       result.sets.back().directory = spec.directory;
-      result.messages.push_back(setMessage(result.sets.back(), parameters.resolution));
+      result.messages.push_back(ppp_msgs::toSetMessage(spec.name, result.sets.back().set.problems,
+                                                         result.sets.back().set.ids, parameters.resolution));
     }
   }
   return result;

@@ -18,9 +18,6 @@ struct ReceivedSets {
   std::vector<ppp_msgs::ProblemSet> messages;     ///< One per set: what its generator node published.
 };
 
-/// The ProblemSet message of a prepared set (for sets read from disk).
-ppp_msgs::ProblemSet setMessage(const PreparedSet& set, double resolution);
-
 /// Takes every evolved set of `config` from its generator node (setTopic(name)), serving ~evaluate for hunting
 /// generators meanwhile, and reads the sets given as directories from disk. Waits as long as each set's generator
 /// node runs; a topic without a publisher for ~set_timeout seconds is an error naming the node.

@@ -21,6 +21,7 @@
 #include "ppp_core/text_file.hpp"
 #include "ppp_msgs/MoveBatch.h"
 #include "ppp_msgs/ScanBatch.h"
+#include "ppp_msgs/conversions.h"
 #include "ppp_msgs/node_liveness.h"
 #include "ppp_simulator/agent_lane.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
@@ -42,7 +43,9 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
     received.sets = beginExperiment(config, parameters.output_dir, [](const std::string& line) {
       ROS_INFO("%s", line.c_str());
     });
-    for (const PreparedSet& set : received.sets) received.messages.push_back(setMessage(set, parameters.resolution));
+    for (const PreparedSet& set : received.sets) {
+      received.messages.push_back(ppp_msgs::toSetMessage(set.name, set.set.problems, set.set.ids, parameters.resolution));
+    }
   }
   const std::vector<PreparedSet>& sets = received.sets;
   ResultsFile results(resultsPath(parameters.output_dir));

@@ -53,16 +53,6 @@ std::string machineOf(const agents::AgentConfig& agent) {
   return agent.host.empty() ? "" : " machine=" + attribute(machineName(agent.host), "host");
 }
 
-/// The planner node of a planner agent: from the command line, else its planner_node ("" when none).
-std::pair<std::string, std::string> plannerOf(const agents::AgentConfig& agent, const GraphOptions& options) {
-  for (const PlannerNode& p : options.planners) {
-    if (p.agent == agent.name) return {p.package, p.type};
-  }
-  const std::size_t slash = agent.planner_node.find('/');
-  if (slash == std::string::npos) return {"", ""};
-  return {agent.planner_node.substr(0, slash), agent.planner_node.substr(slash + 1)};
-}
-
 /// A generator node for `set` writing `output_dir`; a hunt's is required and exits when its set is written.
 void writeGenerator(std::ostream& out, const SetSpec& set, const std::string& output_dir, bool hunt) {
   out << "  <node pkg=\"ppp_generator\" type=\"generator_node\" name=" << attribute(generatorNodeName(set.name), "sets")
@@ -89,8 +79,10 @@ void writeAgent(std::ostream& out, const agents::AgentConfig& agent) {
       << "  </node>\n";
 }
 
-void writePlanner(std::ostream& out, const agents::AgentConfig& agent, const GraphOptions& options) {
-  const auto [package, type] = plannerOf(agent, options);
+void writePlanner(std::ostream& out, const agents::AgentConfig& agent) {
+  const std::size_t slash = agent.planner_node.find('/');
+  const std::string package = agent.planner_node.substr(0, slash);
+  const std::string type = slash == std::string::npos ? "" : agent.planner_node.substr(slash + 1);
   out << "  <group ns=" << attribute(agents::agentGraphName(agent.name), "name") << ">\n"
       << "    <node pkg=\"ppp_agents\" type=\"planner_bridge_node\" name=\"bridge\"" << machineOf(agent)
       << " output=\"screen\">\n"
@@ -124,26 +116,25 @@ void GraphOptions::validate(const ExperimentConfig& config) const {
   if (output_dir.empty() || output_dir[0] != '/') throw InvalidArgument("output_dir", "expected an absolute path");
   if (batch_size < 1) throw InvalidArgument("batch_size", "expected episodes per message >= 1");
   if (!(step_timeout > 0)) throw InvalidArgument("step_timeout", "expected seconds > 0");
-  std::vector<std::string> planner_agents;
   bool remote = false;
-  for (const agents::AgentConfig& agent : config.agents) {
-    if (agents::isPlanner(agent)) planner_agents.push_back(agent.name);
-    remote = remote || !agent.host.empty();
-  }
-  for (const PlannerNode& p : planners) {
-    bool found = false;
-    for (const std::string& name : planner_agents) found = found || name == p.agent;
-    if (!found) {
-      throw InvalidArgument("planner", "the config has no planner agent named '" + p.agent + "' (its planner agents: " +
-                                           (planner_agents.empty() ? "none" : joinNames(planner_agents)) + ")");
-    }
-    if (p.package.empty() != p.type.empty()) {
-      throw InvalidArgument("planner", "give both the planner's package and its executable, or neither");
-    }
-  }
+  for (const agents::AgentConfig& agent : config.agents) remote = remote || !agent.host.empty();
   if (remote && (env_loader.empty() || env_loader[0] != '/')) {
     throw InvalidArgument("env_loader", "agents on other hosts need the absolute path of the workspace's env.sh");
   }
+}
+
+void assignPlannerNode(ExperimentConfig* config, const std::string& agent, const std::string& planner_node) {
+  std::vector<std::string> planners;
+  for (agents::AgentConfig& a : config->agents) {
+    if (!agents::isPlanner(a)) continue;
+    if (a.name == agent) {
+      a.planner_node = planner_node;
+      return;
+    }
+    planners.push_back(a.name);
+  }
+  throw InvalidArgument("planner", "the config has no planner agent named '" + agent + "' (its planner agents: " +
+                                       (planners.empty() ? "none" : joinNames(planners)) + ")");
 }
 
 std::string generatorNodeName(const std::string& set_name) { return "gen_" + agents::agentGraphName(set_name); }
@@ -194,7 +185,7 @@ std::string experimentLaunchXml(const ExperimentConfig& config, const GraphOptio
   out << "  </node>\n";
   for (const agents::AgentConfig& agent : agents) {
     if (agents::isPlanner(agent)) {
-      writePlanner(out, agent, options);
+      writePlanner(out, agent);
     } else {
       writeAgent(out, agent);
     }

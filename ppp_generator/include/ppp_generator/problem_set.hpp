@@ -66,8 +66,9 @@ ProblemSet readProblemSetDirectory(const std::string& dir);
 /// Whether `dir` holds a set written by writeProblemSetDirectory (its set.csv).
 bool hasProblemSet(const std::string& dir);
 
-/// The generator options YAML stored with the set in `dir` ("" when it has none). @throws IoError.
-std::string readGeneratorOptionsOf(const std::string& dir);
+/// Whether the set in `dir` was evolved with `options` (its stored generator.yaml means the same options).
+/// @throws IoError, ParseError.
+bool evolvedWith(const std::string& dir, const GeneratorOptions& options);
 
 /// A set rebuilt from its PPPs as written or published (each carrying the metadata id, fitness and
 /// fitness_value), re-evaluated with `weights`; errors name `source` (a file or topic). @throws ParseError.

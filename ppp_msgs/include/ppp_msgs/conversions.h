@@ -13,6 +13,7 @@
 #include "ppp_core/problem.hpp"
 #include "ppp_msgs/Obstacle.h"
 #include "ppp_msgs/Problem.h"
+#include "ppp_msgs/ProblemSet.h"
 
 /// Conversions between the ROS-free ppp_core model and the PPP Lab messages.
 /// The y-flip between the grid (y down, row 0 at the top) and the ROS map frame (y up, row 0 at the
@@ -71,6 +72,11 @@ ppp::Obstacle fromMessage(const ppp_msgs::Obstacle& message, const std::string& 
 /// @throws ppp::InvalidArgument naming the field when the problem is invalid (ppp::validateProblem)
 ///         or the resolution is not a positive finite number.
 ppp_msgs::Problem toMessage(const ppp::Problem& problem, const std::string& id, double resolution);
+
+/// A set of problems as one message: `name`, frame "map", stamped now, problem i with id ids[i].
+/// @throws ppp::InvalidArgument as toMessage() does, or when the counts differ.
+ppp_msgs::ProblemSet toSetMessage(const std::string& name, const std::vector<ppp::Problem>& problems,
+                                  const std::vector<std::string>& ids, double resolution);
 
 /// The problem of a message, rebuilt from its genotype: size from map.info, start and goal converted
 /// back from map-frame indices, then the decoded genotype compared cell by cell with the map.

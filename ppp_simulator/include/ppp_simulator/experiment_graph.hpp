@@ -8,13 +8,6 @@
 namespace ppp {
 namespace simulator {
 
-/// A planner node to start for a planner agent, given on the command line instead of in the config.
-struct PlannerNode {
-  std::string agent;    ///< The planner agent's name in the config.
-  std::string package;  ///< Package of the planner executable.
-  std::string type;     ///< The executable.
-};
-
 /// What the ROS graph of an experiment needs beyond its config: where things are and the simulator's pace.
 struct GraphOptions {
   std::string config_path;      ///< The experiment YAML, absolute (the simulator reads it).
@@ -24,12 +17,15 @@ struct GraphOptions {
   bool record = true;           ///< Write OUTPUT_DIR/experiment.bag.
   /// When set, the graph of a hunt instead: only this `failure` set of the config is evolved, into OUTPUT_DIR.
   std::string hunt;
-  std::vector<PlannerNode> planners;  ///< Planner nodes to start, overriding the agents' planner_node.
   /// The env-loader script remote machines run nodes through (the workspace's devel/env.sh at the same path).
   std::string env_loader;
   /// @throws InvalidArgument naming the option.
   void validate(const ExperimentConfig& config) const;
 };
+
+/// Sets planner agent `agent`'s planner_node ("package/executable", or "" for a planner the user starts), as a
+/// command line may override the config's. @throws InvalidArgument naming "planner" for an unknown planner agent.
+void assignPlannerNode(ExperimentConfig* config, const std::string& agent, const std::string& planner_node);
 
 /// The generator node that evolves set `set_name` ("gen_" + its name as a ROS name).
 std::string generatorNodeName(const std::string& set_name);
