@@ -17,23 +17,18 @@ std::string baseName(const std::string& graph_name) {
   return slash == std::string::npos ? graph_name : graph_name.substr(slash + 1);
 }
 
+const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs() {
+  static const std::vector<OptionSpec<AgentConfig>> specs =
+      selectOptions(agentOptionSpecs(), {"type", "name", "memory", "sensor_noise"});
+  return specs;
+}
+
 AgentConfig readAgentNodeParameters(const ros::NodeHandle& nh, const std::string& default_name) {
   AgentConfig config;
-  if (!readParameter(nh, "type", &config.type, "a string, one of: " + typeList())) {
-    throw InvalidArgument("~type", "required; valid: " + typeList());
-  }
   config.name = default_name;
-  readParameter(nh, "name", &config.name, "a string");
-  if (config.name.empty()) throw InvalidArgument("~name", "expected a non-empty agent name");
-  std::string memory = "full";
-  readParameter(nh, "memory", &memory, "a string: KxK with odd K (e.g. 5x5) or 'full'");
-  config.memory_window = parseMemoryWindow(memory, "~memory");
-  readParameter(nh, "sensor_noise", &config.sensor_noise, "a number (a probability in [0, 1])");
-  try {
-    config.validate();
-  } catch (const InvalidArgument& e) {
-    throw InvalidArgument("~" + e.name(), std::string(e.what()).substr(e.name().size() + 2));
-  }
+  ppp_msgs::readOptionParameters(nh, agentNodeOptionSpecs(), &config);
+  if (!nh.hasParam("type")) throw InvalidArgument("~type", "required; valid: " + typeList());
+  ppp_msgs::validateParameters(config);
   if (isPlanner(config)) {
     throw InvalidArgument("~type", "planner agents run through planner_bridge_node, not agent_node; valid here: " +
                                        typeList());

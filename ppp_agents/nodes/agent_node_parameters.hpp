@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <ros/node_handle.h>
 
@@ -11,7 +12,8 @@
 namespace ppp {
 namespace agents {
 
-using ppp_msgs::readParameter;
+/// The agent options an agent node reads as `~` parameters (declared in agentOptionSpecs()).
+const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs();
 
 /// Reads and validates the agent node's private parameters: `~type` (required), `~name` (default
 /// `default_name`), `~memory` ("KxK" or "full", default full) and `~sensor_noise` (default 0).

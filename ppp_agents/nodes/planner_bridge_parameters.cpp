@@ -14,14 +14,12 @@ BridgeParameters readBridgeParameters(const ros::NodeHandle& nh, const std::stri
   BridgeParameters p;
   p.config.type = kPlannerType;
   p.config.name = baseName(ns);
-  readParameter(nh, "name", &p.config.name, "a string");
+  static const std::vector<OptionSpec<AgentConfig>> agent_specs =
+      selectOptions(agentOptionSpecs(), {"name", "memory", "sensor_noise"});
+  ppp_msgs::readOptionParameters(nh, agent_specs, &p.config);
   if (p.config.name.empty()) {
     throw InvalidArgument("~name", "required when the bridge runs outside an agent's namespace (e.g. ns=\"ompl\")");
   }
-  std::string memory = "full";
-  readParameter(nh, "memory", &memory, "a string: KxK with odd K (e.g. 5x5) or 'full'");
-  p.config.memory_window = parseMemoryWindow(memory, "~memory");
-  readParameter(nh, "sensor_noise", &p.config.sensor_noise, "a number (a probability in [0, 1])");
   readParameter(nh, "resolution", &p.resolution, "a number of metres per cell");
   readParameter(nh, "plan_timeout", &p.plan_timeout, "a number of seconds");
   readParameter(nh, "connect_timeout", &p.connect_timeout, "a number of seconds");
@@ -35,11 +33,7 @@ BridgeParameters readBridgeParameters(const ros::NodeHandle& nh, const std::stri
   p.base_frame = bareFrame(p.base_frame);
   if (p.map_frame.empty()) throw InvalidArgument("~map_frame", "expected a non-empty frame name");
   if (p.base_frame.empty()) throw InvalidArgument("~base_frame", "expected a non-empty frame name");
-  try {
-    p.config.validate();
-  } catch (const InvalidArgument& e) {
-    throw InvalidArgument("~" + e.name(), std::string(e.what()).substr(e.name().size() + 2));
-  }
+  ppp_msgs::validateParameters(p.config);
   return p;
 }
 

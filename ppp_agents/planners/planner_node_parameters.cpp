@@ -45,7 +45,7 @@ OmplNodeParameters readOmplNodeParameters(const ros::NodeHandle& private_nh) {
   try {
     parameters.planner.validate();
   } catch (const InvalidArgument& e) {
-    throw InvalidArgument("~" + e.name(), std::string(e.what()).substr(e.name().size() + 2));
+    throw InvalidArgument("~" + e.name(), e.problem());
   }
   return parameters;
 }

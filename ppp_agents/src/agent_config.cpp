@@ -8,6 +8,7 @@
 #include "ppp_agents/agent_registry.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/grid.hpp"
+#include "ppp_core/option_yaml.hpp"
 
 namespace ppp {
 namespace agents {
@@ -16,12 +17,6 @@ namespace {
 
 /// Largest memory window side: centred anywhere on the largest map, it covers the whole map.
 constexpr int kMaxMemoryWindow = 2 * kMaxGridSide - 1;
-
-/// What is wrong with a per-agent run count, or "" when nothing is.
-std::string runsProblem(int runs) {
-  if (runs >= 0) return "";
-  return "expected runs per PPP >= 1, or 0 for the experiment's runs, got " + std::to_string(runs);
-}
 
 /// What is wrong with asking for a prior map, or "" when nothing is.
 std::string priorMapProblem(const AgentConfig& config) {
@@ -58,19 +53,6 @@ std::string hostProblem(const std::string& host) {
   return "expected a host name or IP address (letters, digits, '.', '-', ':'), got '" + host + "'";
 }
 
-void validateMemoryWindow(int window) {
-  if (window != 0 && (window < 1 || window % 2 == 0 || window > kMaxMemoryWindow)) {
-    throw InvalidArgument("memory", "expected an odd window side in [1, " + std::to_string(kMaxMemoryWindow) +
-                                        "] (5 for 5x5) or 0 for full memory, got " + std::to_string(window));
-  }
-}
-
-/// What is wrong with a sensor noise, or "" when nothing is.
-std::string sensorNoiseProblem(double noise) {
-  if (noise >= 0.0 && noise <= 1.0) return "";
-  return "expected a probability in [0, 1], got " + std::to_string(noise);
-}
-
 /// Parses a whole string of decimal digits; false on anything else or overflow.
 bool parseSide(const std::string& text, int* value) {
   if (text.empty() || text[0] == '-' || text[0] == '+') return false;
@@ -104,13 +86,42 @@ std::string memoryWindowProblem(const std::string& text, int* window) {
 
 void AgentConfig::validate() const {
   agentType(type);
-  validateMemoryWindow(memory_window);
-  const std::string noise_problem = sensorNoiseProblem(sensor_noise);
-  if (!noise_problem.empty()) throw InvalidArgument("sensor_noise", noise_problem);
-  if (!runsProblem(runs).empty()) throw InvalidArgument("runs", runsProblem(runs));
+  if (name.empty()) throw InvalidArgument("name", "expected a non-empty agent name");
+  checkOptionRanges(agentOptionSpecs(), *this);
+  if (memory_window != 0 && (memory_window < 1 || memory_window % 2 == 0 || memory_window > kMaxMemoryWindow)) {
+    throw InvalidArgument("memory", "expected an odd window side in [1, " + std::to_string(kMaxMemoryWindow) +
+                                        "] (5 for 5x5) or 0 for full memory, got " + std::to_string(memory_window));
+  }
   if (!priorMapProblem(*this).empty()) throw InvalidArgument("prior_map", priorMapProblem(*this));
   if (!plannerNodeProblem(*this).empty()) throw InvalidArgument("planner_node", plannerNodeProblem(*this));
   if (!hostProblem(host).empty()) throw InvalidArgument("host", hostProblem(host));
+}
+
+const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
+  using A = AgentConfig;
+  static const std::vector<OptionSpec<A>> specs = [] {
+    std::vector<OptionSpec<A>> list = {
+        declareOption("type", "agent type: " + agentTypeList(), +[](A& a) -> std::string& { return a.type; }),
+        declareOption("name", "name in results and reports (default: the type)",
+                      +[](A& a) -> std::string& { return a.name; }),
+        declareTextOption("memory", "a memory window KxK (odd K) or 'full'",
+                          "limited memory: keep only a KxK window around the agent",
+                          +[](A& a) -> int& { return a.memory_window; }, &memoryWindowProblem, &memoryWindowText),
+        declareOption("sensor_noise", "probability that a sensed cell is reported flipped",
+                      +[](A& a) -> double& { return a.sensor_noise; }, Bounds{0, 1}),
+        declareOption("runs", "runs per PPP for this agent (0: the experiment's runs)",
+                      +[](A& a) -> int& { return a.runs; }, Bounds{0, kMaxRuns}),
+        declareOption("prior_map", "planner agents: the planner is given the true map instead of the memory",
+                      +[](A& a) -> bool& { return a.prior_map; }),
+        declareOption("planner_node", "planner agents: package/executable of the planner to start",
+                      +[](A& a) -> std::string& { return a.planner_node; }),
+        declareOption("host", "through ROS: the machine the agent's nodes run on ('': the simulator's)",
+                      +[](A& a) -> std::string& { return a.host; }),
+    };
+    list[0].flag = "agent";
+    return list;
+  }();
+  return specs;
 }
 
 bool isPlanner(const AgentConfig& config) { return config.type == kPlannerType; }
@@ -124,13 +135,6 @@ const std::vector<std::string>& agentTypeNames() {
     return built_in;
   }();
   return names;
-}
-
-int parseMemoryWindow(const std::string& text, const std::string& option) {
-  int window = 0;
-  const std::string problem = memoryWindowProblem(text, &window);
-  if (!problem.empty()) throw InvalidArgument(option, problem);
-  return window;
 }
 
 std::string memoryWindowText(int window) {
@@ -148,40 +152,19 @@ std::vector<AgentConfig> readAgentConfigs(YamlMapReader& reader, const std::stri
     const YAML::Node node = list[i];
     YamlMapReader item(node, reader.source(), reader.fieldName(key) + "[" + std::to_string(i) + "]");
     AgentConfig config;
-    const bool has_type = item.read("type", &config.type);
-    const bool has_name = item.read("name", &config.name);
-    std::string memory;
-    const bool has_memory = item.read("memory", &memory);
-    item.read("sensor_noise", &config.sensor_noise);
-    item.read("runs", &config.runs);
-    item.read("prior_map", &config.prior_map);
-    item.read("planner_node", &config.planner_node);
-    item.read("host", &config.host);
+    readOptionsYaml(item, agentOptionSpecs(), &config);
     item.rejectUnknownKeys();
-
-    if (!has_type) item.fail(node, "type", "missing; valid: " + agentTypeList());
-    if (findAgentType(config.type) == nullptr) {
-      item.fail(item.lookup("type"), "type", "unknown agent type '" + config.type + "'; valid: " + agentTypeList());
+    if (!item.lookup("type")) item.fail(node, "type", "missing; valid: " + agentTypeList());
+    if (!item.lookup("name")) config.name = config.type;
+    try {
+      config.validate();
+    } catch (const InvalidArgument& e) {
+      const YAML::Node at = item.lookup(e.name());
+      item.fail(at ? at : node, e.name(), e.problem());
     }
-    if (!has_name) config.name = config.type;
-    if (config.name.empty()) item.fail(item.lookup("name"), "name", "expected a non-empty name");
-    if (has_memory) {
-      const std::string problem = memoryWindowProblem(memory, &config.memory_window);
-      if (!problem.empty()) item.fail(item.lookup("memory"), "memory", problem);
-    }
-    const std::string noise_problem = sensorNoiseProblem(config.sensor_noise);
-    if (!noise_problem.empty()) item.fail(item.lookup("sensor_noise"), "sensor_noise", noise_problem);
-    if (!runsProblem(config.runs).empty()) item.fail(item.lookup("runs"), "runs", runsProblem(config.runs));
-    if (!priorMapProblem(config).empty()) {
-      item.fail(item.lookup("prior_map"), "prior_map", priorMapProblem(config));
-    }
-    if (!plannerNodeProblem(config).empty()) {
-      item.fail(item.lookup("planner_node"), "planner_node", plannerNodeProblem(config));
-    }
-    if (!hostProblem(config.host).empty()) item.fail(item.lookup("host"), "host", hostProblem(config.host));
     const auto inserted = names.emplace(config.name, i);
     if (!inserted.second) {
-      item.fail(has_name ? item.lookup("name") : node, "name",
+      item.fail(item.lookup("name") ? item.lookup("name") : node, "name",
                 "duplicate agent name '" + config.name + "' (also " + reader.fieldName(key) + "[" +
                     std::to_string(inserted.first->second) + "]); give each configuration its own name");
     }

@@ -170,11 +170,7 @@ TEST(AgentBehaviourTest, EveryAgentRunsOnRandomProblemsWithEveryHandicapAndSenso
   for (const std::string& type : agentTypeNames()) {
     for (const int memory : {0, 1, 3, 5}) {
       for (const double noise : {0.0, 0.2}) {
-        AgentConfig c;
-        c.type = type;
-        c.memory_window = memory;
-        c.sensor_noise = noise;
-        auto agent = makeAgent(c);
+        auto agent = makeAgent(test::config(type, memory, noise));
         Rng rng(deriveSeed(5, {static_cast<std::uint64_t>(memory), noise > 0 ? 1u : 0u}));
         for (int i = 0; i < 6; ++i) {
           const int width = 2 + static_cast<int>(rng.below(20));

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ppp_core/error.hpp"
+#include "agent_option_cases.hpp"
 #include "test_world.hpp"
 
 namespace ppp {
@@ -75,32 +76,47 @@ TEST(AgentConfigTest, ValidateNamesTheBadOption) {
   EXPECT_EQ(invalidArgument([] { config("explorer", 8193).validate(); }),
             "memory: expected an odd window side in [1, 8191] (5 for 5x5) or 0 for full memory, got 8193");
   EXPECT_EQ(invalidArgument([] { config("explorer", 0, 1.5).validate(); }),
-            "sensor_noise: expected a probability in [0, 1], got 1.500000");
+            "sensor_noise: expected a number in [0, 1], got 1.5");
   EXPECT_EQ(invalidArgument([] { config("explorer", 0, -0.1).validate(); }),
-            "sensor_noise: expected a probability in [0, 1], got -0.100000");
+            "sensor_noise: expected a number in [0, 1], got -0.1");
   EXPECT_EQ(invalidArgument([] { config("explorer", 0, std::nan("")).validate(); }),
-            "sensor_noise: expected a probability in [0, 1], got nan");
+            "sensor_noise: expected a number in [0, 1], got nan");
+}
+
+/// The memory window that the declared option `memory` reads from `text` (-1 when refused, with `problem` set).
+int memoryWindow(const std::string& text, std::string* problem = nullptr) {
+  const auto specs = selectOptions(agentOptionSpecs(), {"memory"});
+  AgentConfig config;
+  config.memory_window = -1;
+  const std::string what = specs[0].set(&config, YAML::Node(text));
+  if (problem != nullptr) *problem = what;
+  return what.empty() ? config.memory_window : -1;
 }
 
 TEST(AgentConfigTest, ParsesMemoryWindows) {
-  EXPECT_EQ(parseMemoryWindow("5x5", "memory"), 5);
-  EXPECT_EQ(parseMemoryWindow("1x1", "memory"), 1);
-  EXPECT_EQ(parseMemoryWindow("21x21", "memory"), 21);
-  EXPECT_EQ(parseMemoryWindow("full", "memory"), 0);
+  EXPECT_EQ(memoryWindow("5x5"), 5);
+  EXPECT_EQ(memoryWindow("1x1"), 1);
+  EXPECT_EQ(memoryWindow("21x21"), 21);
+  EXPECT_EQ(memoryWindow("full"), 0);
+  EXPECT_EQ(agentOptionSpecs()[2].text(config("explorer", 5)), "5x5");
+  EXPECT_EQ(agentOptionSpecs()[2].text(config("explorer", 0)), "full");
 }
 
-TEST(AgentConfigTest, RejectsBadMemoryWindowsNamingTheOption) {
+TEST(AgentConfigTest, RejectsBadMemoryWindowsSayingWhy) {
   const std::string odd = "the window side must be odd and in [1, 8191] (the window is centred on the agent), got ";
   const std::string form = "expected KxK with odd K (e.g. 5x5) or 'full', got ";
-  EXPECT_EQ(invalidArgument([] { parseMemoryWindow("4x4", "memory"); }), "memory: " + odd + "'4x4'");
-  EXPECT_EQ(invalidArgument([] { parseMemoryWindow("0x0", "memory"); }), "memory: " + odd + "'0x0'");
-  EXPECT_EQ(invalidArgument([] { parseMemoryWindow("8193x8193", "memory"); }), "memory: " + odd + "'8193x8193'");
-  EXPECT_EQ(invalidArgument([] { parseMemoryWindow("5x3", "memory"); }),
-            "memory: the window must be square (KxK), got '5x3'");
-  EXPECT_EQ(invalidArgument([] { parseMemoryWindow("x", "memory"); }), "memory: " + form + "'x'");
+  const auto problem = [](const std::string& text) {
+    std::string what;
+    EXPECT_EQ(memoryWindow(text, &what), -1) << text;
+    return what;
+  };
+  EXPECT_EQ(problem("4x4"), odd + "'4x4'");
+  EXPECT_EQ(problem("0x0"), odd + "'0x0'");
+  EXPECT_EQ(problem("8193x8193"), odd + "'8193x8193'");
+  EXPECT_EQ(problem("5x3"), "the window must be square (KxK), got '5x3'");
+  EXPECT_EQ(problem("x"), form + "'x'");
   for (const char* bad : {"", "5", "5x", "x5", "5x5x5", " 5x5", "5X5", "-5x-5", "+5x+5", "fullx", "99999999999x1"}) {
-    EXPECT_EQ(invalidArgument([&] { parseMemoryWindow(bad, "agents[2].memory"); }),
-              "agents[2].memory: " + form + "'" + bad + "'");
+    EXPECT_EQ(problem(bad), form + "'" + bad + "'");
   }
 }
 
@@ -141,7 +157,7 @@ TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, memory: 5}\n"),
             "agents.yaml:2: agents[0].memory: expected KxK with odd K (e.g. 5x5) or 'full', got '5'");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, sensor_noise: 2}\n"),
-            "agents.yaml:2: agents[0].sensor_noise: expected a probability in [0, 1], got 2.000000");
+            "agents.yaml:2: agents[0].sensor_noise: expected a number in [0, 1], got 2");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, sensor_noise: lots}\n"),
             "agents.yaml:2: agents[0].sensor_noise: expected a number, got 'lots'");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {type: bumper}\n  - {type: explorer}\n"),
@@ -151,19 +167,44 @@ TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
             "agents.yaml:3: agents[1].name: duplicate agent name 'a' (also agents[0]); give each configuration "
             "its own name");
   EXPECT_EQ(parseError("agents:\n  - {name: '', type: explorer}\n"),
-            "agents.yaml:2: agents[0].name: expected a non-empty name");
+            "agents.yaml:2: agents[0].name: expected a non-empty agent name");
   EXPECT_EQ(parseError("agents:\n  - explorer\n"), "agents.yaml:2: agents[0]: expected a mapping of key: value");
   EXPECT_EQ(parseError("agents: explorer\n"),
             "agents.yaml:1: agents: expected a list of agents, each a mapping with a type");
   EXPECT_EQ(parseError("agents: []\n"), "agents.yaml:1: agents: expected at least one agent");
   EXPECT_EQ(parseError("other: 1\n"), "agents.yaml:0: agents: missing; expected a list of agents");
   EXPECT_EQ(parseError("agents:\n  - {type: planner, runs: -1}\n"),
-            "agents.yaml:2: agents[0].runs: expected runs per PPP >= 1, or 0 for the experiment's runs, got -1");
+            "agents.yaml:2: agents[0].runs: expected an integer in [0, 100000000], got -1");
   EXPECT_EQ(parseError("agents:\n  - {type: planner, runs: many}\n"),
             "agents.yaml:2: agents[0].runs: expected an integer, got 'many'");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, prior_map: true}\n"),
             "agents.yaml:2: agents[0].prior_map: only planner agents take prior_map (astar always has the map; the "
             "other agents never do)");
+}
+
+TEST(AgentConfigTest, YamlAcceptsAndRefusesWhatEverySourceDoes) {
+  // The cases the agent node's parameters (agent_node_rostest) and the simulate flags (agent_flags_test) are
+  // held to as well.
+  for (const OptionCase& c : test::agentOptionCases(agentOptionSpecs())) {
+    YAML::Node agent;
+    agent["type"] = "explorer";
+    agent[c.option] = YAML::Load(c.value);
+    YAML::Node root;
+    root["agents"].push_back(agent);
+    std::string error;
+    try {
+      YamlMapReader reader(root, "agents.yaml");
+      readAgentConfigs(reader, "agents");
+    } catch (const ParseError& e) {
+      error = e.what();
+    }
+    if (c.accepted) {
+      EXPECT_EQ(error, "") << c.option << ": " << c.value;
+    } else {
+      EXPECT_NE(error.find(": agents[0]." + c.option + ": "), std::string::npos) << c.option << ": " << c.value
+                                                                                 << " gave: " << error;
+    }
+  }
 }
 
 TEST(AgentConfigTest, PlannerAgentsAreReadButNeverBuiltInProcess) {

@@ -10,7 +10,10 @@
 #include <optional>
 #include <string>
 
+#include "agent_node_parameters.hpp"
+#include "agent_option_cases.hpp"
 #include "ppp_agents/protocol/batch_responder.hpp"
+#include "ppp_msgs/node_parameters.h"
 #include "ppp_core/sensor.hpp"
 #include "ppp_msgs/MoveBatch.h"
 #include "ppp_msgs/ScanBatch.h"
@@ -172,11 +175,11 @@ TEST(AgentNodeTest, BadParametersStopTheNodeNamingThem) {
   const std::pair<const char*, const char*> cases[] = {
       {"", "~type: required; valid: astar, random,"},
       {"_type:=x", "~type: unknown agent type 'x'; valid: astar, random, wall_follower_left"},
-      {"_type:=7", "~type: expected a string"},
+      {"_type:=7", "~type: unknown agent type '7'"},
       {"_type:=explorer _memory:=4x4", "~memory: the window side must be odd"},
       {"_type:=explorer _memory:=big", "~memory: expected KxK with odd K"},
-      {"_type:=explorer _memory:=5", "~memory: expected a string"},
-      {"_type:=explorer _sensor_noise:=1.5", "~sensor_noise: expected a probability in [0, 1]"},
+      {"_type:=explorer _memory:=5", "~memory: expected KxK with odd K"},
+      {"_type:=explorer _sensor_noise:=1.5", "~sensor_noise: expected a number in [0, 1], got 1.5"},
       {"_type:=explorer _sensor_noise:=high", "~sensor_noise: expected a number"},
       {"_type:=explorer _name:=''", "~name: expected a non-empty agent name"},
   };
@@ -186,6 +189,27 @@ TEST(AgentNodeTest, BadParametersStopTheNodeNamingThem) {
     const int status = runAgentNode(c.first, index++, &output);
     EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << c.first << " exit status " << status;
     EXPECT_NE(output.find(c.second), std::string::npos) << c.first << " printed:\n" << output;
+  }
+}
+
+TEST(AgentNodeTest, ParametersAcceptAndRefuseWhatEverySourceDoes) {
+  // The cases the agents YAML (agent_config_test) and the simulate flags (agent_flags_test) are held to as well.
+  int index = 0;
+  for (const OptionCase& c : test::agentOptionCases(agentNodeOptionSpecs())) {
+    const std::string ns = "/agent_option_case_" + std::to_string(index++);
+    if (c.option != "type") ros::param::set(ns + "/type", std::string("explorer"));
+    ros::param::set(ns + "/" + c.option, ppp_msgs::yamlParameter(YAML::Load(c.value)));
+    std::string error;
+    try {
+      readAgentNodeParameters(ros::NodeHandle(ns), "explorer");
+    } catch (const Error& e) {
+      error = e.what();
+    }
+    if (c.accepted) {
+      EXPECT_EQ(error, "") << c.option << " = " << c.value;
+    } else {
+      EXPECT_EQ(error.rfind("~" + c.option + ": ", 0), 0u) << c.option << " = " << c.value << " gave: " << error;
+    }
   }
 }
 

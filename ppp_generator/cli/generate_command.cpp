@@ -76,7 +76,8 @@ void addGenerateCommand(CLI::App& app, FailureFitnessMaker make_failure_fitness)
       "generate", "Evolve a set of PPPs with the genetic algorithm; write the .ppp files, set.csv and the taxonomy");
   command->add_option("--config", flags->config, "Generator YAML whose values the flags override")
       ->capture_default_str();
-  addOptionFlags(command, generator::generatorOptionSpecs(), generator::GeneratorOptions{}, &flags->options);
+  static const generator::GeneratorOptions defaults;
+  addOptionFlags(command, generator::generatorOptionSpecs(), &defaults, &flags->options);
   command->add_option("--budget", flags->budget, "failure: moves per episode (default 300)");
   command->add_option("--threads", flags->threads, "failure: worker threads (default 0: every core)");
   command->add_option("-o,--output", flags->output, "Output directory (required)");

@@ -28,13 +28,7 @@ NodeParameters readNodeParameters(const ros::NodeHandle& nh) {
   readParameter(nh, "exit_when_done", &p.exit_when_done, "true or false");
   readParameter(nh, "evaluator", &p.evaluator, "a service name");
   readParameter(nh, "evaluator_timeout", &p.evaluator_timeout, "a number of seconds");
-  try {
-    o.validate();
-  } catch (const InvalidArgument& e) {
-    std::string parameter = e.name();  // an option's name; nested ones are parameters "weights/goal"
-    for (char& c : parameter) c = c == '.' ? '/' : c;
-    throw InvalidArgument("~" + parameter, std::string(e.what()).substr(e.name().size() + 2));
-  }
+  ppp_msgs::validateParameters(o);
   if (p.publish_index < 0 || p.publish_index >= o.population) {
     throw InvalidArgument("~publish_index", "expected an index in [0, population = " + std::to_string(o.population) +
                                                 "), got " + std::to_string(p.publish_index));

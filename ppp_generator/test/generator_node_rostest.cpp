@@ -17,6 +17,7 @@
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_msgs/Generate.h"
 #include "ppp_msgs/ProblemSet.h"
+#include "ppp_msgs/node_parameters.h"
 
 namespace ppp {
 namespace generator {
@@ -133,25 +134,6 @@ TEST(GeneratorNodeTest, BadParametersStopTheNodeNamingThem) {
   }
 }
 
-/// A YAML value as rosparam would load it onto the parameter server.
-XmlRpc::XmlRpcValue parameterOf(const YAML::Node& node) {
-  XmlRpc::XmlRpcValue value;
-  if (node.IsSequence()) {
-    value.setSize(static_cast<int>(node.size()));
-    for (std::size_t i = 0; i < node.size(); ++i) value[static_cast<int>(i)] = parameterOf(node[i]);
-    return value;
-  }
-  if (node.IsMap()) {
-    for (const auto& entry : node) value[entry.first.as<std::string>()] = parameterOf(entry.second);
-    return value;
-  }
-  int integer = 0;
-  double number = 0;
-  if (YAML::convert<int>::decode(node, integer)) return XmlRpc::XmlRpcValue(integer);
-  if (YAML::convert<double>::decode(node, number)) return XmlRpc::XmlRpcValue(number);
-  return XmlRpc::XmlRpcValue(node.Scalar());
-}
-
 TEST(GeneratorNodeTest, ParametersAcceptAndRefuseWhatEverySourceDoes) {
   // The cases YAML (generator_options_test) and the flags (option_flags_test) are held to as well.
   int index = 0;
@@ -159,7 +141,7 @@ TEST(GeneratorNodeTest, ParametersAcceptAndRefuseWhatEverySourceDoes) {
     std::string parameter = c.option;
     for (char& ch : parameter) ch = ch == '.' ? '/' : ch;
     const std::string ns = "/option_case_" + std::to_string(index++);
-    ros::param::set(ns + "/" + parameter, parameterOf(YAML::Load(c.value)));
+    ros::param::set(ns + "/" + parameter, ppp_msgs::yamlParameter(YAML::Load(c.value)));
     std::string error;
     try {
       readNodeParameters(ros::NodeHandle(ns));

@@ -14,11 +14,13 @@ namespace {
 using generator::GeneratorOptions;
 using generator::generatorOptionSpecs;
 
+const GeneratorOptions kDefaults;
+
 /// What parsing `--FLAG VALUE` and validating gives: "" when accepted, else the error.
 std::string flagError(const std::string& flag, const std::string& value) {
   CLI::App app;
   std::map<std::string, std::string> given;
-  addOptionFlags(&app, generatorOptionSpecs(), GeneratorOptions{}, &given);
+  addOptionFlags(&app, generatorOptionSpecs(), &kDefaults, &given);
   GeneratorOptions options;
   try {
     app.parse(std::vector<std::string>{value, flag});  // CLI11 takes the arguments in reverse
@@ -35,7 +37,7 @@ std::string flagError(const std::string& flag, const std::string& value) {
 TEST(OptionFlagsTest, EveryOptionHasADocumentedFlag) {
   CLI::App app;
   std::map<std::string, std::string> given;
-  addOptionFlags(&app, generatorOptionSpecs(), GeneratorOptions{}, &given);
+  addOptionFlags(&app, generatorOptionSpecs(), &kDefaults, &given);
   EXPECT_EQ(given.size(), generatorOptionSpecs().size());
   const std::string help = app.help();
   for (const char* expected : {"--max-bar-length", "--max-block-side", "--weights-one-turn-penalty",
@@ -61,7 +63,7 @@ TEST(OptionFlagsTest, ASizeFlagMovesTheDefaultGoal) {
   EXPECT_EQ(flagError("--width", "30"), "");
   CLI::App app;
   std::map<std::string, std::string> given;
-  addOptionFlags(&app, generatorOptionSpecs(), GeneratorOptions{}, &given);
+  addOptionFlags(&app, generatorOptionSpecs(), &kDefaults, &given);
   app.parse(std::vector<std::string>{"30", "--width"});
   GeneratorOptions options;
   applyOptionFlags(app, generatorOptionSpecs(), given, &options);

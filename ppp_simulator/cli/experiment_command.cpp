@@ -1,9 +1,11 @@
 #include <csignal>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <string>
 
 #include "commands.hpp"
+#include "option_flags.hpp"
 #include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/text_file.hpp"
@@ -19,17 +21,28 @@ std::atomic<bool> stop_requested{false};
 
 extern "C" void requestStop(int) { stop_requested.store(true); }
 
+/// The experiment options a flag may override over the config file's.
+const std::vector<OptionSpec<simulator::ExperimentConfig>>& overridingSpecs() {
+  static const auto specs = selectOptions(simulator::experimentOptionSpecs(), {"threads"});
+  return specs;
+}
+
 struct ExperimentFlags {
+  CLI::App* command = nullptr;
   std::string config;
   std::string output;
-  int threads = -1;
+  std::map<std::string, std::string> overrides;
   bool quiet = false;
 };
 
 int runExperimentCommand(const ExperimentFlags& f) {
   simulator::ExperimentConfig config = simulator::loadExperimentConfig(f.config);
-  if (f.threads >= 0) config.threads = f.threads;
-  config.validate();
+  applyOptionFlags(*f.command, overridingSpecs(), f.overrides, &config);
+  try {
+    config.validate();
+  } catch (const InvalidArgument& e) {
+    throw namingTheFlag(*f.command, overridingSpecs(), e);
+  }
   simulator::checkExperimentDirectory(config, f.output);
   const std::string config_text = readTextFile(f.config, 1u << 20);
   std::signal(SIGINT, requestStop);
@@ -60,7 +73,9 @@ void addExperimentCommand(CLI::App& app) {
       "experiment", "Evolve the PPP sets, run every agent on every PPP many times, write results and the report");
   command->add_option("config", flags->config, "Experiment YAML (e.g. config/experiment.yaml)")->required();
   command->add_option("-o,--output", flags->output, "Output directory (rerun on it to resume)")->required();
-  command->add_option("--threads", flags->threads, "Worker threads (default: the config's; 0 = every core)");
+  flags->command = command;
+  addOptionFlags(command, overridingSpecs(), static_cast<const simulator::ExperimentConfig*>(nullptr),
+                 &flags->overrides);
   command->add_flag("--quiet", flags->quiet, "No progress output");
   command->callback([flags] {
     const int status = runExperimentCommand(*flags);

@@ -1,10 +1,12 @@
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
+#include "option_flags.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_simulator/experiment_graph.hpp"
@@ -16,9 +18,11 @@ namespace cli {
 namespace {
 
 struct LaunchFileFlags {
+  CLI::App* command = nullptr;
   std::string config;
   std::string output;
   simulator::GraphOptions graph;
+  std::map<std::string, std::string> simulator_flags;
   std::vector<std::string> planners;
 };
 
@@ -36,6 +40,12 @@ void runLaunchFile(LaunchFileFlags flags) {
   namespace fs = std::filesystem;
   simulator::ExperimentConfig config = simulator::loadExperimentConfig(flags.config);
   for (const std::string& p : flags.planners) applyPlanner(p, &config);
+  applyOptionFlags(*flags.command, simulator::simulatorOptionSpecs(), flags.simulator_flags, &flags.graph.simulator);
+  try {
+    flags.graph.simulator.validate();
+  } catch (const InvalidArgument& e) {
+    throw namingTheFlag(*flags.command, simulator::simulatorOptionSpecs(), e);
+  }
   flags.graph.config_path = fs::absolute(flags.config).lexically_normal().string();
   flags.graph.output_dir = fs::absolute(flags.output).lexically_normal().string();
   if (flags.graph.hunt.empty()) simulator::checkExperimentDirectory(config, flags.graph.output_dir);
@@ -51,12 +61,9 @@ void addLaunchFileCommand(CLI::App& app) {
       "launch-file", "Write the roslaunch XML that runs an experiment through ROS (what launch/experiment.launch runs)");
   command->add_option("config", flags->config, "Experiment YAML (e.g. config/experiment.yaml)")->required();
   command->add_option("-o,--output", flags->output, "The experiment's output directory")->required();
-  command->add_option("--batch-size", flags->graph.batch_size, "Episodes per agent per message")
-      ->capture_default_str();
-  command->add_option("--step-timeout", flags->graph.step_timeout, "Seconds an agent node has to answer a batch")
-      ->capture_default_str();
-  command->add_option("--record", flags->graph.record, "Write OUTPUT/experiment.bag (true or false)")
-      ->capture_default_str();
+  flags->command = command;
+  static const simulator::SimulatorOptions defaults;
+  addOptionFlags(command, simulator::simulatorOptionSpecs(), &defaults, &flags->simulator_flags);
   command->add_option("--planner", flags->planners,
                       "NAME=PACKAGE/EXECUTABLE: start this planner for planner agent NAME (NAME=: start none, the "
                       "user runs it in /NAME/robot); overrides the agent's planner_node");

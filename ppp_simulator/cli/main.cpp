@@ -31,5 +31,6 @@ int main(int argc, char** argv) {
   ppp::cli::addExperimentCommand(app);
   ppp::cli::addCompareCommand(app);
   ppp::cli::addLaunchFileCommand(app);
+  ppp::cli::addOptionsCommand(app);
   return ppp::cli::runCommandLine(app, argc, argv, "ppp");
 }

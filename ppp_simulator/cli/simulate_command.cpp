@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "agent_flags.hpp"
 #include "cli_options.hpp"
 #include "ppp_core/text_format.hpp"
 #include "commands.hpp"
@@ -21,44 +22,21 @@ namespace cli {
 namespace {
 
 /// Options shared by `simulate` and `replay`: which agent, with which handicaps, on which PPP.
-struct AgentFlags {
-  std::string agent;
-  std::string memory = "full";
-  double sensor_noise = 0.0;
+struct PlayFlags {
+  AgentFlags agent;
   std::string problem;
-  int budget = 300;
-  int sensor_range = 2;
 };
 
-struct SimulateFlags : AgentFlags {
+struct SimulateFlags : PlayFlags {
   int runs = 1000;
   std::uint64_t seed = 1;
   bool json = false;
 };
 
-struct ReplayFlags : AgentFlags {
+struct ReplayFlags : PlayFlags {
   std::uint64_t seed = 1;
   std::string output;
 };
-
-void addAgentOptions(CLI::App* command, AgentFlags* f) {
-  command->add_option("--agent", f->agent, "Agent type: " + joinNames(agents::agentTypeNames()))->required();
-  command->add_option("--memory", f->memory, "Memory window KxK (odd K) or full")->capture_default_str();
-  command->add_option("--sensor-noise", f->sensor_noise, "Probability a sensed cell is reported flipped")
-      ->capture_default_str();
-  command->add_option("--budget", f->budget, "Move budget per episode")->capture_default_str();
-  command->add_option("--sensor-range", f->sensor_range, "Scan radius (2: a 5x5 window)")->capture_default_str();
-}
-
-agents::AgentConfig agentConfig(const AgentFlags& f) {
-  agents::AgentConfig config;
-  config.type = f.agent;
-  config.name = f.agent;
-  config.memory_window = agents::parseMemoryWindow(f.memory, "--memory");
-  config.sensor_noise = f.sensor_noise;
-  config.validate();
-  return config;
-}
 
 Problem loadProblem(const std::string& source) {
   const std::string prefix = "empty:";
@@ -69,18 +47,10 @@ Problem loadProblem(const std::string& source) {
   return readProblemFile(source);
 }
 
-simulator::EpisodeOptions episodeOptions(const AgentFlags& f) {
-  simulator::EpisodeOptions options;
-  options.budget = f.budget;
-  options.sensor_range = f.sensor_range;
-  options.validate();
-  return options;
-}
-
 void runSimulate(const SimulateFlags& f) {
   if (f.runs <= 0) throw InvalidArgument("--runs", "expected a number of runs >= 1, got " + std::to_string(f.runs));
-  const agents::AgentConfig config = agentConfig(f);
-  simulator::EpisodeRunner runner(config, episodeOptions(f));
+  const agents::AgentConfig config = f.agent.agent();
+  simulator::EpisodeRunner runner(config, f.agent.episode());
   const Problem problem = loadProblem(f.problem);
   const Grid grid = decodeGrid(problem);
   auto agent = agents::makeAgent(config);
@@ -95,22 +65,22 @@ void runSimulate(const SimulateFlags& f) {
   const double mean_steps = static_cast<double>(steps) / f.runs;
   if (f.json) {
     nlohmann::json j = {{"runs", f.runs}, {"passes", passes}, {"pass_rate", rate}, {"mean_steps", mean_steps},
-                        {"agent", f.agent}, {"seed", f.seed}};
+                        {"agent", config.name}, {"seed", f.seed}};
     std::cout << j.dump() << "\n";
   } else {
-    std::cout << f.agent << " on " << f.problem << ": " << passes << " of " << f.runs << " runs passed ("
+    std::cout << config.name << " on " << f.problem << ": " << passes << " of " << f.runs << " runs passed ("
               << formatNumber(100.0 * rate) << " %), mean " << formatNumber(mean_steps) << " steps\n";
   }
 }
 
 void runReplay(const ReplayFlags& f) {
-  const agents::AgentConfig config = agentConfig(f);
-  simulator::EpisodeRunner runner(config, episodeOptions(f));
+  const agents::AgentConfig config = f.agent.agent();
+  simulator::EpisodeRunner runner(config, f.agent.episode());
   const Problem problem = loadProblem(f.problem);
   auto agent = agents::makeAgent(config);
   const auto outcome = runner.run(problem, decodeGrid(problem), *agent, f.seed, true);
   writeProblemPng(problem, outcome.path, f.output);
-  std::cout << f.agent << " with seed " << f.seed << ": " << (outcome.passed ? "passed" : "failed") << " ("
+  std::cout << config.name << " with seed " << f.seed << ": " << (outcome.passed ? "passed" : "failed") << " ("
             << outcome.reason << ") after " << outcome.steps << " steps, " << outcome.bumps << " bumps, "
             << outcome.path_length << " cells moved; path drawn in " << f.output << "\n";
 }
@@ -120,7 +90,7 @@ void runReplay(const ReplayFlags& f) {
 void addSimulateCommand(CLI::App& app) {
   auto flags = std::make_shared<SimulateFlags>();
   CLI::App* command = app.add_subcommand("simulate", "Run one agent many times on one PPP and report its pass rate");
-  addAgentOptions(command, flags.get());
+  flags->agent.add(command);
   command->add_option("--problem", flags->problem, "A .ppp (or map .yaml) file, or empty:WxH for an empty grid")
       ->required();
   command->add_option("--runs", flags->runs, "Number of runs")->capture_default_str();
@@ -134,7 +104,7 @@ void addReplayCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "replay", "Run one episode with a given run seed (as in results.csv) and draw the agent's path");
   command->add_option("problem", flags->problem, "A .ppp (or map .yaml) file, or empty:WxH")->required();
-  addAgentOptions(command, flags.get());
+  flags->agent.add(command);
   command->add_option("--seed", flags->seed, "The run's seed (results.csv column seed)")->required();
   command->add_option("-o,--output", flags->output, "PNG picture of the map with the path")->required();
   command->callback([flags] { runReplay(*flags); });

@@ -3,6 +3,8 @@
 #include <string>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/option_yaml.hpp"
+#include "ppp_core/sensor.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_simulator/episode_result.hpp"
 
@@ -15,12 +17,17 @@ constexpr int kMaxBudget = 1000000;
 
 }  // namespace
 
-void EpisodeOptions::validate() const {
-  if (budget < 1 || budget > kMaxBudget) {
-    throw InvalidArgument("budget", "expected a move budget in [1, " + std::to_string(kMaxBudget) + "], got " +
-                                        std::to_string(budget));
-  }
-  SensorOptions{sensor_range, 0.0}.validate();
+void EpisodeOptions::validate() const { checkOptionRanges(episodeOptionSpecs(), *this); }
+
+const std::vector<OptionSpec<EpisodeOptions>>& episodeOptionSpecs() {
+  using E = EpisodeOptions;
+  static const std::vector<OptionSpec<E>> specs = {
+      declareOption("budget", "moves per episode before it fails", +[](E& e) -> int& { return e.budget; },
+                    Bounds{1, kMaxBudget}),
+      declareOption("sensor_range", "scan radius in cells (2: a 5x5 window)",
+                    +[](E& e) -> int& { return e.sensor_range; }, Bounds{1, kMaxSensorRange}),
+  };
+  return specs;
 }
 
 std::uint64_t agentSeed(std::uint64_t run_seed) { return deriveSeed(run_seed, {1}); }

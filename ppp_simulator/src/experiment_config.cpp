@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/option_yaml.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_core/yaml_reader.hpp"
 #include "ppp_simulator/failure_fitness.hpp"
@@ -15,8 +16,6 @@ namespace simulator {
 namespace fs = std::filesystem;
 
 namespace {
-
-constexpr int kMaxRuns = 100000000;
 
 std::string resolve(const fs::path& base, const std::string& path) {
   const fs::path p(path);
@@ -59,15 +58,7 @@ std::vector<SetSpec> readSets(YamlMapReader& reader, const fs::path& base) {
 }  // namespace
 
 void ExperimentConfig::validate() const {
-  if (runs < 1 || runs > kMaxRuns) {
-    throw InvalidArgument("runs", "expected runs per agent per PPP in [1, " + std::to_string(kMaxRuns) + "], got " +
-                                      std::to_string(runs));
-  }
-  episode.validate();
-  if (threads < 0 || threads > kMaxThreads) {
-    throw InvalidArgument("threads", "expected 0 (every core) or a count up to " + std::to_string(kMaxThreads));
-  }
-  if (hardest < 0) throw InvalidArgument("hardest", "expected a count >= 0");
+  checkOptionRanges(experimentOptionSpecs(), *this);
   if (sets.empty()) throw InvalidArgument("sets", "an experiment needs at least one PPP set");
   if (agents.empty()) throw InvalidArgument("agents", "an experiment needs at least one agent");
   std::set<std::string> names;
@@ -88,7 +79,7 @@ void ExperimentConfig::validate() const {
       }
     } catch (const InvalidArgument& e) {
       const std::string field = "sets[" + std::to_string(i) + "].generator." + e.name();
-      throw InvalidArgument(field, std::string(e.what()).substr(e.name().size() + 2));
+      throw InvalidArgument(field, e.problem());
     }
   }
   names.clear();
@@ -103,13 +94,7 @@ ExperimentConfig loadExperimentConfig(const std::string& path) {
   const fs::path base = fs::absolute(fs::path(path)).parent_path();
   YamlMapReader reader(root, path);
   ExperimentConfig config;
-  unsigned long seed = config.seed;
-  if (reader.read("seed", &seed)) config.seed = seed;
-  reader.read("runs", &config.runs);
-  reader.read("budget", &config.episode.budget);
-  reader.read("sensor_range", &config.episode.sensor_range);
-  reader.read("threads", &config.threads);
-  reader.read("hardest", &config.hardest);
+  readOptionsYaml(reader, experimentOptionSpecs(), &config);
   config.sets = readSets(reader, base);
   const YAML::Node agents = reader.lookup("agents");
   if (agents && agents.IsScalar()) {
@@ -121,17 +106,39 @@ ExperimentConfig loadExperimentConfig(const std::string& path) {
   try {
     config.validate();
   } catch (const InvalidArgument& e) {
-    throw InvalidArgument(path + ": " + e.name(), std::string(e.what()).substr(e.name().size() + 2));
+    throw InvalidArgument(path + ": " + e.name(), e.problem());
   }
   return config;
+}
+
+const std::vector<OptionSpec<ExperimentConfig>>& experimentOptionSpecs() {
+  using X = ExperimentConfig;
+  static const std::vector<OptionSpec<X>> specs = [] {
+    std::vector<OptionSpec<X>> list = {
+        declareOption("seed", "every run's seed derives from this one", +[](X& x) -> std::uint64_t& { return x.seed; }),
+        declareOption("runs", "runs per agent per PPP (an agent's own runs key overrides it)",
+                      +[](X& x) -> int& { return x.runs; }, Bounds{1, agents::kMaxRuns}),
+    };
+    for (const OptionSpec<X>& spec : nestedOptions(episodeOptionSpecs(), +[](X& x) -> EpisodeOptions& {
+           return x.episode;
+         })) {
+      list.push_back(spec);
+    }
+    list.push_back(declareOption("threads", "worker threads (0: every core)", +[](X& x) -> int& { return x.threads; },
+                                 Bounds{0, kMaxThreads}));
+    list.push_back(declareOption("hardest", "pictures of the hardest PPPs in the report",
+                                 +[](X& x) -> int& { return x.hardest; }, Bounds{0, kMaxHardest}));
+    return list;
+  }();
+  return specs;
 }
 
 std::string experimentFingerprint(const ExperimentConfig& c) {
   std::ostringstream out;
   out << "# PPP Lab experiment: everything that decides its results. A rerun on this directory resumes only\n"
       << "# if this text is unchanged.\n"
-      << "seed: " << c.seed << "\nruns: " << c.runs << "\nbudget: " << c.episode.budget
-      << "\nsensor_range: " << c.episode.sensor_range << "\nsets:\n";
+      << optionsYaml(selectOptions(experimentOptionSpecs(), {"seed", "runs", "budget", "sensor_range"}), c, false)
+      << "sets:\n";
   for (const SetSpec& s : c.sets) {
     out << "  - name: " << s.name << "\n";
     if (s.generator) {

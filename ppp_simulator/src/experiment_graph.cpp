@@ -40,6 +40,15 @@ std::string param(const std::string& name, const std::string& type, const std::s
   return "<param name=\"" + name + "\" type=\"" + type + "\" value=" + attribute(value, "~" + name) + "/>";
 }
 
+/// The roslaunch param type of a declared option ("int", "double", "bool"; else "str").
+template <typename Options>
+std::string parameterType(const OptionSpec<Options>& spec) {
+  if (spec.type == "an integer") return "int";
+  if (spec.type == "a number") return "double";
+  if (spec.type == "true or false") return "bool";
+  return "str";
+}
+
 /// `<remap from="TOPIC" to="~TOPIC"/>`: the node's topic under its own name.
 std::string privateTopic(const char* topic) {
   return std::string("<remap from=\"") + topic + "\" to=\"~" + topic + "\"/>";
@@ -114,8 +123,7 @@ const SetSpec& huntedSet(const ExperimentConfig& config, const std::string& name
 void GraphOptions::validate(const ExperimentConfig& config) const {
   if (config_path.empty() || config_path[0] != '/') throw InvalidArgument("config", "expected an absolute path");
   if (output_dir.empty() || output_dir[0] != '/') throw InvalidArgument("output_dir", "expected an absolute path");
-  if (batch_size < 1) throw InvalidArgument("batch_size", "expected episodes per message >= 1");
-  if (!(step_timeout > 0)) throw InvalidArgument("step_timeout", "expected seconds > 0");
+  simulator.validate();
   bool remote = false;
   for (const agents::AgentConfig& agent : config.agents) remote = remote || !agent.host.empty();
   if (remote && (env_loader.empty() || env_loader[0] != '/')) {
@@ -172,14 +180,14 @@ std::string experimentLaunchXml(const ExperimentConfig& config, const GraphOptio
   }
   out << "  <node pkg=\"ppp_simulator\" type=\"simulator_node\" name=\"simulator\" output=\"screen\""
       << (hunted ? "" : " required=\"true\"") << ">\n"
-      << "    " << param("config", "str", options.config_path) << "\n"
-      << "    " << param("step_timeout", "double", formatShortest(options.step_timeout)) << "\n"
-      << "    " << param("batch_size", "int", std::to_string(options.batch_size)) << "\n";
+      << "    " << param("config", "str", options.config_path) << "\n";
+  for (const OptionSpec<SimulatorOptions>& spec : simulatorOptionSpecs()) {
+    out << "    " << param(spec.name, parameterType(spec), spec.text(options.simulator)) << "\n";
+  }
   if (hunted) {
     out << "    " << param("mode", "str", "hunt") << "\n";
   } else {
     out << "    " << param("output_dir", "str", options.output_dir) << "\n"
-        << "    " << param("record", "bool", options.record ? "true" : "false") << "\n"
         << "    " << param("generator_nodes", "bool", "true") << "\n";
   }
   out << "  </node>\n";

@@ -75,15 +75,15 @@ expect_ok "compare" "$ppp" compare "$work/a" "$work/a" --set-a turns --set-b dif
 grep -q "long_term_explorer" "$work/out" && pass || fail "compare lacks an agent row: $(cat "$work/out")"
 
 # bad input: clear errors, non-zero exits, nothing half-written
-expect_error "unknown agent" "type: unknown agent type 'flier'; valid: astar, random" \
+expect_error "unknown agent" "--agent: unknown agent type 'flier'; valid: astar, random" \
   "$ppp" simulate --agent flier --problem empty:5x5
-expect_error "budget 0" "budget: expected a move budget" "$ppp" simulate --agent random --problem empty:5x5 --budget 0
+expect_error "budget 0" "--budget: expected an integer in [1, 1000000], got 0" "$ppp" simulate --agent random --problem empty:5x5 --budget 0
 expect_error "runs 0" "--runs: expected a number of runs >= 1" "$ppp" simulate --agent random --problem empty:5x5 --runs 0
 expect_error "even memory" "--memory" "$ppp" simulate --agent explorer --problem empty:5x5 --memory 4x4
 expect_error "memory 0" "--memory" "$ppp" simulate --agent explorer --problem empty:5x5 --memory 0x0
-expect_error "noise" "sensor_noise: expected a probability in [0, 1]" \
+expect_error "noise" "--sensor-noise: expected a number in [0, 1], got 1.5" \
   "$ppp" simulate --agent explorer --problem empty:5x5 --sensor-noise 1.5
-expect_error "range 0" "sensor_range: expected an integer in [1, 7]" \
+expect_error "range 0" "--sensor-range: expected an integer in [1, 7], got 0" \
   "$ppp" simulate --agent explorer --problem empty:5x5 --sensor-range 0
 expect_error "missing ppp" "$work/none.ppp: cannot open" "$ppp" simulate --agent random --problem "$work/none.ppp"
 printf 'ppp 1\nsize 5 5\nstart 9 9\n' > "$work/bad.ppp"

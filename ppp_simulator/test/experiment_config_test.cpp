@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/option_cases.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
 
@@ -70,8 +71,8 @@ TEST_F(ExperimentYaml, BadInputNamesKeyAndLine) {
   EXPECT_EQ(errorOf("agents: agents.yaml\n" + sets), "no error");
   EXPECT_EQ(errorOf("agents: agents.yaml\nrusn: 3\n" + sets).rfind("2: rusn: unknown key; valid keys: ", 0), 0u);
   EXPECT_EQ(errorOf("agents: agents.yaml\nruns: many\n" + sets), "2: runs: expected an integer, got 'many'");
-  EXPECT_EQ(errorOf("agents: agents.yaml\nruns: 0\n" + sets).rfind(" runs: expected runs per agent per PPP", 0), 0u);
-  EXPECT_EQ(errorOf("agents: agents.yaml\nbudget: 0\n" + sets).rfind(" budget: expected a move budget", 0), 0u);
+  EXPECT_EQ(errorOf("agents: agents.yaml\nruns: 0\n" + sets).rfind(" runs: expected an integer in [1, 100000000], got 0", 0), 0u);
+  EXPECT_EQ(errorOf("agents: agents.yaml\nbudget: 0\n" + sets).rfind(" budget: expected an integer in [1, 1000000], got 0", 0), 0u);
   EXPECT_EQ(errorOf("agents: agents.yaml\nsensor_range: 0\n" + sets).rfind(" sensor_range: expected", 0), 0u);
   EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - {generator: {matings: 5}}\n"),
             "3: sets[0].name: missing; every set needs a name");
@@ -94,6 +95,20 @@ TEST_F(ExperimentYaml, BadInputNamesKeyAndLine) {
   EXPECT_NE(errorOf(agent + "planner, planner_node: p/}\n" + sets).find("expected package/executable"),
             std::string::npos);
   EXPECT_EQ(errorOf(agent + "planner, planner_node: p/e, host: robot-2.lab}\n" + sets), "no error");
+}
+
+TEST_F(ExperimentYaml, EpisodeKeysAcceptAndRefuseWhatEverySourceDoes) {
+  // The cases the simulate flags (agent_flags_test) are held to as well.
+  const std::string sets = "sets:\n  - {name: a, generator: {matings: 5}}\n";
+  for (const OptionCase& c : declaredOptionCases(episodeOptionSpecs(), EpisodeOptions{})) {
+    const std::string error = errorOf("agents: agents.yaml\n" + c.option + ": " + c.value + "\n" + sets);
+    if (c.accepted) {
+      EXPECT_EQ(error, "no error") << c.option << ": " << c.value;
+    } else {
+      EXPECT_NE(error.find(" " + c.option + ": expected "), std::string::npos) << c.option << ": " << c.value
+                                                                               << " gave: " << error;
+    }
+  }
 }
 
 TEST_F(ExperimentYaml, HuntedSetsNameTheirPanelFromTheExperimentsAgents) {

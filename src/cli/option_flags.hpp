@@ -12,26 +12,30 @@
 namespace ppp {
 namespace cli {
 
-/// The command-line flag of a declared option: "--" + its name with '_' and '.' as '-' ("--weights-goal").
+/// The command-line flag of a declared option: "--" + its flag, or its name with '_' and '.' as '-'
+/// ("--weights-goal").
 template <typename Options>
 std::string flagName(const OptionSpec<Options>& spec) {
-  std::string flag = "--" + spec.name;
+  std::string flag = "--" + (spec.flag.empty() ? spec.name : spec.flag);
   for (char& c : flag) c = c == '_' || c == '.' ? '-' : c;
   return flag;
 }
 
-/// Adds one flag per declared option to `command`, documented from its declaration with `defaults`' value; the
-/// texts given land in `given` (by flag name), for applyOptionFlags().
+/// Adds one flag per declared option to `command`, documented from its declaration with `defaults`' value (or,
+/// when `defaults` is null, as overriding the config file's); the texts given land in `given` (by flag name), for
+/// applyOptionFlags().
 template <typename Options>
-void addOptionFlags(CLI::App* command, const std::vector<OptionSpec<Options>>& specs, const Options& defaults,
+void addOptionFlags(CLI::App* command, const std::vector<OptionSpec<Options>>& specs, const Options* defaults,
                     std::map<std::string, std::string>* given) {
   for (const OptionSpec<Options>& spec : specs) {
     const std::string range = spec.rangeText();
-    const std::string value = spec.text(defaults);
+    const std::string value = defaults == nullptr ? "" : spec.text(*defaults);
+    const std::string default_text = defaults == nullptr          ? "; default: the config file's"
+                                     : value.empty() || value == "''" ? ""
+                                                                      : "; default " + value;
     std::string& storage = (*given)[flagName(spec)];
     command->add_option(flagName(spec), storage,
-                        spec.doc + " (" + spec.type + (range.empty() ? "" : " " + range) +
-                            (value.empty() ? "" : "; default " + value) + ")");
+                        spec.doc + " (" + spec.type + (range.empty() ? "" : " " + range) + default_text + ")");
   }
 }
 
@@ -60,7 +64,7 @@ InvalidArgument namingTheFlag(const CLI::App& command, const std::vector<OptionS
                               const InvalidArgument& error) {
   for (const OptionSpec<Options>& spec : specs) {
     if (spec.name != error.name() || command.count(flagName(spec)) == 0) continue;
-    return InvalidArgument(flagName(spec), std::string(error.what()).substr(error.name().size() + 2));
+    return InvalidArgument(flagName(spec), error.problem());
   }
   return error;
 }

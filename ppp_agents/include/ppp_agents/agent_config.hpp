@@ -5,10 +5,14 @@
 #include <vector>
 
 #include "ppp_agents/agent.hpp"
+#include "ppp_core/option_spec.hpp"
 #include "ppp_core/yaml_reader.hpp"
 
 namespace ppp {
 namespace agents {
+
+/// Most runs per PPP of one agent in an experiment.
+constexpr int kMaxRuns = 100000000;
 
 /// One agent configuration of an experiment: a type plus handicaps, under a name of its own.
 struct AgentConfig {
@@ -20,10 +24,14 @@ struct AgentConfig {
   bool prior_map = false;      ///< Planner agents only: the planner is given the true map instead of the memory.
   std::string planner_node;    ///< Planner agents only: "package/executable" of the planner to start ("" = the user's).
   std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
-  /// @throws InvalidArgument naming "type" (listing the valid ones), "memory", "sensor_noise", "runs",
+  /// @throws InvalidArgument naming "type" (listing the valid ones), "name", "memory", "sensor_noise", "runs",
   /// "prior_map", "planner_node" or "host".
   void validate() const;
 };
+
+/// One declaration per agent option (YAML keys of an agents list, the agent node's and the bridge's `~`
+/// parameters, the `ppp simulate` and `replay` flags; "type" is the flag --agent).
+const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs();
 
 /// The type of agents played by an external ROS planner through planner_bridge_node, one episode at a time.
 constexpr const char* kPlannerType = "planner";
@@ -42,9 +50,6 @@ bool readsScanWindow(const AgentConfig& config);
 
 /// True when the agent is given the true map at the start of each episode (astar, planners with prior_map).
 bool givenPriorMap(const AgentConfig& config);
-
-/// Parses a memory window "KxK" (e.g. "5x5"; "full" means 0). @throws InvalidArgument naming `option`.
-int parseMemoryWindow(const std::string& text, const std::string& option);
 
 /// A memory window as configs write it: "KxK", or "full" for 0.
 std::string memoryWindowText(int window);

@@ -54,6 +54,27 @@ inline YAML::Node parameterYaml(const XmlRpc::XmlRpcValue& value, const std::str
   }
 }
 
+/// A YAML value as the parameter a config file's `rosparam` (or `_name:=VALUE`) would set: integers, numbers,
+/// booleans, strings, lists and mappings as XML-RPC values (the inverse of parameterYaml()).
+inline XmlRpc::XmlRpcValue yamlParameter(const YAML::Node& node) {
+  XmlRpc::XmlRpcValue value;
+  if (node.IsSequence()) {
+    value.setSize(static_cast<int>(node.size()));
+    for (std::size_t i = 0; i < node.size(); ++i) value[static_cast<int>(i)] = yamlParameter(node[i]);
+    return value;
+  }
+  if (node.IsMap()) {
+    for (const auto& entry : node) value[entry.first.as<std::string>()] = yamlParameter(entry.second);
+    return value;
+  }
+  int integer = 0;
+  double number = 0;
+  if (YAML::convert<int>::decode(node, integer)) return XmlRpc::XmlRpcValue(integer);
+  if (YAML::convert<double>::decode(node, number)) return XmlRpc::XmlRpcValue(number);
+  if (node.Scalar() == "true" || node.Scalar() == "false") return XmlRpc::XmlRpcValue(node.Scalar() == "true");
+  return XmlRpc::XmlRpcValue(node.Scalar());
+}
+
 /// Reads every declared option that is set as a `~` parameter (dotted names as "~weights/goal") over `options`,
 /// each as its YAML value would be read. Returns how many were set. @throws ppp::InvalidArgument naming `~name`.
 template <typename Options>
@@ -70,6 +91,19 @@ int readOptionParameters(const ros::NodeHandle& nh, const std::vector<ppp::Optio
     ++found;
   }
   return found;
+}
+
+/// Validates options read from `~` parameters (their validate()); an error names the parameter ("~weights/goal"
+/// for the option "weights.goal"). @throws ppp::InvalidArgument.
+template <typename Options>
+void validateParameters(const Options& options) {
+  try {
+    options.validate();
+  } catch (const ppp::InvalidArgument& e) {
+    std::string parameter = e.name();
+    for (char& c : parameter) c = c == '.' ? '/' : c;
+    throw ppp::InvalidArgument("~" + parameter, e.problem());
+  }
 }
 
 /// @throws ppp::InvalidArgument naming the parameter `name` unless `value` is a positive number.

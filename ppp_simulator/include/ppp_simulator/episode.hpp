@@ -5,6 +5,7 @@
 
 #include "ppp_agents/agent.hpp"
 #include "ppp_agents/agent_config.hpp"
+#include "ppp_core/option_spec.hpp"
 #include "ppp_core/problem.hpp"
 #include "ppp_core/sensor.hpp"
 #include "ppp_core/window_atlas.hpp"
@@ -19,6 +20,10 @@ struct EpisodeOptions {
   /// @throws InvalidArgument("budget" or "sensor_range", ...).
   void validate() const;
 };
+
+/// One declaration per episode option (experiment YAML keys, `ppp simulate`/`replay` flags, `ppp generate
+/// --budget` for the failure fitness).
+const std::vector<OptionSpec<EpisodeOptions>>& episodeOptionSpecs();
 
 /// How one episode went.
 struct EpisodeOutcome {

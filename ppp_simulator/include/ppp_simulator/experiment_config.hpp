@@ -34,6 +34,13 @@ struct ExperimentConfig {
   int runsFor(const agents::AgentConfig& agent) const { return agent.runs > 0 ? agent.runs : runs; }
 };
 
+/// Most pictures of hardest PPPs in a report.
+constexpr int kMaxHardest = 1000;
+
+/// One declaration per experiment-wide option (the top-level keys of an experiment YAML besides sets and agents;
+/// `ppp experiment --threads`).
+const std::vector<OptionSpec<ExperimentConfig>>& experimentOptionSpecs();
+
 /// Loads an experiment YAML (see config/experiment.yaml). Relative paths (agents file, set directories) are
 /// relative to the YAML's directory; sets' `generator` keys override that directory's generator.yaml.
 /// @throws IoError, ParseError (file:line: key: what), InvalidArgument.

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "ppp_simulator/experiment_config.hpp"
+#include "ppp_simulator/simulator_options.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -12,9 +13,7 @@ namespace simulator {
 struct GraphOptions {
   std::string config_path;      ///< The experiment YAML, absolute (the simulator reads it).
   std::string output_dir;       ///< The output directory, absolute.
-  int batch_size = 2000;        ///< Episodes per agent per message, >= 1.
-  double step_timeout = 5.0;    ///< Seconds an agent node has to answer a batch, > 0.
-  bool record = true;           ///< Write OUTPUT_DIR/experiment.bag.
+  SimulatorOptions simulator;   ///< The simulator node's options, passed as its parameters.
   /// When set, the graph of a hunt instead: only this `failure` set of the config is evolved, into OUTPUT_DIR.
   std::string hunt;
   /// The env-loader script remote machines run nodes through (the workspace's devel/env.sh at the same path).

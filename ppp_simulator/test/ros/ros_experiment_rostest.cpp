@@ -17,15 +17,18 @@
 #include <set>
 #include <sstream>
 
+#include "ppp_core/option_cases.hpp"
 #include "ppp_core/ppp_file.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_msgs/EpisodeResults.h"
 #include "ppp_msgs/ProblemSet.h"
 #include "ppp_msgs/conversions.h"
+#include "ppp_msgs/node_parameters.h"
 #include "ppp_simulator/experiment_graph.hpp"
 #include "ppp_simulator/results_file.hpp"
 #include "ros_test_support.hpp"
+#include "simulator_parameters.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -186,12 +189,12 @@ TEST(RosExperimentTest, BadParametersStopTheNodeNamingThem) {
   const std::string out = scratch("bad");
   const std::pair<std::string, std::string> cases[] = {
       {"_config:=" + kTestDir + "/experiment.yaml _output_dir:=" + out + " _batch_size:=0",
-       "~batch_size: expected at least 1"},
+       "~batch_size: expected an integer in [1, 100000], got 0"},
       {"_output_dir:=" + out, "~config: required"},
       {"_config:=/nonexistent/experiment.yaml _output_dir:=" + out, "/nonexistent/experiment.yaml: cannot open"},
       {"_config:=" + kTestDir + "/experiment.yaml", "~output_dir: required"},
       {"_config:=" + kTestDir + "/experiment.yaml _output_dir:=" + out + " _step_timeout:=-1",
-       "~step_timeout: expected a positive number"},
+       "~step_timeout: expected a number in [0.001, 86400], got -1"},
       {"_config:=" + kTestDir + "/bad_agent_experiment.yaml _output_dir:=" + out, "unknown agent type 'flier'"},
       {"_config:=" + kTestDir + "/experiment.yaml _output_dir:=" + out + " _generator_nodes:=true _set_timeout:=0.5",
        "/gen_turns/problem_set: no generator node publishes set 'turns' (node gen_turns"},
@@ -202,6 +205,39 @@ TEST(RosExperimentTest, BadParametersStopTheNodeNamingThem) {
                out + "." + std::to_string(index++) + ".log");
     EXPECT_NE(node.wait(), 0) << c.first;
     EXPECT_NE(node.output().find(c.second), std::string::npos) << c.first << " printed:\n" << node.output();
+  }
+}
+
+TEST(RosExperimentTest, SimulatorParametersAndLaunchFileFlagsAcceptAndRefuseTheSameValues) {
+  // Each declared simulator option, as a `~` parameter of the node and as a `ppp launch-file` flag.
+  const std::string out = scratch("option_cases");
+  int index = 0;
+  for (const OptionCase& c : declaredOptionCases(simulatorOptionSpecs(), SimulatorOptions{})) {
+    const std::string ns = "/simulator_option_case_" + std::to_string(index++);
+    ros::param::set(ns + "/config", kTestDir + "/experiment.yaml");
+    ros::param::set(ns + "/output_dir", out);
+    ros::param::set(ns + "/" + c.option, ppp_msgs::yamlParameter(YAML::Load(c.value)));
+    std::string error;
+    try {
+      readSimulatorParameters(ros::NodeHandle(ns));
+    } catch (const Error& e) {
+      error = e.what();
+    }
+    std::string flag = "--" + c.option;
+    for (char& ch : flag) ch = ch == '_' ? '-' : ch;
+    const std::string log = out + "." + std::to_string(index) + ".log";
+    const std::string command = std::string(PPP_CLI) + " launch-file " + kTestDir + "/experiment.yaml -o " + out +
+                                " " + flag + " '" + c.value + "' > /dev/null 2> " + log;
+    const int status = std::system(command.c_str());
+    const std::string flag_error = readTextFile(log, 1u << 16);
+    if (c.accepted) {
+      EXPECT_EQ(error, "") << c.option << " = " << c.value;
+      EXPECT_EQ(status, 0) << command << ": " << flag_error;
+    } else {
+      EXPECT_EQ(error.rfind("~" + c.option + ": ", 0), 0u) << c.option << " = " << c.value << " gave: " << error;
+      EXPECT_NE(status, 0) << command;
+      EXPECT_NE(flag_error.find("error: " + flag + ": "), std::string::npos) << command << ": " << flag_error;
+    }
   }
 }
 

@@ -45,12 +45,16 @@ class ParseError : public Error {
 class InvalidArgument : public Error {
  public:
   /// Names the option and the expectation it violates.
-  InvalidArgument(const std::string& name, const std::string& what) : Error(name + ": " + what), name_(name) {}
+  InvalidArgument(const std::string& name, const std::string& what)
+      : Error(name + ": " + what), name_(name), problem_(what) {}
   /// The option or parameter at fault.
   const std::string& name() const { return name_; }
+  /// What is wrong with it (the message without the name).
+  const std::string& problem() const { return problem_; }
 
  private:
   std::string name_;
+  std::string problem_;
 };
 
 }  // namespace ppp

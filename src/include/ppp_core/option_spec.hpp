@@ -1,11 +1,13 @@
 #pragma once
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,7 @@ struct OptionSpec {
   std::string name;  ///< YAML key, dotted for nested mappings ("weights.goal"); ROS "weights/goal"; flag --weights-goal.
   std::string type;  ///< What a value is, as errors say it ("an integer", "a list of strings", ...).
   std::string doc;   ///< One line for --help, errors and the config file.
+  std::string flag;  ///< Command-line flag name without "--" when it is not derived from `name` ("" = derived).
   Bounds bounds;     ///< Numeric range (ignored for other types).
   /// The value in `options` as YAML flow text ("" for an unset optional).
   std::function<std::string(const Options& options)> text;
@@ -108,6 +111,13 @@ struct Value<std::uint64_t> {
   }
   static std::string text(std::uint64_t v) { return std::to_string(v); }
   static double number(std::uint64_t v) { return static_cast<double>(v); }
+};
+template <>
+struct Value<bool> {
+  static constexpr const char* kType = "true or false";
+  static bool parse(const YAML::Node& n, bool* v) { return n.IsScalar() && YAML::convert<bool>::decode(n, *v); }
+  static std::string text(bool v) { return v ? "true" : "false"; }
+  static double number(bool v) { return v ? 1 : 0; }
 };
 template <>
 struct Value<double> {
@@ -219,6 +229,62 @@ OptionSpec<Options> declareOption(const std::string& name, const std::string& do
            V::text(field(const_cast<Options&>(o)));
   };
   return spec;
+}
+
+/// Declares option `name` whose value is written as text in a form of its own (a memory window "5x5"): `parse`
+/// reads the text into the value and returns what is wrong ("" when nothing is), `show` writes it; `type` says
+/// what a value is.
+template <typename Options, typename T>
+OptionSpec<Options> declareTextOption(const std::string& name, const std::string& type, const std::string& doc,
+                                      T& (*field)(Options&), std::string (*parse)(const std::string&, T*),
+                                      std::string (*show)(T)) {
+  OptionSpec<Options> spec;
+  spec.name = name;
+  spec.type = type;
+  spec.doc = doc;
+  spec.text = [field, show](const Options& o) { return option_detail::quoted(show(field(const_cast<Options&>(o)))); };
+  spec.set = [field, parse, type](Options* o, const YAML::Node& node) -> std::string {
+    if (!node.IsScalar()) return "expected " + type + ", got '" + option_detail::nodeText(node) + "'";
+    T value{};
+    const std::string problem = parse(node.Scalar(), &value);
+    if (problem.empty()) field(*o) = value;
+    return problem;
+  };
+  spec.check = [](const Options&) { return std::string(); };
+  return spec;
+}
+
+/// The options of a member struct (`member` returns it) as options of the enclosing struct, under the same names.
+template <typename Outer, typename Inner>
+std::vector<OptionSpec<Outer>> nestedOptions(const std::vector<OptionSpec<Inner>>& specs, Inner& (*member)(Outer&)) {
+  std::vector<OptionSpec<Outer>> nested;
+  for (const OptionSpec<Inner>& inner : specs) {
+    OptionSpec<Outer> spec;
+    spec.name = inner.name;
+    spec.type = inner.type;
+    spec.doc = inner.doc;
+    spec.flag = inner.flag;
+    spec.bounds = inner.bounds;
+    spec.text = [inner, member](const Outer& o) { return inner.text(member(const_cast<Outer&>(o))); };
+    spec.set = [inner, member](Outer* o, const YAML::Node& node) { return inner.set(&member(*o), node); };
+    spec.check = [inner, member](const Outer& o) { return inner.check(member(const_cast<Outer&>(o))); };
+    nested.push_back(spec);
+  }
+  return nested;
+}
+
+/// The declarations of `specs` named in `names`, in the order of `names` (a source that takes only some options).
+/// @throws std::logic_error for a name not declared.
+template <typename Options>
+std::vector<OptionSpec<Options>> selectOptions(const std::vector<OptionSpec<Options>>& specs,
+                                               const std::vector<std::string>& names) {
+  std::vector<OptionSpec<Options>> selected;
+  for (const std::string& name : names) {
+    const auto found = std::find_if(specs.begin(), specs.end(), [&](const auto& spec) { return spec.name == name; });
+    if (found == specs.end()) throw std::logic_error("no option '" + name + "' declared");
+    selected.push_back(*found);
+  }
+  return selected;
 }
 
 }  // namespace ppp

@@ -13,7 +13,8 @@
 namespace ppp {
 
 /// Reads every declared option present in the mapping of `reader` into `options` (dotted names are keys of
-/// nested mappings: "weights.goal"), then refuses unknown keys. @throws ParseError naming file, line and key.
+/// nested mappings: "weights.goal") and refuses unknown keys of those nested mappings; the caller refuses unknown
+/// keys of `reader` once everything it holds is read. @throws ParseError naming file, line and key.
 template <typename Options>
 void readOptionsYaml(YamlMapReader& reader, const std::vector<OptionSpec<Options>>& specs, Options* options) {
   std::map<std::string, std::unique_ptr<YamlMapReader>> groups;
@@ -39,7 +40,6 @@ void readOptionsYaml(YamlMapReader& reader, const std::vector<OptionSpec<Options
   for (const auto& group : groups) {
     if (group.second) group.second->rejectUnknownKeys();
   }
-  reader.rejectUnknownKeys();
 }
 
 /// The options as YAML in declaration order (nested mappings for dotted names); with `docs`, each line carries

@@ -1,0 +1,53 @@
+#include "agent_flags.hpp"
+
+#include "option_flags.hpp"
+#include "ppp_core/text_format.hpp"
+
+namespace ppp {
+namespace cli {
+
+const std::vector<OptionSpec<agents::AgentConfig>>& agentFlagSpecs() {
+  static const std::vector<OptionSpec<agents::AgentConfig>> specs =
+      selectOptions(agents::agentOptionSpecs(), {"type", "memory", "sensor_noise"});
+  return specs;
+}
+
+void AgentFlags::add(CLI::App* command) {
+  command_ = command;
+  static const agents::AgentConfig agent_defaults;
+  static const simulator::EpisodeOptions episode_defaults;
+  addOptionFlags(command, agentFlagSpecs(), &agent_defaults, &given_);
+  command->get_option(flagName(agentFlagSpecs()[0]))->required();
+  addOptionFlags(command, simulator::episodeOptionSpecs(), &episode_defaults, &given_);
+}
+
+agents::AgentConfig AgentFlags::agent() const {
+  agents::AgentConfig config;
+  applyOptionFlags(*command_, agentFlagSpecs(), given_, &config);
+  config.name = config.type;
+  try {
+    config.validate();
+  } catch (const InvalidArgument& e) {
+    throw namingTheFlag(*command_, agentFlagSpecs(), e);
+  }
+  if (agents::isPlanner(config)) {
+    throw InvalidArgument(flagName(agentFlagSpecs()[0]), "planner agents play through ROS (planner_bridge_node), "
+                                                         "never in process; valid here: " +
+                                                             joinNames(agents::agentTypeNames()));
+  }
+  return config;
+}
+
+simulator::EpisodeOptions AgentFlags::episode() const {
+  simulator::EpisodeOptions options;
+  applyOptionFlags(*command_, simulator::episodeOptionSpecs(), given_, &options);
+  try {
+    options.validate();
+  } catch (const InvalidArgument& e) {
+    throw namingTheFlag(*command_, simulator::episodeOptionSpecs(), e);
+  }
+  return options;
+}
+
+}  // namespace cli
+}  // namespace ppp

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "ppp_agents/agent_config.hpp"
+#include "ppp_simulator/episode.hpp"
+
+namespace ppp {
+namespace cli {
+
+/// The agent options that commands playing one agent take as flags (--agent, --memory, --sensor-noise).
+const std::vector<OptionSpec<agents::AgentConfig>>& agentFlagSpecs();
+
+/// The flags of a command that plays one agent: the agent's (agentFlagSpecs) and the episode's (--budget,
+/// --sensor-range), declared in the agent and episode option tables.
+class AgentFlags {
+ public:
+  /// Adds the flags to `command`; --agent is required.
+  void add(CLI::App* command);
+  /// The agent the flags give, named after its type (built in: planners play only through ROS).
+  /// @throws InvalidArgument naming the flag.
+  agents::AgentConfig agent() const;
+  /// The episode options the flags give. @throws InvalidArgument naming the flag.
+  simulator::EpisodeOptions episode() const;
+
+ private:
+  CLI::App* command_ = nullptr;
+  std::map<std::string, std::string> given_;
+};
+
+}  // namespace cli
+}  // namespace ppp

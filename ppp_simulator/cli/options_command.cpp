@@ -1,0 +1,70 @@
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include "commands.hpp"
+#include "ppp_core/option_docs.hpp"
+#include "ppp_generator/generator_options.hpp"
+#include "ppp_simulator/experiment_config.hpp"
+#include "ppp_simulator/simulator_options.hpp"
+
+namespace ppp {
+namespace cli {
+
+namespace {
+
+/// An option as a YAML key.
+template <typename Options>
+std::string key(const OptionSpec<Options>& spec) {
+  return spec.name;
+}
+
+/// An option as a `~` parameter ("weights.goal" is ~weights/goal).
+template <typename Options>
+std::string parameter(const OptionSpec<Options>& spec) {
+  std::string name = "~" + spec.name;
+  for (char& c : name) c = c == '.' ? '/' : c;
+  return name;
+}
+
+/// The options reference (docs/options.md): every declared options struct, each source's spelling.
+std::string optionsReference() {
+  std::ostringstream out;
+  out << "# Options reference\n\n"
+      << "Generated from the option declarations by `scripts/ppp options` (a test keeps this file equal to its\n"
+      << "output). Each option is declared once, with its type, range, default and meaning; the YAML files, ROS\n"
+      << "parameters and command-line flags below all read it from that declaration and accept and refuse the\n"
+      << "same values. A flag is `--` plus the name with `_` and `.` as `-` (`--weights-goal`); a ROS parameter is\n"
+      << "`~` plus the name with `.` as `/` (`~weights/goal`).\n\n"
+      << "## Experiment\n\n"
+      << "Top-level keys of an experiment YAML (`config/experiment.yaml`) besides `sets` and `agents`;\n"
+      << "`ppp experiment --threads` overrides `threads`.\n\n"
+      << optionsMarkdownTable(simulator::experimentOptionSpecs(), simulator::ExperimentConfig{}, &key)
+      << "\n## Agents\n\n"
+      << "Keys of each entry of an `agents` list (`config/agents.yaml`).\n"
+      << "`agent_node` reads `~type`, `~name`, `~memory` and `~sensor_noise`; `planner_bridge_node` reads `~name`,\n"
+      << "`~memory` and `~sensor_noise`; `ppp simulate` and `ppp replay` take `--agent` (the type), `--memory` and\n"
+      << "`--sensor-noise`, with the episode's `--budget` and `--sensor-range`.\n\n"
+      << optionsMarkdownTable(agents::agentOptionSpecs(), agents::AgentConfig{}, &key)
+      << "\n## Generator\n\n"
+      << "Keys of `config/generator.yaml` and of a set's `generator` mapping, `generator_node` `~` parameters and\n"
+      << "`ppp generate` flags.\n\n"
+      << optionsMarkdownTable(generator::generatorOptionSpecs(), generator::GeneratorOptions{}, &key)
+      << "\n## Simulator node\n\n"
+      << "`simulator_node` `~` parameters, each also a `ppp launch-file` flag; `launch/experiment.launch` passes its\n"
+      << "arguments `batch_size`, `step_timeout` and `record` on.\n\n"
+      << optionsMarkdownTable(simulator::simulatorOptionSpecs(), simulator::SimulatorOptions{}, &parameter);
+  return out.str();
+}
+
+}  // namespace
+
+void addOptionsCommand(CLI::App& app) {
+  CLI::App* command = app.add_subcommand(
+      "options", "Print the options reference: every declared option of experiments, agents, the generator and the "
+                 "simulator node (docs/options.md)");
+  command->callback([] { std::cout << optionsReference(); });
+}
+
+}  // namespace cli
+}  // namespace ppp

@@ -1,0 +1,49 @@
+#include "ppp_simulator/simulator_options.hpp"
+
+#include "ppp_core/option_yaml.hpp"
+
+namespace ppp {
+namespace simulator {
+
+namespace {
+
+/// Shortest timeout: a millisecond.
+constexpr double kMinSeconds = 0.001;
+/// Longest timeout: a day.
+constexpr double kMaxSeconds = 86400;
+/// Most episodes per message (a batch of 20x20 scans stays under ~100 MB).
+constexpr int kMaxBatchSize = 100000;
+
+}  // namespace
+
+void SimulatorOptions::validate() const { checkOptionRanges(simulatorOptionSpecs(), *this); }
+
+const std::vector<OptionSpec<SimulatorOptions>>& simulatorOptionSpecs() {
+  using S = SimulatorOptions;
+  const Bounds seconds{kMinSeconds, kMaxSeconds};
+  static const std::vector<OptionSpec<S>> specs = {
+      declareOption("batch_size", "episodes per agent per message", +[](S& s) -> int& { return s.batch_size; },
+                    Bounds{1, kMaxBatchSize}),
+      declareOption("step_timeout", "seconds an agent node has to answer a batch",
+                    +[](S& s) -> double& { return s.step_timeout; }, seconds),
+      declareOption("planner_step_timeout", "seconds a planner agent's bridge has to answer a step",
+                    +[](S& s) -> double& { return s.planner_step_timeout; }, seconds),
+      declareOption("timeouts_before_giving_up", "unanswered batches in a row after which an agent's runs all fail",
+                    +[](S& s) -> int& { return s.timeouts_before_giving_up; }, Bounds{1, 1000}),
+      declareOption("connect_timeout", "seconds to wait for each agent node to connect",
+                    +[](S& s) -> double& { return s.connect_timeout; }, seconds),
+      declareOption("set_timeout", "seconds a set's topic may go without a publisher before giving up",
+                    +[](S& s) -> double& { return s.set_timeout; }, seconds),
+      declareOption("record", "write OUTPUT/experiment.bag", +[](S& s) -> bool& { return s.record; }),
+      declareOption("record_runs", "runs recorded in detail per recorded PPP",
+                    +[](S& s) -> int& { return s.record_runs; }, Bounds{0, 1000}),
+      declareOption("record_problems", "PPPs of each set recorded in detail",
+                    +[](S& s) -> int& { return s.record_problems; }, Bounds{0, 100000}),
+      declareOption("resolution", "metres per cell in the map frame", +[](S& s) -> double& { return s.resolution; },
+                    Bounds{1e-6, 1e6}),
+  };
+  return specs;
+}
+
+}  // namespace simulator
+}  // namespace ppp
