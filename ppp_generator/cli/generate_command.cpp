@@ -7,6 +7,7 @@
 
 #include "generator_commands.hpp"
 #include "option_flags.hpp"
+#include "stop_signals.hpp"
 #include "ppp_core/csv.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_generator/set_evolution.hpp"
@@ -62,7 +63,8 @@ void runGenerate(const CLI::App& command, const GenerateFlags& flags, const Fail
       flags.output, options, fitness,
       [&](long done, long total, double best) {
         progress.update(done, total, "best " + options.fitness + " " + formatNumber(best));
-      });
+      },
+      stopOnSignals());
   std::cout << "wrote " << evolved.set.problems.size() << " PPPs, set.csv, generator.yaml and tree.{nwk,json,html}"
             << (options.archive == generator::kMapElitesArchive ? ", archive.{csv,svg}" : "") << " to "
             << flags.output << " (" << evolved.summary << ")\n";

@@ -8,17 +8,20 @@
 //              ppp_msgs/EvaluateProblems service that plays the panel) and ~evaluator_timeout
 #include <ros/ros.h>
 
+#include <iostream>
+
 #include <nav_msgs/OccupancyGrid.h>
 
 #include "generator_parameters.hpp"
-#include "remote_failure_fitness.hpp"
 #include "ppp_core/error.hpp"
-#include "ppp_generator/set_evolution.hpp"
+#include "ppp_core/stop.hpp"
 #include "ppp_generator/problem_set.hpp"
+#include "ppp_generator/set_evolution.hpp"
 #include "ppp_msgs/Generate.h"
 #include "ppp_msgs/ProblemSet.h"
 #include "ppp_msgs/conversions.h"
 #include "ppp_msgs/topic_names.h"
+#include "remote_failure_fitness.hpp"
 
 namespace ppp {
 namespace generator {
@@ -84,7 +87,7 @@ class GeneratorNode {
     EvolvedSet evolved = evolveSet(
         options, fitness,
         [](long done, long total, double best) { ROS_INFO("%ld/%ld matings, best fitness %g", done, total, best); },
-        std::max(1L, options.matings / 10));
+        std::max(1L, options.matings / 10), [] { return !ros::ok(); });
     ROS_INFO("%s", evolved.summary.c_str());
     if (!parameters_.output_dir.empty()) {
       writeProblemSetDirectory(parameters_.output_dir, evolved.set, options, evolved.extra_files);
@@ -121,6 +124,10 @@ int main(int argc, char** argv) {
     if (node.generateOnStart()) node.generate(0);
     if (node.exitWhenDone()) return 0;
     ros::spin();
+  } catch (const ppp::Interrupted&) {
+    // ROS logging is already shut down here.
+    std::cerr << "generator: shut down mid-generation; nothing was written (a rerun generates the set again)\n";
+    return 0;
   } catch (const ppp::Error& e) {
     ROS_FATAL("generator: %s", e.what());
     return 1;

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/stop.hpp"
 #include "ppp_msgs/EvaluateProblems.h"
 #include "ppp_msgs/conversions.h"
 
@@ -29,7 +30,10 @@ Fitness makeRemoteFailureFitness(ros::NodeHandle& nh, const GeneratorOptions& op
     call.request.agents = options.agents;
     call.request.runs = static_cast<std::uint32_t>(options.runs_per_eval);
     call.request.seed = options.seed;
-    if (!client->call(call)) throw IoError(service, "the evaluation call failed (is the simulator node still up?)");
+    if (!client->call(call)) {
+      if (!ros::ok()) throw Interrupted();  // shut down mid-call: nothing is wrong with the simulator
+      throw IoError(service, "the evaluation call failed (is the simulator node still up?)");
+    }
     if (!call.response.error.empty()) throw IoError(service, "the simulator refused: " + call.response.error);
     if (call.response.evaluations.size() != problems.size()) {
       throw IoError(service, "answered " + std::to_string(call.response.evaluations.size()) + " evaluations for " +

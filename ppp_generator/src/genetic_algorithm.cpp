@@ -32,10 +32,11 @@ GeneticAlgorithm::GeneticAlgorithm(const GeneratorOptions& options, Fitness fitn
       rng_(options.seed),
       breeder_(options_, fitness_, &rng_) {}
 
-std::vector<Individual> GeneticAlgorithm::initialPool() {
+std::vector<Individual> GeneticAlgorithm::initialPool(const StopCheck& stop) {
   std::vector<Individual> pool;
   pool.reserve(static_cast<std::size_t>(options_.population));
   while (static_cast<int>(pool.size()) < options_.population) {
+    stopIfAsked(stop);
     Individual individual = breeder_.randomSolvable(&stats_.initial_redraws);
     if (!gridInPool(pool, individual)) {
       pool.push_back(std::move(individual));
@@ -82,9 +83,10 @@ void GeneticAlgorithm::replace(std::vector<Individual>* pool, const std::vector<
   }
 }
 
-std::vector<Individual> GeneticAlgorithm::run(const ProgressCallback& progress, long progress_interval) {
+std::vector<Individual> GeneticAlgorithm::run(const ProgressCallback& progress, long progress_interval,
+                                             const StopCheck& stop) {
   stats_ = GenerationStats{};
-  std::vector<Individual> pool = initialPool();
+  std::vector<Individual> pool = initialPool(stop);
   const int tournament_size = std::min(options_.tournament_size, options_.population);
   auto best = [&]() {
     const auto fittest = std::max_element(pool.begin(), pool.end(), [](const Individual& a, const Individual& b) {
@@ -101,6 +103,7 @@ std::vector<Individual> GeneticAlgorithm::run(const ProgressCallback& progress, 
   const long round_size = breeder_.roundSize();
   std::vector<Mating> round;
   for (long begin = 0; begin < options_.matings; begin += round_size) {
+    stopIfAsked(stop);
     const long count = std::min(round_size, options_.matings - begin);
     round.assign(static_cast<std::size_t>(count), Mating{});
     std::vector<Individual*> to_score;

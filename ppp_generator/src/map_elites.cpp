@@ -105,7 +105,8 @@ std::vector<double> MapElites::featuresOf(const Individual& individual) {
   return features;
 }
 
-std::vector<Individual> MapElites::run(const ProgressCallback& progress, long progress_interval) {
+std::vector<Individual> MapElites::run(const ProgressCallback& progress, long progress_interval,
+                                       const StopCheck& stop) {
   stats_ = ArchiveStats{};
   archive_ = Archive(rangesOf(options_), options_.bins);
   auto offerAll = [&](std::vector<Individual>& children) {
@@ -125,7 +126,10 @@ std::vector<Individual> MapElites::run(const ProgressCallback& progress, long pr
   // Seed the archive with random valid PPPs.
   std::vector<Individual> batch;
   long redraws = 0;
-  while (static_cast<int>(batch.size()) < options_.population) batch.push_back(breeder_.randomSolvable(&redraws));
+  while (static_cast<int>(batch.size()) < options_.population) {
+    stopIfAsked(stop);
+    batch.push_back(breeder_.randomSolvable(&redraws));
+  }
   offerAll(batch);
   auto best = [&]() {
     double value = 0, score = -1e300;
@@ -136,6 +140,7 @@ std::vector<Individual> MapElites::run(const ProgressCallback& progress, long pr
   };
   const long round_size = breeder_.roundSize();
   for (long begin = 0; begin < options_.matings; begin += round_size) {
+    stopIfAsked(stop);
     const long count = std::min(round_size, options_.matings - begin);
     std::vector<const Individual*> elites;
     for (const auto& [cell, elite] : archive_.elites()) elites.push_back(&elite.individual);

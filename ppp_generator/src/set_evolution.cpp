@@ -7,12 +7,12 @@ namespace ppp {
 namespace generator {
 
 EvolvedSet evolveSet(const GeneratorOptions& options, Fitness fitness, const ProgressCallback& progress,
-                     long progress_interval) {
+                     long progress_interval, const StopCheck& stop) {
   options.validate();
   EvolvedSet evolved;
   if (options.archive == kMapElitesArchive) {
     MapElites search(options, std::move(fitness));
-    evolved.set = makeProblemSet(options, search.run(progress, progress_interval));
+    evolved.set = makeProblemSet(options, search.run(progress, progress_interval, stop));
     std::map<std::uint64_t, std::string> ids;
     for (std::size_t i = 0; i < evolved.set.problems.size(); ++i) {
       ids[decodeGrid(evolved.set.problems[i]).hash()] = evolved.set.ids[i];
@@ -29,7 +29,7 @@ EvolvedSet evolveSet(const GeneratorOptions& options, Fitness fitness, const Pro
                       std::to_string(s.children_pruned) + " pruned as unsolvable";
   } else {
     GeneticAlgorithm ga(options, std::move(fitness));
-    evolved.set = makeProblemSet(options, ga.run(progress, progress_interval));
+    evolved.set = makeProblemSet(options, ga.run(progress, progress_interval, stop));
     const GenerationStats& s = ga.stats();
     evolved.summary = std::to_string(s.matings) + " matings, " + std::to_string(s.children_accepted) +
                       " children accepted, " + std::to_string(s.children_pruned) + " pruned as unsolvable, " +
@@ -41,9 +41,9 @@ EvolvedSet evolveSet(const GeneratorOptions& options, Fitness fitness, const Pro
 }
 
 EvolvedSet evolveSetDirectory(const std::string& dir, const GeneratorOptions& options, Fitness fitness,
-                              const ProgressCallback& progress) {
+                              const ProgressCallback& progress, const StopCheck& stop) {
   checkOutputDirectory(dir);
-  EvolvedSet evolved = evolveSet(options, std::move(fitness), progress);
+  EvolvedSet evolved = evolveSet(options, std::move(fitness), progress, 1000, stop);
   writeProblemSetDirectory(dir, evolved.set, options, evolved.extra_files);
   return evolved;
 }

@@ -8,11 +8,13 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include "generator_option_cases.hpp"
 #include "generator_parameters.hpp"
 #include "ppp_core/ppp_file.hpp"
+#include "ppp_core/text_file.hpp"
 #include "ppp_generator/genetic_algorithm.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_msgs/Generate.h"
@@ -102,15 +104,20 @@ TEST(GeneratorNodeTest, CommandLineWritesTheSameSetDirectory) {
   EXPECT_EQ(std::system(diff.c_str()), 0) << "the node and ppp generate wrote different sets";
 }
 
-/// Runs the node with one bad private parameter; returns its exit status and output.
-int runWithParameter(const std::string& assignment, int index, std::string* output) {
-  // A fresh node name per run, so no parameter of an earlier run is still set.
-  const std::string command =
-      std::string(GENERATOR_NODE) + " __name:=bad_generator_" + std::to_string(index) + " " + assignment + " 2>&1";
+/// Runs a shell command; returns its exit status and (in `output`) what it printed.
+int runCommand(const std::string& command, std::string* output) {
   FILE* pipe = ::popen(command.c_str(), "r");
   char buffer[512];
   while (pipe != nullptr && std::fgets(buffer, sizeof buffer, pipe) != nullptr) *output += buffer;
   return pipe == nullptr ? -1 : ::pclose(pipe);
+}
+
+/// Runs the node with one bad private parameter; returns its exit status and output.
+int runWithParameter(const std::string& assignment, int index, std::string* output) {
+  // A fresh node name per run, so no parameter of an earlier run is still set.
+  return runCommand(std::string(GENERATOR_NODE) + " __name:=bad_generator_" + std::to_string(index) + " " +
+                        assignment + " 2>&1",
+                    output);
 }
 
 TEST(GeneratorNodeTest, BadParametersStopTheNodeNamingThem) {
@@ -132,6 +139,24 @@ TEST(GeneratorNodeTest, BadParametersStopTheNodeNamingThem) {
     EXPECT_NE(status, 0) << c.first;
     EXPECT_NE(output.find(c.second), std::string::npos) << c.first << " printed:\n" << output;
   }
+}
+
+TEST(GeneratorNodeTest, ShutdownMidGenerationStopsWithinASecondAndWritesNothing) {
+  // What roslaunch does on shutdown: SIGINT to a node that is evolving a long set.
+  const std::string dir = ::testing::TempDir() + "generator_shutdown_set";
+  const std::string script = std::string(GENERATOR_NODE) + " __name:=long_generator _matings:=1000000000 _output_dir:=" +
+                             dir + " _exit_when_done:=true > " + dir + ".log 2>&1 & pid=$!; sleep 2; " +
+                             "start=$(date +%s%N); kill -INT $pid; wait $pid; " +
+                             "echo \"$? $(( ($(date +%s%N) - start) / 1000000 ))\"";
+  std::string output;
+  ASSERT_EQ(runCommand("/bin/bash -c '" + script + "'", &output), 0) << output;
+  int status = -1;
+  long milliseconds = -1;
+  ASSERT_EQ(std::sscanf(output.c_str(), "%d %ld", &status, &milliseconds), 2) << output;
+  EXPECT_EQ(status, 0) << readTextFile(dir + ".log", 1u << 20);
+  EXPECT_LE(milliseconds, 1000) << "the node took " << milliseconds << " ms to stop";
+  EXPECT_FALSE(std::filesystem::exists(dir + "/set.csv"));
+  EXPECT_NE(readTextFile(dir + ".log", 1u << 20).find("shut down mid-generation"), std::string::npos);
 }
 
 TEST(GeneratorNodeTest, ParametersAcceptAndRefuseWhatEverySourceDoes) {

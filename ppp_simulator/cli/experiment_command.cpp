@@ -1,4 +1,3 @@
-#include <csignal>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -6,6 +5,7 @@
 
 #include "commands.hpp"
 #include "option_flags.hpp"
+#include "stop_signals.hpp"
 #include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/text_file.hpp"
@@ -16,10 +16,6 @@ namespace ppp {
 namespace cli {
 
 namespace {
-
-std::atomic<bool> stop_requested{false};
-
-extern "C" void requestStop(int) { stop_requested.store(true); }
 
 /// The experiment options a flag may override over the config file's.
 const std::vector<OptionSpec<simulator::ExperimentConfig>>& overridingSpecs() {
@@ -45,12 +41,11 @@ int runExperimentCommand(const ExperimentFlags& f) {
   }
   simulator::checkExperimentDirectory(config, f.output);
   const std::string config_text = readTextFile(f.config, 1u << 20);
-  std::signal(SIGINT, requestStop);
-  std::signal(SIGTERM, requestStop);
+  const StopCheck stop = stopOnSignals();
   Progress progress("episodes", f.quiet);
   const auto report = simulator::runExperiment(
       config, config_text, f.output, [&](long done, long total) { progress.update(done, total, f.output); },
-      &stop_requested, [&](const std::string& line) {
+      stop, [&](const std::string& line) {
         if (!f.quiet) std::cerr << line << "\n";
       });
   if (report.interrupted) {

@@ -16,8 +16,8 @@
 #include "episode_recorder.hpp"
 #include "hunt_server.hpp"
 #include "lane_runner.hpp"
-#include "set_receiver.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/stop.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_msgs/MoveBatch.h"
 #include "ppp_msgs/ScanBatch.h"
@@ -25,6 +25,7 @@
 #include "ppp_msgs/node_liveness.h"
 #include "ppp_simulator/agent_lane.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
+#include "set_receiver.hpp"
 #include "simulator_parameters.hpp"
 
 namespace ppp {
@@ -40,9 +41,13 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
     received = receiveSets(nh, private_nh, config, parameters);
     if (received.sets.empty()) return 130;  // shut down while waiting
   } else {
-    received.sets = beginExperiment(config, parameters.output_dir, [](const std::string& line) {
-      ROS_INFO("%s", line.c_str());
-    });
+    try {
+      received.sets = beginExperiment(
+          config, parameters.output_dir, [](const std::string& line) { ROS_INFO("%s", line.c_str()); },
+          [] { return !ros::ok(); });
+    } catch (const Interrupted&) {
+      return 130;  // shut down mid-generation; the set being evolved was not written
+    }
     for (const PreparedSet& set : received.sets) {
       received.messages.push_back(ppp_msgs::toSetMessage(set.name, set.set.problems, set.set.ids, parameters.resolution));
     }

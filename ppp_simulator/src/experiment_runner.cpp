@@ -107,7 +107,7 @@ PreparedSet prepareSet(const std::string& name, generator::ProblemSet set, int s
 }
 
 std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::string& dir,
-                                     const std::function<void(const std::string&)>& log) {
+                                     const std::function<void(const std::string&)>& log, const StopCheck& stop) {
   std::vector<PreparedSet> prepared;
   for (const SetSpec& spec : config.sets) {
     std::string set_dir = spec.directory;
@@ -122,7 +122,7 @@ std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::
         } catch (const InvalidArgument& e) {
           throw InvalidArgument("sets", "set '" + spec.name + "': " + e.what());
         }
-        const generator::EvolvedSet evolved = generator::evolveSetDirectory(set_dir, *spec.generator, fitness);
+        const generator::EvolvedSet evolved = generator::evolveSetDirectory(set_dir, *spec.generator, fitness, {}, stop);
         say(log, "set '" + spec.name + "': " + evolved.summary);
       }
     }
@@ -141,15 +141,16 @@ void openExperimentDirectory(const ExperimentConfig& config, const std::string& 
 }
 
 std::vector<PreparedSet> beginExperiment(const ExperimentConfig& config, const std::string& dir,
-                                         const std::function<void(const std::string&)>& log) {
+                                         const std::function<void(const std::string&)>& log, const StopCheck& stop) {
   openExperimentDirectory(config, dir);
-  return prepareSets(config, dir, log);
+  return prepareSets(config, dir, log, stop);
 }
 
 std::string resultsPath(const std::string& dir) { return (fs::path(dir) / kResultsFile).string(); }
 
 void finishExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
-                      const std::vector<PreparedSet>& sets, ResultsFile* results) {
+                      const std::vector<PreparedSet>& sets, ResultsFile* results, const StopCheck& stop) {
+  stopIfAsked(stop);
   // Canonical order, so the finished file does not depend on threads, batches or interruptions.
   std::vector<EpisodeResult> rows = readResultsFile(resultsPath(dir));
   std::map<std::string, int> set_order, agent_order;
@@ -165,16 +166,24 @@ void finishExperiment(const ExperimentConfig& config, const std::string& config_
     return std::make_tuple(set_order[a.set], a.problem, agent_order[a.agent], a.run) <
            std::make_tuple(set_order[b.set], b.problem, agent_order[b.agent], b.run);
   });
+  stopIfAsked(stop);
   results->rewrite(rows);
+  stopIfAsked(stop);
   writeExperimentReport(dir, config, config_text, sets, rows);
 }
 
 ExperimentReport runExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
-                               const std::function<void(long, long)>& progress, const std::atomic<bool>* stop,
+                               const std::function<void(long, long)>& progress, const StopCheck& stop,
                                const std::function<void(const std::string&)>& log) {
-  const std::vector<PreparedSet> sets = beginExperiment(config, dir, log);
-  ResultsFile results(resultsPath(dir));
   ExperimentReport report;
+  std::vector<PreparedSet> sets;
+  try {
+    sets = beginExperiment(config, dir, log, stop);
+  } catch (const Interrupted&) {
+    report.interrupted = true;
+    return report;
+  }
+  ResultsFile results(resultsPath(dir));
   report.episodes_resumed = static_cast<long>(results.done().size());
   std::vector<Unit> units;
   long total = 0;
@@ -213,7 +222,7 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
       std::map<int, std::pair<std::unique_ptr<agents::Agent>, std::unique_ptr<EpisodeRunner>>> agents;
       std::vector<EpisodeResult> rows;
       for (;;) {
-        if (stop != nullptr && stop->load()) return;
+        if (stop && stop()) return;
         const std::size_t u = next_unit.fetch_add(1);
         if (u >= units.size()) return;
         const Unit& unit = units[u];
@@ -251,12 +260,11 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
   for (std::thread& t : threads) t.join();
   if (failure) std::rethrow_exception(failure);
   report.episodes_run = done.load() - report.episodes_resumed;
-  if (stop != nullptr && stop->load() && done.load() < total) {
+  try {
+    finishExperiment(config, config_text, dir, sets, &results, stop);
+  } catch (const Interrupted&) {
     report.interrupted = true;
-    return report;
   }
-
-  finishExperiment(config, config_text, dir, sets, &results);
   return report;
 }
 

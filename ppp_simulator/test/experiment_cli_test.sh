@@ -63,6 +63,50 @@ grep -q "Rerun the same command to resume" "$work/int.err" && pass || fail "SIGT
 expect_ok "resume after SIGTERM" "$ppp" experiment "$work/experiment.yaml" -o "$work/c" --quiet
 cmp -s "$work/a/results.csv" "$work/c/results.csv" && pass || fail "results after SIGTERM + resume differ"
 
+# SIGINT and SIGTERM also stop the generation and the hunting phases, within a second, writing no half-made
+# set; a rerun completes to the result of an uninterrupted run.
+cat > "$work/phases.yaml" <<'YAML'
+seed: 5
+runs: 5
+hardest: 1
+agents:
+  - {name: random, type: random}
+  - {name: explorer, type: explorer}
+sets:
+  - name: evolved
+    generator: {fitness: turns, matings: 60000, seed: 3}
+  - name: hunted
+    generator: {fitness: failure, agents: [explorer], runs_per_eval: 10, matings: 4000, seed: 4}
+YAML
+expect_ok "phases uninterrupted" "$ppp" experiment "$work/phases.yaml" -o "$work/p_ref" --quiet
+# signal_in_phase DIR SIGNAL TEXT: starts the experiment, signals it 0.3 s after TEXT appears in its log and
+# prints its exit status and the milliseconds from the signal to its exit.
+signal_in_phase() {
+  local dir="$1" signal="$2" text="$3"
+  "$ppp" experiment "$work/phases.yaml" -o "$dir" > /dev/null 2> "$work/phase.err" &
+  local pid=$!
+  for _ in $(seq 1 1500); do grep -q "$text" "$work/phase.err" && break; sleep 0.01; done
+  sleep 0.3
+  local start; start=$(date +%s%N)
+  kill "-$signal" "$pid"
+  wait "$pid"
+  local status=$?
+  echo "$status $(( ($(date +%s%N) - start) / 1000000 ))"
+}
+for phase in "p_gen INT evolved" "p_hunt TERM hunted"; do
+  read -r dir signal set <<< "$phase"
+  read -r status ms <<< "$(signal_in_phase "$work/$dir" "$signal" "generating set '$set'")"
+  [ "$status" -eq 130 ] && pass || fail "SIG$signal while generating $set: exit status $status, expected 130"
+  [ "$ms" -le 1000 ] && pass || fail "SIG$signal while generating $set: stopped $ms ms after the signal"
+  [ ! -e "$work/$dir/sets/$set/set.csv" ] && [ ! -e "$work/$dir/results.csv" ] && pass \
+    || fail "SIG$signal while generating $set left a set or results behind"
+  grep -q "interrupted" "$work/phase.err" && pass || fail "SIG$signal message: $(tail -2 "$work/phase.err")"
+  expect_ok "resume after SIG$signal in $set" "$ppp" experiment "$work/phases.yaml" -o "$work/$dir" --quiet
+  cmp -s "$work/p_ref/results.csv" "$work/$dir/results.csv" && pass \
+    || fail "results after SIG$signal while generating $set + resume differ from an uninterrupted run"
+  cmp -s "$work/p_ref/sets/$set/set.csv" "$work/$dir/sets/$set/set.csv" && pass || fail "set $set differs after resume"
+done
+
 # simulate and replay
 ppp_file="$work/a/sets/turns/ppp_000.ppp"
 expect_ok "simulate json" "$ppp" simulate --agent astar --problem "$ppp_file" --runs 20 --seed 1 --json

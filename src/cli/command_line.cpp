@@ -2,6 +2,7 @@
 
 #include "core_commands.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/stop.hpp"
 
 namespace ppp {
 namespace cli {
@@ -12,6 +13,10 @@ int runCommandLine(CLI::App& app, int argc, char** argv, const char* program) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  } catch (const Interrupted&) {
+    std::cerr << program << ": interrupted; everything finished is written and nothing half-done is. Rerun the "
+                            "same command to go on.\n";
+    return 130;
   } catch (const Error& e) {
     std::cerr << program << ": error: " << e.what() << "\n";
     return 1;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "ppp_core/rng.hpp"
+#include "ppp_core/stop.hpp"
 #include "ppp_generator/breeder.hpp"
 #include "ppp_generator/fitness.hpp"
 #include "ppp_generator/generator_options.hpp"
@@ -47,13 +48,15 @@ class GeneticAlgorithm {
   GeneticAlgorithm& operator=(const GeneticAlgorithm&) = delete;  ///< As the copy constructor.
 
   /// Builds the initial pool and runs every mating event; returns the final pool in pool order.
-  std::vector<Individual> run(const ProgressCallback& progress = {}, long progress_interval = 1000);
+  /// @throws Interrupted when `stop` says stop (asked before each PPP of the initial pool and each round).
+  std::vector<Individual> run(const ProgressCallback& progress = {}, long progress_interval = 1000,
+                              const StopCheck& stop = {});
 
   /// Counters of the last run().
   const GenerationStats& stats() const { return stats_; }
 
  private:
-  std::vector<Individual> initialPool();
+  std::vector<Individual> initialPool(const StopCheck& stop);
   void replace(std::vector<Individual>* pool, const std::vector<int>& tournament, Individual* child, int* replaced);
 
   GeneratorOptions options_;

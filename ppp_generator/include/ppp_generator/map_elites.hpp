@@ -7,6 +7,7 @@
 
 #include "ppp_core/evaluation.hpp"
 #include "ppp_core/rng.hpp"
+#include "ppp_core/stop.hpp"
 #include "ppp_generator/breeder.hpp"
 #include "ppp_generator/genetic_algorithm.hpp"
 
@@ -78,7 +79,9 @@ class MapElites {
   MapElites(const MapElites&) = delete;             ///< Its breeder refers to its own members.
   MapElites& operator=(const MapElites&) = delete;  ///< As the copy constructor.
   /// Runs the search and returns the elites, fittest first (ties in cell order), at most `population` of them.
-  std::vector<Individual> run(const ProgressCallback& progress = {}, long progress_interval = 1000);
+  /// @throws Interrupted when `stop` says stop (asked before each round).
+  std::vector<Individual> run(const ProgressCallback& progress = {}, long progress_interval = 1000,
+                              const StopCheck& stop = {});
   /// The archive after run().
   const Archive& archive() const { return archive_; }
   /// Counters of the last run().

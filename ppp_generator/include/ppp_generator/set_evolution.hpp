@@ -21,15 +21,15 @@ struct EvolvedSet {
 
 /// Evolves a set as `options` say with `fitness` (built from options.fitness by makeFitness, or the failure
 /// fitness of the episode engine): the genetic algorithm, or the MAP-Elites archive (archive: map_elites).
-/// @throws InvalidArgument naming the option.
 /// `progress` is called every `progress_interval` matings and at the end.
+/// @throws InvalidArgument naming the option; Interrupted when `stop` says stop.
 EvolvedSet evolveSet(const GeneratorOptions& options, Fitness fitness, const ProgressCallback& progress = {},
-                     long progress_interval = 1000);
+                     long progress_interval = 1000, const StopCheck& stop = {});
 
-/// Evolves a set with evolveSet and writes its directory (writeProblemSetDirectory plus the extra files).
-/// @throws InvalidArgument, IoError.
+/// Evolves a set with evolveSet and writes its directory (writeProblemSetDirectory plus the extra files); when
+/// stopped it writes nothing. @throws InvalidArgument, IoError, Interrupted.
 EvolvedSet evolveSetDirectory(const std::string& dir, const GeneratorOptions& options, Fitness fitness,
-                              const ProgressCallback& progress = {});
+                              const ProgressCallback& progress = {}, const StopCheck& stop = {});
 
 }  // namespace generator
 }  // namespace ppp

@@ -9,6 +9,7 @@
 
 #include "ppp_core/window_atlas.hpp"
 #include "ppp_generator/problem_set.hpp"
+#include "ppp_core/stop.hpp"
 #include "ppp_simulator/episode.hpp"
 #include "ppp_simulator/episode_result.hpp"
 #include "ppp_simulator/experiment_config.hpp"
@@ -47,27 +48,31 @@ EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::stri
 /// @throws InvalidArgument naming "sets" for an unsolvable PPP.
 PreparedSet prepareSet(const std::string& name, generator::ProblemSet set, int sensor_range);
 
-/// Generates (or reads) every set of the experiment into `dir`/sets/<name>/, reusing sets already there.
-/// @throws IoError, ParseError, InvalidArgument.
+/// Generates (or reads) every set of the experiment into `dir`/sets/<name>/, reusing sets already there; a set
+/// being generated when `stop` says stop is not written. @throws IoError, ParseError, InvalidArgument, Interrupted.
 std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::string& dir,
-                                     const std::function<void(const std::string&)>& log = {});
+                                     const std::function<void(const std::string&)>& log = {},
+                                     const StopCheck& stop = {});
 
 /// Validates the experiment, checks `dir` and records the experiment's fingerprint in it.
 /// @throws IoError, InvalidArgument.
 void openExperimentDirectory(const ExperimentConfig& config, const std::string& dir);
 
 /// openExperimentDirectory(), then prepareSets() (the first half of an
-/// experiment, shared by runExperiment() and the ROS simulator node). @throws IoError, ParseError, InvalidArgument.
+/// experiment, shared by runExperiment() and the ROS simulator node).
+/// @throws IoError, ParseError, InvalidArgument, Interrupted.
 std::vector<PreparedSet> beginExperiment(const ExperimentConfig& config, const std::string& dir,
-                                         const std::function<void(const std::string&)>& log = {});
+                                         const std::function<void(const std::string&)>& log = {},
+                                         const StopCheck& stop = {});
 
 /// The path of an experiment directory's results.csv.
 std::string resultsPath(const std::string& dir);
 
-/// Puts every row of results.csv in canonical order and writes summary.csv and the report (the second half).
-/// @throws IoError, ParseError.
+/// Puts every row of results.csv in canonical order and writes summary.csv and the report (the second half);
+/// `stop` is asked between the steps, each of which replaces its files whole. @throws IoError, ParseError,
+/// Interrupted.
 void finishExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
-                      const std::vector<PreparedSet>& sets, ResultsFile* results);
+                      const std::vector<PreparedSet>& sets, ResultsFile* results, const StopCheck& stop = {});
 
 /// What runExperiment() did.
 struct ExperimentReport {
@@ -79,11 +84,12 @@ struct ExperimentReport {
 /// Runs an experiment into `dir`: experiment.yaml (the fingerprint), sets/, results.csv (rows streamed as
 /// runs finish), then summary.csv and report.{md,html}. Rerunning on the same directory resumes: finished runs
 /// are skipped and nothing is lost. A directory holding a different experiment is refused.
-/// `progress` is called with (episodes done, total); setting `*stop` makes workers finish their current
-/// batch and return with interrupted = true. @throws IoError, ParseError, InvalidArgument.
+/// `progress` is called with (episodes done, total); `stop` saying stop ends every phase (generation between
+/// rounds, episodes after the workers' current batch, the report between its steps) and returns with
+/// interrupted = true. @throws IoError, ParseError, InvalidArgument.
 ExperimentReport runExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
                                const std::function<void(long, long)>& progress = {},
-                               const std::atomic<bool>* stop = nullptr,
+                               const StopCheck& stop = {},
                                const std::function<void(const std::string&)>& log = {});
 
 /// Checks before any work that `dir` is new, empty, or holds this same experiment.
