@@ -16,6 +16,8 @@ packages=(
   rviz xvfb xauth imagemagick python3-pil
   # libraries the core and the tools use
   libpng-dev libyaml-cpp-dev liboctomap-dev libeigen3-dev nlohmann-json3-dev libcli11-dev
+  # a network namespace of its own for the main command (unshare, ip) and the sockets check (ss)
+  util-linux iproute2
   # tests, benchmarks and the fuzzer
   libgtest-dev libbenchmark-dev clang libclang-rt-14-dev
 )

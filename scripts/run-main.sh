@@ -20,10 +20,19 @@ export PATH="/usr/bin:$PATH"
 out="$PPP_ROOT/results/experiment"
 log="$PPP_ROOT/results/experiment.roslaunch.log"  # beside, not in, the output directory
 mkdir -p "$PPP_ROOT/results"
-port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+# ROS 1 has no authentication and roscpp's topic servers listen on every interface: the run gets a network
+# namespace of its own with only loopback (scripts/loopback-only), where nothing can reach it.
+isolate=(scripts/loopback-only)
+port=11311
+if ! scripts/loopback-only /bin/true; then
+  echo "WARNING: running without a network namespace of its own: the nodes' topic ports are open to every" \
+       "network this machine is on (see the README, 'Exposure')" >&2
+  isolate=()
+  port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+fi
 export ROS_MASTER_URI="http://127.0.0.1:$port" ROS_IP=127.0.0.1
 echo "running the experiment with ROS (log: $log)"
-roslaunch -p "$port" launch/experiment.launch output_dir:="$out" > "$log" 2>&1 || true
+"${isolate[@]}" roslaunch -p "$port" launch/experiment.launch output_dir:="$out" > "$log" 2>&1 || true
 # roslaunch's exit status says nothing about its nodes: the report is the verdict.
 if [ ! -s "$out/report.md" ] || ! grep -q "experiment done" "$log"; then
   grep -E "FATAL|ERROR" "$log" | tail -10

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# The ROS experiment in a network namespace of its own (scripts/loopback-only, as scripts/run-main.sh runs it):
+# while it runs, every listening socket of its master and nodes is in a namespace whose only interface is
+# loopback, none is in the machine's own namespace, and the results equal `ppp experiment`'s.
+# Usage: loopback_test.sh DEVEL_DIR
+devel="$1"
+source "$devel/setup.bash"  # before set -u: setup.bash reads unset variables
+set -u
+source "$(dirname "${BASH_SOURCE[0]}")/../cli_harness.sh"
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
+export PATH="/usr/bin:$PATH"
+# The namespace has ports of its own: the default master port is free there.
+export ROS_MASTER_URI="http://127.0.0.1:11311" ROS_IP=127.0.0.1 ROS_HOME="$work/ros"
+
+cat > "$work/experiment.yaml" <<'YAML'
+seed: 7
+runs: 400
+agents:
+  - {name: random, type: random}
+  - {name: explorer, type: explorer}
+sets:
+  - name: mine
+    generator: {fitness: turns, population: 10, matings: 100, seed: 2}
+YAML
+cp "$root/config/generator.yaml" "$work/"
+"$root/scripts/loopback-only" timeout 300 roslaunch -p 11311 "$root/launch/experiment.launch" \
+  output_dir:="$work/out" config:="$work/experiment.yaml" > "$work/launch.log" 2>&1 &
+launcher=$!
+
+# in_run: the pids of the processes in the run's namespace (the launcher's, once it has entered it).
+own_ns="$(readlink /proc/self/ns/net)"
+run_ns=""
+in_run() {
+  for p in /proc/[0-9]*; do
+    [ "$(readlink "$p/ns/net" 2> /dev/null)" = "$run_ns" ] && echo "${p#/proc/}"
+  done
+}
+seen=""
+for _ in $(seq 1 3000); do
+  run_ns="$(readlink "/proc/$launcher/ns/net" 2> /dev/null)"
+  if [ -n "$run_ns" ] && [ "$run_ns" != "$own_ns" ]; then
+    seen="$(for pid in $(in_run); do cat "/proc/$pid/comm" 2> /dev/null; done | sort -u | tr '\n' ' ')"
+    case "$seen" in *simulator_node*agent_node*|*agent_node*simulator_node*) break ;; esac
+  fi
+  sleep 0.02
+done
+case "$seen" in
+  *simulator_node*) pass ;;
+  *) fail "the simulator never ran in the run's namespace (seen: $seen): $(tail -5 "$work/launch.log")" ;;
+esac
+
+# Inside: the master's, the XML-RPC and the TCPROS listeners, in a namespace that has only loopback.
+nsenter --net="/proc/$launcher/ns/net" ss -Hltn > "$work/inside.txt"
+nsenter --net="/proc/$launcher/ns/net" ip -o link > "$work/links.txt"
+[ "$(wc -l < "$work/links.txt")" -eq 1 ] && grep -q "^1: lo:" "$work/links.txt" && pass || \
+  fail "the run's namespace has other interfaces: $(cat "$work/links.txt")"
+grep -q "127.0.0.1:11311 " "$work/inside.txt" && pass || fail "no master listening inside: $(cat "$work/inside.txt")"
+[ "$(wc -l < "$work/inside.txt")" -ge 6 ] && pass || fail "too few listeners inside: $(cat "$work/inside.txt")"
+# Outside: no listening socket belongs to a process of the run.
+pids="$(in_run | tr '\n' ' ')"
+ss -Hltnp > "$work/outside.txt"
+leaked=""
+for pid in $pids; do grep -q "pid=$pid," "$work/outside.txt" && leaked="$leaked $pid"; done
+[ -z "$leaked" ] && pass || fail "processes of the run listen in the machine's namespace:$leaked"
+
+wait "$launcher"
+"$devel/lib/ppp_simulator/ppp" experiment "$work/experiment.yaml" -o "$work/cli" --quiet > /dev/null 2>&1
+cmp -s "$work/out/results.csv" "$work/cli/results.csv" && pass || \
+  fail "the isolated run differs from ppp experiment: $(tail -20 "$work/launch.log")"
+finish
