@@ -67,6 +67,15 @@ void GeneratorOptions::validate() const {
     makeFitness(fitness, FitnessParameters{weights, seed});
   }
   validateHuntOptions(*this);
+  const double archive_cells = archive == kMapElitesArchive ? std::pow(bins, static_cast<double>(features.size())) : 0;
+  const double pool_cells = (population + archive_cells) * width * height;
+  if (pool_cells > kMaxPoolCells) {
+    throw InvalidArgument("population", "(population " + std::to_string(population) +
+                                            (archive_cells > 0 ? " + archive cells " + formatShortest(archive_cells) : "") +
+                                            ") x " + std::to_string(width) + " x " + std::to_string(height) + " = " +
+                                            formatShortest(pool_cells) + " grid cells held at once; at most " +
+                                            formatShortest(kMaxPoolCells) + ": lower the population or the map size");
+  }
   if (replacement != kCrowdingReplacement && replacement != kTournamentReplacement) {
     throw InvalidArgument("replacement", "unknown rule '" + replacement + "'; valid: crowding, tournament");
   }

@@ -52,6 +52,25 @@ TEST(GeneratorOptionsTest, BadOptionsNameTheOption) {
   o = {};
   o.start = Cell{20, 0};
   EXPECT_EQ(errorOf(o), "start: cell (20, 0) is outside the 20x20 grid");
+  // The pool's cells: 16 PPPs of 4096 x 4096 are 268,435,456 cells (the limit); a 17th is refused.
+  o = {};
+  o.width = o.height = 4096;
+  o.population = 16;
+  EXPECT_EQ(errorOf(o), "no error");
+  o.population = 17;
+  EXPECT_EQ(errorOf(o), "population: (population 17) x 4096 x 4096 = 285212672 grid cells held at once; at most "
+                        "268435456: lower the population or the map size");
+  o = {};
+  o.population = 100000;  // the largest population fits on the default 20 x 20 map ...
+  EXPECT_EQ(errorOf(o), "no error");
+  o.width = o.height = 52;  // ... not on 52 x 52: 270,400,000 cells
+  EXPECT_EQ(errorOf(o).rfind("population: (population 100000) x 52 x 52 = 270400000 grid cells", 0), 0u);
+  o = {};
+  o.archive = kMapElitesArchive;
+  o.bins = 100;
+  o.features = {"turns", "obstacles"};
+  o.width = o.height = 1600;  // (60 + 10,000) x 1600^2 = 2.6e10
+  EXPECT_EQ(errorOf(o).rfind("population: (population 60 + archive cells 10000) x 1600 x 1600", 0), 0u);
   o = {};
   o.goal = Cell{0, 0};
   EXPECT_EQ(errorOf(o), "goal: must differ from start (0, 0)");

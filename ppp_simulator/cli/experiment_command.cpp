@@ -28,6 +28,7 @@ struct ExperimentFlags {
   std::string config;
   std::string output;
   std::map<std::string, std::string> overrides;
+  bool large = false;
   bool quiet = false;
 };
 
@@ -39,6 +40,9 @@ int runExperimentCommand(const ExperimentFlags& f) {
   } catch (const InvalidArgument& e) {
     throw namingTheFlag(*f.command, overridingSpecs(), e);
   }
+  const simulator::ExperimentWork work = simulator::estimateWork(config);
+  simulator::checkWork(work, f.large);
+  if (!f.quiet) std::cerr << "experiment: " << simulator::workSummary(work) << "\n";
   simulator::checkExperimentDirectory(config, f.output);
   const std::string config_text = readTextFile(f.config, 1u << 20);
   const StopCheck stop = stopOnSignals();
@@ -71,6 +75,8 @@ void addExperimentCommand(CLI::App& app) {
   flags->command = command;
   addOptionFlags(command, overridingSpecs(), static_cast<const simulator::ExperimentConfig*>(nullptr),
                  &flags->overrides);
+  command->add_flag("--large", flags->large,
+                    "Run an experiment above the size limits (1e8 episodes or matings, 10 GB of results)");
   command->add_flag("--quiet", flags->quiet, "No progress output");
   command->callback([flags] {
     const int status = runExperimentCommand(*flags);

@@ -24,6 +24,7 @@ struct LaunchFileFlags {
   simulator::GraphOptions graph;
   std::map<std::string, std::string> simulator_flags;
   std::vector<std::string> planners;
+  bool large = false;
 };
 
 /// Applies "NAME=PACKAGE/EXECUTABLE" (or "NAME=": the user starts it) to planner agent NAME of `config`.
@@ -40,6 +41,7 @@ void runLaunchFile(LaunchFileFlags flags) {
   namespace fs = std::filesystem;
   simulator::ExperimentConfig config = simulator::loadExperimentConfig(flags.config);
   for (const std::string& p : flags.planners) applyPlanner(p, &config);
+  if (flags.graph.hunt.empty()) simulator::checkWork(simulator::estimateWork(config), flags.large);
   applyOptionFlags(*flags.command, simulator::simulatorOptionSpecs(), flags.simulator_flags, &flags.graph.simulator);
   try {
     flags.graph.simulator.validate();
@@ -71,6 +73,8 @@ void addLaunchFileCommand(CLI::App& app) {
                       "SET: the graph of hunting this failure set of the config into OUTPUT instead (panel agents only)");
   command->add_option("--env-loader", flags->graph.env_loader,
                       "Script remote machines run nodes through (the workspace's devel/env.sh, same path there)");
+  command->add_flag("--large", flags->large,
+                    "Allow an experiment above the size limits (1e8 episodes or matings, 10 GB of results)");
   command->callback([flags] { runLaunchFile(*flags); });
 }
 

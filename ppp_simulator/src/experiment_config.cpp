@@ -1,5 +1,6 @@
 #include "ppp_simulator/experiment_config.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <set>
 #include <sstream>
@@ -7,7 +8,9 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/option_yaml.hpp"
 #include "ppp_core/text_file.hpp"
+#include "ppp_core/text_format.hpp"
 #include "ppp_core/yaml_reader.hpp"
+#include "ppp_generator/problem_set.hpp"
 #include "ppp_simulator/failure_fitness.hpp"
 
 namespace ppp {
@@ -131,6 +134,54 @@ const std::vector<OptionSpec<ExperimentConfig>>& experimentOptionSpecs() {
     return list;
   }();
   return specs;
+}
+
+ExperimentWork estimateWork(const ExperimentConfig& config) {
+  ExperimentWork work;
+  double runs_per_ppp = 0;  // over every agent
+  for (const agents::AgentConfig& agent : config.agents) runs_per_ppp += config.runsFor(agent);
+  for (const SetSpec& set : config.sets) {
+    double problems = 0;
+    if (set.generator) {
+      const generator::GeneratorOptions& g = *set.generator;
+      problems = g.population;
+      work.matings += static_cast<double>(g.matings);
+      if (g.fitness == generator::kFailureFitness) {
+        work.hunt_episodes += (2.0 * static_cast<double>(g.matings) + g.population) * g.agents.size() * g.runs_per_eval;
+      }
+    } else {
+      try {
+        problems = static_cast<double>(generator::readProblemSetDirectory(set.directory).problems.size());
+      } catch (const Error&) {
+        problems = 0;  // the experiment itself reports an unreadable set
+      }
+    }
+    work.episodes += problems * runs_per_ppp;
+  }
+  work.result_bytes = 90.0 * work.episodes;
+  return work;
+}
+
+std::string workSummary(const ExperimentWork& work) {
+  std::ostringstream out;
+  out << formatShortest(work.episodes) << " episodes";
+  if (work.hunt_episodes > 0) out << ", " << formatShortest(work.hunt_episodes) << " more while hunting";
+  out << ", " << formatShortest(work.matings) << " matings, results.csv about "
+      << formatShortest(std::ceil(work.result_bytes / 1e6)) << " MB";
+  return out.str();
+}
+
+void checkWork(const ExperimentWork& work, bool allow_large) {
+  std::string over;
+  const auto add = [&over](bool above, const char* what) {
+    if (above) over += (over.empty() ? "" : ", ") + std::string(what);
+  };
+  add(work.episodes + work.hunt_episodes > kLargeEpisodes, "more than 1e8 episodes");
+  add(work.matings > kLargeMatings, "more than 1e8 matings");
+  add(work.result_bytes > kLargeResultBytes, "results.csv above 10 GB");
+  if (over.empty() || allow_large) return;
+  throw InvalidArgument("work", "a large experiment (" + over + "): " + workSummary(work) +
+                                    "; pass --large (ROS: large:=true) to run it anyway");
 }
 
 std::string experimentFingerprint(const ExperimentConfig& c) {

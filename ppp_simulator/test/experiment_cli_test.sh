@@ -107,6 +107,13 @@ for phase in "p_gen INT evolved" "p_hunt TERM hunted"; do
   cmp -s "$work/p_ref/sets/$set/set.csv" "$work/$dir/sets/$set/set.csv" && pass || fail "set $set differs after resume"
 done
 
+# An experiment above the size limits says so with its estimate before anything is written.
+sed 's/^runs: 5$/runs: 100000000/' "$work/phases.yaml" > "$work/huge.yaml"
+expect_error "huge experiment" "work: a large experiment (more than 1e8 episodes, results.csv above 10 GB): 2.4e+10 episodes" \
+  "$ppp" experiment "$work/huge.yaml" -o "$work/huge"
+[ ! -e "$work/huge" ] && pass || fail "the refused experiment wrote $work/huge"
+expect_error "huge experiment through ROS" "pass --large" "$ppp" launch-file "$work/huge.yaml" -o "$work/huge"
+
 # simulate and replay
 ppp_file="$work/a/sets/turns/ppp_000.ppp"
 expect_ok "simulate json" "$ppp" simulate --agent astar --problem "$ppp_file" --runs 20 --seed 1 --json

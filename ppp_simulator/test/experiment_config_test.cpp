@@ -37,6 +37,29 @@ TEST(ExperimentConfigTest, ShippedDefaultExperiment) {
   EXPECT_EQ(c.agents[10].planner_node, "ppp_agents/ompl_planner_node");
 }
 
+TEST(ExperimentConfigTest, WorkOfTheDefaultExperimentAndTheLimit) {
+  ExperimentConfig c = loadExperimentConfig(PPP_CONFIG_DIR "/experiment.yaml");
+  const ExperimentWork work = estimateWork(c);
+  // 3 sets x 60 PPPs x (10 agents x 1000 runs + 2 planners x 3 runs).
+  EXPECT_EQ(work.episodes, 3.0 * 60 * (10 * 1000 + 2 * 3));
+  // The hunt: (60 initial PPPs + 2 children x 10,000 matings) x 3 panel agents x 20 runs.
+  EXPECT_EQ(work.hunt_episodes, (60.0 + 2 * 10000) * 3 * 20);
+  EXPECT_EQ(work.matings, 30000.0);
+  EXPECT_NO_THROW(checkWork(work, false));
+  EXPECT_EQ(workSummary(work), "1801080 episodes, 1203600 more while hunting, 30000 matings, results.csv about 163 MB");
+  // 56 times the runs: 1.0086e8 episodes with the hunt's, above 1e8.
+  c.runs = 56 * 1000;
+  const ExperimentWork large = estimateWork(c);
+  try {
+    checkWork(large, false);
+    ADD_FAILURE() << "a large experiment was not refused";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("work: a large experiment (more than 1e8 episodes): 100801080 episodes", 0), 0u)
+        << e.what();
+  }
+  EXPECT_NO_THROW(checkWork(large, true));
+}
+
 TEST(ExperimentConfigTest, ShippedPlannerExperimentLoads) {
   const ExperimentConfig c = loadExperimentConfig(PPP_CONFIG_DIR "/planner_experiment.yaml");
   ASSERT_EQ(c.agents.size(), 2u);

@@ -34,6 +34,9 @@ constexpr long kMaxArchiveCells = 100000;
 constexpr int kMaxPopulation = 100000;
 /// Most mating events of one run.
 constexpr long kMaxMatings = 1000000000;
+/// Most grid cells the generator holds at once: (population + archive cells) x width x height (2^28, about
+/// 270 MB of grids), so a large population on a large map is refused before anything is allocated.
+constexpr double kMaxPoolCells = 268435456;
 
 /// Everything that shapes one run of the generator. Defaults match config/generator.yaml.
 struct GeneratorOptions {

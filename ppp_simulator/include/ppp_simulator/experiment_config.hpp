@@ -46,6 +46,28 @@ const std::vector<OptionSpec<ExperimentConfig>>& experimentOptionSpecs();
 /// @throws IoError, ParseError (file:line: key: what), InvalidArgument.
 ExperimentConfig loadExperimentConfig(const std::string& path);
 
+/// How much an experiment asks for, estimated before it starts.
+struct ExperimentWork {
+  double episodes = 0;       ///< Runs of agents on PPPs (sets x PPPs x agents x runs; ROS planners included).
+  double hunt_episodes = 0;  ///< Episodes the failure fitness plays while hunting (2 per mating x panel x runs).
+  double matings = 0;        ///< Mating events of every evolved set.
+  double result_bytes = 0;   ///< Size of results.csv (about 90 bytes a row).
+};
+
+/// Above any of these an experiment is large: it runs only when asked to explicitly (`--large`).
+constexpr double kLargeEpisodes = 1e8;       ///< Episodes plus hunting episodes (the default experiment: 1.8e6 + 1.2e6).
+constexpr double kLargeMatings = 1e8;        ///< Mating events in all (the default: 3e4).
+constexpr double kLargeResultBytes = 1e10;   ///< results.csv bytes (the default: 1.5e8).
+
+/// Estimates the work of `config`; sets given as directories are counted as they are on disk (0 when unreadable).
+ExperimentWork estimateWork(const ExperimentConfig& config);
+
+/// The estimate in a line ("1.8e+06 episodes, 1.2e+07 while hunting, 30000 matings, results.csv about 160 MB").
+std::string workSummary(const ExperimentWork& work);
+
+/// @throws InvalidArgument naming "work" with the estimate when it is above a limit and `allow_large` is false.
+void checkWork(const ExperimentWork& work, bool allow_large);
+
 /// Canonical text of everything that decides an experiment's results (not threads or report options);
 /// stored in the output directory so a rerun can tell whether it is the same experiment.
 std::string experimentFingerprint(const ExperimentConfig& config);
