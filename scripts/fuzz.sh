@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer target for the .ppp parser with clang (ASan + UBSan) in build-fuzz/ and runs it for a
-# bounded time: scripts/fuzz.sh [SECONDS] (default 30). Exits non-zero on any finding; crash inputs are written
-# to build-fuzz/artifacts/. Reproduce one with: build-fuzz/ppp_parser_fuzz build-fuzz/artifacts/crash-...
+# Builds the libFuzzer targets of the parsers with clang (ASan + UBSan) in build-fuzz/ and runs each for a
+# bounded time: scripts/fuzz.sh [SECONDS] [TARGET...] (default 30 s each, every target). Targets: ppp_parser
+# (.ppp files), map_yaml (map_server YAML + PGM). Exits non-zero on any finding; crash inputs are written to
+# build-fuzz/artifacts/TARGET/. Reproduce one with: build-fuzz/TARGET_fuzz build-fuzz/artifacts/TARGET/crash-...
 set -euo pipefail
 
+all_targets=(ppp_parser map_yaml)
 seconds="${1:-30}"
 if ! [[ "${seconds}" =~ ^[1-9][0-9]*$ ]]; then
-  echo "usage: $0 [SECONDS]  (a positive whole number of seconds, default 30)" >&2
+  echo "usage: $0 [SECONDS] [TARGET...]  (a positive whole number of seconds, default 30; targets: ${all_targets[*]})" >&2
   exit 2
 fi
+shift || true
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "${repo}"
@@ -21,21 +26,30 @@ if [[ -z "${clangxx}" ]]; then
 fi
 
 cmake -S src -B "${build_dir}" -DCMAKE_CXX_COMPILER="${clangxx}" -DPPP_CORE_FUZZ=ON -DPPP_CORE_BENCHMARKS=OFF >/dev/null
-cmake --build "${build_dir}" --target ppp_parser_fuzz -j2
+for target in "${targets[@]}"; do
+  if [ ! -d "src/fuzz/corpus/${target}" ]; then
+    echo "fuzz.sh: unknown target '${target}'; targets: ${all_targets[*]}" >&2
+    exit 2
+  fi
+  cmake --build "${build_dir}" --target "${target}_fuzz" -j2
+done
 
-corpus="${build_dir}/corpus"
-artifacts="${build_dir}/artifacts"
-mkdir -p "${corpus}" "${artifacts}"
-cp src/fuzz/corpus/*.ppp "${corpus}/"
-
-echo "fuzzing parsePpp for ${seconds} s (corpus ${corpus}, findings in ${artifacts})"
-status=0
-"${build_dir}/ppp_parser_fuzz" \
-  -max_total_time="${seconds}" -timeout=5 -rss_limit_mb=2048 -max_len=65536 \
-  -artifact_prefix="${artifacts}/" "${corpus}" || status=$?
-if [[ ${status} -ne 0 ]]; then
-  echo "fuzz.sh: FINDING (libFuzzer exit ${status}); inputs in ${artifacts}/:" >&2
-  ls -l "${artifacts}" >&2 || true
-  exit "${status}"
-fi
-echo "fuzz.sh: no findings in ${seconds} s"
+for target in "${targets[@]}"; do
+  corpus="${build_dir}/corpus/${target}"
+  artifacts="${build_dir}/artifacts/${target}"
+  mkdir -p "${corpus}" "${artifacts}"
+  cp src/fuzz/corpus/"${target}"/* "${corpus}/"
+  echo "fuzzing ${target} for ${seconds} s (corpus ${corpus}, findings in ${artifacts})"
+  status=0
+  "${build_dir}/${target}_fuzz" \
+    -max_total_time="${seconds}" -timeout=5 -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 \
+    -artifact_prefix="${artifacts}/" "${corpus}" 2> "${build_dir}/${target}.log" || status=$?
+  grep -E "stat::number_of_executed_units" "${build_dir}/${target}.log" | sed "s/^/${target}: /" || true
+  if [[ ${status} -ne 0 ]]; then
+    tail -40 "${build_dir}/${target}.log" >&2
+    echo "fuzz.sh: FINDING in ${target} (libFuzzer exit ${status}); inputs in ${artifacts}/:" >&2
+    ls -l "${artifacts}" >&2 || true
+    exit "${status}"
+  fi
+done
+echo "fuzz.sh: no findings in ${seconds} s per target (${targets[*]})"
