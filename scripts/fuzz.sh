@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets of the parsers with clang (ASan + UBSan) in build-fuzz/ and runs each for a
-# bounded time: scripts/fuzz.sh [SECONDS] [TARGET...] (default 30 s each, every target). Targets: ppp_parser
-# (.ppp files), map_yaml (map_server YAML + PGM). Exits non-zero on any finding; crash inputs are written to
-# build-fuzz/artifacts/TARGET/. Reproduce one with: build-fuzz/TARGET_fuzz build-fuzz/artifacts/TARGET/crash-...
+# Builds the libFuzzer targets of the parsers with clang (ASan + UBSan) in build-fuzz/ (ppp_simulator/fuzz's
+# project) and runs each for a bounded time: scripts/fuzz.sh [SECONDS] [TARGET...] (default 30 s each, every
+# target). Targets: ppp_parser (.ppp files), map_yaml (map_server YAML + PGM), newick (taxonomy trees),
+# generator_yaml (generator options), agents_yaml (agents lists), experiment_yaml (experiment configs),
+# results_csv (the results a resume reads). Each has a seed corpus in its package's fuzz/corpus/TARGET/.
+# Exits non-zero on any finding; crash inputs are written to build-fuzz/artifacts/TARGET/. Reproduce one with:
+# build-fuzz/TARGET_fuzz build-fuzz/artifacts/TARGET/crash-...
 set -euo pipefail
 
-all_targets=(ppp_parser map_yaml)
+all_targets=(ppp_parser map_yaml newick generator_yaml agents_yaml experiment_yaml results_csv)
 seconds="${1:-30}"
 if ! [[ "${seconds}" =~ ^[1-9][0-9]*$ ]]; then
   echo "usage: $0 [SECONDS] [TARGET...]  (a positive whole number of seconds, default 30; targets: ${all_targets[*]})" >&2
@@ -25,20 +28,25 @@ if [[ -z "${clangxx}" ]]; then
   exit 2
 fi
 
-cmake -S src -B "${build_dir}" -DCMAKE_CXX_COMPILER="${clangxx}" -DPPP_CORE_FUZZ=ON -DPPP_CORE_BENCHMARKS=OFF >/dev/null
+# corpus_of TARGET: its seed corpus directory.
+corpus_of() { ls -d src/fuzz/corpus/"$1" ppp_*/fuzz/corpus/"$1" 2> /dev/null | head -1; }
 for target in "${targets[@]}"; do
-  if [ ! -d "src/fuzz/corpus/${target}" ]; then
+  if [ -z "$(corpus_of "${target}")" ]; then
     echo "fuzz.sh: unknown target '${target}'; targets: ${all_targets[*]}" >&2
     exit 2
   fi
-  cmake --build "${build_dir}" --target "${target}_fuzz" -j2
 done
+if [ -f "${build_dir}/CMakeCache.txt" ] && ! grep -q "CMAKE_PROJECT_NAME:STATIC=ppp_fuzz" "${build_dir}/CMakeCache.txt"; then
+  rm -rf "${build_dir}"  # an older build of the core alone
+fi
+cmake -S ppp_simulator/fuzz -B "${build_dir}" -DCMAKE_CXX_COMPILER="${clangxx}" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "${build_dir}" --target $(printf '%s_fuzz ' "${targets[@]}") -j2
 
 for target in "${targets[@]}"; do
   corpus="${build_dir}/corpus/${target}"
   artifacts="${build_dir}/artifacts/${target}"
   mkdir -p "${corpus}" "${artifacts}"
-  cp src/fuzz/corpus/"${target}"/* "${corpus}/"
+  cp "$(corpus_of "${target}")"/* "${corpus}/"
   echo "fuzzing ${target} for ${seconds} s (corpus ${corpus}, findings in ${artifacts})"
   status=0
   "${build_dir}/${target}_fuzz" \

@@ -32,7 +32,7 @@ step "configure core without ROS" cmake -S src -B "$core_dir" -DPPP_CORE_FORBID_
 step "build core without ROS" cmake --build "$core_dir" -j "$(nproc)"
 step "core tests without ROS (ctest)" ctest --test-dir "$core_dir" --output-on-failure -j "$(nproc)"
 
-step "fuzz every parser target (30 s each)" scripts/fuzz.sh 30
+step "fuzz every parser target (20 s each)" scripts/fuzz.sh 20
 
 echo
 [ ${#failures[@]} -eq 0 ] || echo "test.sh: FAILED steps: ${failures[*]}"

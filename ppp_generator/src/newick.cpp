@@ -20,6 +20,8 @@ constexpr const char* kSpecial = "()[]':;,";
 
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 bool isSpecial(char c) { return c != '\0' && std::strchr(kSpecial, c) != nullptr; }
+/// Control characters (NUL included) have no place in a label, quoted or not.
+bool isControl(char c) { return (static_cast<unsigned char>(c) < 0x20 && !isBlank(c)) || c == 0x7f; }
 
 void appendLabel(std::string* out, const std::string& label) {
   const bool quote =
@@ -127,6 +129,10 @@ class NewickReader {
     }
   }
 
+  [[noreturn]] void failControl(char c) {
+    fail("label", "control character (byte " + std::to_string(static_cast<unsigned char>(c)) + ") in a label");
+  }
+
   std::string readLabel() {
     std::string label;
     if (peek() == '\'') {
@@ -134,6 +140,7 @@ class NewickReader {
       while (true) {
         if (pos_ >= text_.size()) fail("label", "unterminated quoted label");
         const char c = text_[pos_++];
+        if (isControl(c)) failControl(c);
         if (c != '\'') {
           label += c;
         } else if (peek() == '\'') {
@@ -145,7 +152,10 @@ class NewickReader {
       }
       return label;
     }
-    while (pos_ < text_.size() && !isBlank(text_[pos_]) && !isSpecial(text_[pos_])) label += text_[pos_++];
+    while (pos_ < text_.size() && !isBlank(text_[pos_]) && !isSpecial(text_[pos_])) {
+      if (isControl(text_[pos_])) failControl(text_[pos_]);
+      label += text_[pos_++];
+    }
     return label;
   }
 

@@ -133,6 +133,11 @@ TEST(NewickTest, MalformedTextThrowsParseError) {
       "(a[comment]:1,b:1);",     // comments
       "a b;",                    // two labels
       ";",                       // no tree
+      // Found by newick_fuzz: a NUL inside a quoted label was read, then toNewick's output was refused.
+      std::string("((a:0.5,b:0.5):1.24,'\0\0d':1.75);", 32),
+      std::string("(a\0b:1,c:1);", 12),  // NUL in an unquoted label
+      "(a\x01:1,b:1);",          // other control characters
+      "('a\x7f':1,b:1);",
   };
   for (const std::string& text : bad) {
     try {
@@ -142,6 +147,15 @@ TEST(NewickTest, MalformedTextThrowsParseError) {
       EXPECT_EQ(e.file(), "newick") << e.what();
       EXPECT_EQ(e.line(), 1) << e.what();
     }
+  }
+}
+
+TEST(NewickTest, ControlCharactersInALabelAreNamed) {
+  try {
+    parseNewick(std::string("((a:0.5,b:0.5):1.24,'\0d':1.75);", 31), nullptr);
+    ADD_FAILURE() << "accepted a NUL in a label";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("label: control character (byte 0) in a label"), std::string::npos) << e.what();
   }
 }
 

@@ -4,18 +4,16 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/fuzz_finding.hpp"
 #include "ppp_core/ppp_file.hpp"
 
 namespace {
 
 [[noreturn]] void finding(const char* what, const std::string& detail) {
-  std::fprintf(stderr, "ppp_parser_fuzz: %s\n%s\n", what, detail.c_str());
-  std::abort();
+  ppp::fuzz::finding("ppp_parser_fuzz", what, detail);
 }
 
 }  // namespace

@@ -37,7 +37,11 @@ YAML::Node YamlMapReader::lookup(const std::string& key) {
 
 void YamlMapReader::rejectUnknownKeys() const {
   for (const auto& entry : node_) {
-    const std::string key = entry.first.as<std::string>();
+    if (!entry.first.IsScalar()) {
+      throw ParseError(source_, entry.first.Mark().line + 1, context_.empty() ? "yaml" : context_,
+                       "expected plain keys, got a list or mapping as a key");
+    }
+    const std::string key = entry.first.Scalar();
     if (known_.count(key) != 0) continue;
     std::string valid;
     for (const std::string& k : known_) valid += (valid.empty() ? "" : ", ") + k;

@@ -45,5 +45,23 @@ TEST(YamlReaderTest, NotAMappingAndBadSyntax) {
   EXPECT_THROW(loadYamlFile("/nonexistent.yaml"), IoError);
 }
 
+TEST(YamlReaderTest, AListOrMappingAsAKeyIsAParseError) {
+  // Found by experiment_yaml_fuzz: yaml-cpp's own exception escaped when a key was not a scalar.
+  for (const char* text : {"runs: 1\n{a: 1}: 2\n", "[x, y]: 1\n"}) {
+    const YAML::Node root = YAML::Load(text);
+    YamlMapReader reader(root, "k.yaml");
+    reader.lookup("runs");
+    try {
+      reader.rejectUnknownKeys();
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const ParseError& e) {
+      EXPECT_NE(std::string(e.what()).find("k.yaml:"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("yaml: expected plain keys, got a list or mapping as a key"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ppp

@@ -65,8 +65,25 @@ inline std::string nodeText(const YAML::Node& node) {
   return "nothing";
 }
 
-/// A string as a YAML flow scalar: plain when that reads back as the same string, else single-quoted.
+/// A string as a YAML flow scalar: plain when that reads back as the same string, else single-quoted, or
+/// double-quoted with escapes when it holds control characters (a single-quoted newline would be folded).
 inline std::string quoted(const std::string& text) {
+  const auto control = [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; };
+  if (std::any_of(text.begin(), text.end(), control)) {
+    std::string out = "\"";
+    for (char c : text) {
+      if (control(c)) {
+        const char* digits = "0123456789abcdef";
+        const auto byte = static_cast<unsigned char>(c);
+        out += std::string("\\x") + digits[byte >> 4] + digits[byte & 15];
+      } else if (c == '"' || c == '\\') {
+        out += std::string("\\") + c;
+      } else {
+        out += c;
+      }
+    }
+    return out + "\"";
+  }
   bool plain = !text.empty();
   for (char c : text) {
     const bool ok = std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '/' || c == '.' || c == '-';
