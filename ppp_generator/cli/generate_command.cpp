@@ -31,12 +31,7 @@ struct GenerateFlags {
 /// The options of --config with the option flags applied. @throws IoError, ParseError, InvalidArgument.
 generator::GeneratorOptions resolveOptions(const CLI::App& command, const GenerateFlags& f) {
   generator::GeneratorOptions o = generator::loadGeneratorOptions(f.config);
-  applyOptionFlags(command, generator::generatorOptionSpecs(), f.options, &o);
-  try {
-    o.validate();
-  } catch (const InvalidArgument& e) {
-    throw namingTheFlag(command, generator::generatorOptionSpecs(), e);
-  }
+  applyAndValidateFlags(command, generator::generatorOptionSpecs(), f.options, &o);
   return o;
 }
 

@@ -198,7 +198,7 @@ void writeProblemSetDirectory(const std::string& dir, const ProblemSet& set, con
   if (error) throw IoError(dir, "cannot move the finished set into place: " + error.message());
 }
 
-ProblemSet readProblemSetDirectory(const std::string& dir) {
+std::vector<std::string> problemSetFiles(const std::string& dir) {
   const fs::path root(dir);
   const std::string csv_path = (root / kSetFile).string();
   const std::string text = readTextFile(csv_path, 64u << 20);
@@ -210,9 +210,6 @@ ProblemSet readProblemSetDirectory(const std::string& dir) {
   if (line != csvLine(setCsvHeader()) && line != csvLine(before_diversity)) {
     throw ParseError(csv_path, 1, "header", "not a PPP set file (expected the header written by ppp generate)");
   }
-  GeneratorOptions options;
-  if (fs::exists(root / kOptionsFile)) options = loadGeneratorOptions((root / kOptionsFile).string());
-  std::vector<Problem> problems;
   std::vector<std::string> files;
   int line_number = 1;
   while (std::getline(lines, line)) {
@@ -223,12 +220,20 @@ ProblemSet readProblemSetDirectory(const std::string& dir) {
     if (comma == std::string::npos || second == std::string::npos) {
       throw ParseError(csv_path, line_number, "file", "expected id,file,...");
     }
-    const std::string path = (root / line.substr(comma + 1, second - comma - 1)).string();
-    problems.push_back(readPppFile(path));
-    files.push_back(path);
+    files.push_back((root / line.substr(comma + 1, second - comma - 1)).string());
   }
-  if (problems.empty()) throw ParseError(csv_path, line_number, "set", "lists no PPPs");
-  return buildSet(std::move(problems), files, options.weights, csv_path);
+  if (files.empty()) throw ParseError(csv_path, line_number, "set", "lists no PPPs");
+  return files;
+}
+
+ProblemSet readProblemSetDirectory(const std::string& dir) {
+  const fs::path root(dir);
+  const std::vector<std::string> files = problemSetFiles(dir);
+  GeneratorOptions options;
+  if (fs::exists(root / kOptionsFile)) options = loadGeneratorOptions((root / kOptionsFile).string());
+  std::vector<Problem> problems;
+  for (const std::string& file : files) problems.push_back(readPppFile(file));
+  return buildSet(std::move(problems), files, options.weights, (root / kSetFile).string());
 }
 
 bool hasProblemSet(const std::string& dir) { return fs::exists(fs::path(dir) / kSetFile); }

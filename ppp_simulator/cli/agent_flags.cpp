@@ -40,12 +40,7 @@ agents::AgentConfig AgentFlags::agent() const {
 
 simulator::EpisodeOptions AgentFlags::episode() const {
   simulator::EpisodeOptions options;
-  applyOptionFlags(*command_, simulator::episodeOptionSpecs(), given_, &options);
-  try {
-    options.validate();
-  } catch (const InvalidArgument& e) {
-    throw namingTheFlag(*command_, simulator::episodeOptionSpecs(), e);
-  }
+  applyAndValidateFlags(*command_, simulator::episodeOptionSpecs(), given_, &options);
   return options;
 }
 

@@ -34,12 +34,7 @@ struct ExperimentFlags {
 
 int runExperimentCommand(const ExperimentFlags& f) {
   simulator::ExperimentConfig config = simulator::loadExperimentConfig(f.config);
-  applyOptionFlags(*f.command, overridingSpecs(), f.overrides, &config);
-  try {
-    config.validate();
-  } catch (const InvalidArgument& e) {
-    throw namingTheFlag(*f.command, overridingSpecs(), e);
-  }
+  applyAndValidateFlags(*f.command, overridingSpecs(), f.overrides, &config);
   const simulator::ExperimentWork work = simulator::estimateWork(config);
   simulator::checkWork(work, f.large);
   if (!f.quiet) std::cerr << "experiment: " << simulator::workSummary(work) << "\n";

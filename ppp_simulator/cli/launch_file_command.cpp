@@ -42,12 +42,8 @@ void runLaunchFile(LaunchFileFlags flags) {
   simulator::ExperimentConfig config = simulator::loadExperimentConfig(flags.config);
   for (const std::string& p : flags.planners) applyPlanner(p, &config);
   if (flags.graph.hunt.empty()) simulator::checkWork(simulator::estimateWork(config), flags.large);
-  applyOptionFlags(*flags.command, simulator::simulatorOptionSpecs(), flags.simulator_flags, &flags.graph.simulator);
-  try {
-    flags.graph.simulator.validate();
-  } catch (const InvalidArgument& e) {
-    throw namingTheFlag(*flags.command, simulator::simulatorOptionSpecs(), e);
-  }
+  applyAndValidateFlags(*flags.command, simulator::simulatorOptionSpecs(), flags.simulator_flags,
+                        &flags.graph.simulator);
   flags.graph.config_path = fs::absolute(flags.config).lexically_normal().string();
   flags.graph.output_dir = fs::absolute(flags.output).lexically_normal().string();
   if (flags.graph.hunt.empty()) simulator::checkExperimentDirectory(config, flags.graph.output_dir);

@@ -151,7 +151,7 @@ ExperimentWork estimateWork(const ExperimentConfig& config) {
       }
     } else {
       try {
-        problems = static_cast<double>(generator::readProblemSetDirectory(set.directory).problems.size());
+        problems = static_cast<double>(generator::problemSetFiles(set.directory).size());
       } catch (const Error&) {
         problems = 0;  // the experiment itself reports an unreadable set
       }

@@ -69,5 +69,18 @@ InvalidArgument namingTheFlag(const CLI::App& command, const std::vector<OptionS
   return error;
 }
 
+/// applyOptionFlags(), then `options->validate()`, its error naming the flag when that option was given as one.
+/// @throws InvalidArgument.
+template <typename Options>
+void applyAndValidateFlags(const CLI::App& command, const std::vector<OptionSpec<Options>>& specs,
+                           const std::map<std::string, std::string>& given, Options* options) {
+  applyOptionFlags(command, specs, given, options);
+  try {
+    options->validate();
+  } catch (const InvalidArgument& e) {
+    throw namingTheFlag(command, specs, e);
+  }
+}
+
 }  // namespace cli
 }  // namespace ppp

@@ -59,6 +59,10 @@ void checkOutputDirectory(const std::string& dir);
 /// Writes tree.nwk, tree.json and tree.html (with thumbnails) for a set into `dir`. @throws IoError.
 void writeTreeFiles(const std::string& dir, const ProblemSet& set, const Taxonomy& taxonomy);
 
+/// The `.ppp` files a set directory's `set.csv` lists, in its order (without reading them).
+/// @throws IoError, ParseError naming set.csv, its line and field.
+std::vector<std::string> problemSetFiles(const std::string& dir);
+
 /// Reads a set directory written by writeProblemSetDirectory (its `set.csv` and `.ppp` files) and
 /// re-evaluates every PPP. @throws IoError, ParseError.
 ProblemSet readProblemSetDirectory(const std::string& dir);

@@ -59,7 +59,7 @@ constexpr double kLargeEpisodes = 1e8;       ///< Episodes plus hunting episodes
 constexpr double kLargeMatings = 1e8;        ///< Mating events in all (the default: 3e4).
 constexpr double kLargeResultBytes = 1e10;   ///< results.csv bytes (the default: 1.5e8).
 
-/// Estimates the work of `config`; sets given as directories are counted as they are on disk (0 when unreadable).
+/// Estimates the work of `config`; sets given as directories are counted from their set.csv (0 when unreadable).
 ExperimentWork estimateWork(const ExperimentConfig& config);
 
 /// The estimate in a line ("1.8e+06 episodes, 1.2e+07 while hunting, 30000 matings, results.csv about 160 MB").
