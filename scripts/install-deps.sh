@@ -16,11 +16,32 @@ packages=(
   rviz xvfb xauth imagemagick python3-pil
   # libraries the core and the tools use
   libpng-dev libyaml-cpp-dev liboctomap-dev libeigen3-dev nlohmann-json3-dev libcli11-dev
-  # a network namespace of its own for the main command (unshare, ip) and the sockets check (ss)
-  util-linux iproute2
+  # a network namespace of its own for the main command (unshare, ip) and the sockets check (ss); the
+  # multi-machine test's second host: ssh keys, and the library Debian's sshd (unpacked below) needs
+  util-linux iproute2 openssh-client libwrap0
   # tests, benchmarks and the fuzzer
   libgtest-dev libbenchmark-dev clang libclang-rt-14-dev
 )
+
+# The multi-machine test runs Debian's sshd inside a network namespace of its own. Installing openssh-server
+# would start an ssh service on the machine, so its package is only unpacked, into the build directory.
+sshd_dir="${PPP_BUILD_DIR:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/build}/sshd"
+unpack_sshd() {
+  [ -x "$sshd_dir/usr/sbin/sshd" ] && return 0
+  local download
+  download="$(mktemp -d)"
+  chmod 755 "$download"  # apt fetches as its own user
+  (cd "$download" && apt-get download -q openssh-server > /dev/null 2>&1) || \
+    { apt-get update -q > /dev/null && (cd "$download" && apt-get download -q openssh-server > /dev/null); } || {
+    echo "install-deps: cannot download openssh-server (for the multi-machine test)" >&2
+    rm -rf "$download"
+    return 1
+  }
+  mkdir -p "$sshd_dir"
+  dpkg-deb -x "$download"/openssh-server_*.deb "$sshd_dir"
+  rm -rf "$download"
+  echo "install-deps: unpacked Debian's sshd into $sshd_dir (not installed as a service)"
+}
 
 missing=()
 for package in "${packages[@]}"; do
@@ -31,7 +52,8 @@ done
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages present"
-  exit 0
+  unpack_sshd
+  exit
 fi
 
 echo "install-deps: installing ${missing[*]}"
@@ -40,3 +62,4 @@ if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
 export DEBIAN_FRONTEND=noninteractive
 "${sudo_cmd[@]}" apt-get update -q
 "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+unpack_sshd

@@ -77,8 +77,8 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
           recorder.recordScans(name, scans);
         }));
   }
-  ROS_INFO("running %ld episodes (%zu already done) with %zu agent nodes, batches of %d", remaining,
-           results.done().size(), lanes.size(), parameters.batch_size);
+  ROS_INFO("running %ld episodes (%zu already done, %zu lost to the agent link played again) with %zu agent nodes, "
+           "batches of %d", remaining, results.done().size(), results.lostRuns(), lanes.size(), parameters.batch_size);
   std::vector<std::thread> threads;
   for (std::size_t i = 0; i < runners.size(); ++i) {
     threads.emplace_back([&runners, &lanes, i] { runners[i]->run(lanes[i].get()); });

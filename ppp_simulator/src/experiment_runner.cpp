@@ -152,7 +152,7 @@ void finishExperiment(const ExperimentConfig& config, const std::string& config_
                       const std::vector<PreparedSet>& sets, ResultsFile* results, const StopCheck& stop) {
   stopIfAsked(stop);
   // Canonical order, so the finished file does not depend on threads, batches or interruptions.
-  std::vector<EpisodeResult> rows = readResultsFile(resultsPath(dir));
+  std::vector<EpisodeResult> rows = standingRows(readResultsFile(resultsPath(dir)));
   std::map<std::string, int> set_order, agent_order;
   for (std::size_t i = 0; i < sets.size(); ++i) set_order[sets[i].name] = static_cast<int>(i);
   for (std::size_t i = 0; i < config.agents.size(); ++i) agent_order[config.agents[i].name] = static_cast<int>(i);
@@ -211,6 +211,9 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
     }
   }
   if (report.episodes_resumed > 0) say(log, "resuming: " + std::to_string(report.episodes_resumed) + " runs already done");
+  if (results.lostRuns() > 0) {
+    say(log, "playing again " + std::to_string(results.lostRuns()) + " runs lost to the agent link (timeout, agent_lost)");
+  }
 
   std::atomic<std::size_t> next_unit{0};
   std::atomic<long> done{report.episodes_resumed};

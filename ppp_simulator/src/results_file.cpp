@@ -1,5 +1,6 @@
 #include "ppp_simulator/results_file.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -41,6 +42,22 @@ std::size_t parseRows(const std::string& text, const std::string& path, std::vec
 
 }  // namespace
 
+RunKey runKey(const EpisodeResult& row) { return RunKey{row.set, row.problem, row.agent, row.run}; }
+
+bool isLostRun(const EpisodeResult& row) { return row.reason == reason::kTimeout || row.reason == reason::kAgentLost; }
+
+std::vector<EpisodeResult> standingRows(std::vector<EpisodeResult> rows) {
+  if (std::none_of(rows.begin(), rows.end(), isLostRun)) return rows;  // no run was played twice
+  std::set<RunKey> seen;
+  std::vector<bool> stands(rows.size());
+  for (std::size_t i = rows.size(); i-- > 0;) stands[i] = seen.insert(runKey(rows[i])).second;
+  std::vector<EpisodeResult> standing;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (stands[i]) standing.push_back(std::move(rows[i]));
+  }
+  return standing;
+}
+
 std::vector<EpisodeResult> readResultsFile(const std::string& path) {
   std::vector<EpisodeResult> rows;
   parseRows(readTextFile(path, kMaxResultsBytes), path, &rows);
@@ -53,7 +70,11 @@ ResultsFile::ResultsFile(const std::string& path) : path_(path) {
     const std::string text = readTextFile(path, kMaxResultsBytes);
     const std::size_t complete = parseRows(text, path, &existing_);
     if (complete < text.size()) fs::resize_file(path, complete);
-    for (const EpisodeResult& r : existing_) done_.insert(RunKey{r.set, r.problem, r.agent, r.run});
+    for (const EpisodeResult& r : existing_) {  // a run's last row decides, as in standingRows
+      const RunKey key = runKey(r);
+      (isLostRun(r) ? lost_ : done_).insert(key);
+      (isLostRun(r) ? done_ : lost_).erase(key);
+    }
   }
   out_.open(path, std::ios::app);
   if (!out_) throw IoError(path, std::string("cannot write: ") + std::strerror(errno));

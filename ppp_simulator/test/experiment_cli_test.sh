@@ -57,6 +57,18 @@ grep -q "resumed" "$work/out" && pass || fail "no resume reported: $(cat "$work/
 cmp -s "$work/a/results.csv" "$work/b/results.csv" && pass || fail "results after SIGKILL + resume differ from an uninterrupted run"
 cmp -s "$work/a/summary.csv" "$work/b/summary.csv" && pass || fail "summary after SIGKILL + resume differs"
 
+# Runs lost to the agent link (rows a ROS run records as timeout or agent_lost) are played again on a resume, and
+# their new rows replace them: here every 997th run of the finished experiment is recorded as lost instead.
+cp -r "$work/a" "$work/l"
+awk 'NR == 1 || NR % 997 != 0' "$work/a/results.csv" > "$work/l/results.csv"
+awk -F, -v OFS=, 'NR > 1 && NR % 997 == 0 { $6 = 0; $11 = (NR % 2 ? "timeout" : "agent_lost"); print }' \
+  "$work/a/results.csv" >> "$work/l/results.csv"
+lost=$(grep -c ",timeout$\|,agent_lost$" "$work/l/results.csv")
+expect_ok "resume with lost runs" "$ppp" experiment "$work/experiment.yaml" -o "$work/l"
+grep -q "playing again $lost runs lost to the agent link" "$work/err" "$work/out" && pass || \
+  fail "no word about $lost lost runs: $(cat "$work/err")"
+cmp -s "$work/a/results.csv" "$work/l/results.csv" && pass || fail "lost runs played again differ from an uninterrupted run"
+
 status=$(interrupt "$work/c" TERM)
 [ "$status" -eq 130 ] && pass || fail "SIGTERM: exit status $status, expected 130"
 grep -q "Rerun the same command to resume" "$work/int.err" && pass || fail "SIGTERM message: $(cat "$work/int.err")"

@@ -80,6 +80,45 @@ TEST_F(ResultsFileTest, RewriteKeepsTheGivenOrder) {
   EXPECT_EQ(rows[1].run, 1);
 }
 
+EpisodeResult lost(int run, const char* why) {
+  EpisodeResult r = row(run, false);
+  r.reason = why;
+  return r;
+}
+
+TEST_F(ResultsFileTest, LostRunsAreNotDoneAndTheirReplaySupersedesThem) {
+  { ResultsFile(path_).append({row(0, true), lost(1, "timeout"), lost(2, "agent_lost"), row(3, false)}); }
+  {
+    ResultsFile file(path_);
+    EXPECT_EQ(file.done().size(), 2u);
+    EXPECT_EQ(file.done().count(RunKey{"turns", "ppp_000", "random", 1}), 0u);
+    EXPECT_EQ(file.done().count(RunKey{"turns", "ppp_000", "random", 2}), 0u);
+    EXPECT_EQ(file.done().count(RunKey{"turns", "ppp_000", "random", 3}), 1u);  // budget_exhausted is a verdict
+    EXPECT_EQ(file.lostRuns(), 2u);
+    file.append({row(2, true), lost(1, "agent_lost")});  // run 1 is lost again, run 2 now plays out
+  }
+  ResultsFile file(path_);
+  EXPECT_EQ(file.lostRuns(), 1u);
+  EXPECT_EQ(file.done().count(RunKey{"turns", "ppp_000", "random", 2}), 1u);
+  const std::vector<EpisodeResult> standing = standingRows(readResultsFile(path_));
+  ASSERT_EQ(standing.size(), 4u);
+  EXPECT_EQ(standing[0].run, 0);
+  EXPECT_EQ(standing[1].run, 3);
+  EXPECT_EQ(standing[2].run, 2);
+  EXPECT_TRUE(standing[2].passed);
+  EXPECT_EQ(standing[3].run, 1);
+  EXPECT_EQ(standing[3].reason, "agent_lost");
+}
+
+TEST_F(ResultsFileTest, RowsWithoutLostRunsAllStand) {
+  // Without lost runs nothing is played twice: even rows of one run (which a resume never writes) are kept.
+  const std::vector<EpisodeResult> rows = {row(0, true), row(0, false), lost(1, "budget_exhausted")};
+  EXPECT_EQ(standingRows(rows).size(), 3u);
+  EXPECT_FALSE(isLostRun(rows[2]));
+  EXPECT_TRUE(isLostRun(lost(1, "timeout")));
+  EXPECT_FALSE(isLostRun(lost(1, "planner_timeout")));  // a planner's own failure is a verdict on the planner
+}
+
 }  // namespace
 }  // namespace simulator
 }  // namespace ppp
