@@ -10,6 +10,7 @@
 #include <ros/ros.h>
 
 #include <algorithm>
+#include <exception>
 #include <memory>
 #include <thread>
 
@@ -80,16 +81,33 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
   ROS_INFO("running %ld episodes (%zu already done, %zu lost to the agent link played again) with %zu agent nodes, "
            "batches of %d", remaining, results.done().size(), results.lostRuns(), lanes.size(), parameters.batch_size);
   std::vector<std::thread> threads;
+  std::vector<std::exception_ptr> failures(runners.size());
   for (std::size_t i = 0; i < runners.size(); ++i) {
-    threads.emplace_back([&runners, &lanes, i] { runners[i]->run(lanes[i].get()); });
+    threads.emplace_back([&runners, &lanes, &failures, i] {
+      try {
+        runners[i]->run(lanes[i].get());
+      } catch (...) {  // results.csv or the bag cannot be written (a full disk): every lane stops, the node exits
+        failures[i] = std::current_exception();
+        ros::requestShutdown();
+      }
+    });
   }
   for (std::thread& t : threads) t.join();
+  for (const std::exception_ptr& failure : failures) {
+    if (failure) std::rethrow_exception(failure);
+  }
   recorder.close();
   if (!ros::ok()) {
     ROS_WARN("interrupted: every finished run is in results.csv; restart on the same output_dir to resume");
     return 130;
   }
-  finishExperiment(config, config_text, parameters.output_dir, sets, &results);
+  try {
+    finishExperiment(config, config_text, parameters.output_dir, sets, &results, [] { return !ros::ok(); },
+                     [](const std::string& line) { ROS_INFO("%s", line.c_str()); });
+  } catch (const Interrupted&) {
+    ROS_WARN("interrupted while writing the report: restart on the same output_dir to write it");
+    return 130;
+  }
   ROS_INFO("experiment done: report in %s/report.html", parameters.output_dir.c_str());
   return 0;
 }

@@ -138,7 +138,8 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
 }
 
 void writeExperimentReport(const std::string& dir, const ExperimentConfig& config, const std::string& config_text,
-                           const std::vector<PreparedSet>& sets, const std::vector<EpisodeResult>& rows) {
+                           const std::vector<PreparedSet>& sets, const std::vector<EpisodeResult>& rows,
+                           const StopCheck& stop) {
   std::vector<std::string> set_names, agent_names;
   for (const PreparedSet& s : sets) set_names.push_back(s.name);
   // Agents with no rows (planners in an in-process run) are left out of the tables.
@@ -166,8 +167,11 @@ void writeExperimentReport(const std::string& dir, const ExperimentConfig& confi
   for (std::size_t a = 0; a < sets.size(); ++a) {
     for (std::size_t b = a + 1; b < sets.size(); ++b) input.comparisons.emplace_back(sets[a].name, sets[b].name);
   }
+  stopIfAsked(stop);
   input.failures = hardestFailures(config, sets, rows, config.hardest);
+  stopIfAsked(stop);
   input.worst = worstFailures(config, sets, rows);
+  stopIfAsked(stop);
   for (const PreparedSet& set : sets) {
     SetInfo info{set.name, set.set.diversity, ""};
     const std::filesystem::path archive = std::filesystem::path(set.directory) / "archive.svg";
@@ -178,7 +182,7 @@ void writeExperimentReport(const std::string& dir, const ExperimentConfig& confi
   }
   std::filesystem::create_directories(dir);
   writeSummaryCsv((std::filesystem::path(dir) / "summary.csv").string(), input.rates);
-  writeReport(dir, input);
+  writeReport(dir, input, stop);
 }
 
 }  // namespace simulator

@@ -1,6 +1,7 @@
 #include "ppp_simulator/experiment_runner.hpp"
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -26,6 +27,7 @@ namespace {
 
 constexpr const char* kFingerprintFile = "experiment.yaml";
 constexpr const char* kResultsFile = "results.csv";
+constexpr std::size_t kRowsPerStopCheck = 1 << 14;  // rows handled between two questions to the StopCheck
 
 /// One batch of work: every remaining run of one agent on one PPP.
 struct Unit {
@@ -37,6 +39,37 @@ struct Unit {
 
 void say(const std::function<void(const std::string&)>& log, const std::string& text) {
   if (log) log(text);
+}
+
+/// The rows in canonical order (set, PPP, agent, run as the config lists them), so the finished results.csv does
+/// not depend on threads, batches or interruptions. @throws ParseError (a row of another experiment), Interrupted.
+std::vector<EpisodeResult> canonicalOrder(std::vector<EpisodeResult> rows, const ExperimentConfig& config,
+                                          const std::vector<PreparedSet>& sets, const std::string& path,
+                                          const StopCheck& stop) {
+  std::map<std::string, int> set_order, agent_order, problem_order;
+  for (std::size_t i = 0; i < sets.size(); ++i) set_order[sets[i].name] = static_cast<int>(i);
+  for (std::size_t i = 0; i < config.agents.size(); ++i) agent_order[config.agents[i].name] = static_cast<int>(i);
+  for (const EpisodeResult& r : rows) problem_order.try_emplace(r.problem, 0);
+  int rank = 0;
+  for (auto& entry : problem_order) entry.second = rank++;  // problem ids in text order
+  // Each row's (set, problem, agent, run) positions, looked up once, then sorted as plain numbers.
+  std::vector<std::pair<std::array<int, 4>, std::size_t>> keys(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (i % kRowsPerStopCheck == 0) stopIfAsked(stop);
+    const auto set = set_order.find(rows[i].set);
+    const auto agent = agent_order.find(rows[i].agent);
+    if (set == set_order.end() || agent == agent_order.end()) {
+      throw ParseError(path, 0, "row",
+                       "run of set '" + rows[i].set + "', agent '" + rows[i].agent + "' is not part of this experiment");
+    }
+    keys[i] = {{set->second, problem_order[rows[i].problem], agent->second, rows[i].run}, i};
+  }
+  stopIfAsked(stop);
+  std::sort(keys.begin(), keys.end());
+  std::vector<EpisodeResult> sorted;
+  sorted.reserve(rows.size());
+  for (const auto& key : keys) sorted.push_back(std::move(rows[key.second]));
+  return sorted;
 }
 
 }  // namespace
@@ -149,27 +182,17 @@ std::vector<PreparedSet> beginExperiment(const ExperimentConfig& config, const s
 std::string resultsPath(const std::string& dir) { return (fs::path(dir) / kResultsFile).string(); }
 
 void finishExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
-                      const std::vector<PreparedSet>& sets, ResultsFile* results, const StopCheck& stop) {
+                      const std::vector<PreparedSet>& sets, ResultsFile* results, const StopCheck& stop,
+                      const std::function<void(const std::string&)>& log) {
   stopIfAsked(stop);
-  // Canonical order, so the finished file does not depend on threads, batches or interruptions.
-  std::vector<EpisodeResult> rows = standingRows(readResultsFile(resultsPath(dir)));
-  std::map<std::string, int> set_order, agent_order;
-  for (std::size_t i = 0; i < sets.size(); ++i) set_order[sets[i].name] = static_cast<int>(i);
-  for (std::size_t i = 0; i < config.agents.size(); ++i) agent_order[config.agents[i].name] = static_cast<int>(i);
-  for (const EpisodeResult& r : rows) {
-    if (set_order.count(r.set) == 0 || agent_order.count(r.agent) == 0) {
-      throw ParseError(resultsPath(dir), 0, "row",
-                       "run of set '" + r.set + "', agent '" + r.agent + "' is not part of this experiment");
-    }
-  }
-  std::sort(rows.begin(), rows.end(), [&](const EpisodeResult& a, const EpisodeResult& b) {
-    return std::make_tuple(set_order[a.set], a.problem, agent_order[a.agent], a.run) <
-           std::make_tuple(set_order[b.set], b.problem, agent_order[b.agent], b.run);
-  });
+  say(log, "finishing: results.csv in run order");
+  std::vector<EpisodeResult> sorted =
+      canonicalOrder(standingRows(readResultsFile(resultsPath(dir), stop)), config, sets, resultsPath(dir), stop);
   stopIfAsked(stop);
-  results->rewrite(rows);
+  results->rewrite(sorted, stop);
   stopIfAsked(stop);
-  writeExperimentReport(dir, config, config_text, sets, rows);
+  say(log, "writing the report");
+  writeExperimentReport(dir, config, config_text, sets, sorted, stop);
 }
 
 ExperimentReport runExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
@@ -220,12 +243,13 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
   std::mutex progress_mutex;
   std::exception_ptr failure;
   std::mutex failure_mutex;
+  std::atomic<bool> failed{false};  // the other workers stop at once when one fails (a full disk, say)
   auto worker = [&]() {
     try {
       std::map<int, std::pair<std::unique_ptr<agents::Agent>, std::unique_ptr<EpisodeRunner>>> agents;
       std::vector<EpisodeResult> rows;
       for (;;) {
-        if (stop && stop()) return;
+        if ((stop && stop()) || failed.load()) return;
         const std::size_t u = next_unit.fetch_add(1);
         if (u >= units.size()) return;
         const Unit& unit = units[u];
@@ -254,6 +278,7 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
     } catch (...) {
       std::lock_guard<std::mutex> lock(failure_mutex);
       if (!failure) failure = std::current_exception();
+      failed.store(true);
     }
   };
   const int thread_count =
@@ -264,7 +289,7 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
   if (failure) std::rethrow_exception(failure);
   report.episodes_run = done.load() - report.episodes_resumed;
   try {
-    finishExperiment(config, config_text, dir, sets, &results, stop);
+    finishExperiment(config, config_text, dir, sets, &results, stop, log);
   } catch (const Interrupted&) {
     report.interrupted = true;
   }

@@ -236,12 +236,13 @@ PictureOptions pictureOptions(const Problem& problem) {
   return options;
 }
 
-std::vector<Picture> makePictures(const std::vector<FailureExample>& failures) {
+std::vector<Picture> makePictures(const std::vector<FailureExample>& failures, const StopCheck& stop) {
   std::vector<Picture> pictures;
   FileNames png_names;
   FileNames ppp_names;
   std::map<std::pair<std::string, std::string>, std::pair<std::string, Problem>> ppp_files;  // (set, problem)
   for (std::size_t i = 0; i < failures.size(); ++i) {
+    stopIfAsked(stop);
     const FailureExample& failure = failures[i];
     Picture picture;
     try {
@@ -626,12 +627,12 @@ void makeDirectory(const std::string& path) {
 
 }  // namespace
 
-void writeReport(const std::string& dir, const ReportInput& input) {
+void writeReport(const std::string& dir, const ReportInput& input, const StopCheck& stop) {
   checkComparisons(input);
   const std::vector<Plot> plots = makePlots(input.rates);
   std::vector<FailureExample> shown = input.failures;
   shown.insert(shown.end(), input.worst.begin(), input.worst.end());
-  const std::vector<Picture> all_pictures = makePictures(shown);
+  const std::vector<Picture> all_pictures = makePictures(shown, stop);
   const std::vector<Picture> pictures(all_pictures.begin(), all_pictures.begin() + input.failures.size());
   const std::vector<Picture> worst_pictures(all_pictures.begin() + input.failures.size(), all_pictures.end());
 
@@ -657,16 +658,18 @@ void writeReport(const std::string& dir, const ReportInput& input) {
     makeDirectory((root / "pictures").string());
     makeDirectory((root / "ppps").string());
   }
-  for (const Plot& plot : plots) writeFileAtomically((root / plot.file).string(), plot.file_svg);
+  const auto write = [&](const std::string& file, const std::string& contents) {
+    stopIfAsked(stop);
+    writeFileAtomically((root / file).string(), contents);
+  };
+  for (const Plot& plot : plots) write(plot.file, plot.file_svg);
   std::set<std::string> written_ppps;
   for (std::size_t i = 0; i < all_pictures.size(); ++i) {
-    writeFileAtomically((root / all_pictures[i].png_file).string(), all_pictures[i].png);
-    if (written_ppps.insert(all_pictures[i].ppp_file).second) {
-      writePppFile(shown[i].ppp, (root / all_pictures[i].ppp_file).string());
-    }
+    write(all_pictures[i].png_file, all_pictures[i].png);
+    if (written_ppps.insert(all_pictures[i].ppp_file).second) write(all_pictures[i].ppp_file, formatPpp(shown[i].ppp));
   }
-  writeFileAtomically((root / "report.md").string(), text.md);
-  writeFileAtomically((root / "report.html").string(), text.html);
+  write("report.md", text.md);
+  write("report.html", text.html);
 }
 
 }  // namespace simulator

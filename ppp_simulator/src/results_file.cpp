@@ -1,8 +1,6 @@
 #include "ppp_simulator/results_file.hpp"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
 #include <sstream>
 
@@ -19,11 +17,16 @@ constexpr std::size_t kMaxResultsBytes = std::size_t{8} << 30;
 
 std::string headerLine() { return csvLine(resultCsvHeader()); }
 
-/// Parses complete lines; returns the byte length of the text that holds them (a partial tail is excluded).
-std::size_t parseRows(const std::string& text, const std::string& path, std::vector<EpisodeResult>* rows) {
+constexpr int kLinesPerStopCheck = 1 << 14;  // lines read or written between two questions to the StopCheck
+
+/// Parses complete lines, asking `stop` every kLinesPerStopCheck lines; returns the byte length of the text
+/// that holds them (a partial tail is excluded).
+std::size_t parseRows(const std::string& text, const std::string& path, std::vector<EpisodeResult>* rows,
+                      const StopCheck& stop = {}) {
   std::size_t pos = 0;
   int line = 0;
   while (pos < text.size()) {
+    if (line % kLinesPerStopCheck == 0) stopIfAsked(stop);
     const std::size_t end = text.find('\n', pos);
     if (end == std::string::npos) break;  // half-written last line: dropped
     const std::string content = text.substr(pos, end - pos);
@@ -58,9 +61,9 @@ std::vector<EpisodeResult> standingRows(std::vector<EpisodeResult> rows) {
   return standing;
 }
 
-std::vector<EpisodeResult> readResultsFile(const std::string& path) {
+std::vector<EpisodeResult> readResultsFile(const std::string& path, const StopCheck& stop) {
   std::vector<EpisodeResult> rows;
-  parseRows(readTextFile(path, kMaxResultsBytes), path, &rows);
+  parseRows(readTextFile(path, kMaxResultsBytes), path, &rows, stop);
   return rows;
 }
 
@@ -76,30 +79,26 @@ ResultsFile::ResultsFile(const std::string& path) : path_(path) {
       (isLostRun(r) ? done_ : lost_).erase(key);
     }
   }
-  out_.open(path, std::ios::app);
-  if (!out_) throw IoError(path, std::string("cannot write: ") + std::strerror(errno));
-  if (existing_.empty() && fs::file_size(path) == 0) {
-    out_ << headerLine() << '\n';
-    out_.flush();
-  }
+  out_ = std::make_unique<AppendFile>(path, false);
+  if (existing_.empty() && out_->size() == 0) out_->append(headerLine() + '\n');
 }
 
 void ResultsFile::append(const std::vector<EpisodeResult>& rows) {
   std::string block;
   for (const EpisodeResult& r : rows) block += csvLine(toCsvFields(r)) + '\n';
   std::lock_guard<std::mutex> lock(mutex_);
-  out_ << block;
-  out_.flush();
-  if (!out_) throw IoError(path_, "write failed");
+  out_->append(block);
 }
 
-void ResultsFile::rewrite(const std::vector<EpisodeResult>& rows) {
+void ResultsFile::rewrite(const std::vector<EpisodeResult>& rows, const StopCheck& stop) {
   std::lock_guard<std::mutex> lock(mutex_);
   std::string text = headerLine() + '\n';
-  for (const EpisodeResult& r : rows) text += csvLine(toCsvFields(r)) + '\n';
-  out_.close();
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (i % kLinesPerStopCheck == 0) stopIfAsked(stop);
+    text += csvLine(toCsvFields(rows[i])) + '\n';
+  }
   writeFileAtomically(path_, text);
-  out_.open(path_, std::ios::app);
+  out_ = std::make_unique<AppendFile>(path_, false);
 }
 
 }  // namespace simulator

@@ -4,6 +4,8 @@
 #   expect_ok NAME COMMAND...  the command exits 0 (its output is in $work/out and $work/err)
 #   expect_error NAME TEXT COMMAND...  the command exits non-zero and stderr contains TEXT
 #   finish                     prints "N passed, N failed"; its status is the script's result
+#   small_experiment RUNS      writes $work/experiment.yaml (and its agents.yaml): 2 evolved sets x 6 small PPPs
+#                              x 3 agents x RUNS runs
 work="$(mktemp -d)"
 trap 'kill -9 $(jobs -p) 2>/dev/null; rm -rf "$work"' EXIT
 passed=0
@@ -26,4 +28,25 @@ expect_error() {
 finish() {
   echo "$passed passed, $failed failed"
   [ "$failed" -eq 0 ]
+}
+
+small_experiment() {
+  cat > "$work/agents.yaml" <<'YAML'
+agents:
+  - {name: random, type: random}
+  - {name: explorer_memory_5x5, type: explorer, memory: 5x5}
+  - {name: long_term_explorer, type: long_term_explorer}
+YAML
+  cat > "$work/experiment.yaml" <<YAML
+seed: 9
+runs: $1
+threads: 2
+hardest: 2
+agents: agents.yaml
+sets:
+  - name: turns
+    generator: {fitness: turns, population: 6, matings: 200, width: 14, height: 14, seed: 3}
+  - name: difficulty
+    generator: {fitness: difficulty, population: 6, matings: 200, width: 14, height: 14, seed: 4}
+YAML
 }

@@ -7,24 +7,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/cli_harness.sh"
 rows() { if [ -f "$1" ]; then wc -l < "$1"; else echo 0; fi; }
 
 # A small experiment: 2 sets x 6 PPPs x 3 agents x 1500 runs = 54,000 runs.
-cat > "$work/agents.yaml" <<'YAML'
-agents:
-  - {name: random, type: random}
-  - {name: explorer_memory_5x5, type: explorer, memory: 5x5}
-  - {name: long_term_explorer, type: long_term_explorer}
-YAML
-cat > "$work/experiment.yaml" <<'YAML'
-seed: 9
-runs: 1500
-threads: 2
-hardest: 2
-agents: agents.yaml
-sets:
-  - name: turns
-    generator: {fitness: turns, population: 6, matings: 200, width: 14, height: 14, seed: 3}
-  - name: difficulty
-    generator: {fitness: difficulty, population: 6, matings: 200, width: 14, height: 14, seed: 4}
-YAML
+small_experiment 1500
 total=$((2 * 6 * 3 * 1500 + 1))
 
 expect_ok "uninterrupted experiment" "$ppp" experiment "$work/experiment.yaml" -o "$work/a" --quiet

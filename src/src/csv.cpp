@@ -1,8 +1,5 @@
 #include "ppp_core/csv.hpp"
 
-#include <cerrno>
-#include <cstring>
-
 #include "ppp_core/error.hpp"
 #include "ppp_core/text_format.hpp"
 
@@ -28,8 +25,7 @@ std::string csvLine(const std::vector<std::string>& fields) {
 }
 
 CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& header)
-    : path_(path), columns_(header.size()), out_(path, std::ios::trunc) {
-  if (!out_) throw IoError(path, std::string("cannot write: ") + std::strerror(errno));
+    : path_(path), columns_(header.size()), out_(path, true) {
   write(header);
 }
 
@@ -38,9 +34,7 @@ void CsvWriter::write(const std::vector<std::string>& row) {
     throw InvalidArgument(path_, "row of " + std::to_string(row.size()) + " fields, header has " +
                                      std::to_string(columns_));
   }
-  out_ << csvLine(row) << '\n';
-  out_.flush();
-  if (!out_) throw IoError(path_, "write failed");
+  out_.append(csvLine(row) + '\n');
 }
 
 std::string formatNumber(double value) { return formatGeneral(value, 6); }

@@ -3,10 +3,13 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <fstream>
 #include <sstream>
 #include <sys/stat.h>
+#include <unistd.h>
 
+#include "ppp_core/append_file.hpp"
 #include "ppp_core/error.hpp"
 
 namespace ppp {
@@ -29,21 +32,18 @@ std::string readTextFile(const std::string& path, std::size_t max_bytes) {
 
 void writeFileAtomically(const std::string& path, const std::string& contents) {
   const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw IoError(path, std::string("cannot write: ") + std::strerror(errno));
-    out << contents;
-    out.flush();
-    if (!out) {
-      std::remove(temporary.c_str());
-      throw IoError(path, "write failed");
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) throw IoError(path, std::string("cannot write: ") + std::strerror(errno));
+  int error = writeFully(fd, contents.data(), contents.size()) ? 0 : errno;
+  if (::close(fd) != 0 && error == 0) error = errno;
+  if (error == 0) {
+    if (std::rename(temporary.c_str(), path.c_str()) == 0) return;
     const std::string reason = std::strerror(errno);
     std::remove(temporary.c_str());
     throw IoError(path, "cannot replace: " + reason);
   }
+  std::remove(temporary.c_str());
+  throw IoError(path, std::string("cannot write: ") + std::strerror(error));
 }
 
 }  // namespace ppp

@@ -23,10 +23,12 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
 std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
                                           const std::vector<EpisodeResult>& rows);
 
-/// Writes summary.csv and report.{md,html} (with plots and pictures) of a finished experiment into `dir`.
-/// @throws IoError.
+/// Writes summary.csv and report.{md,html} (with plots and pictures) of a finished experiment into `dir`;
+/// `stop` is asked between the pieces (the pass rates, the failures replayed, each picture and file).
+/// @throws IoError, Interrupted (every file written by then is whole: a rerun writes them all again).
 void writeExperimentReport(const std::string& dir, const ExperimentConfig& config, const std::string& config_text,
-                           const std::vector<PreparedSet>& sets, const std::vector<EpisodeResult>& rows);
+                           const std::vector<PreparedSet>& sets, const std::vector<EpisodeResult>& rows,
+                           const StopCheck& stop = {});
 
 }  // namespace simulator
 }  // namespace ppp

@@ -69,10 +69,11 @@ std::vector<PreparedSet> beginExperiment(const ExperimentConfig& config, const s
 std::string resultsPath(const std::string& dir);
 
 /// Puts every row of results.csv in canonical order and writes summary.csv and the report (the second half);
-/// `stop` is asked between the steps, each of which replaces its files whole. @throws IoError, ParseError,
-/// Interrupted.
+/// `stop` is asked while reading and between the steps, each of which replaces its files whole; `log` hears
+/// each step begin. @throws IoError, ParseError, Interrupted.
 void finishExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
-                      const std::vector<PreparedSet>& sets, ResultsFile* results, const StopCheck& stop = {});
+                      const std::vector<PreparedSet>& sets, ResultsFile* results, const StopCheck& stop = {},
+                      const std::function<void(const std::string&)>& log = {});
 
 /// What runExperiment() did.
 struct ExperimentReport {

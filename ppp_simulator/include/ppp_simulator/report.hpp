@@ -7,6 +7,7 @@
 
 #include "ppp_core/grid.hpp"
 #include "ppp_core/problem.hpp"
+#include "ppp_core/stop.hpp"
 #include "ppp_simulator/pass_rates.hpp"
 
 namespace ppp {
@@ -60,8 +61,9 @@ struct ReportInput {
 /// Everything is checked and rendered before the first file is written.
 /// @throws InvalidArgument naming "comparisons" for a pair naming a set the table does not have, and
 /// "failures" (with the example's index and the renderer's message) for an invalid PPP or a path cell off
-/// its grid; IoError naming the file or directory that cannot be written.
-void writeReport(const std::string& dir, const ReportInput& input);
+/// its grid; IoError naming the file or directory that cannot be written; Interrupted when `stop`, asked
+/// before each picture and each file, says stop (the files written by then are whole).
+void writeReport(const std::string& dir, const ReportInput& input, const StopCheck& stop = {});
 
 }  // namespace simulator
 }  // namespace ppp

@@ -1,12 +1,14 @@
 #pragma once
 
-#include <fstream>
+#include <memory>
 #include <mutex>
 #include <set>
 #include <string>
 #include <tuple>
 #include <vector>
 
+#include "ppp_core/append_file.hpp"
+#include "ppp_core/stop.hpp"
 #include "ppp_simulator/episode_result.hpp"
 
 namespace ppp {
@@ -26,10 +28,10 @@ bool isLostRun(const EpisodeResult& row);
 /// The rows of `rows` that stand, in their order: of several rows of one run (a lost run played again), the last.
 std::vector<EpisodeResult> standingRows(std::vector<EpisodeResult> rows);
 
-/// results.csv of an experiment, appended to as runs finish (each batch flushed at once), so that nothing
-/// written is lost when the process dies; reopening it resumes: the rows already there are kept, a
-/// half-written last line (the process died mid-write) is cut off, and lost runs (isLostRun) are left to play
-/// again.
+/// results.csv of an experiment, appended to as runs finish (each batch written whole, or not at all when the
+/// disk is full), so that nothing written is lost when the process dies; reopening it resumes: the rows already
+/// there are kept, a half-written last line (the process died mid-write) is cut off, and lost runs (isLostRun)
+/// are left to play again.
 class ResultsFile {
  public:
   /// Opens or creates `path`. @throws IoError, ParseError (a header or row that is not ours).
@@ -40,10 +42,12 @@ class ResultsFile {
   const std::set<RunKey>& done() const { return done_; }
   /// How many runs present when the file was opened were lost (and are not done).
   std::size_t lostRuns() const { return lost_.size(); }
-  /// Appends rows and flushes; safe to call from several threads. @throws IoError.
+  /// Appends rows in one write; safe to call from several threads. @throws IoError naming the file and the
+  /// system's reason (the file is then as before the call).
   void append(const std::vector<EpisodeResult>& rows);
-  /// Rewrites the file atomically with `rows` in the given order. @throws IoError.
-  void rewrite(const std::vector<EpisodeResult>& rows);
+  /// Rewrites the file atomically with `rows` in the given order, asking `stop` as it goes (the file is then
+  /// as before). @throws IoError, Interrupted.
+  void rewrite(const std::vector<EpisodeResult>& rows, const StopCheck& stop = {});
 
  private:
   std::string path_;
@@ -51,11 +55,11 @@ class ResultsFile {
   std::set<RunKey> done_;
   std::set<RunKey> lost_;
   std::mutex mutex_;
-  std::ofstream out_;
+  std::unique_ptr<AppendFile> out_;
 };
 
-/// Reads every row of a results.csv. @throws IoError, ParseError.
-std::vector<EpisodeResult> readResultsFile(const std::string& path);
+/// Reads every row of a results.csv, asking `stop` as it goes. @throws IoError, ParseError, Interrupted.
+std::vector<EpisodeResult> readResultsFile(const std::string& path, const StopCheck& stop = {});
 
 }  // namespace simulator
 }  // namespace ppp

@@ -1,8 +1,9 @@
 #pragma once
 
-#include <fstream>
 #include <string>
 #include <vector>
+
+#include "ppp_core/append_file.hpp"
 
 namespace ppp {
 
@@ -12,7 +13,7 @@ std::string csvField(const std::string& value);
 /// Joins fields into one CSV line (without the line break).
 std::string csvLine(const std::vector<std::string>& fields);
 
-/// Writes CSV rows to a file, flushing each row so nothing written is lost if the process dies.
+/// Writes CSV rows to a file, each row written whole at once, so nothing written is lost if the process dies.
 class CsvWriter {
  public:
   /// Creates (or truncates) the file and writes the header row. @throws IoError.
@@ -23,7 +24,7 @@ class CsvWriter {
  private:
   std::string path_;
   std::size_t columns_;
-  std::ofstream out_;
+  AppendFile out_;
 };
 
 /// Formats a double with up to 6 significant digits, no trailing zeros ("0.5625"), whatever the C locale.

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# A real SIGINT or SIGTERM while `ppp experiment` writes its report: it stops within a second (exit 130) and
+# leaves no half-written file; a rerun writes the report of an uninterrupted run, byte for byte.
+# Usage: report_signal_test.sh PATH_TO_PPP
+set -u
+ppp="$1"
+source "$(dirname "${BASH_SOURCE[0]}")/cli_harness.sh"
+
+# Forty 250x250 PPPs and forty pictures: the report takes some 0.4 s to render and write, the runs
+# (2 agents x 2 runs per PPP) next to nothing.
+cat > "$work/experiment.yaml" <<'YAML'
+seed: 2
+runs: 2
+threads: 2
+hardest: 40
+agents:
+  - {name: random, type: random}
+  - {name: explorer, type: explorer}
+sets:
+  - name: big
+    generator: {fitness: turns, population: 40, matings: 40, width: 250, height: 250, seed: 3}
+YAML
+report_files="summary.csv report.md report.html plots pictures ppps"
+expect_ok "uninterrupted experiment" "$ppp" experiment "$work/experiment.yaml" -o "$work/ref" --quiet
+cp -r "$work/ref" "$work/d"
+
+# signal_in_report SIGNAL DELAY: removes the report, reruns the finished experiment (which then only writes the
+# report), signals it DELAY seconds after it says it writes the report; prints its exit status and the
+# milliseconds from the signal to its exit.
+signal_in_report() {
+  local signal="$1" delay="$2"
+  (cd "$work/d" && rm -rf $report_files)
+  "$ppp" experiment "$work/experiment.yaml" -o "$work/d" > /dev/null 2> "$work/report.err" &
+  local pid=$!
+  for _ in $(seq 1 3000); do grep -q "^writing the report" "$work/report.err" && break; sleep 0.01; done
+  sleep "$delay"
+  local start; start=$(date +%s%N)
+  kill "-$signal" "$pid"
+  wait "$pid"
+  local status=$?
+  echo "$status $(( ($(date +%s%N) - start) / 1000000 ))"
+}
+for case in "INT 0.05" "TERM 0.15"; do
+  read -r signal delay <<< "$case"
+  read -r status ms <<< "$(signal_in_report "$signal" "$delay")"
+  [ "$status" -eq 130 ] && pass || fail "SIG$signal $delay s into the report: exit status $status, expected 130"
+  [ "$ms" -le 1000 ] && pass || fail "SIG$signal $delay s into the report: stopped $ms ms after the signal"
+  [ ! -e "$work/d/report.html" ] && pass || fail "SIG$signal $delay s into the report: the report was finished"
+  grep -q "Rerun the same command to resume" "$work/report.err" && pass \
+    || fail "SIG$signal message: $(tail -2 "$work/report.err")"
+  [ -z "$(find "$work/d" -name '*.tmp')" ] && pass || fail "SIG$signal left $(find "$work/d" -name '*.tmp')"
+done
+
+expect_ok "rerun after the signals" "$ppp" experiment "$work/experiment.yaml" -o "$work/d" --quiet
+for f in results.csv $report_files; do
+  diff -r "$work/ref/$f" "$work/d/$f" > /dev/null && pass || fail "$f after the interrupted reports differs"
+done
+
+finish
