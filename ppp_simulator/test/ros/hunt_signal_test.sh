@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# A hunt through ROS (launch/hunt.launch: generator_node hunting through simulator_node in hunt mode and an
+# agent node) shut down mid-hunt by a real SIGINT to roslaunch, which sends SIGINT to the nodes: the generator
+# and the simulator exit within a second of it, no set is written, and a rerun writes the set `ppp generate`
+# writes in process. Usage: hunt_signal_test.sh DEVEL_DIR
+devel="$1"
+source "$devel/setup.bash"  # before set -u: setup.bash reads unset variables
+set -u
+source "$(dirname "${BASH_SOURCE[0]}")/../cli_harness.sh"
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
+export PATH="/usr/bin:$PATH"
+port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+export ROS_MASTER_URI="http://127.0.0.1:$port" ROS_IP=127.0.0.1 ROS_HOME="$work/ros"
+
+# About 80 evaluation requests of 16 PPPs x 10 runs: some 6 s of hunting through the agent node.
+cat > "$work/hunt.yaml" <<'YAML'
+seed: 1
+runs: 1
+agents:
+  - {name: explorer, type: explorer}
+sets:
+  - name: h
+    generator: {fitness: failure, agents: [explorer], runs_per_eval: 10, population: 16, matings: 600, width: 20,
+                height: 20, seed: 7}
+YAML
+hunt=(roslaunch -p "$port" "$root/launch/hunt.launch" output_dir:="$work/out" set:=h config:="$work/hunt.yaml")
+# pid_of LOG NODE: the pid roslaunch started NODE with.
+pid_of() { sed -n "s/.*process\[$2-[0-9]*\]: started with pid \[\([0-9]*\)\].*/\1/p" "$1" | tail -1; }
+
+"${hunt[@]}" > "$work/launch.log" 2>&1 &
+launch=$!  # roslaunch itself: SIGINT reaches it as Ctrl-C would
+for _ in $(seq 1 3000); do grep -q "evaluation 10:" "$work/launch.log" && break; sleep 0.01; done
+grep -q "evaluation 10:" "$work/launch.log" && pass || fail "the hunt did not get going: $(tail -20 "$work/launch.log")"
+generator=$(pid_of "$work/launch.log" gen_h)
+simulator=$(pid_of "$work/launch.log" simulator)
+[ -n "$generator" ] && [ -n "$simulator" ] && pass || fail "no pids of gen_h and simulator in the log"
+start=$(date +%s%N)
+kill -INT "$launch"
+declare -A stopped_ms
+for _ in $(seq 1 3000); do
+  for node in generator simulator; do
+    if [ -z "${stopped_ms[$node]:-}" ] && ! kill -0 "${!node}" 2>/dev/null; then
+      stopped_ms[$node]=$(( ($(date +%s%N) - start) / 1000000 ))
+    fi
+  done
+  [ -n "${stopped_ms[generator]:-}" ] && [ -n "${stopped_ms[simulator]:-}" ] && break
+  sleep 0.01
+done
+for node in generator simulator; do
+  [ "${stopped_ms[$node]:-99999}" -le 1000 ] && pass \
+    || fail "$node node stopped ${stopped_ms[$node]:-never} ms after roslaunch's SIGINT: $(tail -20 "$work/launch.log")"
+done
+timeout -s KILL 60 tail --pid="$launch" -f /dev/null
+grep -q "escalating to SIG" "$work/launch.log" && fail "roslaunch had to escalate: $(grep escalating "$work/launch.log")" || pass
+grep -q "400/600\|600/600 matings" "$work/launch.log" && fail "the hunt went on after the signal" || pass
+[ ! -e "$work/out/set.csv" ] && pass || fail "the interrupted hunt wrote a set"
+
+timeout 300 "${hunt[@]}" > "$work/rerun.log" 2>&1
+[ -s "$work/out/set.csv" ] && pass || fail "the rerun wrote no set: $(tail -20 "$work/rerun.log")"
+"$devel/lib/ppp_simulator/ppp" generate --config "$work/out/generator.yaml" -o "$work/cli" > /dev/null 2>&1
+diff -r "$work/out" "$work/cli" > /dev/null && pass || fail "the set hunted after the interruption differs from ppp generate's"
+
+finish
