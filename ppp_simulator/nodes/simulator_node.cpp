@@ -10,7 +10,7 @@
 #include <ros/ros.h>
 
 #include <algorithm>
-#include <exception>
+#include <atomic>
 #include <memory>
 #include <thread>
 
@@ -81,21 +81,20 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
   ROS_INFO("running %ld episodes (%zu already done, %zu lost to the agent link played again) with %zu agent nodes, "
            "batches of %d", remaining, results.done().size(), results.lostRuns(), lanes.size(), parameters.batch_size);
   std::vector<std::thread> threads;
-  std::vector<std::exception_ptr> failures(runners.size());
+  std::atomic<bool> failed{false};
   for (std::size_t i = 0; i < runners.size(); ++i) {
-    threads.emplace_back([&runners, &lanes, &failures, i] {
+    threads.emplace_back([&runners, &lanes, &failed, i] {
       try {
         runners[i]->run(lanes[i].get());
-      } catch (...) {  // results.csv or the bag cannot be written (a full disk): every lane stops, the node exits
-        failures[i] = std::current_exception();
-        ros::requestShutdown();
+      } catch (const std::exception& e) {  // results.csv or the bag cannot be written (a full disk, say)
+        ROS_FATAL("simulator: %s", e.what());  // logged here: once shutdown is requested, the log is gone
+        failed = true;
+        ros::requestShutdown();  // every lane stops; the node exits 1
       }
     });
   }
   for (std::thread& t : threads) t.join();
-  for (const std::exception_ptr& failure : failures) {
-    if (failure) std::rethrow_exception(failure);
-  }
+  if (failed) return 1;
   recorder.close();
   if (!ros::ok()) {
     ROS_WARN("interrupted: every finished run is in results.csv; restart on the same output_dir to resume");

@@ -6,6 +6,8 @@
 #   finish                     prints "N passed, N failed"; its status is the script's result
 #   small_experiment RUNS      writes $work/experiment.yaml (and its agents.yaml): 2 evolved sets x 6 small PPPs
 #                              x 3 agents x RUNS runs
+#   mount_tmpfs SIZE           mounts a tmpfs of SIZE (e.g. 16m) on $mnt=$work/mnt, unmounted on exit; where it
+#                              cannot (no root), says the test is skipped and exits 77
 work="$(mktemp -d)"
 trap 'kill -9 $(jobs -p) 2>/dev/null; rm -rf "$work"' EXIT
 passed=0
@@ -49,4 +51,15 @@ sets:
   - name: difficulty
     generator: {fitness: difficulty, population: 6, matings: 200, width: 14, height: 14, seed: 4}
 YAML
+}
+
+mount_tmpfs() {
+  mnt="$work/mnt"
+  mkdir "$mnt"
+  if ! mount -t tmpfs -o "size=$1" ppp-test "$mnt" 2> "$work/mount.err"; then
+    echo "SKIPPED: cannot mount a tmpfs here: $(cat "$work/mount.err")"
+    rm -rf "$work"
+    exit 77
+  fi
+  trap 'kill -9 $(jobs -p) 2>/dev/null; umount -R "$mnt"; rm -rf "$work"' EXIT
 }

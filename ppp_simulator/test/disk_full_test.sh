@@ -7,15 +7,8 @@
 set -u
 ppp="$1"
 source "$(dirname "${BASH_SOURCE[0]}")/cli_harness.sh"
-mnt="$work/mnt"
+mount_tmpfs 16m
 out="$mnt/out"
-mkdir "$mnt"
-if ! mount -t tmpfs -o size=16m ppp-disk-test "$mnt" 2> "$work/mount.err"; then
-  echo "SKIPPED: cannot mount a tmpfs here: $(cat "$work/mount.err")"
-  rm -rf "$work"
-  exit 77
-fi
-trap 'kill -9 $(jobs -p) 2>/dev/null; umount -R "$mnt"; rm -rf "$work"' EXIT
 
 # 2 sets x 6 PPPs x 3 agents x 1000 runs: results.csv of about 3 MB, appended in 36 blocks of 1000 rows.
 small_experiment 1000

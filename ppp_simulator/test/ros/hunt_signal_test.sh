@@ -3,14 +3,7 @@
 # agent node) shut down mid-hunt by a real SIGINT to roslaunch, which sends SIGINT to the nodes: the generator
 # and the simulator exit within a second of it, no set is written, and a rerun writes the set `ppp generate`
 # writes in process. Usage: hunt_signal_test.sh DEVEL_DIR
-devel="$1"
-source "$devel/setup.bash"  # before set -u: setup.bash reads unset variables
-set -u
-source "$(dirname "${BASH_SOURCE[0]}")/../cli_harness.sh"
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
-export PATH="/usr/bin:$PATH"
-port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
-export ROS_MASTER_URI="http://127.0.0.1:$port" ROS_IP=127.0.0.1 ROS_HOME="$work/ros"
+source "$(dirname "${BASH_SOURCE[0]}")/ros_harness.sh"
 
 # About 80 evaluation requests of 16 PPPs x 10 runs: some 6 s of hunting through the agent node.
 cat > "$work/hunt.yaml" <<'YAML'
