@@ -2,13 +2,20 @@
 # Builds the libFuzzer targets of the parsers with clang (ASan + UBSan) in build-fuzz/ (ppp_simulator/fuzz's
 # project) and runs each for a bounded time: scripts/fuzz.sh [SECONDS] [TARGET...] (default 30 s each, every
 # target). Targets: ppp_parser (.ppp files), map_yaml (map_server YAML + PGM), newick (taxonomy trees),
-# generator_yaml (generator options), agents_yaml (agents lists), experiment_yaml (experiment configs),
-# results_csv (the results a resume reads). Each has a seed corpus in its package's fuzz/corpus/TARGET/.
+# generator_yaml (generator options), set_csv (a set directory's set.csv), agents_yaml (agents lists),
+# experiment_yaml (experiment configs), results_csv (the results a resume reads), and the batch protocol's
+# scan_batch (ROS-serialised ScanBatch messages as the agent node decodes and answers them) and move_batch
+# (MoveBatch messages as the simulator decodes and applies them), which need the ppp_msgs headers of the workspace
+# build ($PPP_BUILD_DIR/devel/include: scripts/build.sh). Each has a seed corpus in its package's
+# fuzz/corpus/TARGET/. Inputs are at most 4096 bytes (configs, CSV files, messages and maps far larger than their
+# seeds, which keeps the YAML readers fast), 65536 for the .ppp and Newick readers (large grids and trees).
 # Exits non-zero on any finding; crash inputs are written to build-fuzz/artifacts/TARGET/. Reproduce one with:
 # build-fuzz/TARGET_fuzz build-fuzz/artifacts/TARGET/crash-...
 set -euo pipefail
 
-all_targets=(ppp_parser map_yaml newick generator_yaml agents_yaml experiment_yaml results_csv)
+all_targets=(ppp_parser map_yaml newick generator_yaml set_csv agents_yaml experiment_yaml results_csv scan_batch
+  move_batch)
+ros_targets=(scan_batch move_batch)
 seconds="${1:-30}"
 if ! [[ "${seconds}" =~ ^[1-9][0-9]*$ ]]; then
   echo "usage: $0 [SECONDS] [TARGET...]  (a positive whole number of seconds, default 30; targets: ${all_targets[*]})" >&2
@@ -18,8 +25,8 @@ shift || true
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 
-repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "${repo}"
+source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
+cd "${PPP_ROOT}"
 
 build_dir=build-fuzz
 clangxx="$(command -v clang++ || true)"
@@ -36,10 +43,23 @@ for target in "${targets[@]}"; do
     exit 2
   fi
 done
+# The protocol targets decode messages with the headers catkin generates from ppp_msgs/msg.
+msgs_include="${PPP_BUILD_DIR}/devel/include"
+[ -f "${msgs_include}/ppp_msgs/ScanBatch.h" ] || msgs_include=""
+for target in "${targets[@]}"; do
+  if [[ " ${ros_targets[*]} " == *" ${target} "* && -z "${msgs_include}" ]]; then
+    echo "fuzz.sh: ${target} needs the generated ppp_msgs headers, and ${PPP_BUILD_DIR}/devel/include/ppp_msgs/" \
+      "holds none: build the workspace first (scripts/build.sh)" >&2
+    exit 2
+  fi
+done
+# max_len_of TARGET: the largest input it is given.
+max_len_of() { case "$1" in ppp_parser | newick) echo 65536 ;; *) echo 4096 ;; esac; }
 if [ -f "${build_dir}/CMakeCache.txt" ] && ! grep -q "CMAKE_PROJECT_NAME:STATIC=ppp_fuzz" "${build_dir}/CMakeCache.txt"; then
   rm -rf "${build_dir}"  # an older build of the core alone
 fi
-cmake -S ppp_simulator/fuzz -B "${build_dir}" -DCMAKE_CXX_COMPILER="${clangxx}" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S ppp_simulator/fuzz -B "${build_dir}" -DCMAKE_CXX_COMPILER="${clangxx}" -DCMAKE_BUILD_TYPE=Release \
+  -DPPP_MSGS_INCLUDE_DIR="${msgs_include}" >/dev/null
 cmake --build "${build_dir}" --target $(printf '%s_fuzz ' "${targets[@]}") -j2
 
 for target in "${targets[@]}"; do
@@ -50,7 +70,7 @@ for target in "${targets[@]}"; do
   echo "fuzzing ${target} for ${seconds} s (corpus ${corpus}, findings in ${artifacts})"
   status=0
   "${build_dir}/${target}_fuzz" \
-    -max_total_time="${seconds}" -timeout=5 -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 \
+    -max_total_time="${seconds}" -timeout=5 -rss_limit_mb=2048 -max_len="$(max_len_of "${target}")" -print_final_stats=1 \
     -artifact_prefix="${artifacts}/" "${corpus}" 2> "${build_dir}/${target}.log" || status=$?
   grep -E "stat::number_of_executed_units" "${build_dir}/${target}.log" | sed "s/^/${target}: /" || true
   if [[ ${status} -ne 0 ]]; then

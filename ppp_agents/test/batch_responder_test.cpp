@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <vector>
 
 #include "ppp_core/rng.hpp"
@@ -232,6 +233,24 @@ TEST(BatchResponderTest, AMalformedBatchIsRejectedWhole) {
   EXPECT_TRUE(isAction(moves.actions[0]) && isAction(moves.actions[1]));
   EXPECT_TRUE(random.rejections().empty());
   EXPECT_EQ(responder.answer(windowless).actions[0], kRejectedAction);
+}
+
+// Found by the scan_batch fuzz target (UBSan): the responder fetches the memory of the agents a few scans ahead
+// before their positions are checked, and an explorer's memory computed x - reach for x = INT_MIN (a signed
+// overflow) and addressed rows off the map. Such a scan is rejected, the others answered.
+TEST(BatchResponderTest, PositionsFarOffTheMapAreRejectedWithoutTouchingMemory) {
+  BatchResponder responder(config("explorer"));
+  responder.answer(batchOf({startScan(1), startScan(2), startScan(3), startScan(4)}));
+  std::vector<test::TestScan> next{later(startScan(1), 1), later(startScan(2), 1), later(startScan(3), 1),
+                                   later(startScan(4), 1)};
+  next[2].position = Cell{std::numeric_limits<int>::min(), std::numeric_limits<int>::max()};
+  next[3].position = Cell{std::numeric_limits<int>::max(), std::numeric_limits<int>::min()};
+  const auto moves = responder.answer(batchOf(next));
+  ASSERT_EQ(moves.actions.size(), 4u);
+  EXPECT_TRUE(isAction(moves.actions[0]) && isAction(moves.actions[1]));
+  EXPECT_EQ(moves.actions[2], kRejectedAction);
+  EXPECT_EQ(moves.actions[3], kRejectedAction);
+  EXPECT_EQ(responder.rejections(), (std::map<std::string, long>{{"position", 2}}));
 }
 
 TEST(BatchResponderTest, EpisodesMissingFromABatchAreFinishedAndIdsCanRestart) {

@@ -5,7 +5,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <numeric>
-#include <sstream>
 
 #include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
@@ -14,6 +13,7 @@
 #include "ppp_core/text_file.hpp"
 #include "ppp_generator/diversity.hpp"
 #include "ppp_generator/newick.hpp"
+#include "ppp_generator/set_csv.hpp"
 #include "ppp_generator/tree_json.hpp"
 #include "ppp_generator/tree_html.hpp"
 
@@ -27,13 +27,7 @@ namespace {
 constexpr const char* kSetFile = "set.csv";
 constexpr const char* kOptionsFile = "generator.yaml";
 constexpr int kThumbnailCellPixels = 4;
-
-std::vector<std::string> setCsvHeader() {
-  std::vector<std::string> header{"id", "file", "fitness", "fitness_value"};
-  for (const std::string& name : characterNames()) header.push_back(name);
-  header.push_back("nearest_difference");
-  return header;
-}
+constexpr std::size_t kMaxSetCsvBytes = 64u << 20;
 
 /// Fills the set's diversity figures from its PPPs.
 void fillDiversity(ProblemSet* set) {
@@ -201,28 +195,8 @@ void writeProblemSetDirectory(const std::string& dir, const ProblemSet& set, con
 std::vector<std::string> problemSetFiles(const std::string& dir) {
   const fs::path root(dir);
   const std::string csv_path = (root / kSetFile).string();
-  const std::string text = readTextFile(csv_path, 64u << 20);
-  std::istringstream lines(text);
-  std::string line;
-  std::getline(lines, line);
-  std::vector<std::string> before_diversity = setCsvHeader();
-  before_diversity.pop_back();  // sets written before nearest_difference existed are read too
-  if (line != csvLine(setCsvHeader()) && line != csvLine(before_diversity)) {
-    throw ParseError(csv_path, 1, "header", "not a PPP set file (expected the header written by ppp generate)");
-  }
-  std::vector<std::string> files;
-  int line_number = 1;
-  while (std::getline(lines, line)) {
-    ++line_number;
-    if (line.empty()) continue;
-    const auto comma = line.find(',');
-    const auto second = line.find(',', comma + 1);
-    if (comma == std::string::npos || second == std::string::npos) {
-      throw ParseError(csv_path, line_number, "file", "expected id,file,...");
-    }
-    files.push_back((root / line.substr(comma + 1, second - comma - 1)).string());
-  }
-  if (files.empty()) throw ParseError(csv_path, line_number, "set", "lists no PPPs");
+  std::vector<std::string> files = parseSetCsv(readTextFile(csv_path, kMaxSetCsvBytes), csv_path);
+  for (std::string& file : files) file = (root / file).string();
   return files;
 }
 

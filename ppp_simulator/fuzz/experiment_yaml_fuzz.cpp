@@ -1,5 +1,6 @@
-// libFuzzer target for the experiment config reader: loadExperimentConfig must either return a valid config or
-// throw ppp::Error (the input is written to a file, as the reader reads files).
+// libFuzzer target for the experiment config reader, in memory: parseExperimentConfig must either return a valid
+// config or throw ppp::Error. The YAML is read as /nonexistent/ppp_fuzz/experiment.yaml, so the files it names
+// relative to itself (an agents list, a generator.yaml beside it) do not exist.
 
 #include <cstddef>
 #include <cstdint>
@@ -10,11 +11,10 @@
 #include "ppp_simulator/experiment_config.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string path =
-      ppp::fuzz::scratchFile("experiment.yaml", std::string(reinterpret_cast<const char*>(data), size));
   ppp::simulator::ExperimentConfig config;
   try {
-    config = ppp::simulator::loadExperimentConfig(path);
+    config = ppp::simulator::parseExperimentConfig(std::string(reinterpret_cast<const char*>(data), size),
+                                                   "/nonexistent/ppp_fuzz/experiment.yaml");
   } catch (const ppp::Error&) {
     return 0;
   }

@@ -1,34 +1,36 @@
-// libFuzzer target for the results.csv reader that resuming relies on: readResultsFile must either return rows
-// or throw ppp::Error; rows it returns must be written and read back unchanged.
+// libFuzzer target for the results.csv reader that resuming relies on, in memory: parseResultsCsv must either
+// return rows or throw ppp::Error; every row it returns must be written as a CSV line and read back to the same
+// fields.
 
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/fuzz_finding.hpp"
 #include "ppp_simulator/results_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using ppp::fuzz::finding;
-  const std::string path =
-      ppp::fuzz::scratchFile("results.csv", std::string(reinterpret_cast<const char*>(data), size));
-  std::vector<ppp::simulator::EpisodeResult> rows;
+  namespace sim = ppp::simulator;
+  std::vector<sim::EpisodeResult> rows;
   try {
-    rows = ppp::simulator::readResultsFile(path);
+    rows = sim::parseResultsCsv(std::string(reinterpret_cast<const char*>(data), size), "results.csv");
   } catch (const ppp::Error&) {
     return 0;
   }
-  const std::string again = ppp::fuzz::scratchDirectory() + "/again.csv";
-  try {
-    {
-      ppp::simulator::ResultsFile file(again);
-      file.rewrite(rows);
+  for (const sim::EpisodeResult& row : rows) {
+    const std::vector<std::string> fields = sim::toCsvFields(row);
+    const std::string line = ppp::csvLine(fields);
+    try {
+      if (sim::toCsvFields(sim::fromCsvFields(sim::splitCsvLine(line, "again.csv", 2), "again.csv", 2)) != fields) {
+        finding("results_csv_fuzz", "a row changed when written and read back", line);
+      }
+    } catch (const ppp::Error& e) {
+      finding("results_csv_fuzz", "a row read cannot be read back when written", line + "\n" + e.what());
     }
-    if (ppp::simulator::readResultsFile(again).size() != rows.size()) finding("results_csv_fuzz", "rows lost", "");
-  } catch (const ppp::Error& e) {
-    finding("results_csv_fuzz", "rows read cannot be written and read back", e.what());
   }
   return 0;
 }

@@ -93,7 +93,11 @@ void ExperimentConfig::validate() const {
 }
 
 ExperimentConfig loadExperimentConfig(const std::string& path) {
-  const YAML::Node root = loadYamlFile(path);
+  return parseExperimentConfig(readTextFile(path, kMaxYamlBytes), path);
+}
+
+ExperimentConfig parseExperimentConfig(const std::string& yaml, const std::string& path) {
+  const YAML::Node root = parseYaml(yaml, path);
   const fs::path base = fs::absolute(fs::path(path)).parent_path();
   YamlMapReader reader(root, path);
   ExperimentConfig config;

@@ -62,8 +62,12 @@ std::vector<EpisodeResult> standingRows(std::vector<EpisodeResult> rows) {
 }
 
 std::vector<EpisodeResult> readResultsFile(const std::string& path, const StopCheck& stop) {
+  return parseResultsCsv(readTextFile(path, kMaxResultsBytes), path, stop);
+}
+
+std::vector<EpisodeResult> parseResultsCsv(const std::string& text, const std::string& path, const StopCheck& stop) {
   std::vector<EpisodeResult> rows;
-  parseRows(readTextFile(path, kMaxResultsBytes), path, &rows, stop);
+  parseRows(text, path, &rows, stop);
   return rows;
 }
 

@@ -120,6 +120,20 @@ TEST_F(ExperimentYaml, BadInputNamesKeyAndLine) {
   EXPECT_EQ(errorOf(agent + "planner, planner_node: p/e, host: robot-2.lab}\n" + sets), "no error");
 }
 
+TEST_F(ExperimentYaml, TextIsReadAsTheFileItNames) {
+  const std::string path = (dir_ / "never_written.yaml").string();
+  const ExperimentConfig c = parseExperimentConfig("agents: agents.yaml\nsets:\n  - {name: a, directory: s}\n", path);
+  ASSERT_EQ(c.agents.size(), 1u);  // agents.yaml beside the named file
+  EXPECT_EQ(c.agents[0].name, "random");
+  EXPECT_EQ(c.sets[0].directory, (dir_ / "s").string());
+  try {
+    parseExperimentConfig("agents: agents.yaml\nruns: many\n", path);
+    ADD_FAILURE() << "runs: many accepted";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ":2: runs: expected an integer, got 'many'");
+  }
+}
+
 TEST_F(ExperimentYaml, EpisodeKeysAcceptAndRefuseWhatEverySourceDoes) {
   // The cases the simulate flags (agent_flags_test) are held to as well.
   const std::string sets = "sets:\n  - {name: a, generator: {matings: 5}}\n";

@@ -71,6 +71,20 @@ TEST_F(ResultsFileTest, ForeignFilesAreRefused) {
   }
 }
 
+TEST(ResultsCsvText, RowsOfTextWithErrorsNamingTheGivenPath) {
+  const std::string header = "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason\n";
+  const std::string good = "turns,ppp_000,random,0,1,1,1,0,1,1,goal_reached\n";
+  const auto rows = parseResultsCsv(header + good + "turns,ppp_000,ran", "out/results.csv");
+  ASSERT_EQ(rows.size(), 1u);  // the half-written last line is left out
+  EXPECT_EQ(rows[0].reason, "goal_reached");
+  try {
+    parseResultsCsv(header + good + "turns,ppp_000,random,zero,1,1,1,0,1,1,goal_reached\n", "out/results.csv");
+    ADD_FAILURE() << "run zero accepted";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(std::string(e.what()), "out/results.csv:3: run: expected a whole number, got 'zero'");
+  }
+}
+
 TEST_F(ResultsFileTest, RewriteKeepsTheGivenOrder) {
   ResultsFile file(path_);
   file.append({row(1, true), row(0, true)});

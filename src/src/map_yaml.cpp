@@ -577,22 +577,31 @@ void MapYamlOptions::validate() const {
   if (!std::isfinite(origin_yaw)) throw InvalidArgument("origin_yaw", "expected a finite number");
 }
 
-void writeMapYaml(const Problem& problem, const std::string& yaml_path, const MapYamlOptions& options) {
+MapYamlText formatMapYaml(const Problem& problem, const std::string& image_name, const MapYamlOptions& options) {
   options.validate();
   formatPpp(problem);  // The .ppp rules (problem and metadata) decide what can be saved.
+  return MapYamlText{encodeYaml(problem, image_name, options), encodePgm(decodeGrid(problem))};
+}
+
+void writeMapYaml(const Problem& problem, const std::string& yaml_path, const MapYamlOptions& options) {
   fs::path image_path(yaml_path);
-  if (image_path.extension() == ".pgm") {
-    throw InvalidArgument("yaml_path", yaml_path + " ends in .pgm; the image would overwrite the YAML");
-  }
-  if (image_path.filename().empty()) throw InvalidArgument("yaml_path", "'" + yaml_path + "' names no file");
+  const bool names_pgm = image_path.extension() == ".pgm";
   image_path.replace_extension(".pgm");
-  const std::string yaml = encodeYaml(problem, image_path.filename().string(), options);
-  writeFileAtomically(image_path.string(), encodePgm(decodeGrid(problem)));
-  writeFileAtomically(yaml_path, yaml);
+  const MapYamlText text = formatMapYaml(problem, image_path.filename().string(), options);
+  if (names_pgm) throw InvalidArgument("yaml_path", yaml_path + " ends in .pgm; the image would overwrite the YAML");
+  if (fs::path(yaml_path).filename().empty()) throw InvalidArgument("yaml_path", "'" + yaml_path + "' names no file");
+  writeFileAtomically(image_path.string(), text.pgm);
+  writeFileAtomically(yaml_path, text.yaml);
 }
 
 Problem readMapYaml(const std::string& yaml_path, const MapImportOptions& options, MapYamlOptions* geometry) {
-  const std::string text = readTextFile(yaml_path, kMaxMapYamlBytes);
+  return parseMapYaml(
+      readTextFile(yaml_path, kMaxMapYamlBytes), yaml_path,
+      [](const std::string& image_path) { return readTextFile(image_path, kMaxPgmBytes); }, options, geometry);
+}
+
+Problem parseMapYaml(const std::string& text, const std::string& yaml_path, const MapImageSource& image,
+                     const MapImportOptions& options, MapYamlOptions* geometry) {
   const YamlReader r(yaml_path);
   try {
     YAML::Node loaded;
@@ -625,7 +634,7 @@ Problem readMapYaml(const std::string& yaml_path, const MapImportOptions& option
     const MapHeader header = readHeader(r, root, yaml_path);
     Problem problem;
     if (has_ppp_keys) problem = readPppKeys(r, root);
-    const Pgm pgm = PgmReader(readTextFile(header.image_path, kMaxPgmBytes), header.image_path).read();
+    const Pgm pgm = PgmReader(image(header.image_path), header.image_path).read();
     if (has_ppp_keys) {
       checkAgainstImage(problem, pgm, header, r, root);
     } else {

@@ -6,12 +6,6 @@
 
 namespace ppp {
 
-namespace {
-
-constexpr std::size_t kMaxYamlBytes = 16u << 20;
-
-}  // namespace
-
 YAML::Node loadYamlFile(const std::string& path) { return parseYaml(readTextFile(path, kMaxYamlBytes), path); }
 
 YAML::Node parseYaml(const std::string& text, const std::string& source) {

@@ -177,6 +177,28 @@ TEST_F(MapYamlTest, RandomProblemsRoundTripExactly) {
   }
 }
 
+TEST_F(MapYamlTest, TextEntryPointsMatchTheFiles) {
+  Problem p;
+  const std::string yaml = writtenMap(&p);
+  const MapYamlText text = formatMapYaml(p, "map.pgm");
+  EXPECT_EQ(text.yaml, readBytes(yaml));
+  EXPECT_EQ(text.pgm, readBytes(path("map.pgm")));
+  std::string asked;
+  const MapImageSource image = [&](const std::string& image_path) {
+    asked = image_path;
+    return text.pgm;
+  };
+  EXPECT_EQ(parseMapYaml(text.yaml, "maps/a.yaml", image), p);
+  EXPECT_EQ(asked, "maps/map.pgm");
+  try {
+    parseMapYaml(text.yaml + "ppp_colour: 1\n", "maps/a.yaml", image);
+    ADD_FAILURE() << "an unknown ppp_ key was accepted";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.file(), "maps/a.yaml");
+    EXPECT_EQ(e.field(), "ppp_colour");
+  }
+}
+
 TEST_F(MapYamlTest, WritesMapServerKeysAndPgmInGridOrder) {
   Problem p;
   const std::string yaml = writtenMap(&p);

@@ -27,9 +27,9 @@ class AgentMemory {
   bool isFree(Cell c) const { return at(c) == kScanFree; }
   /// True when the cell is on the map and not remembered (neither free nor obstacle).
   bool isUnknown(Cell c) const { return at(c) == kScanUnknown; }
-  /// Asks the processor to fetch the remembered cells within `reach` of `c`.
+  /// Asks the processor to fetch the remembered cells within `reach` of `c` (none for a cell off the map).
   void prefetch(Cell c, int reach) const {
-    if (cells_.empty()) return;
+    if (c.x < 0 || c.y < 0 || c.x >= width_ || c.y >= height_) return;
     for (int y = std::max(c.y - reach, 0); y <= std::min(c.y + reach, height_ - 1); ++y) {
       __builtin_prefetch(cells_.data() + y * width_ + std::max(c.x - reach, 0));
     }

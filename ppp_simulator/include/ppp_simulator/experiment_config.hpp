@@ -46,6 +46,11 @@ const std::vector<OptionSpec<ExperimentConfig>>& experimentOptionSpecs();
 /// @throws IoError, ParseError (file:line: key: what), InvalidArgument.
 ExperimentConfig loadExperimentConfig(const std::string& path);
 
+/// loadExperimentConfig() on text: `yaml` is the experiment YAML of `path` (named in errors; relative paths are
+/// relative to its directory, where the files it names are read). @throws ParseError, InvalidArgument, IoError
+/// (a file it names).
+ExperimentConfig parseExperimentConfig(const std::string& yaml, const std::string& path);
+
 /// How much an experiment asks for, estimated before it starts.
 struct ExperimentWork {
   double episodes = 0;       ///< Runs of agents on PPPs (sets x PPPs x agents x runs; ROS planners included).

@@ -61,5 +61,10 @@ class ResultsFile {
 /// Reads every row of a results.csv, asking `stop` as it goes. @throws IoError, ParseError, Interrupted.
 std::vector<EpisodeResult> readResultsFile(const std::string& path, const StopCheck& stop = {});
 
+/// readResultsFile() on text: the rows of results.csv text read from `path` (named in errors); a half-written
+/// last line is left out. @throws ParseError, Interrupted.
+std::vector<EpisodeResult> parseResultsCsv(const std::string& text, const std::string& path,
+                                           const StopCheck& stop = {});
+
 }  // namespace simulator
 }  // namespace ppp

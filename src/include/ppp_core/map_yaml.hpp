@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -39,6 +40,20 @@ struct MapImportOptions {
   std::optional<Cell> goal;   ///< Goal cell in grid coordinates; default bottom-right (W-1, H-1).
 };
 
+/// A map_server map in memory: the YAML text and the bytes of the PGM image it names.
+struct MapYamlText {
+  std::string yaml;  ///< The map YAML.
+  std::string pgm;   ///< The PGM image (binary P5).
+};
+
+/// The map writeMapYaml() writes, as text: the YAML (its image key `image_name`) and the PGM image.
+/// @throws InvalidArgument for an invalid problem or options.
+MapYamlText formatMapYaml(const Problem& problem, const std::string& image_name, const MapYamlOptions& options = {});
+
+/// Gives the bytes of the image a map YAML names, from its path (resolved against the YAML's directory).
+/// @throws IoError when it cannot be read.
+using MapImageSource = std::function<std::string(const std::string& image_path)>;
+
 /// Writes a map_server-style map: `<stem>.pgm` (binary P5, free 254, occupied 0, row 0 = top of the map)
 /// next to `yaml_path`, then the YAML (image, resolution, origin, negate, thresholds) plus the ppp_* keys
 /// (ppp_size, ppp_start, ppp_goal, ppp_max_obstacles, ppp_obstacles, ppp_metadata) that make
@@ -59,5 +74,11 @@ void writeMapYaml(const Problem& problem, const std::string& yaml_path, const Ma
 /// InvalidArgument when an option's start or goal lies outside the image.
 Problem readMapYaml(const std::string& yaml_path, const MapImportOptions& options = {},
                     MapYamlOptions* geometry = nullptr);
+
+/// readMapYaml() on text: `yaml` is the map YAML of `yaml_path` (named in errors; the image is resolved against
+/// its directory) and `image` gives the bytes of the PGM image it names.
+/// @throws what readMapYaml() throws (IoError only from `image`).
+Problem parseMapYaml(const std::string& yaml, const std::string& yaml_path, const MapImageSource& image,
+                     const MapImportOptions& options = {}, MapYamlOptions* geometry = nullptr);
 
 }  // namespace ppp

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <set>
 #include <string>
 #include <vector>
@@ -9,6 +10,9 @@
 #include "ppp_core/error.hpp"
 
 namespace ppp {
+
+/// Largest YAML file loadYamlFile() reads, checked before reading it.
+constexpr std::size_t kMaxYamlBytes = 16u << 20;
 
 /// Loads a YAML file. @throws IoError when unreadable, ParseError "<file>:<line>: yaml: ..." on bad syntax.
 YAML::Node loadYamlFile(const std::string& path);
