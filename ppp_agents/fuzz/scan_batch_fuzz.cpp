@@ -57,7 +57,9 @@ void checkDecoding(const ppp_msgs::ScanBatch& batch, bool reads_window) {
 void checkAnswer(const ppp_msgs::ScanBatch& batch, const ppp_msgs::MoveBatch& moves, const std::string& agent,
                  bool malformed) {
   const std::size_t n = batch.episodes.size();
-  if (moves.agent != agent || moves.batch != batch.batch) finding("scan_batch_fuzz", "agent or batch not echoed", agent);
+  if (moves.agent != agent || moves.batch != batch.batch) {
+    finding("scan_batch_fuzz", "agent or batch not echoed", agent);
+  }
   if (moves.episodes != batch.episodes || moves.steps.size() != n || moves.actions.size() != n) {
     finding("scan_batch_fuzz", "not one move per scan, in order", agent);
   }
