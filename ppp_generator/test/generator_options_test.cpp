@@ -97,6 +97,15 @@ TEST(GeneratorOptionsTest, StringsWithControlCharactersRoundTrip) {
   EXPECT_EQ(back.agents, o.agents);
 }
 
+TEST(GeneratorOptionsTest, NullAndBooleanWordsInAnyCaseRoundTrip) {
+  // Found by generator_yaml_fuzz: the name NULL in a list of strings was written plain and read back as null.
+  GeneratorOptions o;
+  o.agents = {"NULL", "Null", "null", "True", "OFF", "Yes", "plain"};
+  const std::string yaml = generatorOptionsYaml(o);
+  EXPECT_NE(yaml.find("agents: ['NULL', 'Null', 'null', 'True', 'OFF', 'Yes', plain]"), std::string::npos) << yaml;
+  EXPECT_EQ(parseGeneratorOptions(yaml, "round.yaml").agents, o.agents);
+}
+
 class YamlFile : public ::testing::Test {
  protected:
   std::string write(const std::string& text) {

@@ -85,12 +85,14 @@ inline std::string quoted(const std::string& text) {
     return out + "\"";
   }
   bool plain = !text.empty();
+  std::string lower;  // YAML reads its null and boolean words in more than one case (NULL, Null, True, ...)
   for (char c : text) {
     const bool ok = std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '/' || c == '.' || c == '-';
     plain = plain && ok;
+    lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   }
-  if (plain && text.find_first_not_of("0123456789.-") != std::string::npos && text != "true" && text != "false" &&
-      text != "null" && text != "yes" && text != "no" && text != "on" && text != "off") {
+  if (plain && text.find_first_not_of("0123456789.-") != std::string::npos && lower != "true" && lower != "false" &&
+      lower != "null" && lower != "yes" && lower != "no" && lower != "on" && lower != "off") {
     return text;
   }
   std::string out = "'";
