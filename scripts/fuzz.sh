@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of the parsers with clang (ASan + UBSan) in build-fuzz/ (ppp_simulator/fuzz's
 # project) and runs each for a bounded time: scripts/fuzz.sh [SECONDS] [TARGET...] (default 30 s each, every
-# target). Targets: ppp_parser (.ppp files), map_yaml (map_server YAML + PGM), newick (taxonomy trees),
+# target), or for a number of executions: scripts/fuzz.sh --runs N [TARGET...] (the long campaigns in
+# BENCHMARKS.md). Targets: ppp_parser (.ppp files), map_yaml (map_server YAML + PGM), newick (taxonomy trees),
 # generator_yaml (generator options), set_csv (a set directory's set.csv), agents_yaml (agents lists),
 # experiment_yaml (experiment configs), results_csv (the results a resume reads), and the batch protocol's
 # scan_batch (ROS-serialised ScanBatch messages as the agent node decodes and answers them) and move_batch
@@ -16,12 +17,28 @@ set -euo pipefail
 all_targets=(ppp_parser map_yaml newick generator_yaml set_csv agents_yaml experiment_yaml results_csv scan_batch
   move_batch)
 ros_targets=(scan_batch move_batch)
-seconds="${1:-30}"
-if ! [[ "${seconds}" =~ ^[1-9][0-9]*$ ]]; then
-  echo "usage: $0 [SECONDS] [TARGET...]  (a positive whole number of seconds, default 30; targets: ${all_targets[*]})" >&2
-  exit 2
+usage="usage: $0 [SECONDS | --runs N] [TARGET...]  (a positive whole number of seconds, default 30, or of
+  executions per target; targets: ${all_targets[*]})"
+runs=""
+if [[ "${1:-}" == "--runs" ]]; then
+  runs="${2:-}"
+  if ! [[ "${runs}" =~ ^[1-9][0-9]*$ ]]; then
+    echo "${usage}" >&2
+    exit 2
+  fi
+  shift 2
+  limit=(-runs="${runs}")
+  budget="${runs} executions"
+else
+  seconds="${1:-30}"
+  if ! [[ "${seconds}" =~ ^[1-9][0-9]*$ ]]; then
+    echo "${usage}" >&2
+    exit 2
+  fi
+  shift || true
+  limit=(-max_total_time="${seconds}")
+  budget="${seconds} s"
 fi
-shift || true
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 
@@ -67,14 +84,14 @@ for target in "${targets[@]}"; do
   artifacts="${build_dir}/artifacts/${target}"
   mkdir -p "${corpus}" "${artifacts}"
   cp "$(corpus_of "${target}")"/* "${corpus}/"
-  echo "fuzzing ${target} for ${seconds} s (corpus ${corpus}, findings in ${artifacts})"
+  echo "fuzzing ${target} for ${budget} (corpus ${corpus}, findings in ${artifacts})"
   status=0
   # Without allocation stacks in the reports (about a third more executions of the allocation-heavy YAML readers);
   # reproducing a finding (see the top of this file) shows them.
   ASAN_OPTIONS="malloc_context_size=0${ASAN_OPTIONS:+:${ASAN_OPTIONS}}" "${build_dir}/${target}_fuzz" \
-    -max_total_time="${seconds}" -timeout=5 -rss_limit_mb=2048 -max_len="$(max_len_of "${target}")" \
+    "${limit[@]}" -timeout=5 -rss_limit_mb=2048 -max_len="$(max_len_of "${target}")" \
     -print_final_stats=1 -artifact_prefix="${artifacts}/" "${corpus}" 2> "${build_dir}/${target}.log" || status=$?
-  grep -E "stat::number_of_executed_units" "${build_dir}/${target}.log" | sed "s/^/${target}: /" || true
+  grep -E "stat::(number_of_executed_units|average_exec_per_sec)" "${build_dir}/${target}.log" | sed "s/^/${target}: /" || true
   if [[ ${status} -ne 0 ]]; then
     tail -40 "${build_dir}/${target}.log" >&2
     echo "fuzz.sh: FINDING in ${target} (libFuzzer exit ${status}); inputs in ${artifacts}/:" >&2
@@ -82,4 +99,4 @@ for target in "${targets[@]}"; do
     exit "${status}"
   fi
 done
-echo "fuzz.sh: no findings in ${seconds} s per target (${targets[*]})"
+echo "fuzz.sh: no findings in ${budget} per target (${targets[*]})"

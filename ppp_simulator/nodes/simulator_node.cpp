@@ -54,7 +54,13 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
     }
   }
   const std::vector<PreparedSet>& sets = received.sets;
-  ResultsFile results(resultsPath(parameters.output_dir));
+  std::unique_ptr<ResultsFile> opened;
+  try {
+    opened = std::make_unique<ResultsFile>(resultsPath(parameters.output_dir), [] { return !ros::ok(); });
+  } catch (const Interrupted&) {
+    return 130;  // shut down while reading the results of an earlier run; the file is as it was
+  }
+  ResultsFile& results = *opened;
   std::vector<std::string> agent_names;
   for (const auto& a : config.agents) agent_names.push_back(a.name);
   EpisodeRecorder recorder(nh, parameters, sets, agent_names, config.episode.budget);

@@ -200,13 +200,16 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
                                const std::function<void(const std::string&)>& log) {
   ExperimentReport report;
   std::vector<PreparedSet> sets;
+  std::unique_ptr<ResultsFile> opened;
   try {
     sets = beginExperiment(config, dir, log, stop);
+    if (fs::exists(resultsPath(dir))) say(log, "reading the runs already in " + resultsPath(dir));
+    opened = std::make_unique<ResultsFile>(resultsPath(dir), stop);
   } catch (const Interrupted&) {
     report.interrupted = true;
     return report;
   }
-  ResultsFile results(resultsPath(dir));
+  ResultsFile& results = *opened;
   report.episodes_resumed = static_cast<long>(results.done().size());
   std::vector<Unit> units;
   long total = 0;

@@ -71,17 +71,19 @@ std::vector<EpisodeResult> parseResultsCsv(const std::string& text, const std::s
   return rows;
 }
 
-ResultsFile::ResultsFile(const std::string& path) : path_(path) {
+ResultsFile::ResultsFile(const std::string& path, const StopCheck& stop) : path_(path) {
   namespace fs = std::filesystem;
   if (fs::exists(path)) {
     const std::string text = readTextFile(path, kMaxResultsBytes);
-    const std::size_t complete = parseRows(text, path, &existing_);
-    if (complete < text.size()) fs::resize_file(path, complete);
-    for (const EpisodeResult& r : existing_) {  // a run's last row decides, as in standingRows
+    const std::size_t complete = parseRows(text, path, &existing_, stop);
+    for (std::size_t i = 0; i < existing_.size(); ++i) {  // a run's last row decides, as in standingRows
+      if (i % kLinesPerStopCheck == 0) stopIfAsked(stop);
+      const EpisodeResult& r = existing_[i];
       const RunKey key = runKey(r);
       (isLostRun(r) ? lost_ : done_).insert(key);
       (isLostRun(r) ? done_ : lost_).erase(key);
     }
+    if (complete < text.size()) fs::resize_file(path, complete);  // only once the reading can no longer stop
   }
   out_ = std::make_unique<AppendFile>(path, false);
   if (existing_.empty() && out_->size() == 0) out_->append(headerLine() + '\n');

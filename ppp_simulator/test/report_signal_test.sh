@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # A real SIGINT or SIGTERM while `ppp experiment` writes its report: it stops within a second (exit 130) and
-# leaves no half-written file; a rerun writes the report of an uninterrupted run, byte for byte.
+# leaves no half-written file; a rerun writes the report of an uninterrupted run, byte for byte. Also a SIGINT
+# while a rerun reads a large results.csv to resume: it stops within a second and leaves the file as it was.
 # Usage: report_signal_test.sh PATH_TO_PPP
 set -u
 ppp="$1"
@@ -55,5 +56,25 @@ expect_ok "rerun after the signals" "$ppp" experiment "$work/experiment.yaml" -o
 for f in results.csv $report_files; do
   diff -r "$work/ref/$f" "$work/d/$f" > /dev/null && pass || fail "$f after the interrupted reports differs"
 done
+
+# Two million rows to read before resuming (some 5 s); SIGINT half a second into reading them.
+cp -r "$work/ref" "$work/big"
+awk 'NR == 1 { print; next } NR == 2 { for (i = 0; i < 2000000; ++i) print }' "$work/ref/results.csv" \
+  > "$work/big/results.csv"
+printf 'half,a,row' >> "$work/big/results.csv"
+cp "$work/big/results.csv" "$work/big.csv"
+"$ppp" experiment "$work/experiment.yaml" -o "$work/big" > /dev/null 2> "$work/resume.err" &
+pid=$!
+for _ in $(seq 1 3000); do grep -q "^reading the runs already in" "$work/resume.err" && break; sleep 0.01; done
+sleep 0.5
+start=$(date +%s%N)
+kill -INT "$pid"
+wait "$pid"
+status=$?
+ms=$(( ($(date +%s%N) - start) / 1000000 ))
+[ "$status" -eq 130 ] && pass || fail "SIGINT while reading results.csv: exit $status, expected 130 ($(tail -2 "$work/resume.err"))"
+[ "$ms" -le 1000 ] && pass || fail "SIGINT while reading results.csv: stopped $ms ms after the signal"
+echo "resume read: exit $status after $ms ms"
+cmp -s "$work/big.csv" "$work/big/results.csv" && pass || fail "SIGINT while reading results.csv changed the file"
 
 finish

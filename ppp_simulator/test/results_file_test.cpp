@@ -58,6 +58,25 @@ TEST_F(ResultsFileTest, AHalfWrittenLastLineIsCutOff) {
   EXPECT_FALSE(rows[2].passed);
 }
 
+TEST_F(ResultsFileTest, AStopWhileReadingLeavesTheFileAsItWas) {
+  std::vector<EpisodeResult> rows;
+  for (int run = 0; run < 40000; ++run) rows.push_back(row(run, run % 3 == 0));
+  { ResultsFile(path_).append(rows); }
+  std::ofstream(path_, std::ios::app) << "turns,ppp_000,random,40000,10";  // a half-written tail
+  const auto before = fs::file_size(path_);
+  int asked = 0;
+  // Stops at the second question: the parse asks every 16384 lines, so mid-file.
+  EXPECT_THROW(ResultsFile(path_, [&asked] { return ++asked == 2; }), Interrupted);
+  EXPECT_EQ(asked, 2);
+  EXPECT_EQ(fs::file_size(path_), before);  // the tail is cut only by a reading that completes
+  // A stop asked after the rows are parsed, while the runs are tallied, also leaves the file alone.
+  asked = 0;
+  EXPECT_THROW(ResultsFile(path_, [&asked] { return ++asked == 4; }), Interrupted);
+  EXPECT_EQ(fs::file_size(path_), before);
+  ResultsFile file(path_, [] { return false; });
+  EXPECT_EQ(file.done().size(), 40000u);
+}
+
 TEST_F(ResultsFileTest, ForeignFilesAreRefused) {
   std::ofstream(path_) << "a,b,c\n1,2,3\n";
   EXPECT_THROW(ResultsFile{path_}, ParseError);

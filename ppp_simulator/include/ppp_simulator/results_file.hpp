@@ -34,8 +34,9 @@ std::vector<EpisodeResult> standingRows(std::vector<EpisodeResult> rows);
 /// are left to play again.
 class ResultsFile {
  public:
-  /// Opens or creates `path`. @throws IoError, ParseError (a header or row that is not ours).
-  explicit ResultsFile(const std::string& path);
+  /// Opens or creates `path`, asking `stop` while it reads the rows already there (the file is then as before).
+  /// @throws IoError, ParseError (a header or row that is not ours), Interrupted.
+  explicit ResultsFile(const std::string& path, const StopCheck& stop = {});
   /// The rows present when the file was opened.
   const std::vector<EpisodeResult>& existing() const { return existing_; }
   /// Keys of the runs present when the file was opened, lost runs excepted.

@@ -3,14 +3,9 @@
 # while it runs, every listening socket of its master and nodes is in a namespace whose only interface is
 # loopback, none is in the machine's own namespace, and the results equal `ppp experiment`'s.
 # Usage: loopback_test.sh DEVEL_DIR
-devel="$1"
-source "$devel/setup.bash"  # before set -u: setup.bash reads unset variables
-set -u
-source "$(dirname "${BASH_SOURCE[0]}")/../cli_harness.sh"
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
-export PATH="/usr/bin:$PATH"
+source "$(dirname "${BASH_SOURCE[0]}")/ros_harness.sh"
 # The namespace has ports of its own: the default master port is free there.
-export ROS_MASTER_URI="http://127.0.0.1:11311" ROS_IP=127.0.0.1 ROS_HOME="$work/ros"
+export ROS_MASTER_URI="http://127.0.0.1:11311"
 
 cat > "$work/experiment.yaml" <<'YAML'
 seed: 7

@@ -11,12 +11,8 @@
 # namespaces the test says it is skipped (exit 77). sshd is Debian's, unpacked into the build directory by
 # scripts/install-deps.sh and run only inside the agents' namespace (with a private passwd and /run), so the
 # machine gets no ssh service. Usage: multi_machine_test.sh DEVEL_DIR
-devel="$1"
-source "$devel/setup.bash"  # before set -u: setup.bash reads unset variables
-set -u
-source "$(dirname "${BASH_SOURCE[0]}")/../cli_harness.sh"
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
-export PATH="/usr/bin:/usr/sbin:$PATH"
+source "$(dirname "${BASH_SOURCE[0]}")/ros_harness.sh"
+export PATH="/usr/sbin:$PATH"
 sshd="$devel/../sshd/usr/sbin/sshd"
 
 skip() { echo "SKIPPED: $*"; exit 77; }
