@@ -21,7 +21,13 @@ Agent& AgentHost::start(std::uint32_t id, const EpisodeInfo& info, const Grid* p
   EpisodeInfo episode = info;
   slot.prior_map = prior_map != nullptr ? std::make_unique<Grid>(*prior_map) : nullptr;
   episode.prior_map = slot.prior_map.get();
-  slot.agent->reset(episode);
+  try {
+    slot.agent->reset(episode);
+  } catch (...) {  // the agent refuses the episode: back to the pool, not destroyed
+    slot.prior_map.reset();
+    idle_.push_back(std::move(slot));
+    throw;
+  }
   Slot& stored = active_[id] = std::move(slot);
   return *stored.agent;
 }

@@ -253,6 +253,25 @@ TEST(BatchResponderTest, PositionsFarOffTheMapAreRejectedWithoutTouchingMemory) 
   EXPECT_EQ(responder.rejections(), (std::map<std::string, long>{{"position", 2}}));
 }
 
+// Found by the scan_batch fuzz target (UBSan): an episode id restarted with a start its agent refuses (astar
+// without a prior map) lost its agent while the responder still held a pointer to it, which the prefetch of the
+// batch's first scan followed. The refused restart ends that episode, the others play on, the id can start again.
+TEST(BatchResponderTest, ARefusedRestartEndsTheEpisodeAndTheOthersPlayOn) {
+  BatchResponder responder(config("astar"));
+  responder.answer(batchOf({startScan(1, true), startScan(2, true), startScan(3, true)}));
+  const auto moves =
+      responder.answer(batchOf({later(startScan(1, true), 1), later(startScan(2, true), 1), startScan(3, false)}));
+  ASSERT_EQ(moves.actions.size(), 3u);
+  EXPECT_TRUE(isAction(moves.actions[0]) && isAction(moves.actions[1]));
+  EXPECT_EQ(moves.actions[2], kRejectedAction);
+  EXPECT_EQ(responder.rejections(), (std::map<std::string, long>{{"prior_map", 1}}));
+  EXPECT_EQ(responder.active(), 2u);
+  const auto again =
+      responder.answer(batchOf({later(startScan(1, true), 2), later(startScan(2, true), 2), startScan(3, true)}));
+  for (std::uint8_t action : again.actions) EXPECT_TRUE(isAction(action));
+  EXPECT_EQ(responder.active(), 3u);
+}
+
 TEST(BatchResponderTest, EpisodesMissingFromABatchAreFinishedAndIdsCanRestart) {
   BatchResponder responder(config("explorer"));
   responder.answer(batchOf({startScan(1), startScan(2), startScan(3)}));

@@ -20,6 +20,8 @@ class AgentHost {
   explicit AgentHost(const AgentConfig& config);
   /// Starts episode `id`: a fresh (reset) agent; `prior_map` is kept for the episode when not empty. Returns
   /// the episode's agent, valid until the episode is finished (callers may act on it directly).
+  /// @throws InvalidArgument when the agent refuses the episode (astar without a prior map); episode `id` is then
+  /// not hosted (a restarted id's earlier episode is over) and the agent stays in the pool.
   Agent& start(std::uint32_t id, const EpisodeInfo& info, const Grid* prior_map);
   /// The action of episode `id` for this scan. @throws InvalidArgument for an episode never started.
   Action act(std::uint32_t id, const Scan& scan);

@@ -102,9 +102,16 @@ std::uint8_t BatchResponder::act(const ppp_msgs::ScanBatch& batch, std::size_t i
 
 void BatchResponder::start(std::uint32_t id, const EpisodeStart& start) {
   const std::unique_ptr<Grid> prior = priorGrid(start);
-  agents::Agent& agent = host_.start(id, episodeInfo(start, nullptr), prior.get());  // a restarted id: a fresh one
-  const Episode episode{id, start.width, start.height, start.goal, &agent, 0, false};
   const auto it = firstNotBefore(id);
+  agents::Agent* agent = nullptr;
+  try {
+    agent = &host_.start(id, episodeInfo(start, nullptr), prior.get());  // a restarted id: a fresh one
+  } catch (const InvalidArgument&) {
+    // The host ended the id's earlier episode, if any: its entry (and agent pointer) goes too.
+    if (it != episodes_.end() && it->id == id) episodes_.erase(it);
+    throw;
+  }
+  const Episode episode{id, start.width, start.height, start.goal, agent, 0, false};
   if (it != episodes_.end() && it->id == id) {
     *it = episode;
   } else {
