@@ -62,7 +62,7 @@ std::vector<EpisodeResult> standingRows(std::vector<EpisodeResult> rows) {
 }
 
 std::vector<EpisodeResult> readResultsFile(const std::string& path, const StopCheck& stop) {
-  return parseResultsCsv(readTextFile(path, kMaxResultsBytes), path, stop);
+  return parseResultsCsv(readTextFile(path, kMaxResultsBytes, stop), path, stop);
 }
 
 std::vector<EpisodeResult> parseResultsCsv(const std::string& text, const std::string& path, const StopCheck& stop) {
@@ -74,7 +74,7 @@ std::vector<EpisodeResult> parseResultsCsv(const std::string& text, const std::s
 ResultsFile::ResultsFile(const std::string& path, const StopCheck& stop) : path_(path) {
   namespace fs = std::filesystem;
   if (fs::exists(path)) {
-    const std::string text = readTextFile(path, kMaxResultsBytes);
+    const std::string text = readTextFile(path, kMaxResultsBytes, stop);
     const std::size_t complete = parseRows(text, path, &existing_, stop);
     for (std::size_t i = 0; i < existing_.size(); ++i) {  // a run's last row decides, as in standingRows
       if (i % kLinesPerStopCheck == 0) stopIfAsked(stop);

@@ -5,7 +5,6 @@
 #include <cstring>
 #include <fcntl.h>
 #include <fstream>
-#include <sstream>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -14,7 +13,7 @@
 
 namespace ppp {
 
-std::string readTextFile(const std::string& path, std::size_t max_bytes) {
+std::string readTextFile(const std::string& path, std::size_t max_bytes, const StopCheck& stop) {
   struct stat info {};
   if (::stat(path.c_str(), &info) != 0) throw IoError(path, std::string("cannot open: ") + std::strerror(errno));
   if (S_ISDIR(info.st_mode)) throw IoError(path, "is a directory, expected a file");
@@ -24,10 +23,22 @@ std::string readTextFile(const std::string& path, std::size_t max_bytes) {
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError(path, std::string("cannot open: ") + std::strerror(errno));
-  std::ostringstream contents;
-  contents << in.rdbuf();
+  constexpr std::size_t kChunk = std::size_t{8} << 20;  // bytes read between two questions to `stop`
+  std::string contents;
+  contents.reserve(static_cast<std::size_t>(info.st_size) + kChunk);
+  std::size_t used = 0;
+  for (;;) {
+    stopIfAsked(stop);
+    contents.resize(used + kChunk);
+    in.read(&contents[used], static_cast<std::streamsize>(kChunk));
+    const std::size_t got = static_cast<std::size_t>(in.gcount());
+    used += got;
+    if (used > max_bytes) throw IoError(path, "grew beyond the limit of " + std::to_string(max_bytes) + " bytes");
+    if (got < kChunk) break;
+  }
   if (in.bad()) throw IoError(path, "read failed");
-  return contents.str();
+  contents.resize(used);
+  return contents;
 }
 
 void writeFileAtomically(const std::string& path, const std::string& contents) {
