@@ -9,6 +9,7 @@ set(PPP_AGENTS_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/astar_agent.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/random_agent.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/wall_follower_agent.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/reveal_counter.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/explorer_agent.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/bumper_agent.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/path_follower.cpp

@@ -1,5 +1,6 @@
 // Steps per second of each agent configuration on a 20x20 PPP, with the move model applied in a tiny loop
-// (the scan is built lazily, as the in-process engine does): reset at the goal or after 300 steps.
+// (the scan is built lazily from the map's window atlas, as the in-process engine and the simulator do):
+// reset at the goal or after 300 steps.
 //   agent_step_bench [--benchmark_repetitions=3]
 
 #include <benchmark/benchmark.h>
@@ -13,6 +14,7 @@
 #include "ppp_core/random_problem.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_core/sensor.hpp"
+#include "ppp_core/window_atlas.hpp"
 
 namespace {
 
@@ -32,6 +34,7 @@ void agentSteps(benchmark::State& state, AgentConfig config) {
   const ppp::Problem& problem = benchProblem();
   const ppp::Grid grid = ppp::decodeGrid(problem);
   const ppp::SensorModel sensor(ppp::SensorOptions{2, config.sensor_noise});
+  const ppp::WindowAtlas windows(grid, sensor.options().range);
   std::unique_ptr<ppp::agents::Agent> agent = ppp::agents::makeAgent(config);
   ppp::agents::EpisodeInfo info;
   info.width = grid.width();
@@ -47,7 +50,7 @@ void agentSteps(benchmark::State& state, AgentConfig config) {
   int step = 0;
   std::int64_t passes = 0;
   for (auto _ : state) {
-    const ppp::Scan scan(sensor, grid, position, problem.goal, bumped, step, info.seed);
+    const ppp::Scan scan(sensor, grid, position, problem.goal, bumped, step, info.seed, &windows);
     const ppp::agents::Action action = agent->act(scan);
     const Cell next = ppp::agents::target(position, action);
     bumped = action != ppp::agents::Action::Stay && !grid.isFree(next);

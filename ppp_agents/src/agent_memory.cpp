@@ -1,16 +1,66 @@
 #include "ppp_agents/agent_memory.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 namespace ppp {
 namespace agents {
+
+namespace {
+
+/// The lowest `count` bits set (count 0..64).
+std::uint64_t lowBits(int count) { return count >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1; }
+
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "scan rows are read as little-endian words");
+
+/// 0x80 in each byte of `bytes` equal to `value`, 0 in the others (no carries between bytes).
+std::uint64_t bytesEqual(std::uint64_t bytes, std::int8_t value) {
+  constexpr std::uint64_t kLow7 = 0x7F7F7F7F7F7F7F7FULL;
+  const std::uint64_t differ = bytes ^ (0x0101010101010101ULL * static_cast<std::uint8_t>(value));
+  return ~(((differ & kLow7) + kLow7) | differ | kLow7);
+}
+
+/// Bit i set where byte i of a bytesEqual() result is 0x80.
+std::uint64_t gatherBytes(std::uint64_t high_bits) { return ((high_bits >> 7) * 0x0102040810204080ULL) >> 56; }
+
+/// Scan cells `row[0 .. count)` (count <= 64) as two bit masks, bit i for cell i: seen free, seen obstacle.
+/// Reads whole 8-byte words while they lie within the scan's kMaxScanCells bytes (`offset` is the row's
+/// index in them), bytes past `count` masked off before use.
+void rowMasks(const std::int8_t* row, int offset, int count, std::uint64_t* free, std::uint64_t* obstacle) {
+  *free = 0;
+  *obstacle = 0;
+  int i = 0;
+  for (; i < count && offset + i + 8 <= kMaxScanCells; i += 8) {
+    std::uint64_t bytes;
+    std::memcpy(&bytes, row + i, sizeof bytes);
+    const std::uint64_t keep = count - i >= 8 ? ~std::uint64_t{0} : lowBits(8 * (count - i));
+    *free |= gatherBytes(bytesEqual(bytes, kScanFree) & keep) << i;
+    *obstacle |= gatherBytes(bytesEqual(bytes, kScanObstacle) & keep) << i;
+  }
+  for (; i < count; ++i) {
+    *free |= static_cast<std::uint64_t>(row[i] == kScanFree) << i;
+    *obstacle |= static_cast<std::uint64_t>(row[i] == kScanObstacle) << i;
+  }
+}
+
+}  // namespace
 
 void AgentMemory::reset(int width, int height, int window) {
   width_ = width;
   height_ = height;
   window_ = window;
+  words_per_row_ = (width + 63) / 64;
   last_position_ = Cell{-1, -1};
-  cells_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), kScanUnknown);
+  const std::size_t words = static_cast<std::size_t>(words_per_row_) * static_cast<std::size_t>(height);
+  free_.assign(words, 0);
+  obstacle_.assign(words, 0);
+}
+
+void AgentMemory::forget(int y, int x0, int x1) {
+  for (int x = x0; x <= x1; x += 64) {
+    const int count = std::min(x1 - x + 1, 64);
+    writeBits(y, x, count, lowBits(count), 0, 0);
+  }
 }
 
 void AgentMemory::update(const Scan& scan) {
@@ -25,12 +75,12 @@ void AgentMemory::update(const Scan& scan) {
   const int y1 = std::min(p.y + keep, height_ - 1);
   const int x0 = std::max(p.x - keep, 0);
   const int x1 = std::min(p.x + keep, width_ - 1);
-  for (int y = y0; y <= y1; ++y) {
-    const std::int8_t* row = window + (y - p.y + r) * side + (x0 - p.x + r);
-    std::int8_t* out = &cells_[static_cast<std::size_t>(y) * width_ + x0];
-    for (int x = x0; x <= x1; ++x, ++row, ++out) {
-      if (*row == kScanFree || *row == kScanObstacle) *out = *row;
-    }
+  for (int y = y0; y <= y1 && x0 <= x1; ++y) {
+    const int offset = (y - p.y + r) * side + (x0 - p.x + r);
+    std::uint64_t seen_free;
+    std::uint64_t seen_obstacle;
+    rowMasks(window + offset, offset, x1 - x0 + 1, &seen_free, &seen_obstacle);
+    writeBits(y, x0, x1 - x0 + 1, seen_free | seen_obstacle, seen_free, seen_obstacle);
   }
   if (window_ > 0) {
     const Cell last = last_position_;
@@ -42,13 +92,12 @@ void AgentMemory::update(const Scan& scan) {
       const int old_y0 = std::max(last.y - half, 0), old_y1 = std::min(last.y + half, height_ - 1);
       const int old_x0 = std::max(last.x - half, 0), old_x1 = std::min(last.x + half, width_ - 1);
       for (int y = old_y0; y <= old_y1; ++y) {
-        std::int8_t* row = &cells_[static_cast<std::size_t>(y) * width_];
         if (y < new_y0 || y > new_y1) {
-          std::fill(row + old_x0, row + old_x1 + 1, kScanUnknown);
+          forget(y, old_x0, old_x1);
           continue;
         }
-        for (int x = old_x0; x <= std::min(old_x1, new_x0 - 1); ++x) row[x] = kScanUnknown;
-        for (int x = std::max(old_x0, new_x1 + 1); x <= old_x1; ++x) row[x] = kScanUnknown;
+        if (old_x0 <= std::min(old_x1, new_x0 - 1)) forget(y, old_x0, std::min(old_x1, new_x0 - 1));
+        if (std::max(old_x0, new_x1 + 1) <= old_x1) forget(y, std::max(old_x0, new_x1 + 1), old_x1);
       }
     }
     last_position_ = p;

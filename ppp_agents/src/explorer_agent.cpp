@@ -1,9 +1,9 @@
 #include "ppp_agents/explorer_agent.hpp"
 
-#include <algorithm>
+#include <array>
 #include <cstdlib>
 
-#include "ppp_core/visibility.hpp"
+#include "ppp_agents/reveal_counter.hpp"
 
 namespace ppp {
 namespace agents {
@@ -20,73 +20,8 @@ void ExplorerAgent::reset(const EpisodeInfo& info) {
   path_next_ = 0;
 }
 
-namespace {
-
-/// Builds the line-of-sight table of one sensor range.
-ExplorerAgent::SightTable buildSightTable(int range) {
-  ExplorerAgent::SightTable table;
-  table.range = range;
-  for (int dy = -range; dy <= range; ++dy) {
-    for (int dx = -range; dx <= range; ++dx) {
-      table.begin.push_back(static_cast<int>(table.blockers.size()));
-      for (Cell c : cellsCrossed(Cell{0, 0}, Cell{dx, dy})) table.blockers.push_back(c);
-    }
-  }
-  table.begin.push_back(static_cast<int>(table.blockers.size()));
-  return table;
-}
-
-}  // namespace
-
-const ExplorerAgent::SightTable& ExplorerAgent::sightTable(int range) {
-  // One table per range, shared by every explorer: an agent process hosting hundreds of episodes keeps one
-  // copy hot in cache instead of hundreds cold ones.
-  static const std::vector<SightTable> tables = [] {
-    std::vector<SightTable> all;
-    for (int r = 0; r <= kMaxSensorRange; ++r) all.push_back(buildSightTable(r));
-    return all;
-  }();
-  return tables.at(static_cast<std::size_t>(range));
-}
-
 void ExplorerAgent::prefetch(Cell position) const {
-  if (sight_ == nullptr) return;
-  memory_.prefetch(position, sight_->range + 1);
-  __builtin_prefetch(&unknown_count_);
-  __builtin_prefetch(unknown_.data());
-}
-
-void ExplorerAgent::collectUnknown(Cell position, int range) {
-  unknown_count_ = 0;
-  const int reach = range + 1;
-  const int y0 = std::max(position.y - reach, 0);
-  const int y1 = std::min(position.y + reach, memory_.height() - 1);
-  const int x0 = std::max(position.x - reach, 0);
-  const int x1 = std::min(position.x + reach, memory_.width() - 1);
-  for (int y = y0; y <= y1; ++y) {
-    for (int x = x0; x <= x1; ++x) {
-      if (memory_.isUnknown(Cell{x, y})) unknown_[unknown_count_++] = Cell{x, y};
-    }
-  }
-}
-
-int ExplorerAgent::unknownAround(Cell centre) const {
-  const int range = sight_->range;
-  const int side = 2 * range + 1;
-  int count = 0;
-  for (int u = 0; u < unknown_count_; ++u) {
-    const int dx = unknown_[u].x - centre.x;
-    const int dy = unknown_[u].y - centre.y;
-    if (dx < -range || dx > range || dy < -range || dy > range) continue;
-    const int i = (dy + range) * side + (dx + range);
-    bool hidden = false;
-    for (int b = sight_->begin[i]; b < sight_->begin[i + 1] && !hidden; ++b) {
-      const Cell blocker = sight_->blockers[b];
-      hidden = memory_.at(Cell{centre.x + blocker.x, centre.y + blocker.y}) == kScanObstacle;
-    }
-    count += hidden ? 0 : 1;
-  }
-  return count;
+  if (range_ > 0) memory_.prefetch(position, range_ + 1);
 }
 
 bool ExplorerAgent::isFrontier(Cell c) const {
@@ -128,23 +63,24 @@ Action ExplorerAgent::act(const Scan& scan) {
   memory_.update(scan);
   Action action;
   if (navigator_.towardsSeenGoal(scan, memory_, &goal_seen_, &action)) return action;
-  if (sight_ == nullptr || scan.range() != sight_->range) sight_ = &sightTable(scan.range());
-  collectUnknown(position, sight_->range);
+  range_ = scan.range();
+  std::array<bool, 4> open{};
+  for (int i = 0; i < 4; ++i) open[i] = memory_.isFree(target(position, kMoves[i]));
+  std::array<int, 4> gains;
+  revealGains(memory_, position, range_, open, &gains);
   Action best[4];
   int best_count = 0;
   int best_gain = 0;
   Action free[4];
   int free_count = 0;
-  for (Action move : kMoves) {
-    const Cell n = target(position, move);
-    if (!memory_.isFree(n)) continue;
-    free[free_count++] = move;
-    const int gain = unknown_count_ > 0 ? unknownAround(n) : 0;
-    if (gain > best_gain) {
-      best_gain = gain;
+  for (int i = 0; i < 4; ++i) {
+    if (!open[i]) continue;
+    free[free_count++] = kMoves[i];
+    if (gains[i] > best_gain) {
+      best_gain = gains[i];
       best_count = 0;
     }
-    if (gain == best_gain && gain > 0) best[best_count++] = move;
+    if (gains[i] == best_gain && gains[i] > 0) best[best_count++] = kMoves[i];
   }
   if (best_count > 0) {
     path_.clear();

@@ -182,51 +182,58 @@ TEST(AgentMemoryTest, WindowSmallerThanTheScanKeepsOnlyTheWindow) {
 
 TEST(AgentMemoryTest, IncrementalForgettingMatchesForgettingEverythingOutsideTheWindow) {
   // Against a brute-force reference (write the scan, then clear every cell outside the window) on random
-  // scans along a random walk with occasional jumps, for several windows.
-  for (int window : {1, 3, 5, 7}) {
-    Rng rng(static_cast<std::uint64_t>(window));
-    const int width = 11;
-    const int height = 8;
-    AgentMemory memory;
-    memory.reset(width, height, window);
-    std::vector<std::int8_t> reference(static_cast<std::size_t>(width) * height, kScanUnknown);
-    Cell position{5, 4};
-    for (int step = 0; step < 400; ++step) {
-      if (rng.below(20) == 0) {
-        position = Cell{static_cast<int>(rng.below(width)), static_cast<int>(rng.below(height))};
-      } else {
-        const Cell next{position.x + static_cast<int>(rng.below(3)) - 1, position.y};
-        const Cell next2{next.x, next.y + static_cast<int>(rng.below(3)) - 1};
-        if (next2.x >= 0 && next2.y >= 0 && next2.x < width && next2.y < height) position = next2;
-      }
-      std::vector<std::int8_t> cells;
-      const std::int8_t values[4] = {kScanFree, kScanObstacle, kScanUnknown, kScanFree};
-      for (int dy = -2; dy <= 2; ++dy) {
-        for (int dx = -2; dx <= 2; ++dx) {
-          const Cell c{position.x + dx, position.y + dy};
-          const bool on_map = c.x >= 0 && c.y >= 0 && c.x < width && c.y < height;
-          cells.push_back(on_map ? values[rng.below(4)] : kScanOutOfBounds);
+  // scans along a random walk with occasional jumps, for several windows (0: full memory), on a small map
+  // and on one 130 cells wide, whose rows span three words of the bit planes; range 7 scans with full
+  // memory, range 2 with a window.
+  for (const Cell size : {Cell{11, 8}, Cell{130, 6}}) {
+    for (int window : {0, 1, 3, 5, 7}) {
+      const int range = window == 0 ? kMaxSensorRange : 2;  // full memory: 15 x 15 scans across word boundaries
+      const int side = 2 * range + 1;
+      Rng rng(static_cast<std::uint64_t>(window));
+      const int width = size.x;
+      const int height = size.y;
+      AgentMemory memory;
+      memory.reset(width, height, window);
+      std::vector<std::int8_t> reference(static_cast<std::size_t>(width) * height, kScanUnknown);
+      Cell position{5, 4};
+      for (int step = 0; step < 40 * width; ++step) {
+        if (rng.below(20) == 0) {
+          position = Cell{static_cast<int>(rng.below(width)), static_cast<int>(rng.below(height))};
+        } else {
+          const Cell next{position.x + static_cast<int>(rng.below(3)) - 1, position.y};
+          const Cell next2{next.x, next.y + static_cast<int>(rng.below(3)) - 1};
+          if (next2.x >= 0 && next2.y >= 0 && next2.x < width && next2.y < height) position = next2;
         }
-      }
-      memory.update(Scan(2, cells, position, Cell{0, 0}, false, step));
-      for (int dy = -2; dy <= 2; ++dy) {
-        for (int dx = -2; dx <= 2; ++dx) {
-          const Cell c{position.x + dx, position.y + dy};
-          const std::int8_t v = cells[(dy + 2) * 5 + (dx + 2)];
-          if (v == kScanFree || v == kScanObstacle) reference[c.y * width + c.x] = v;
-        }
-      }
-      for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-          if (std::abs(x - position.x) > window / 2 || std::abs(y - position.y) > window / 2) {
-            reference[y * width + x] = kScanUnknown;
+        std::vector<std::int8_t> cells;
+        const std::int8_t values[4] = {kScanFree, kScanObstacle, kScanUnknown, kScanFree};
+        for (int dy = -range; dy <= range; ++dy) {
+          for (int dx = -range; dx <= range; ++dx) {
+            const Cell c{position.x + dx, position.y + dy};
+            const bool on_map = c.x >= 0 && c.y >= 0 && c.x < width && c.y < height;
+            cells.push_back(on_map ? values[rng.below(4)] : kScanOutOfBounds);
           }
         }
-      }
-      for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-          ASSERT_EQ(memory.at(Cell{x, y}), reference[y * width + x])
-              << "window " << window << " step " << step << " cell (" << x << "," << y << ")";
+        memory.update(Scan(range, cells, position, Cell{0, 0}, false, step));
+        for (int dy = -range; dy <= range; ++dy) {
+          for (int dx = -range; dx <= range; ++dx) {
+            const Cell c{position.x + dx, position.y + dy};
+            const std::int8_t v = cells[(dy + range) * side + (dx + range)];
+            if (v == kScanFree || v == kScanObstacle) reference[c.y * width + c.x] = v;
+          }
+        }
+        for (int y = 0; y < height && window > 0; ++y) {
+          for (int x = 0; x < width; ++x) {
+            if (std::abs(x - position.x) > window / 2 || std::abs(y - position.y) > window / 2) {
+              reference[y * width + x] = kScanUnknown;
+            }
+          }
+        }
+        for (int y = 0; y < height; ++y) {
+          for (int x = 0; x < width; ++x) {
+            ASSERT_EQ(memory.at(Cell{x, y}), reference[y * width + x])
+                << "width " << width << " window " << window << " step " << step << " cell (" << x << "," << y
+                << ")";
+          }
         }
       }
     }

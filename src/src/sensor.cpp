@@ -1,6 +1,7 @@
 #include "ppp_core/sensor.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "ppp_core/error.hpp"
@@ -11,14 +12,15 @@ namespace ppp {
 
 namespace {
 
-/// A uniform number in [0, 1) from (seed, step, index), independent of any call order.
-double noiseDraw(std::uint64_t seed, int step, int index) {
+/// A uniform 53-bit number from (seed, step, index), independent of any call order: the noise draw of a cell
+/// is this times 2^-53, in [0, 1).
+std::uint64_t noiseBits(std::uint64_t seed, int step, int index) {
   std::uint64_t z = seed ^ (static_cast<std::uint64_t>(step) * 0x9E3779B97F4A7C15ULL) ^
                     (static_cast<std::uint64_t>(index) * 0xD1B54A32D192ED03ULL);
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
   z ^= z >> 31;
-  return static_cast<double>(z >> 11) * 0x1.0p-53;
+  return z >> 11;
 }
 
 }  // namespace
@@ -66,40 +68,46 @@ void SensorModel::see(const Grid& grid, Cell position, std::int8_t* window) cons
   // Physical truth first: the line of sight depends on the real obstacles.
   std::array<std::int8_t, kMaxScanCells> truth;
   std::uint64_t obstacles = 0;  // bit i: window cell i is an obstacle (windows of at most 64 cells)
-  for (int dy = -r; dy <= r; ++dy) {
-    for (int dx = -r; dx <= r; ++dx) {
-      const Cell c{position.x + dx, position.y + dy};
-      const int i = (dy + r) * s + (dx + r);
-      truth[i] = !grid.contains(c) ? kScanOutOfBounds : grid.isObstacle(c) ? kScanObstacle : kScanFree;
-      if (truth[i] == kScanObstacle && i < 64) obstacles |= std::uint64_t{1} << i;
+  const std::uint8_t* cells = grid.cells().data();
+  const int x0 = std::max(position.x - r, 0) - position.x + r;  // first window column on the grid
+  const int x1 = std::min(position.x + r, grid.width() - 1) - position.x + r;  // last one
+  for (int row = 0, i = 0; row < s; ++row, i += s) {
+    const int y = position.y - r + row;
+    if (y < 0 || y >= grid.height() || x0 > x1) {
+      std::fill(truth.begin() + i, truth.begin() + i + s, kScanOutOfBounds);
+      continue;
     }
+    std::fill(truth.begin() + i, truth.begin() + i + x0, kScanOutOfBounds);
+    const std::uint8_t* grid_row = cells + static_cast<std::size_t>(y) * grid.width();
+    for (int col = x0; col <= x1; ++col) {
+      const bool obstacle = grid_row[position.x - r + col] != 0;
+      truth[i + col] = obstacle ? kScanObstacle : kScanFree;
+      if (obstacle && i + col < 64) obstacles |= std::uint64_t{1} << (i + col);
+    }
+    std::fill(truth.begin() + i + x1 + 1, truth.begin() + i + s, kScanOutOfBounds);
   }
-  const bool masks = !blocker_masks_.empty();
+  if (!blocker_masks_.empty()) {
+    for (int i = 0; i < s * s; ++i) window[i] = (obstacles & blocker_masks_[i]) == 0 ? truth[i] : kScanUnknown;
+    return;
+  }
   for (int i = 0; i < s * s; ++i) {
     bool visible = true;
-    if (masks) {
-      visible = (obstacles & blocker_masks_[i]) == 0;
-    } else {
-      for (int blocker : blockers_[i]) {
-        if (truth[blocker] == kScanObstacle) {
-          visible = false;
-          break;
-        }
-      }
-    }
+    for (int blocker : blockers_[i]) visible = visible && truth[blocker] != kScanObstacle;
     window[i] = visible ? truth[i] : kScanUnknown;
   }
 }
 
 void SensorModel::addNoise(std::uint64_t noise_seed, int step, std::int8_t* window) const {
   if (options_.noise <= 0.0) return;
+  // A cell flips when its draw bits * 2^-53 < noise, i.e. (both sides scaled by 2^53, exactly) when the bits
+  // are below ceil(noise * 2^53). Branch-free: a flip turns free (0) into obstacle (100) and back by XOR.
+  const std::uint64_t threshold = static_cast<std::uint64_t>(std::ceil(options_.noise * 0x1.0p53));
   const int centre = options_.range * side() + options_.range;
   for (int i = 0; i < side() * side(); ++i) {
     const std::int8_t value = window[i];
-    if (i != centre && (value == kScanFree || value == kScanObstacle) &&
-        noiseDraw(noise_seed, step, i) < options_.noise) {
-      window[i] = value == kScanFree ? kScanObstacle : kScanFree;
-    }
+    const bool sensed = i != centre && (value == kScanFree || value == kScanObstacle);
+    const bool flip = sensed & (noiseBits(noise_seed, step, i) < threshold);
+    window[i] = static_cast<std::int8_t>(value ^ (flip ? kScanFree ^ kScanObstacle : 0));
   }
 }
 

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <array>
 #include <vector>
 
 #include "ppp_agents/agent.hpp"
@@ -29,24 +28,10 @@ class ExplorerAgent final : public Agent {
   void reset(const EpisodeInfo& info) override;
   /// One greedy (or frontier, or goal) step.
   Action act(const Scan& scan) override;
-  /// Fetches the remembered cells around `position` and the collected-unknown list.
+  /// Fetches the remembered cells around `position`.
   void prefetch(Cell position) const override;
 
-  /// Which cells hide each cell of a sensor window: for window index i (row-major), the offsets
-  /// blockers[begin[i] .. begin[i+1]) from the agent that a line of sight to it crosses.
-  struct SightTable {
-    int range = 0;              ///< Sensor range the table is for.
-    std::vector<int> begin;     ///< Per window index, where its blockers start (one extra entry at the end).
-    std::vector<Cell> blockers;  ///< Offsets of the cells crossed, all window cells concatenated.
-  };
-
  private:
-  /// Collects the unknown cells within range + 1 of `position` (all that any neighbour's window can hold).
-  void collectUnknown(Cell position, int range);
-  /// Collected unknown cells within the sensor window around `centre` not hidden by a remembered obstacle.
-  int unknownAround(Cell centre) const;
-  /// The line-of-sight table of a sensor range, built once per process and shared.
-  static const SightTable& sightTable(int range);
   /// True when a cell is known free and has an unknown on-map 4-neighbour.
   bool isFrontier(Cell c) const;
   /// The next move along the frontier path (re-planned when needed), or false when there is no frontier.
@@ -58,9 +43,7 @@ class ExplorerAgent final : public Agent {
   Navigator navigator_;
   Rng rng_{0};
   bool goal_seen_ = false;
-  const SightTable* sight_ = nullptr;  // of the range of the last scan
-  int unknown_count_ = 0;  // before unknown_: read with the other per-step fields, not 2 KB away
-  std::array<Cell, (2 * kMaxSensorRange + 3) * (2 * kMaxSensorRange + 3)> unknown_{};
+  int range_ = 0;  // of the last scan; 0 before the first
   std::vector<Cell> path_;    // long_term: cells still to visit, the frontier last
   std::size_t path_next_ = 0;
 };

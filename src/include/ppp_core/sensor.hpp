@@ -81,7 +81,8 @@ class Scan {
   }
   /// The reported value of an absolute cell, or kScanUnknown outside the window.
   std::int8_t atCell(Cell c) const;
-  /// All window cells, row-major.
+  /// All window cells, row-major; kMaxScanCells bytes may be read from it (those past the window are
+  /// unspecified), so that a reader may load whole words.
   const std::int8_t* cells() const {
     if (!filled_) fill();
     return cells_.data();

@@ -1,0 +1,141 @@
+#include "ppp_agents/reveal_counter.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "ppp_agents/action.hpp"
+#include "ppp_core/sensor.hpp"
+#include "ppp_core/visibility.hpp"
+
+namespace ppp {
+namespace agents {
+
+namespace {
+
+/// The masks of one sensor range on the board of side 2 * range + 3 centred on the agent (bit y * side + x).
+struct RevealTables {
+  int range = 0;
+  int side = 0;                       ///< Board side.
+  int words = 0;                      ///< 64-bit words per mask.
+  std::vector<std::uint64_t> window;  ///< Per neighbour: the board cells of its sensor window.
+  std::vector<std::uint64_t> shadow;  ///< Per neighbour and board cell: the cells of that window it hides.
+
+  /// The window mask of neighbour `n` (kMoves order).
+  const std::uint64_t* windowOf(int n) const { return &window[static_cast<std::size_t>(n * words)]; }
+  /// What an obstacle on board cell `bit` hides from neighbour `n`.
+  const std::uint64_t* shadowOf(int n, int bit) const {
+    return &shadow[(static_cast<std::size_t>(n) * side * side + static_cast<std::size_t>(bit)) * words];
+  }
+};
+
+void setBit(std::uint64_t* mask, int bit) { mask[bit >> 6] |= std::uint64_t{1} << (bit & 63); }
+
+/// ORs the `count` low bits of `bits` into a mask of W words from bit `at` on.
+template <int W>
+void placeBits(std::uint64_t (&mask)[W], int at, int count, std::uint64_t bits) {
+  const int word = at >> 6;
+  const int offset = at & 63;
+  mask[word] |= bits << offset;
+  if (offset + count > 64) mask[word + 1] |= bits >> (64 - offset);
+}
+
+/// Set bits of a word, inline (the builtin calls a library function on the baseline x86-64 target).
+int bitCount(std::uint64_t x) {
+  x -= (x >> 1) & 0x5555555555555555ULL;
+  x = (x & 0x3333333333333333ULL) + ((x >> 2) & 0x3333333333333333ULL);
+  x = (x + (x >> 4)) & 0x0F0F0F0F0F0F0F0FULL;
+  return static_cast<int>((x * 0x0101010101010101ULL) >> 56);
+}
+
+RevealTables buildTables(int range) {
+  RevealTables t;
+  t.range = range;
+  t.side = 2 * range + 3;
+  t.words = (t.side * t.side + 63) / 64;
+  t.window.assign(static_cast<std::size_t>(4 * t.words), 0);
+  t.shadow.assign(static_cast<std::size_t>(4 * t.side * t.side * t.words), 0);
+  const int reach = range + 1;
+  for (int n = 0; n < 4; ++n) {
+    const Cell e = target(Cell{0, 0}, kMoves[n]);
+    // Board index of the cell at offset (dx, dy) from neighbour n.
+    const auto bit = [&](int dx, int dy) { return (e.y + dy + reach) * t.side + (e.x + dx + reach); };
+    std::uint64_t* window = &t.window[static_cast<std::size_t>(n * t.words)];
+    for (int dy = -range; dy <= range; ++dy) {
+      for (int dx = -range; dx <= range; ++dx) {
+        setBit(window, bit(dx, dy));
+        for (Cell blocker : cellsCrossed(Cell{0, 0}, Cell{dx, dy})) {
+          const int b = bit(blocker.x, blocker.y);
+          setBit(&t.shadow[(static_cast<std::size_t>(n) * t.side * t.side + b) * t.words], bit(dx, dy));
+        }
+      }
+    }
+  }
+  return t;
+}
+
+/// The tables of every sensor range, built once per process and shared by every explorer.
+const RevealTables& tablesFor(int range) {
+  static const std::vector<RevealTables> all = [] {
+    std::vector<RevealTables> tables;
+    for (int r = 0; r <= kMaxSensorRange; ++r) tables.push_back(buildTables(r));
+    return tables;
+  }();
+  return all.at(static_cast<std::size_t>(range));
+}
+
+static_assert((2 * kMaxSensorRange + 3) * (2 * kMaxSensorRange + 3) <= 5 * 64, "revealGains dispatches up to 5 words");
+
+/// revealGains() with masks of W words.
+template <int W>
+void countGains(const RevealTables& t, const AgentMemory& memory, Cell position, const std::array<bool, 4>& evaluate,
+                std::array<int, 4>* gains) {
+  std::uint64_t unknown[W] = {};
+  std::uint64_t obstacle[W] = {};
+  const int reach = t.range + 1;
+  const int y0 = std::max(position.y - reach, 0);
+  const int y1 = std::min(position.y + reach, memory.height() - 1);
+  const int x0 = std::max(position.x - reach, 0);
+  const int x1 = std::min(position.x + reach, memory.width() - 1);
+  const int count = x1 - x0 + 1;
+  const std::uint64_t on_map = count >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
+  for (int y = y0; y <= y1 && count > 0; ++y) {
+    const int bit = (y - position.y + reach) * t.side + (x0 - position.x + reach);
+    const std::uint64_t free = memory.freeBits(y, x0);
+    const std::uint64_t obstacles = memory.obstacleBits(y, x0) & on_map;
+    placeBits(unknown, bit, count, ~(free | obstacles) & on_map);
+    placeBits(obstacle, bit, count, obstacles);
+  }
+  for (int n = 0; n < 4; ++n) {
+    (*gains)[n] = 0;
+    if (!evaluate[n]) continue;
+    const std::uint64_t* window = t.windowOf(n);
+    std::uint64_t hidden[W] = {};
+    for (int w = 0; w < W; ++w) {
+      for (std::uint64_t blockers = obstacle[w] & window[w]; blockers != 0; blockers &= blockers - 1) {
+        const std::uint64_t* shadow = t.shadowOf(n, w * 64 + __builtin_ctzll(blockers));
+        for (int k = 0; k < W; ++k) hidden[k] |= shadow[k];
+      }
+    }
+    int gain = 0;
+    for (int w = 0; w < W; ++w) gain += bitCount(unknown[w] & window[w] & ~hidden[w]);
+    (*gains)[n] = gain;
+  }
+}
+
+}  // namespace
+
+void revealGains(const AgentMemory& memory, Cell position, int range, const std::array<bool, 4>& evaluate,
+                 std::array<int, 4>* gains) {
+  const RevealTables& t = tablesFor(range);
+  switch (t.words) {
+    case 1: return countGains<1>(t, memory, position, evaluate, gains);
+    case 2: return countGains<2>(t, memory, position, evaluate, gains);
+    case 3: return countGains<3>(t, memory, position, evaluate, gains);
+    case 4: return countGains<4>(t, memory, position, evaluate, gains);
+    default: return countGains<5>(t, memory, position, evaluate, gains);
+  }
+}
+
+}  // namespace agents
+}  // namespace ppp
