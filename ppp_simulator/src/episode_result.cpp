@@ -1,7 +1,9 @@
 #include "ppp_simulator/episode_result.hpp"
 
+#include <array>
 #include <charconv>
 
+#include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
 
 namespace ppp {
@@ -9,15 +11,57 @@ namespace simulator {
 
 namespace {
 
+constexpr std::size_t kFields = 11;  // of a row, as resultCsvHeader()
+
 template <typename T>
-T parseNumber(const std::string& text, const std::string& source, int line, const char* field) {
+T parseNumber(std::string_view text, const std::string& source, int line, const char* field) {
   T value{};
   const char* end = text.data() + text.size();
   const auto result = std::from_chars(text.data(), end, value);
   if (text.empty() || result.ec != std::errc() || result.ptr != end) {
-    throw ParseError(source, line, field, "expected a whole number, got '" + text + "'");
+    throw ParseError(source, line, field, "expected a whole number, got '" + std::string(text) + "'");
   }
   return value;
+}
+
+/// A row from its fields in header order (any count: a wrong one is named).
+template <typename Field>
+EpisodeResult rowFromFields(const Field* f, std::size_t count, const std::string& source, int line) {
+  if (count != kFields) {
+    throw ParseError(source, line, "row",
+                     "expected " + std::to_string(kFields) + " fields, got " + std::to_string(count));
+  }
+  EpisodeResult r;
+  r.set = f[0];
+  r.problem = f[1];
+  r.agent = f[2];
+  r.run = parseNumber<int>(f[3], source, line, "run");
+  r.seed = parseNumber<std::uint64_t>(f[4], source, line, "seed");
+  if (f[5] != "0" && f[5] != "1") {
+    throw ParseError(source, line, "pass", "expected 0 or 1, got '" + std::string(f[5]) + "'");
+  }
+  r.passed = f[5] == "1";
+  r.steps = parseNumber<int>(f[6], source, line, "steps");
+  r.bumps = parseNumber<int>(f[7], source, line, "bumps");
+  r.path_length = parseNumber<int>(f[8], source, line, "path_length");
+  r.optimal_length = parseNumber<int>(f[9], source, line, "optimal_length");
+  r.reason = f[10];
+  return r;
+}
+
+void appendText(const std::string& value, std::string* out) {
+  if (value.find_first_of(",\"\r\n") == std::string::npos) {
+    *out += value;
+  } else {
+    *out += csvField(value);
+  }
+}
+
+template <typename T>
+void appendNumber(T value, std::string* out) {
+  char digits[24];
+  const auto result = std::to_chars(digits, digits + sizeof digits, value);
+  out->append(digits, result.ptr);
 }
 
 }  // namespace
@@ -43,24 +87,48 @@ std::vector<std::string> toCsvFields(const EpisodeResult& r) {
 }
 
 EpisodeResult fromCsvFields(const std::vector<std::string>& f, const std::string& source, int line) {
-  if (f.size() != resultCsvHeader().size()) {
-    throw ParseError(source, line, "row", "expected " + std::to_string(resultCsvHeader().size()) + " fields, got " +
-                                              std::to_string(f.size()));
+  return rowFromFields(f.data(), f.size(), source, line);
+}
+
+void appendCsvRow(const EpisodeResult& r, std::string* out) {
+  appendText(r.set, out);
+  *out += ',';
+  appendText(r.problem, out);
+  *out += ',';
+  appendText(r.agent, out);
+  *out += ',';
+  appendNumber(r.run, out);
+  *out += ',';
+  appendNumber(r.seed, out);
+  *out += r.passed ? ",1," : ",0,";
+  appendNumber(r.steps, out);
+  *out += ',';
+  appendNumber(r.bumps, out);
+  *out += ',';
+  appendNumber(r.path_length, out);
+  *out += ',';
+  appendNumber(r.optimal_length, out);
+  *out += ',';
+  appendText(r.reason, out);
+  *out += '\n';
+}
+
+EpisodeResult parseCsvRow(std::string_view line, const std::string& source, int line_number) {
+  if (line.find('"') != std::string_view::npos) {
+    return fromCsvFields(splitCsvLine(std::string(line), source, line_number), source, line_number);
   }
-  EpisodeResult r;
-  r.set = f[0];
-  r.problem = f[1];
-  r.agent = f[2];
-  r.run = parseNumber<int>(f[3], source, line, "run");
-  r.seed = parseNumber<std::uint64_t>(f[4], source, line, "seed");
-  if (f[5] != "0" && f[5] != "1") throw ParseError(source, line, "pass", "expected 0 or 1, got '" + f[5] + "'");
-  r.passed = f[5] == "1";
-  r.steps = parseNumber<int>(f[6], source, line, "steps");
-  r.bumps = parseNumber<int>(f[7], source, line, "bumps");
-  r.path_length = parseNumber<int>(f[8], source, line, "path_length");
-  r.optimal_length = parseNumber<int>(f[9], source, line, "optimal_length");
-  r.reason = f[10];
-  return r;
+  std::array<std::string_view, kFields> fields;
+  std::size_t count = 0;
+  std::size_t begin = 0;
+  for (;;) {
+    const std::size_t comma = line.find(',', begin);
+    const std::string_view field = line.substr(begin, comma == std::string_view::npos ? line.npos : comma - begin);
+    if (count < kFields) fields[count] = field;
+    ++count;
+    if (comma == std::string_view::npos) break;
+    begin = comma + 1;
+  }
+  return rowFromFields(fields.data(), count, source, line_number);
 }
 
 std::vector<std::string> splitCsvLine(const std::string& line, const std::string& source, int line_number) {

@@ -18,12 +18,13 @@ namespace {
 
 /// The first failing run of `agent` on PPP `problem` of `set`, replayed for its path.
 FailureExample failingRun(const ExperimentConfig& config, const PreparedSet& set, int problem,
-                          const agents::AgentConfig& agent_config, const std::vector<EpisodeResult>& rows) {
+                          const agents::AgentConfig& agent_config, const std::vector<ResultGroup>& groups) {
   const EpisodeResult* first_fail = nullptr;
-  for (const EpisodeResult& r : rows) {
-    if (r.set == set.name && r.problem == set.set.ids[problem] && r.agent == agent_config.name && !r.passed &&
-        (first_fail == nullptr || r.run < first_fail->run)) {
-      first_fail = &r;
+  for (const ResultGroup& g : groups) {
+    const EpisodeResult* f = g.first_fail;
+    if (f != nullptr && f->agent == agent_config.name && f->problem == set.set.ids[problem] && f->set == set.name &&
+        (first_fail == nullptr || f->run < first_fail->run)) {
+      first_fail = f;
     }
   }
   EpisodeRunner runner(agent_config, config.episode);
@@ -49,18 +50,19 @@ FailureExample failingRun(const ExperimentConfig& config, const PreparedSet& set
 }  // namespace
 
 std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
-                                            const std::vector<EpisodeResult>& rows, int count) {
+                                            const std::vector<ResultGroup>& groups, int count) {
   std::map<std::string, const agents::AgentConfig*> agent_by_name;
   for (const auto& a : config.agents) agent_by_name[a.name] = &a;
   // Pass counts per (set, problem, agent), over the agents that are not the control.
   std::map<std::tuple<std::string, std::string, std::string>, std::pair<int, int>> counts;
-  for (const EpisodeResult& r : rows) {
+  for (const ResultGroup& g : groups) {
     // The control always passes; a planner's path cannot be replayed in-process for the picture.
+    const EpisodeResult& r = *g.row;
     const agents::AgentConfig& agent = *agent_by_name.at(r.agent);
     if (agents::agentType(agent.type).is_control || agents::isPlanner(agent)) continue;
     auto& c = counts[{r.set, r.problem, r.agent}];
-    c.first += r.passed ? 1 : 0;
-    ++c.second;
+    c.first += g.passes;
+    c.second += g.runs;
   }
   // Each agent's mean pass rate over every PPP, so the failure shown for a PPP is the agent it hurts most
   // relative to that agent's usual performance (the random baseline fails everywhere and would say little).
@@ -101,26 +103,27 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
   if (static_cast<int>(candidates.size()) > count) candidates.resize(static_cast<std::size_t>(count));
   std::vector<FailureExample> failures;
   for (const Candidate& c : candidates) {
-    failures.push_back(failingRun(config, sets[c.set], c.problem, *agent_by_name.at(c.worst_agent), rows));
+    failures.push_back(failingRun(config, sets[c.set], c.problem, *agent_by_name.at(c.worst_agent), groups));
   }
   return failures;
 }
 
 std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
-                                          const std::vector<EpisodeResult>& rows) {
+                                          const std::vector<ResultGroup>& groups) {
   std::map<std::string, int> set_index;
   std::vector<std::map<std::string, int>> problem_index(sets.size());
   for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
     set_index[sets[s].name] = s;
     for (int p = 0; p < static_cast<int>(sets[s].set.ids.size()); ++p) problem_index[s][sets[s].set.ids[p]] = p;
   }
-  // (agent, set, problem) -> (passes, runs), in one pass over the rows.
+  // (agent, set, problem) -> (passes, runs), in one pass over the groups.
   std::map<std::string, std::map<std::pair<int, int>, std::pair<int, int>>> counts;
-  for (const EpisodeResult& r : rows) {
+  for (const ResultGroup& g : groups) {
+    const EpisodeResult& r = *g.row;
     const int s = set_index.at(r.set);
     auto& c = counts[r.agent][{s, problem_index[s].at(r.problem)}];
-    c.first += r.passed ? 1 : 0;
-    ++c.second;
+    c.first += g.passes;
+    c.second += g.runs;
   }
   std::vector<FailureExample> worst;
   for (const agents::AgentConfig& agent : config.agents) {
@@ -132,7 +135,7 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
       const double rate = static_cast<double>(c.first) / c.second;
       if (rate < lowest) lowest = rate, at = where;
     }
-    if (at.first >= 0) worst.push_back(failingRun(config, sets[at.first], at.second, agent, rows));
+    if (at.first >= 0) worst.push_back(failingRun(config, sets[at.first], at.second, agent, groups));
   }
   return worst;
 }
@@ -143,8 +146,9 @@ void writeExperimentReport(const std::string& dir, const ExperimentConfig& confi
   std::vector<std::string> set_names, agent_names;
   for (const PreparedSet& s : sets) set_names.push_back(s.name);
   // Agents with no rows (planners in an in-process run) are left out of the tables.
+  const std::vector<ResultGroup> groups = groupResults(rows);
   std::set<std::string> agents_run;
-  for (const EpisodeResult& r : rows) agents_run.insert(r.agent);
+  for (const ResultGroup& g : groups) agents_run.insert(g.row->agent);
   std::string other_runs;
   for (const auto& a : config.agents) {
     if (agents_run.count(a.name) == 0) continue;
@@ -163,14 +167,14 @@ void writeExperimentReport(const std::string& dir, const ExperimentConfig& confi
       input.control = a.name;
     }
   }
-  input.rates = computePassRates(rows, set_names, agent_names);
+  input.rates = computeGroupedPassRates(groups, set_names, agent_names);
   for (std::size_t a = 0; a < sets.size(); ++a) {
     for (std::size_t b = a + 1; b < sets.size(); ++b) input.comparisons.emplace_back(sets[a].name, sets[b].name);
   }
   stopIfAsked(stop);
-  input.failures = hardestFailures(config, sets, rows, config.hardest);
+  input.failures = hardestFailures(config, sets, groups, config.hardest);
   stopIfAsked(stop);
-  input.worst = worstFailures(config, sets, rows);
+  input.worst = worstFailures(config, sets, groups);
   stopIfAsked(stop);
   for (const PreparedSet& set : sets) {
     SetInfo info{set.name, set.set.diversity, ""};

@@ -7,6 +7,7 @@
 #include <memory>
 #include <mutex>
 #include <thread>
+#include <unordered_map>
 
 #include "ppp_core/dpa.hpp"
 #include "ppp_core/error.hpp"
@@ -41,35 +42,91 @@ void say(const std::function<void(const std::string&)>& log, const std::string& 
   if (log) log(text);
 }
 
-/// The rows in canonical order (set, PPP, agent, run as the config lists them), so the finished results.csv does
-/// not depend on threads, batches or interruptions. @throws ParseError (a row of another experiment), Interrupted.
-std::vector<EpisodeResult> canonicalOrder(std::vector<EpisodeResult> rows, const ExperimentConfig& config,
-                                          const std::vector<PreparedSet>& sets, const std::string& path,
-                                          const StopCheck& stop) {
-  std::map<std::string, int> set_order, agent_order, problem_order;
-  for (std::size_t i = 0; i < sets.size(); ++i) set_order[sets[i].name] = static_cast<int>(i);
-  for (std::size_t i = 0; i < config.agents.size(); ++i) agent_order[config.agents[i].name] = static_cast<int>(i);
-  for (const EpisodeResult& r : rows) problem_order.try_emplace(r.problem, 0);
-  int rank = 0;
-  for (auto& entry : problem_order) entry.second = rank++;  // problem ids in text order
-  // Each row's (set, problem, agent, run) positions, looked up once, then sorted as plain numbers.
-  std::vector<std::pair<std::array<int, 4>, std::size_t>> keys(rows.size());
+/// Positions of names, asked row after row: the previous answer is kept, since consecutive rows mostly name the
+/// same set, PPP and agent.
+class NameIndex {
+ public:
+  /// The position of `name`, or -1 when it is not listed.
+  int find(const std::string& name) {
+    if (last_ != nullptr && *last_ == name) return last_index_;
+    const auto it = index_.find(name);
+    if (it == index_.end()) return -1;
+    last_ = &it->first;
+    last_index_ = it->second;
+    return last_index_;
+  }
+  /// Lists `name` at `position` (a name listed twice keeps its first position).
+  void add(const std::string& name, int position) { index_.emplace(name, position); }
+
+ private:
+  std::unordered_map<std::string, int> index_;
+  const std::string* last_ = nullptr;
+  int last_index_ = -1;
+};
+
+/// Each row's problem id as its rank in text order among every id of the sets and of the rows.
+/// @throws Interrupted.
+std::vector<int> problemRanks(const std::vector<EpisodeResult>& rows, const std::vector<PreparedSet>& sets,
+                              const StopCheck& stop) {
+  std::unordered_map<std::string, int> distinct;
+  for (const PreparedSet& set : sets) {
+    for (const std::string& id : set.set.ids) distinct.emplace(id, static_cast<int>(distinct.size()));
+  }
+  std::vector<int> problem_of_row(rows.size());
+  const std::string* last = nullptr;
+  int last_index = -1;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (i % kRowsPerStopCheck == 0) stopIfAsked(stop);
-    const auto set = set_order.find(rows[i].set);
-    const auto agent = agent_order.find(rows[i].agent);
-    if (set == set_order.end() || agent == agent_order.end()) {
-      throw ParseError(path, 0, "row",
-                       "run of set '" + rows[i].set + "', agent '" + rows[i].agent + "' is not part of this experiment");
+    if (last == nullptr || *last != rows[i].problem) {
+      const auto [it, added] = distinct.emplace(rows[i].problem, static_cast<int>(distinct.size()));
+      last = &it->first;
+      last_index = it->second;
     }
-    keys[i] = {{set->second, problem_order[rows[i].problem], agent->second, rows[i].run}, i};
+    problem_of_row[i] = last_index;
+  }
+  std::vector<std::pair<const std::string*, int>> by_text;
+  for (const auto& [id, index] : distinct) by_text.emplace_back(&id, index);
+  std::sort(by_text.begin(), by_text.end(), [](const auto& a, const auto& b) { return *a.first < *b.first; });
+  std::vector<int> rank(by_text.size());
+  for (std::size_t r = 0; r < by_text.size(); ++r) {
+    rank[static_cast<std::size_t>(by_text[r].second)] = static_cast<int>(r);
+  }
+  for (int& problem : problem_of_row) problem = rank[static_cast<std::size_t>(problem)];
+  return problem_of_row;
+}
+
+/// Puts `rows` in canonical order (set, PPP, agent, run as the config lists them), so the finished results.csv
+/// does not depend on threads, batches or interruptions; returns whether any row moved.
+/// @throws ParseError (a row of another experiment), Interrupted.
+bool putInCanonicalOrder(std::vector<EpisodeResult>* rows, const ExperimentConfig& config,
+                         const std::vector<PreparedSet>& sets, const std::string& path, const StopCheck& stop) {
+  NameIndex set_order, agent_order;
+  for (std::size_t i = 0; i < sets.size(); ++i) set_order.add(sets[i].name, static_cast<int>(i));
+  for (std::size_t i = 0; i < config.agents.size(); ++i) agent_order.add(config.agents[i].name, static_cast<int>(i));
+  const std::vector<int> problem_rank = problemRanks(*rows, sets, stop);
+  // Each row's (set, problem, agent, run) positions, looked up once, then ordered as plain numbers.
+  std::vector<std::pair<std::array<int, 4>, std::size_t>> keys(rows->size());
+  for (std::size_t i = 0; i < rows->size(); ++i) {
+    if (i % kRowsPerStopCheck == 0) stopIfAsked(stop);
+    const EpisodeResult& row = (*rows)[i];
+    const int set = set_order.find(row.set);
+    const int agent = agent_order.find(row.agent);
+    if (set < 0 || agent < 0) {
+      throw ParseError(path, 0, "row",
+                       "run of set '" + row.set + "', agent '" + row.agent + "' is not part of this experiment");
+    }
+    keys[i] = {{set, problem_rank[i], agent, row.run}, i};
   }
   stopIfAsked(stop);
+  // A run that was not interrupted wrote its rows in canonical order (OrderedAppender): nothing to move then.
+  const auto not_rising = [](const auto& a, const auto& b) { return !(a.first < b.first); };
+  if (std::adjacent_find(keys.begin(), keys.end(), not_rising) == keys.end()) return false;
   std::sort(keys.begin(), keys.end());
   std::vector<EpisodeResult> sorted;
-  sorted.reserve(rows.size());
-  for (const auto& key : keys) sorted.push_back(std::move(rows[key.second]));
-  return sorted;
+  sorted.reserve(rows->size());
+  for (const auto& key : keys) sorted.push_back(std::move((*rows)[key.second]));
+  *rows = std::move(sorted);
+  return true;
 }
 
 }  // namespace
@@ -186,13 +243,15 @@ void finishExperiment(const ExperimentConfig& config, const std::string& config_
                       const std::function<void(const std::string&)>& log) {
   stopIfAsked(stop);
   say(log, "finishing: results.csv in run order");
-  std::vector<EpisodeResult> sorted =
-      canonicalOrder(standingRows(readResultsFile(resultsPath(dir), stop)), config, sets, resultsPath(dir), stop);
+  std::vector<EpisodeResult> rows = readResultsFile(resultsPath(dir), stop);
+  const std::size_t read = rows.size();
+  rows = standingRows(std::move(rows));
+  const bool moved = putInCanonicalOrder(&rows, config, sets, resultsPath(dir), stop);
   stopIfAsked(stop);
-  results->rewrite(sorted, stop);
+  if (moved || rows.size() != read) results->rewrite(rows, stop);  // else the file holds these rows, in this order
   stopIfAsked(stop);
   say(log, "writing the report");
-  writeExperimentReport(dir, config, config_text, sets, sorted, stop);
+  writeExperimentReport(dir, config, config_text, sets, rows, stop);
 }
 
 ExperimentReport runExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
@@ -228,7 +287,8 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
         Unit unit{s, p, a, {}};
         for (int run = 0; run < config.runsFor(config.agents[a]); ++run) {
           ++total;
-          if (results.done().count(RunKey{sets[s].name, sets[s].set.ids[p], config.agents[a].name, run}) == 0) {
+          if (results.done().empty() ||
+              results.done().count(RunKey{sets[s].name, sets[s].set.ids[p], config.agents[a].name, run}) == 0) {
             unit.runs.push_back(run);
           }
         }
@@ -247,10 +307,12 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
   std::exception_ptr failure;
   std::mutex failure_mutex;
   std::atomic<bool> failed{false};  // the other workers stop at once when one fails (a full disk, say)
+  // Units are taken in canonical order and written in it: results.csv of a run that is not interrupted needs no
+  // reordering when it finishes.
+  OrderedAppender appender(&results);
   auto worker = [&]() {
     try {
       std::map<int, std::pair<std::unique_ptr<agents::Agent>, std::unique_ptr<EpisodeRunner>>> agents;
-      std::vector<EpisodeResult> rows;
       for (;;) {
         if ((stop && stop()) || failed.load()) return;
         const std::size_t u = next_unit.fetch_add(1);
@@ -262,7 +324,8 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
           slot.second = std::make_unique<EpisodeRunner>(config.agents[unit.agent], config.episode);
         }
         const PreparedSet& set = sets[unit.set];
-        rows.clear();
+        std::vector<EpisodeResult> rows;
+        rows.reserve(unit.runs.size());
         const std::string& agent = config.agents[unit.agent].name;
         for (int run : unit.runs) {
           const std::uint64_t seed = runSeed(config.seed, set.name, set.set.ids[unit.problem], agent, run);
@@ -271,8 +334,9 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
                                windowsOf(set, unit.problem));
           rows.push_back(episodeResult(set, unit.problem, agent, run, seed, outcome));
         }
-        results.append(rows);
-        const long now = done.fetch_add(static_cast<long>(rows.size())) + static_cast<long>(rows.size());
+        const long count = static_cast<long>(rows.size());
+        appender.add(u, std::move(rows));
+        const long now = done.fetch_add(count) + count;
         if (progress) {
           std::lock_guard<std::mutex> lock(progress_mutex);
           progress(now, total);
@@ -289,7 +353,15 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
   std::vector<std::thread> threads;
   for (int t = 0; t < thread_count; ++t) threads.emplace_back(worker);
   for (std::thread& t : threads) t.join();
-  if (failure) std::rethrow_exception(failure);
+  if (failure) {
+    try {
+      appender.flush();  // keep what the other workers finished
+    } catch (const IoError&) {
+      // the disk that failed the first write: that first error is the one to report
+    }
+    std::rethrow_exception(failure);
+  }
+  appender.flush();
   report.episodes_run = done.load() - report.episodes_resumed;
   try {
     finishExperiment(config, config_text, dir, sets, &results, stop, log);

@@ -106,31 +106,50 @@ bool naturalLess(const std::string& a, const std::string& b) {
   return natural != 0 ? natural < 0 : a < b;  // "p01" and "p1" are distinct ids: fall back to bytes
 }
 
+std::vector<ResultGroup> groupResults(const std::vector<EpisodeResult>& results) {
+  std::vector<ResultGroup> groups;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const EpisodeResult& r = results[i];
+    if (groups.empty() || groups.back().row->agent != r.agent || groups.back().row->problem != r.problem ||
+        groups.back().row->set != r.set) {
+      groups.push_back(ResultGroup{&r, i});
+    }
+    ResultGroup& group = groups.back();
+    ++group.runs;
+    if (r.passed) ++group.passes;
+    group.steps += r.steps;
+    if (!r.passed && (group.first_fail == nullptr || r.run < group.first_fail->run)) group.first_fail = &r;
+  }
+  return groups;
+}
+
 PassRateTable computePassRates(const std::vector<EpisodeResult>& results, const std::vector<std::string>& set_order,
+                               const std::vector<std::string>& agent_order) {
+  return computeGroupedPassRates(groupResults(results), set_order, agent_order);
+}
+
+PassRateTable computeGroupedPassRates(const std::vector<ResultGroup>& groups, const std::vector<std::string>& set_order,
                                const std::vector<std::string>& agent_order) {
   const std::map<std::string, int> set_index = indexOrder(set_order, "set_order");
   const std::map<std::string, int> agent_index = indexOrder(agent_order, "agent_order");
 
   std::map<ProblemKey, Tally, ProblemKeyLess> tallies;
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    const EpisodeResult& result = results[i];
+  for (const ResultGroup& group : groups) {
+    const EpisodeResult& result = *group.row;
+    const std::string where = "result " + std::to_string(group.index);
     const auto set = set_index.find(result.set);
     if (set == set_index.end()) {
-      throw InvalidArgument("results", "result " + std::to_string(i) + " is for set '" + result.set +
-                                           "', which is not in set_order");
+      throw InvalidArgument("results", where + " is for set '" + result.set + "', which is not in set_order");
     }
     const auto agent = agent_index.find(result.agent);
     if (agent == agent_index.end()) {
-      throw InvalidArgument("results", "result " + std::to_string(i) + " is for agent '" + result.agent +
-                                           "', which is not in agent_order");
+      throw InvalidArgument("results", where + " is for agent '" + result.agent + "', which is not in agent_order");
     }
-    if (result.problem.empty()) {
-      throw InvalidArgument("results", "result " + std::to_string(i) + " has an empty problem id");
-    }
+    if (result.problem.empty()) throw InvalidArgument("results", where + " has an empty problem id");
     Tally& tally = tallies[ProblemKey{set->second, result.problem, agent->second}];
-    ++tally.runs;
-    if (result.passed) ++tally.passes;
-    tally.steps += result.steps;
+    tally.runs += group.runs;
+    tally.passes += group.passes;
+    tally.steps += group.steps;
   }
 
   PassRateTable table;

@@ -7,6 +7,7 @@
 
 #include "ppp_agents/protocol/batch_responder.hpp"
 #include "ppp_core/error.hpp"
+#include "small_sets.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -18,14 +19,7 @@ namespace fs = std::filesystem;
 const std::vector<PreparedSet>& smallSets() {
   static const std::vector<PreparedSet> sets = [] {
     ExperimentConfig config;
-    for (const char* name : {"turns", "difficulty"}) {
-      generator::GeneratorOptions g;
-      g.fitness = name;
-      g.population = 4;
-      g.matings = 50;
-      g.width = g.height = 12;
-      config.sets.push_back(SetSpec{name, g, ""});
-    }
+    config.sets = smallSetSpecs(50, 12);
     const std::string dir = (fs::temp_directory_path() / "agent_lane_test_sets").string();
     fs::remove_all(dir);
     return prepareSets(config, dir);

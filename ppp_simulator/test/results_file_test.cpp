@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
 
 namespace ppp {
@@ -150,6 +151,75 @@ TEST_F(ResultsFileTest, RowsWithoutLostRunsAllStand) {
   EXPECT_FALSE(isLostRun(rows[2]));
   EXPECT_TRUE(isLostRun(lost(1, "timeout")));
   EXPECT_FALSE(isLostRun(lost(1, "planner_timeout")));  // a planner's own failure is a verdict on the planner
+}
+
+/// The runs of the rows in results.csv, in file order.
+std::vector<int> runsInFile(const std::string& path) {
+  std::vector<int> runs;
+  for (const EpisodeResult& r : readResultsFile(path)) runs.push_back(r.run);
+  return runs;
+}
+
+TEST_F(ResultsFileTest, OrderedAppenderWritesBlocksInNumberOrder) {
+  ResultsFile file(path_);
+  OrderedAppender appender(&file);
+  appender.add(2, {row(4, true), row(5, true)});  // block 2 finishes first: it waits for 0 and 1
+  EXPECT_EQ(runsInFile(path_), std::vector<int>{});
+  appender.add(0, {row(0, true), row(1, false)});  // block 0 is written; 2 still waits for 1
+  EXPECT_EQ(runsInFile(path_), (std::vector<int>{0, 1}));
+  appender.add(1, {row(2, true), row(3, true)});  // 1, then the waiting 2
+  EXPECT_EQ(runsInFile(path_), (std::vector<int>{0, 1, 2, 3, 4, 5}));
+  appender.add(5, {row(10, true)});  // 3 and 4 are never finished (the work stopped): flush keeps 5 and 6
+  appender.add(6, {row(12, true)});
+  EXPECT_EQ(runsInFile(path_), (std::vector<int>{0, 1, 2, 3, 4, 5}));
+  appender.flush();
+  EXPECT_EQ(runsInFile(path_), (std::vector<int>{0, 1, 2, 3, 4, 5, 10, 12}));
+}
+
+TEST(ResultsCsvText, RowsWrittenAndParsedInOnePassMatchTheFieldByFieldWay) {
+  // Names with the characters CSV quotes, and the extremes of every number.
+  std::vector<EpisodeResult> rows;
+  for (const char* name : {"turns", "a,b", "say \"hi\"", "line\rbreak", "", "explorer_memory_5x5"}) {
+    EpisodeResult r;
+    r.set = name;
+    r.problem = std::string("p_") + name;
+    r.agent = name;
+    r.run = rows.size() % 2 == 0 ? 2147483647 : 0;
+    r.seed = rows.size() % 2 == 0 ? 18446744073709551615ULL : 0;
+    r.passed = rows.size() % 2 == 0;
+    r.steps = 300;
+    r.bumps = -1;
+    r.path_length = 12;
+    r.optimal_length = 38;
+    r.reason = name;
+    rows.push_back(r);
+  }
+  for (const EpisodeResult& r : rows) {
+    std::string line;
+    appendCsvRow(r, &line);
+    EXPECT_EQ(line, csvLine(toCsvFields(r)) + "\n");
+    const std::string content = line.substr(0, line.size() - 1);
+    const EpisodeResult back = parseCsvRow(content, "x.csv", 2);
+    EXPECT_EQ(toCsvFields(back), toCsvFields(r));
+    EXPECT_EQ(toCsvFields(back), toCsvFields(fromCsvFields(splitCsvLine(content, "x.csv", 2), "x.csv", 2)));
+  }
+  // The same errors as the field-by-field parse, quoted or not.
+  for (const std::string bad : {"turns,p,a,1,2,1,3,4,5", "turns,p,a,1,2,1,3,4,5,6,r,extra", "turns,p,a,1,2,yes,3,4,5,6,r",
+                                "\"turns\",p,a,x,2,1,3,4,5,6,r", "turns,p,a,1,-2,1,3,4,5,6,r", "t,p,a,1,2,1,3,4,5,6,\"r"}) {
+    std::string fast, slow;
+    try {
+      parseCsvRow(bad, "x.csv", 7);
+    } catch (const ParseError& e) {
+      fast = e.what();
+    }
+    try {
+      fromCsvFields(splitCsvLine(bad, "x.csv", 7), "x.csv", 7);
+    } catch (const ParseError& e) {
+      slow = e.what();
+    }
+    EXPECT_FALSE(fast.empty()) << bad;
+    EXPECT_EQ(fast, slow) << bad;
+  }
 }
 
 }  // namespace

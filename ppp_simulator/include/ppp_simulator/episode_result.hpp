@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ppp_agents/protocol/batch_types.hpp"
@@ -35,6 +36,14 @@ std::vector<std::string> toCsvFields(const EpisodeResult& result);
 
 /// Parses CSV fields in header order. @throws ParseError naming `source`, `line` and the field.
 EpisodeResult fromCsvFields(const std::vector<std::string>& fields, const std::string& source, int line);
+
+/// Appends `result` as one CSV line with its line break: the same text as csvLine(toCsvFields(result)) + '\n',
+/// without the intermediate fields.
+void appendCsvRow(const EpisodeResult& result, std::string* out);
+
+/// Parses one CSV line (without its line break): the same result and errors as
+/// fromCsvFields(splitCsvLine(line)), without copying fields that need no unquoting.
+EpisodeResult parseCsvRow(std::string_view line, const std::string& source, int line_number);
 
 /// Splits one CSV line into fields (RFC 4180 quoting). @throws ParseError for an unterminated quote.
 std::vector<std::string> splitCsvLine(const std::string& line, const std::string& source, int line_number);

@@ -6,6 +6,7 @@
 #include "ppp_simulator/episode_result.hpp"
 #include "ppp_simulator/experiment_config.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
+#include "ppp_simulator/pass_rates.hpp"
 #include "ppp_simulator/report.hpp"
 
 namespace ppp {
@@ -13,15 +14,15 @@ namespace simulator {
 
 /// The hardest PPPs of an experiment (lowest mean pass rate over every agent but the astar control), each with
 /// the first failing run of the agent it hurts most (largest drop below that agent's mean pass rate over all
-/// PPPs), replayed to recover its path.
+/// PPPs), replayed to recover its path; `groups` are the experiment's results grouped (groupResults()).
 std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
-                                            const std::vector<EpisodeResult>& rows, int count);
+                                            const std::vector<ResultGroup>& groups, int count);
 
 /// Per agent (but the astar control, the random baseline and planners), the first failing run on its worst PPP
 /// (lowest pass rate over every set; the first of equals), replayed for its path; agents that never fail are
 /// left out.
 std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
-                                          const std::vector<EpisodeResult>& rows);
+                                          const std::vector<ResultGroup>& groups);
 
 /// Writes summary.csv and report.{md,html} (with plots and pictures) of a finished experiment into `dir`;
 /// `stop` is asked between the pieces (the pass rates, the failures replayed, each picture and file).

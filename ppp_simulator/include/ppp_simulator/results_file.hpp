@@ -1,5 +1,6 @@
 #pragma once
 
+#include <map>
 #include <memory>
 #include <mutex>
 #include <set>
@@ -66,6 +67,27 @@ std::vector<EpisodeResult> readResultsFile(const std::string& path, const StopCh
 /// last line is left out. @throws ParseError, Interrupted.
 std::vector<EpisodeResult> parseResultsCsv(const std::string& text, const std::string& path,
                                            const StopCheck& stop = {});
+
+/// Appends numbered blocks of rows (0, 1, 2, ...) to a ResultsFile in number order, whatever order they are
+/// finished in: a block waits in memory while a lower-numbered one is still being played, so workers that take
+/// their blocks in canonical order leave the file in canonical order. Safe to call from several threads.
+class OrderedAppender {
+ public:
+  /// Appends to `file`, which must outlive this appender.
+  explicit OrderedAppender(ResultsFile* file) : file_(file) {}
+  /// Block `number` is finished: it is written, with every waiting block after it, once no lower number is
+  /// missing. @throws IoError (see ResultsFile::append).
+  void add(std::size_t number, std::vector<EpisodeResult> rows);
+  /// Writes every waiting block now, in number order (when the work stops before every block is finished).
+  /// @throws IoError.
+  void flush();
+
+ private:
+  ResultsFile* file_;
+  std::mutex mutex_;
+  std::size_t next_ = 0;                                      // the lowest number not written yet
+  std::map<std::size_t, std::vector<EpisodeResult>> waiting_;  // finished blocks above it
+};
 
 }  // namespace simulator
 }  // namespace ppp
