@@ -21,6 +21,8 @@ packages=(
   util-linux iproute2 openssh-client libwrap0
   # tests, benchmarks and the fuzzer
   libgtest-dev libbenchmark-dev clang libclang-rt-14-dev
+  # peak memory in the scale benchmark (/usr/bin/time)
+  time
 )
 
 # The multi-machine test runs Debian's sshd inside a network namespace of its own. Installing openssh-server

@@ -186,6 +186,7 @@ std::string encodePng(const std::vector<std::uint8_t>& rgb, int width, int heigh
   }
   png_image_free(&image);
   png.resize(size);
+  png.shrink_to_fit();  // the worst-case buffer is many times the compressed size: callers may keep many PNGs
   return png;
 }
 
