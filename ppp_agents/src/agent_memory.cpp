@@ -67,7 +67,6 @@ void AgentMemory::update(const Scan& scan) {
   const Cell p = scan.position();
   const int r = scan.range();
   const int side = 2 * r + 1;
-  const std::int8_t* window = scan.cells();
   // With a limited window only cells within `keep` of the agent are written, so every remembered cell always
   // lies in the window around the last position and forgetting only has to look at the cells that left it.
   const int keep = window_ > 0 ? std::min(r, window_ / 2) : r;
@@ -75,12 +74,21 @@ void AgentMemory::update(const Scan& scan) {
   const int y1 = std::min(p.y + keep, height_ - 1);
   const int x0 = std::max(p.x - keep, 0);
   const int x1 = std::min(p.x + keep, width_ - 1);
-  for (int y = y0; y <= y1 && x0 <= x1; ++y) {
+  const int count = x1 - x0 + 1;
+  WindowBits bits;
+  const bool from_bits = scan.bits(&bits);  // the window as masks already: no cell to convert
+  const std::int8_t* window = from_bits ? nullptr : scan.cells();
+  for (int y = y0; y <= y1 && count > 0; ++y) {
     const int offset = (y - p.y + r) * side + (x0 - p.x + r);
     std::uint64_t seen_free;
     std::uint64_t seen_obstacle;
-    rowMasks(window + offset, offset, x1 - x0 + 1, &seen_free, &seen_obstacle);
-    writeBits(y, x0, x1 - x0 + 1, seen_free | seen_obstacle, seen_free, seen_obstacle);
+    if (from_bits) {
+      seen_free = bits.free >> offset & lowBits(count);
+      seen_obstacle = bits.obstacle >> offset & lowBits(count);
+    } else {
+      rowMasks(window + offset, offset, count, &seen_free, &seen_obstacle);
+    }
+    writeBits(y, x0, count, seen_free | seen_obstacle, seen_free, seen_obstacle);
   }
   if (window_ > 0) {
     const Cell last = last_position_;

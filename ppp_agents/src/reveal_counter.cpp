@@ -20,6 +20,15 @@ struct RevealTables {
   int words = 0;                      ///< 64-bit words per mask.
   std::vector<std::uint64_t> window;  ///< Per neighbour: the board cells of its sensor window.
   std::vector<std::uint64_t> shadow;  ///< Per neighbour and board cell: the cells of that window it hides.
+  /// Boards of one word only (range <= 2): per neighbour, board row and the row's obstacle bits, the cells of
+  /// the neighbour's window those obstacles hide together, so that a neighbour's hidden cells are one lookup per
+  /// board row instead of a loop over its obstacles.
+  std::vector<std::uint64_t> row_shadow;
+
+  /// What the obstacles `bits` (the side low bits) of board row `row` hide from neighbour `n` (one-word boards).
+  std::uint64_t rowShadowOf(int n, int row, std::uint64_t bits) const {
+    return row_shadow[((static_cast<std::size_t>(n) * side + static_cast<std::size_t>(row)) << side) + bits];
+  }
 
   /// The window mask of neighbour `n` (kMoves order).
   const std::uint64_t* windowOf(int n) const { return &window[static_cast<std::size_t>(n * words)]; }
@@ -71,6 +80,24 @@ RevealTables buildTables(int range) {
       }
     }
   }
+  if (t.words == 1) {
+    t.row_shadow.assign(static_cast<std::size_t>(4 * t.side) << t.side, 0);
+    for (int n = 0; n < 4; ++n) {
+      for (int row = 0; row < t.side; ++row) {
+        for (std::uint64_t bits = 0; bits < (std::uint64_t{1} << t.side); ++bits) {
+          std::uint64_t hidden = 0;
+          for (int x = 0; x < t.side; ++x) {
+            const int b = row * t.side + x;
+            if ((bits >> x & 1) != 0 && (t.window[static_cast<std::size_t>(n)] >> b & 1) != 0) {
+              hidden |= *t.shadowOf(n, b);
+            }
+          }
+          t.row_shadow[((static_cast<std::size_t>(n) * t.side + static_cast<std::size_t>(row)) << t.side) + bits] =
+              hidden;
+        }
+      }
+    }
+  }
   return t;
 }
 
@@ -85,6 +112,9 @@ const RevealTables& tablesFor(int range) {
 }
 
 static_assert((2 * kMaxSensorRange + 3) * (2 * kMaxSensorRange + 3) <= 5 * 64, "revealGains dispatches up to 5 words");
+
+/// Up to this many obstacles on a one-word board, revealGains walks them; above, it looks up row shadows.
+constexpr int kFewObstacles = 4;
 
 /// revealGains() with masks of W words.
 template <int W>
@@ -106,15 +136,29 @@ void countGains(const RevealTables& t, const AgentMemory& memory, Cell position,
     placeBits(unknown, bit, count, ~(free | obstacles) & on_map);
     placeBits(obstacle, bit, count, obstacles);
   }
+  // A loop over a few obstacles beats the table lookups, which pay off from a handful of obstacles on (a noisy
+  // sensor's memory holds many): with agent_step_bench, the noisy explorer's step took 125 ns with the loop
+  // alone, 105 with the tables alone, 110 with this choice, and the other explorers' 57-83 ns with the loop,
+  // 7 ns more with the tables alone, the same with this choice.
+  const bool many_obstacles = bitCount(obstacle[0]) > kFewObstacles;
   for (int n = 0; n < 4; ++n) {
     (*gains)[n] = 0;
     if (!evaluate[n]) continue;
     const std::uint64_t* window = t.windowOf(n);
     std::uint64_t hidden[W] = {};
-    for (int w = 0; w < W; ++w) {
-      for (std::uint64_t blockers = obstacle[w] & window[w]; blockers != 0; blockers &= blockers - 1) {
-        const std::uint64_t* shadow = t.shadowOf(n, w * 64 + __builtin_ctzll(blockers));
-        for (int k = 0; k < W; ++k) hidden[k] |= shadow[k];
+    if (W == 1 && many_obstacles) {
+      // Only the board rows of the neighbour's window: range + 1 rows around its own.
+      const std::uint64_t row_mask = (std::uint64_t{1} << t.side) - 1;
+      const int first_row = target(Cell{0, 0}, kMoves[n]).y + 1;
+      for (int row = first_row; row <= first_row + 2 * t.range; ++row) {
+        hidden[0] |= t.rowShadowOf(n, row, obstacle[0] >> (row * t.side) & row_mask);
+      }
+    } else {
+      for (int w = 0; w < W; ++w) {
+        for (std::uint64_t blockers = obstacle[w] & window[w]; blockers != 0; blockers &= blockers - 1) {
+          const std::uint64_t* shadow = t.shadowOf(n, w * 64 + __builtin_ctzll(blockers));
+          for (int k = 0; k < W; ++k) hidden[k] |= shadow[k];
+        }
       }
     }
     int gain = 0;

@@ -97,6 +97,17 @@ void SensorModel::see(const Grid& grid, Cell position, std::int8_t* window) cons
   }
 }
 
+std::uint64_t SensorModel::noiseFlips(std::uint64_t noise_seed, int step) const {
+  if (options_.noise <= 0.0) return 0;
+  const std::uint64_t threshold = static_cast<std::uint64_t>(std::ceil(options_.noise * 0x1.0p53));  // as addNoise
+  const int centre = options_.range * side() + options_.range;
+  std::uint64_t flips = 0;
+  for (int i = 0; i < side() * side(); ++i) {
+    flips |= static_cast<std::uint64_t>(i != centre && noiseBits(noise_seed, step, i) < threshold) << i;
+  }
+  return flips;
+}
+
 void SensorModel::addNoise(std::uint64_t noise_seed, int step, std::int8_t* window) const {
   if (options_.noise <= 0.0) return;
   // A cell flips when its draw bits * 2^-53 < noise, i.e. (both sides scaled by 2^53, exactly) when the bits
@@ -144,8 +155,34 @@ std::int8_t Scan::atCell(Cell c) const {
   return at(dx, dy);
 }
 
+std::uint64_t Scan::flips() const {
+  if (!flips_known_) {
+    flips_ = sensor_->noiseFlips(noise_seed_, step_);
+    flips_known_ = true;
+  }
+  return flips_;
+}
+
+bool Scan::bits(WindowBits* out) const {
+  if (windows_ == nullptr) return false;
+  const WindowBits* seen = windows_->bits(position_);
+  if (seen == nullptr) return false;
+  *out = *seen;
+  SensorModel::addNoise(flips(), out);
+  return true;
+}
+
 void Scan::fill() const {
-  if (windows_ != nullptr) {
+  if (windows_ != nullptr && windows_->bits(position_) != nullptr) {
+    // Cells from the atlas, flipped by the same noise mask that bits() uses, computed once per scan.
+    const std::int8_t* seen = windows_->window(position_);
+    const int count = windows_->cells();
+    std::copy(seen, seen + count, cells_.begin());
+    for (std::uint64_t f = flips(); f != 0; f &= f - 1) {
+      std::int8_t& value = cells_[static_cast<std::size_t>(__builtin_ctzll(f))];
+      if (value == kScanFree || value == kScanObstacle) value = static_cast<std::int8_t>(value ^ (kScanFree ^ kScanObstacle));
+    }
+  } else if (windows_ != nullptr) {
     const std::int8_t* seen = windows_->window(position_);
     std::copy(seen, seen + windows_->cells(), cells_.begin());
     sensor_->addNoise(noise_seed_, step_, cells_.data());

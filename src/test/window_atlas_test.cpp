@@ -53,9 +53,45 @@ TEST(WindowAtlasTest, ALazyScanReadsTheAtlasWithTheSensorsNoise) {
   }
 }
 
-TEST(WindowAtlasTest, SizeIsOneWindowPerCell) {
-  EXPECT_EQ(WindowAtlas::bytes(Grid(20, 20), 2), 20u * 20 * 25);
-  EXPECT_EQ(WindowAtlas::bytes(Grid(200, 200), 2), 200u * 200 * 25);
+TEST(WindowAtlasTest, ScanBitsAreItsCellsAsMasksWithTheSameNoise) {
+  Rng rng(8);
+  Grid g(9, 9);
+  for (int i = 0; i < g.size(); ++i) g.setObstacle(g.cellAt(i), rng.bernoulli(0.3));
+  for (int range = 1; range <= kMaxSensorRange; ++range) {
+    const WindowAtlas atlas(g, range);
+    const int cells = (2 * range + 1) * (2 * range + 1);
+    for (double noise : {0.0, 0.3}) {
+      const SensorModel sensor(SensorOptions{range, noise});
+      for (int i = 0; i < g.size(); ++i) {
+        const Scan scan(sensor, g, g.cellAt(i), Cell{8, 8}, false, i, 1234);
+        const Scan from_atlas(sensor, g, g.cellAt(i), Cell{8, 8}, false, i, 1234, &atlas);
+        WindowBits bits;
+        EXPECT_FALSE(scan.bits(&bits));  // no atlas: cells only
+        ASSERT_EQ(from_atlas.bits(&bits), cells <= kMaxBitWindowCells) << "range " << range;
+        if (cells > kMaxBitWindowCells) continue;
+        WindowBits expected;
+        for (int c = 0; c < cells; ++c) {
+          expected.free |= static_cast<std::uint64_t>(scan.cells()[c] == kScanFree) << c;
+          expected.obstacle |= static_cast<std::uint64_t>(scan.cells()[c] == kScanObstacle) << c;
+        }
+        ASSERT_EQ(bits.free, expected.free) << "range " << range << " noise " << noise << " cell " << i;
+        ASSERT_EQ(bits.obstacle, expected.obstacle) << "range " << range << " noise " << noise << " cell " << i;
+        // Read in the other order, the cells agree with the masks too (the noise is drawn once per scan).
+        const Scan masks_first(sensor, g, g.cellAt(i), Cell{8, 8}, false, i, 1234, &atlas);
+        ASSERT_TRUE(masks_first.bits(&bits));
+        ASSERT_EQ(std::vector<std::int8_t>(masks_first.cells(), masks_first.cells() + cells),
+                  std::vector<std::int8_t>(scan.cells(), scan.cells() + cells));
+      }
+    }
+  }
+}
+
+TEST(WindowAtlasTest, SizeIsOneWindowPerCellAndItsMasks) {
+  // Windows of up to 64 cells (range 3) are kept as bytes and as two 8-byte masks.
+  EXPECT_EQ(WindowAtlas::bytes(Grid(20, 20), 2), 20u * 20 * (25 + 16));
+  EXPECT_EQ(WindowAtlas::bytes(Grid(200, 200), 2), 200u * 200 * (25 + 16));
+  EXPECT_EQ(WindowAtlas::bytes(Grid(20, 20), 4), 20u * 20 * 81);
+  EXPECT_LE(WindowAtlas::bytes(Grid(200, 200), 2), kMaxWindowAtlasBytes);
   EXPECT_GT(WindowAtlas::bytes(Grid(300, 300), 2), kMaxWindowAtlasBytes);  // scanned step by step instead
 }
 

@@ -21,6 +21,16 @@ constexpr int kMaxSensorRange = 7;
 /// Cells in the largest window.
 constexpr int kMaxScanCells = (2 * kMaxSensorRange + 1) * (2 * kMaxSensorRange + 1);
 
+/// Most window cells kept as bit masks (WindowBits): windows of sensor range 3 or less.
+constexpr int kMaxBitWindowCells = 64;
+
+/// A scan window of at most kMaxBitWindowCells cells as two masks, bit i for window cell i (row-major): reported
+/// free, reported obstacle; a cell in neither is unknown or off the map.
+struct WindowBits {
+  std::uint64_t free = 0;      ///< Cells reported free.
+  std::uint64_t obstacle = 0;  ///< Cells reported obstacles.
+};
+
 /// The robot's range sensor: which cells it reports and how reliably.
 struct SensorOptions {
   int range = 2;       ///< Chebyshev radius of the square window (2: 5x5).
@@ -48,6 +58,15 @@ class SensorModel {
   void see(const Grid& grid, Cell position, std::int8_t* window) const;
   /// Flips the sensed cells of a noiseless `window` that this sensor's noise flips at `step` of a run.
   void addNoise(std::uint64_t noise_seed, int step, std::int8_t* window) const;
+  /// For windows of at most kMaxBitWindowCells cells: bit i set when the noise at `step` of a run flips window
+  /// cell i if it is sensed (never the robot's own cell); 0 without noise. addNoise() flips exactly these.
+  std::uint64_t noiseFlips(std::uint64_t noise_seed, int step) const;
+  /// Flips the sensed cells of noiseless window masks that `flips` (noiseFlips()) names.
+  static void addNoise(std::uint64_t flips, WindowBits* bits) {
+    const std::uint64_t flipped = flips & (bits->free | bits->obstacle);
+    bits->free ^= flipped;
+    bits->obstacle ^= flipped;
+  }
 
  private:
   SensorOptions options_;
@@ -87,9 +106,14 @@ class Scan {
     if (!filled_) fill();
     return cells_.data();
   }
+  /// The window as bit masks, when the scan comes from an atlas that keeps them (windows of at most
+  /// kMaxBitWindowCells cells): the same values as cells(), without building the cells. False otherwise.
+  bool bits(WindowBits* out) const;
 
  private:
   void fill() const;
+  /// The noise flips of this scan (SensorModel::noiseFlips), computed once.
+  std::uint64_t flips() const;
 
   const SensorModel* sensor_ = nullptr;
   const Grid* grid_ = nullptr;
@@ -101,6 +125,8 @@ class Scan {
   int step_ = 0;
   int range_ = 0;
   mutable bool filled_ = false;
+  mutable bool flips_known_ = false;
+  mutable std::uint64_t flips_ = 0;
   mutable std::array<std::int8_t, kMaxScanCells> cells_;  // only the first (2*range+1)^2 are used, once filled
 };
 
