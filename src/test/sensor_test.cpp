@@ -102,6 +102,30 @@ TEST(SensorTest, NoiseNeverTouchesUnknownOrOutOfBoundsAndIsReproducible) {
   EXPECT_EQ(b.atCell(Cell{3, 2}), kScanUnknown);  // outside the window
 }
 
+TEST(SensorTest, NoiseFlipsAsAMaskAreTheCellsAddNoiseFlips) {
+  // Every cell free except the centre's row of obstacles: addNoise flips a cell exactly where the mask says.
+  for (int range = 1; range <= 3; ++range) {
+    const SensorModel sensor(SensorOptions{range, 0.4});
+    const int cells = (2 * range + 1) * (2 * range + 1);
+    for (int step = 0; step < 50; ++step) {
+      std::vector<std::int8_t> window(cells, kScanFree);
+      sensor.addNoise(77, step, window.data());
+      const std::uint64_t flips = sensor.noiseFlips(77, step);
+      for (int i = 0; i < cells; ++i) {
+        ASSERT_EQ(window[i] == kScanObstacle, (flips >> i & 1) != 0) << "range " << range << " step " << step;
+      }
+      EXPECT_EQ(flips >> (range * (2 * range + 1) + range) & 1, 0u);  // never the robot's own cell
+    }
+  }
+  EXPECT_EQ(SensorModel(SensorOptions{4, 0.0}).noiseFlips(1, 1), 0u);  // no noise: nothing to flip, any range
+  try {
+    SensorModel(SensorOptions{4, 0.1}).noiseFlips(1, 1);  // 81 cells do not fit a mask
+    FAIL() << "a mask of 81 cells";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.name(), "sensor_range");
+  }
+}
+
 TEST(SensorTest, BadOptions) {
   EXPECT_THROW(SensorModel(SensorOptions{0, 0.0}), InvalidArgument);
   EXPECT_THROW(SensorModel(SensorOptions{8, 0.0}), InvalidArgument);

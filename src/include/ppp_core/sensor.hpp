@@ -60,6 +60,7 @@ class SensorModel {
   void addNoise(std::uint64_t noise_seed, int step, std::int8_t* window) const;
   /// For windows of at most kMaxBitWindowCells cells: bit i set when the noise at `step` of a run flips window
   /// cell i if it is sensed (never the robot's own cell); 0 without noise. addNoise() flips exactly these.
+  /// @throws InvalidArgument("sensor_range") for a larger window with noise.
   std::uint64_t noiseFlips(std::uint64_t noise_seed, int step) const;
   /// Flips the sensed cells of noiseless window masks that `flips` (noiseFlips()) names.
   static void addNoise(std::uint64_t flips, WindowBits* bits) {
@@ -70,6 +71,7 @@ class SensorModel {
 
  private:
   SensorOptions options_;
+  std::uint64_t noise_threshold_ = 0;  // a cell flips when its noise draw is below this
   std::vector<std::vector<int>> blockers_;  // per window index: window indices that must be free
   std::vector<std::uint64_t> blocker_masks_;  // the same as bit masks, for windows of at most 64 cells
 };
