@@ -7,6 +7,7 @@ set(PPP_SIMULATOR_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/hunt_evaluation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/results_file.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/experiment_runner.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/canonical_order.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/experiment_report.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/experiment_graph.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/simulator_options.cpp

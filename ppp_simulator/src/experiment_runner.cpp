@@ -1,18 +1,17 @@
 #include "ppp_simulator/experiment_runner.hpp"
 
 #include <algorithm>
-#include <array>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <thread>
-#include <unordered_map>
 
 #include "ppp_core/dpa.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_core/text_file.hpp"
+#include "ppp_simulator/canonical_order.hpp"
 #include "ppp_simulator/episode.hpp"
 #include "ppp_simulator/experiment_report.hpp"
 #include "ppp_simulator/results_file.hpp"
@@ -28,7 +27,6 @@ namespace {
 
 constexpr const char* kFingerprintFile = "experiment.yaml";
 constexpr const char* kResultsFile = "results.csv";
-constexpr std::size_t kRowsPerStopCheck = 1 << 14;  // rows handled between two questions to the StopCheck
 
 /// One batch of work: every remaining run of one agent on one PPP.
 struct Unit {
@@ -40,93 +38,6 @@ struct Unit {
 
 void say(const std::function<void(const std::string&)>& log, const std::string& text) {
   if (log) log(text);
-}
-
-/// Positions of names, asked row after row: the previous answer is kept, since consecutive rows mostly name the
-/// same set, PPP and agent.
-class NameIndex {
- public:
-  /// The position of `name`, or -1 when it is not listed.
-  int find(const std::string& name) {
-    if (last_ != nullptr && *last_ == name) return last_index_;
-    const auto it = index_.find(name);
-    if (it == index_.end()) return -1;
-    last_ = &it->first;
-    last_index_ = it->second;
-    return last_index_;
-  }
-  /// Lists `name` at `position` (a name listed twice keeps its first position).
-  void add(const std::string& name, int position) { index_.emplace(name, position); }
-
- private:
-  std::unordered_map<std::string, int> index_;
-  const std::string* last_ = nullptr;
-  int last_index_ = -1;
-};
-
-/// Each row's problem id as its rank in text order among every id of the sets and of the rows.
-/// @throws Interrupted.
-std::vector<int> problemRanks(const std::vector<EpisodeResult>& rows, const std::vector<PreparedSet>& sets,
-                              const StopCheck& stop) {
-  std::unordered_map<std::string, int> distinct;
-  for (const PreparedSet& set : sets) {
-    for (const std::string& id : set.set.ids) distinct.emplace(id, static_cast<int>(distinct.size()));
-  }
-  std::vector<int> problem_of_row(rows.size());
-  const std::string* last = nullptr;
-  int last_index = -1;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (i % kRowsPerStopCheck == 0) stopIfAsked(stop);
-    if (last == nullptr || *last != rows[i].problem) {
-      const auto [it, added] = distinct.emplace(rows[i].problem, static_cast<int>(distinct.size()));
-      last = &it->first;
-      last_index = it->second;
-    }
-    problem_of_row[i] = last_index;
-  }
-  std::vector<std::pair<const std::string*, int>> by_text;
-  for (const auto& [id, index] : distinct) by_text.emplace_back(&id, index);
-  std::sort(by_text.begin(), by_text.end(), [](const auto& a, const auto& b) { return *a.first < *b.first; });
-  std::vector<int> rank(by_text.size());
-  for (std::size_t r = 0; r < by_text.size(); ++r) {
-    rank[static_cast<std::size_t>(by_text[r].second)] = static_cast<int>(r);
-  }
-  for (int& problem : problem_of_row) problem = rank[static_cast<std::size_t>(problem)];
-  return problem_of_row;
-}
-
-/// Puts `rows` in canonical order (set, PPP, agent, run as the config lists them), so the finished results.csv
-/// does not depend on threads, batches or interruptions; returns whether any row moved.
-/// @throws ParseError (a row of another experiment), Interrupted.
-bool putInCanonicalOrder(std::vector<EpisodeResult>* rows, const ExperimentConfig& config,
-                         const std::vector<PreparedSet>& sets, const std::string& path, const StopCheck& stop) {
-  NameIndex set_order, agent_order;
-  for (std::size_t i = 0; i < sets.size(); ++i) set_order.add(sets[i].name, static_cast<int>(i));
-  for (std::size_t i = 0; i < config.agents.size(); ++i) agent_order.add(config.agents[i].name, static_cast<int>(i));
-  const std::vector<int> problem_rank = problemRanks(*rows, sets, stop);
-  // Each row's (set, problem, agent, run) positions, looked up once, then ordered as plain numbers.
-  std::vector<std::pair<std::array<int, 4>, std::size_t>> keys(rows->size());
-  for (std::size_t i = 0; i < rows->size(); ++i) {
-    if (i % kRowsPerStopCheck == 0) stopIfAsked(stop);
-    const EpisodeResult& row = (*rows)[i];
-    const int set = set_order.find(row.set);
-    const int agent = agent_order.find(row.agent);
-    if (set < 0 || agent < 0) {
-      throw ParseError(path, 0, "row",
-                       "run of set '" + row.set + "', agent '" + row.agent + "' is not part of this experiment");
-    }
-    keys[i] = {{set, problem_rank[i], agent, row.run}, i};
-  }
-  stopIfAsked(stop);
-  // A run that was not interrupted wrote its rows in canonical order (OrderedAppender): nothing to move then.
-  const auto not_rising = [](const auto& a, const auto& b) { return !(a.first < b.first); };
-  if (std::adjacent_find(keys.begin(), keys.end(), not_rising) == keys.end()) return false;
-  std::sort(keys.begin(), keys.end());
-  std::vector<EpisodeResult> sorted;
-  sorted.reserve(rows->size());
-  for (const auto& key : keys) sorted.push_back(std::move((*rows)[key.second]));
-  *rows = std::move(sorted);
-  return true;
 }
 
 }  // namespace
