@@ -9,7 +9,7 @@ export ROS_MASTER_URI="http://127.0.0.1:11311"
 
 cat > "$work/experiment.yaml" <<'YAML'
 seed: 7
-runs: 400
+runs: 2000
 agents:
   - {name: random, type: random}
   - {name: explorer, type: explorer}
@@ -30,12 +30,23 @@ in_run() {
     [ "$(readlink "$p/ns/net" 2> /dev/null)" = "$run_ns" ] && echo "${p#/proc/}"
   done
 }
+# running_inside NAME: whether a process named NAME runs in the run's namespace (other tests may run their own
+# simulators meanwhile, in other namespaces). Looking up the two names is quick even on a loaded machine, where
+# reading every process's namespace each time could outlast the run.
+running_inside() {
+  local pid
+  for pid in $(pgrep -x "$1"); do
+    [ "$(readlink "/proc/$pid/ns/net" 2> /dev/null)" = "$run_ns" ] && return 0
+  done
+  return 1
+}
 seen=""
 for _ in $(seq 1 3000); do
   run_ns="$(readlink "/proc/$launcher/ns/net" 2> /dev/null)"
   if [ -n "$run_ns" ] && [ "$run_ns" != "$own_ns" ]; then
-    seen="$(for pid in $(in_run); do cat "/proc/$pid/comm" 2> /dev/null; done | sort -u | tr '\n' ' ')"
-    case "$seen" in *simulator_node*agent_node*|*agent_node*simulator_node*) break ;; esac
+    seen=""
+    for name in simulator_node agent_node; do running_inside "$name" && seen="$seen $name"; done
+    [ "$seen" = " simulator_node agent_node" ] && break
   fi
   sleep 0.02
 done
