@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <cstring>
 
+#include "ppp_agents/bit_masks.hpp"
+
 namespace ppp {
 namespace agents {
 
 namespace {
-
-/// The lowest `count` bits set (count 0..64).
-std::uint64_t lowBits(int count) { return count >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1; }
 
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "scan rows are read as little-endian words");
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "ppp_agents/action.hpp"
+#include "ppp_agents/bit_masks.hpp"
 #include "ppp_core/sensor.hpp"
 #include "ppp_core/visibility.hpp"
 
@@ -47,14 +48,6 @@ void placeBits(std::uint64_t (&mask)[W], int at, int count, std::uint64_t bits) 
   const int offset = at & 63;
   mask[word] |= bits << offset;
   if (offset + count > 64) mask[word + 1] |= bits >> (64 - offset);
-}
-
-/// Set bits of a word, inline (the builtin calls a library function on the baseline x86-64 target).
-int bitCount(std::uint64_t x) {
-  x -= (x >> 1) & 0x5555555555555555ULL;
-  x = (x & 0x3333333333333333ULL) + ((x >> 2) & 0x3333333333333333ULL);
-  x = (x + (x >> 4)) & 0x0F0F0F0F0F0F0F0FULL;
-  return static_cast<int>((x * 0x0101010101010101ULL) >> 56);
 }
 
 RevealTables buildTables(int range) {
@@ -128,7 +121,7 @@ void countGains(const RevealTables& t, const AgentMemory& memory, Cell position,
   const int x0 = std::max(position.x - reach, 0);
   const int x1 = std::min(position.x + reach, memory.width() - 1);
   const int count = x1 - x0 + 1;
-  const std::uint64_t on_map = count >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
+  const std::uint64_t on_map = lowBits(count);
   for (int y = y0; y <= y1 && count > 0; ++y) {
     const int bit = (y - position.y + reach) * t.side + (x0 - position.x + reach);
     const std::uint64_t free = memory.freeBits(y, x0);
@@ -148,7 +141,7 @@ void countGains(const RevealTables& t, const AgentMemory& memory, Cell position,
     std::uint64_t hidden[W] = {};
     if (W == 1 && many_obstacles) {
       // Only the board rows of the neighbour's window: range + 1 rows around its own.
-      const std::uint64_t row_mask = (std::uint64_t{1} << t.side) - 1;
+      const std::uint64_t row_mask = lowBits(t.side);
       const int first_row = target(Cell{0, 0}, kMoves[n]).y + 1;
       for (int row = first_row; row <= first_row + 2 * t.range; ++row) {
         hidden[0] |= t.rowShadowOf(n, row, obstacle[0] >> (row * t.side) & row_mask);

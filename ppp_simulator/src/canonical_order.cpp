@@ -18,18 +18,27 @@ constexpr std::size_t kRowsPerStopCheck = 1 << 14;  // rows handled between two 
 class NameIndex {
  public:
   /// The position of `name`, or -1 when it is not listed.
-  int find(const std::string& name) {
+  int find(const std::string& name) { return lookUp(name, false); }
+  /// The position of `name`, listing it after the others when it is not listed yet.
+  int findOrAdd(const std::string& name) { return lookUp(name, true); }
+  /// Lists `name` at `position` (a name listed twice keeps its first position).
+  void add(const std::string& name, int position) { index_.emplace(name, position); }
+  /// Every listed name with its position.
+  const std::unordered_map<std::string, int>& positions() const { return index_; }
+
+ private:
+  int lookUp(const std::string& name, bool add) {
     if (last_ != nullptr && *last_ == name) return last_index_;
-    const auto it = index_.find(name);
-    if (it == index_.end()) return -1;
+    auto it = index_.find(name);
+    if (it == index_.end()) {
+      if (!add) return -1;
+      it = index_.emplace(name, static_cast<int>(index_.size())).first;
+    }
     last_ = &it->first;
     last_index_ = it->second;
     return last_index_;
   }
-  /// Lists `name` at `position` (a name listed twice keeps its first position).
-  void add(const std::string& name, int position) { index_.emplace(name, position); }
 
- private:
   std::unordered_map<std::string, int> index_;
   const std::string* last_ = nullptr;
   int last_index_ = -1;
@@ -39,24 +48,17 @@ class NameIndex {
 /// @throws Interrupted.
 std::vector<int> problemRanks(const std::vector<EpisodeResult>& rows, const std::vector<PreparedSet>& sets,
                               const StopCheck& stop) {
-  std::unordered_map<std::string, int> distinct;
+  NameIndex distinct;
   for (const PreparedSet& set : sets) {
-    for (const std::string& id : set.set.ids) distinct.emplace(id, static_cast<int>(distinct.size()));
+    for (const std::string& id : set.set.ids) distinct.findOrAdd(id);
   }
   std::vector<int> problem_of_row(rows.size());
-  const std::string* last = nullptr;
-  int last_index = -1;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (i % kRowsPerStopCheck == 0) stopIfAsked(stop);
-    if (last == nullptr || *last != rows[i].problem) {
-      const auto [it, added] = distinct.emplace(rows[i].problem, static_cast<int>(distinct.size()));
-      last = &it->first;
-      last_index = it->second;
-    }
-    problem_of_row[i] = last_index;
+    problem_of_row[i] = distinct.findOrAdd(rows[i].problem);
   }
   std::vector<std::pair<const std::string*, int>> by_text;
-  for (const auto& [id, index] : distinct) by_text.emplace_back(&id, index);
+  for (const auto& [id, index] : distinct.positions()) by_text.emplace_back(&id, index);
   std::sort(by_text.begin(), by_text.end(), [](const auto& a, const auto& b) { return *a.first < *b.first; });
   std::vector<int> rank(by_text.size());
   for (std::size_t r = 0; r < by_text.size(); ++r) {

@@ -125,14 +125,21 @@ std::uint64_t SensorModel::noiseFlips(std::uint64_t noise_seed, int step) const 
 
 void SensorModel::addNoise(std::uint64_t noise_seed, int step, std::int8_t* window) const {
   if (options_.noise <= 0.0) return;
+  if (side() * side() <= kMaxBitWindowCells) return addNoise(noiseFlips(noise_seed, step), window);
   // Branch-free: a flip turns free (0) into obstacle (100) and back by XOR.
-  const std::uint64_t threshold = noise_threshold_;
   const int centre = options_.range * side() + options_.range;
   for (int i = 0; i < side() * side(); ++i) {
     const std::int8_t value = window[i];
     const bool sensed = i != centre && (value == kScanFree || value == kScanObstacle);
-    const bool flip = sensed & (noiseBits(noise_seed, step, i) < threshold);
+    const bool flip = sensed & (noiseBits(noise_seed, step, i) < noise_threshold_);
     window[i] = static_cast<std::int8_t>(value ^ (flip ? kScanFree ^ kScanObstacle : 0));
+  }
+}
+
+void SensorModel::addNoise(std::uint64_t flips, std::int8_t* window) {
+  for (std::uint64_t f = flips; f != 0; f &= f - 1) {
+    std::int8_t& value = window[__builtin_ctzll(f)];
+    if (value == kScanFree || value == kScanObstacle) value = static_cast<std::int8_t>(value ^ (kScanFree ^ kScanObstacle));
   }
 }
 
@@ -187,19 +194,14 @@ bool Scan::bits(WindowBits* out) const {
 }
 
 void Scan::fill() const {
-  if (windows_ != nullptr && windows_->bits(position_) != nullptr) {
-    // Cells from the atlas, flipped by the same noise mask that bits() uses, computed once per scan.
-    const std::int8_t* seen = windows_->window(position_);
-    const int count = windows_->cells();
-    std::copy(seen, seen + count, cells_.begin());
-    for (std::uint64_t f = flips(); f != 0; f &= f - 1) {
-      std::int8_t& value = cells_[static_cast<std::size_t>(__builtin_ctzll(f))];
-      if (value == kScanFree || value == kScanObstacle) value = static_cast<std::int8_t>(value ^ (kScanFree ^ kScanObstacle));
-    }
-  } else if (windows_ != nullptr) {
+  if (windows_ != nullptr) {
     const std::int8_t* seen = windows_->window(position_);
     std::copy(seen, seen + windows_->cells(), cells_.begin());
-    sensor_->addNoise(noise_seed_, step_, cells_.data());
+    if (windows_->bits(position_) != nullptr) {
+      SensorModel::addNoise(flips(), cells_.data());  // the mask bits() uses too, drawn once per scan
+    } else {
+      sensor_->addNoise(noise_seed_, step_, cells_.data());
+    }
   } else {
     sensor_->scan(*grid_, position_, noise_seed_, step_, cells_.data());
   }

@@ -62,6 +62,8 @@ class SensorModel {
   /// cell i if it is sensed (never the robot's own cell); 0 without noise. addNoise() flips exactly these.
   /// @throws InvalidArgument("sensor_range") for a larger window with noise.
   std::uint64_t noiseFlips(std::uint64_t noise_seed, int step) const;
+  /// Flips the sensed cells of a noiseless `window` that `flips` (noiseFlips()) names.
+  static void addNoise(std::uint64_t flips, std::int8_t* window);
   /// Flips the sensed cells of noiseless window masks that `flips` (noiseFlips()) names.
   static void addNoise(std::uint64_t flips, WindowBits* bits) {
     const std::uint64_t flipped = flips & (bits->free | bits->obstacle);
