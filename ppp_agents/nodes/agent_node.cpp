@@ -9,6 +9,7 @@
 #include "agent_node_parameters.hpp"
 #include "ppp_agents/protocol/batch_responder.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_msgs/inline_callback_queue.h"
 #include "ppp_msgs/topic_names.h"
 
 namespace ppp {
@@ -21,12 +22,22 @@ class AgentNode {
   AgentNode(ros::NodeHandle& nh, const AgentConfig& config)
       : responder_(config),
         moves_(nh.advertise<ppp_msgs::MoveBatch>(ppp_msgs::topics::kMoves, 10)),
-        scans_(nh.subscribe(ppp_msgs::topics::kScans, 10, &AgentNode::onScans, this, ros::TransportHints().tcpNoDelay())) {}
+        scans_(subscribeInline(nh)) {}
 
   /// The resolved topic names, for the log.
   std::string topics() const { return scans_.getTopic() + " -> " + moves_.getTopic(); }
 
  private:
+  // Scans are answered in roscpp's network thread as they are read (InlineCallbackQueue): the batch's moves go
+  // out without waking a spinner thread to answer and the network thread again to send.
+  ros::Subscriber subscribeInline(ros::NodeHandle& nh) {
+    ros::SubscribeOptions options = ros::SubscribeOptions::create<ppp_msgs::ScanBatch>(
+        ppp_msgs::topics::kScans, 10, [this](const ppp_msgs::ScanBatch::ConstPtr& batch) { onScans(batch); },
+        ros::VoidConstPtr(), &inline_queue_);
+    options.transport_hints = ros::TransportHints().tcpNoDelay();
+    return nh.subscribe(options);
+  }
+
   void onScans(const ppp_msgs::ScanBatch::ConstPtr& batch) {
     ppp_msgs::MoveBatch moves = responder_.answer(*batch);
     moves.header.stamp = ros::Time::now();
@@ -34,6 +45,7 @@ class AgentNode {
   }
 
   protocol::BatchResponder responder_;
+  ppp_msgs::InlineCallbackQueue inline_queue_;
   ros::Publisher moves_;
   ros::Subscriber scans_;
 };
