@@ -1,6 +1,7 @@
 #include "lane_runner.hpp"
 
 #include <algorithm>
+#include <chrono>
 
 #include "ppp_agents/protocol/batch_codec.hpp"
 #include "ppp_msgs/node_liveness.h"
@@ -21,11 +22,11 @@ LaneRunner::LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameter
       agent_(agent),
       sink_(std::move(sink)),
       observer_(std::move(observer)),
-      log_rates_(log_rates) {
+      log_rates_(log_rates),
+      step_timeout_(agents::isPlanner(agent) ? parameters.planner_step_timeout : parameters.step_timeout) {
   const std::string graph_name = agents::agentGraphName(agent.name);
+  message_.agent = agent.name;
   scans_ = nh.advertise<ppp_msgs::ScanBatch>(ppp_msgs::topics::under(graph_name, ppp_msgs::topics::kScans), 2);
-  // The lane's own callback queue, served by the lane's thread while it waits for the answer: the reply
-  // wakes that thread directly, not a spinner thread that would then wake it.
   ros::SubscribeOptions options = ros::SubscribeOptions::create<ppp_msgs::MoveBatch>(
       ppp_msgs::topics::under(graph_name, ppp_msgs::topics::kMoves), 2, [this](const ppp_msgs::MoveBatch::ConstPtr& m) { onMoves(m); },
       ros::VoidConstPtr(), &replies_);
@@ -34,57 +35,43 @@ LaneRunner::LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameter
 }
 
 void LaneRunner::run(AgentLane* lane) {
-  lane_ = lane;
   const std::string& name = agent_.name;
-  const double step_timeout =
-      agents::isPlanner(agent_) ? parameters_.planner_step_timeout : parameters_.step_timeout;
   if (!connected_ && !waitForAgent()) {
     ROS_ERROR("agent '%s' never connected within %.0f s: its %ld runs fail as agent_lost", name.c_str(),
-              parameters_.connect_timeout, lane_->remaining());
-    report(lane_->failAll(reason::kAgentLost));
+              parameters_.connect_timeout, lane->remaining());
+    report(lane->failAll(reason::kAgentLost));
     return;
   }
   if (suspect_ && !agentAlive()) {  // lost in an earlier lane: fail at once instead of after a timeout
-    ROS_ERROR("agent '%s' is still gone: its %ld runs fail as agent_lost", name.c_str(), lane_->remaining());
-    report(lane_->failAll(reason::kAgentLost));
+    ROS_ERROR("agent '%s' is still gone: its %ld runs fail as agent_lost", name.c_str(), lane->remaining());
+    report(lane->failAll(reason::kAgentLost));
     return;
   }
   suspect_ = false;
   connected_ = true;
   const ros::WallTime started = ros::WallTime::now();
-  const long episodes = lane_->remaining();
-  // Both buffers live across batches, so a batch allocates (almost) nothing.
-  std::vector<ScanRequest> scans;
-  ppp_msgs::ScanBatch message;
-  message.agent = name;
-  while (!lane_->finished() && ros::ok()) {
-    const std::uint32_t batch = ++batch_;
-    lane_->scans(&scans);
-    message.header.stamp = ros::Time::now();
-    message.batch = batch;
-    protocol::encodeScans(scans, &message);
-    if (observer_) observer_(name, scans);
-    expected_batch_ = batch;
-    reply_.reset();
-    scans_.publish(message);
-    if (awaitReply(step_timeout)) {
-      report(lane_->answer(*reply_, missing_reason_));
-    } else if (!agentAlive()) {
-      ROS_ERROR("agent '%s' is gone: its %ld unfinished runs fail as agent_lost", name.c_str(), lane_->remaining());
-      report(lane_->failAll(reason::kAgentLost));
-      suspect_ = true;
-    } else {
-      const auto ended = lane_->unanswered(reason::kTimeout, parameters_.timeouts_before_giving_up);
-      if (lane_->finished() && lane_->silentBatches() >= parameters_.timeouts_before_giving_up) {
-        ROS_ERROR("agent '%s' did not answer %d batches in a row: its unfinished runs fail as timeout",
-                  name.c_str(), lane_->silentBatches());
+  const long episodes = lane->remaining();
+  std::unique_lock<std::mutex> lock(mutex_);
+  lane_ = lane;
+  failure_ = nullptr;
+  try {
+    if (!lane_->finished()) sendBatch();
+    // Replies are played in the network thread (onMoves); this thread wakes for the deadline and shutdown.
+    while (!lane_->finished() && !failure_ && ros::ok()) {
+      const ros::WallDuration left = deadline_ - ros::WallTime::now();
+      if (left > ros::WallDuration(0)) {
+        lane_done_.wait_for(lock, std::chrono::nanoseconds(std::min(left, kShutdownCheck).toNSec()));
       } else {
-        ROS_WARN("agent '%s' did not answer batch %u within %.1f s: its episodes fail as timeout", name.c_str(),
-                 batch, step_timeout);
+        answerSilence();
       }
-      report(ended);
     }
+  } catch (...) {
+    failure_ = std::current_exception();
   }
+  lane_ = nullptr;
+  expected_batch_ = 0;
+  if (failure_) std::rethrow_exception(failure_);
+  lock.unlock();
   const double seconds = (ros::WallTime::now() - started).toSec();
   if (log_rates_) {
     ROS_INFO("agent '%s': %ld episodes in %.1f s (%.1f episodes/s)", name.c_str(), episodes, seconds,
@@ -92,14 +79,38 @@ void LaneRunner::run(AgentLane* lane) {
   }
 }
 
-bool LaneRunner::awaitReply(double seconds) {
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(seconds);
-  while (!reply_ && ros::ok()) {
-    const ros::WallDuration left = deadline - ros::WallTime::now();
-    if (left <= ros::WallDuration(0)) break;
-    replies_.callAvailable(std::min(left, kShutdownCheck));
+void LaneRunner::sendBatch() {
+  const std::uint32_t batch = ++batch_;
+  lane_->scans(&scans_buffer_);
+  message_.header.stamp = ros::Time::now();
+  message_.batch = batch;
+  protocol::encodeScans(scans_buffer_, &message_);
+  if (observer_) observer_(agent_.name, scans_buffer_);
+  expected_batch_ = batch;
+  deadline_ = ros::WallTime::now() + ros::WallDuration(step_timeout_);
+  scans_.publish(message_);
+}
+
+void LaneRunner::answerSilence() {
+  const std::string& name = agent_.name;
+  const std::uint32_t batch = expected_batch_;
+  expected_batch_ = 0;  // a late reply to it is dropped
+  if (!agentAlive()) {
+    ROS_ERROR("agent '%s' is gone: its %ld unfinished runs fail as agent_lost", name.c_str(), lane_->remaining());
+    report(lane_->failAll(reason::kAgentLost));
+    suspect_ = true;
+    return;
   }
-  return reply_.has_value();
+  const auto ended = lane_->unanswered(reason::kTimeout, parameters_.timeouts_before_giving_up);
+  if (lane_->finished() && lane_->silentBatches() >= parameters_.timeouts_before_giving_up) {
+    ROS_ERROR("agent '%s' did not answer %d batches in a row: its unfinished runs fail as timeout", name.c_str(),
+              lane_->silentBatches());
+  } else {
+    ROS_WARN("agent '%s' did not answer batch %u within %.1f s: its episodes fail as timeout", name.c_str(), batch,
+             step_timeout_);
+  }
+  report(ended);
+  if (!lane_->finished()) sendBatch();
 }
 
 bool LaneRunner::waitForAgent() {
@@ -114,11 +125,18 @@ bool LaneRunner::waitForAgent() {
 bool LaneRunner::agentAlive() const { return ppp_msgs::publisherAlive(moves_.getTopic()); }
 
 void LaneRunner::onMoves(const ppp_msgs::MoveBatch::ConstPtr& message) {
-  if (message->batch != expected_batch_ || reply_) return;  // late answer to an earlier batch
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (lane_ == nullptr || failure_ || message->batch != expected_batch_) return;  // late or unexpected
+  expected_batch_ = 0;
   protocol::DecodedMoves decoded = protocol::decodeMoves(*message);
   if (!decoded.fault.empty()) ROS_WARN_ONCE("agent '%s': %s", agent_.name.c_str(), decoded.fault.c_str());
-  reply_ = std::move(decoded.moves);
-  missing_reason_ = decoded.missing_reason;
+  try {
+    report(lane_->answer(decoded.moves, decoded.missing_reason));
+    if (!lane_->finished()) sendBatch();
+  } catch (...) {
+    failure_ = std::current_exception();
+  }
+  if (lane_->finished() || failure_) lane_done_.notify_all();
 }
 
 void LaneRunner::report(const std::vector<EpisodeResult>& results) {

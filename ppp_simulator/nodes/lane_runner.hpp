@@ -1,14 +1,17 @@
 #pragma once
 
+#include <condition_variable>
 #include <cstdint>
+#include <exception>
 #include <functional>
-#include <optional>
+#include <mutex>
 #include <vector>
 
-#include <ros/callback_queue.h>
 #include <ros/ros.h>
 
 #include "ppp_msgs/MoveBatch.h"
+#include "ppp_msgs/ScanBatch.h"
+#include "ppp_msgs/inline_callback_queue.h"
 #include "ppp_simulator/agent_lane.hpp"
 #include "simulator_parameters.hpp"
 
@@ -19,7 +22,9 @@ namespace simulator {
 /// /NAME/scans, waits for the MoveBatch on /NAME/moves and applies it, with the step timeout, the silent-agent
 /// give-up rule and lost-agent detection. Results go to a sink as episodes end; scans to an optional observer
 /// (the bag recorder). One runner serves one agent configuration for the node's life and may play several
-/// lanes in turn (a hunt plays one per evaluation request).
+/// lanes in turn (a hunt plays one per evaluation request). Each reply is applied, and the next batch sent, in
+/// roscpp's network thread as the reply is read (no thread hand-over per batch); the thread in run() only watches
+/// for the step timeout, a lost agent and shutdown.
 class LaneRunner {
  public:
   /// Where finished episodes go.
@@ -32,10 +37,12 @@ class LaneRunner {
   LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameters, const agents::AgentConfig& agent,
              ResultSink sink, ScanObserver observer = {}, bool log_rates = true);
   /// Plays every run of `lane` (whose agent is this runner's); returns when it is finished or ROS shuts down.
+  /// @throws what the result sink threw (an unwritable results file, say).
   void run(AgentLane* lane);
 
  private:
-  bool awaitReply(double seconds);
+  void sendBatch();
+  void answerSilence();
   bool waitForAgent();
   bool agentAlive() const;
   void onMoves(const ppp_msgs::MoveBatch::ConstPtr& message);
@@ -46,16 +53,21 @@ class LaneRunner {
   ResultSink sink_;
   ScanObserver observer_;
   bool log_rates_;
-  AgentLane* lane_ = nullptr;
+  double step_timeout_;
   bool connected_ = false;
-  bool suspect_ = false;        // the agent was lost in an earlier lane: check before playing the next
-  ros::CallbackQueue replies_;  // the moves subscription's callbacks, called by the lane's thread
+  bool suspect_ = false;  // the agent was lost in an earlier lane: check before playing the next
+  std::mutex mutex_;      // guards everything below, shared by run() and the network thread
+  std::condition_variable lane_done_;  // the lane finished or the sink failed
+  AgentLane* lane_ = nullptr;          // the lane being played; null between lanes
+  std::exception_ptr failure_;         // what the sink threw in the network thread
+  std::uint32_t batch_ = 0;            // batches sent so far, over every lane
+  std::uint32_t expected_batch_ = 0;   // the batch awaiting its reply; 0 when none
+  ros::WallTime deadline_;             // when the awaited batch counts as unanswered
+  std::vector<ScanRequest> scans_buffer_;  // reused by every batch, so a batch allocates (almost) nothing
+  ppp_msgs::ScanBatch message_;            // likewise
+  ppp_msgs::InlineCallbackQueue replies_;  // runs onMoves in the network thread
   ros::Publisher scans_;
-  ros::Subscriber moves_;       // after replies_: unsubscribes before the queue goes
-  std::uint32_t batch_ = 0;     // batches sent so far, over every lane
-  std::uint32_t expected_batch_ = 0;
-  std::optional<std::vector<MoveReply>> reply_;
-  const char* missing_reason_ = reason::kTimeout;  // for episodes the reply has no move for
+  ros::Subscriber moves_;  // after replies_: unsubscribes before the queue goes
 };
 
 }  // namespace simulator
