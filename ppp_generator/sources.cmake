@@ -9,6 +9,7 @@ set(PPP_GENERATOR_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/set_evolution.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/problem_set.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/set_csv.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/set_export.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/taxonomy.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/newick.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/tree_json.cpp

@@ -2,20 +2,21 @@
 # Builds the libFuzzer targets of the parsers with clang (ASan + UBSan) in build-fuzz/ (ppp_simulator/fuzz's
 # project) and runs each for a bounded time: scripts/fuzz.sh [SECONDS] [TARGET...] (default 30 s each, every
 # target), or for a number of executions: scripts/fuzz.sh --runs N [TARGET...] (the long campaigns in
-# BENCHMARKS.md). Targets: ppp_parser (.ppp files), map_yaml (map_server YAML + PGM), newick (taxonomy trees),
-# generator_yaml (generator options), set_csv (a set directory's set.csv), agents_yaml (agents lists),
-# experiment_yaml (experiment configs), results_csv (the results a resume reads), and the batch protocol's
-# scan_batch (ROS-serialised ScanBatch messages as the agent node decodes and answers them) and move_batch
-# (MoveBatch messages as the simulator decodes and applies them), which need the ppp_msgs headers of the workspace
-# build ($PPP_BUILD_DIR/devel/include: scripts/build.sh). Each has a seed corpus in its package's
-# fuzz/corpus/TARGET/. Inputs are at most 4096 bytes (configs, CSV files, messages and maps far larger than their
-# seeds, which keeps the YAML readers fast), 65536 for the .ppp and Newick readers (large grids and trees).
+# BENCHMARKS.md). Targets: ppp_parser (.ppp files), map_yaml (map_server YAML + PGM), movingai_map (MovingAI .map grid
+# maps), movingai_scen (MovingAI .scen scenario lists), newick (taxonomy trees), generator_yaml (generator options),
+# set_csv (a set directory's set.csv), agents_yaml (agents lists), experiment_yaml (experiment configs), results_csv
+# (the results a resume reads), and the batch protocol's scan_batch (ROS-serialised ScanBatch messages as the agent
+# node decodes and answers them) and move_batch (MoveBatch messages as the simulator decodes and applies them), which
+# need the ppp_msgs headers of the workspace build ($PPP_BUILD_DIR/devel/include: scripts/build.sh). Each has a seed
+# corpus in its package's fuzz/corpus/TARGET/. Inputs are at most 4096 bytes (configs, CSV files, messages and maps
+# far larger than their seeds, which keeps the YAML readers fast), 65536 for the .ppp, .map and Newick readers (large
+# grids and trees).
 # Exits non-zero on any finding; crash inputs are written to build-fuzz/artifacts/TARGET/. Reproduce one with:
 # build-fuzz/TARGET_fuzz build-fuzz/artifacts/TARGET/crash-...
 set -euo pipefail
 
-all_targets=(ppp_parser map_yaml newick generator_yaml set_csv agents_yaml experiment_yaml results_csv scan_batch
-  move_batch)
+all_targets=(ppp_parser map_yaml movingai_map movingai_scen newick generator_yaml set_csv agents_yaml experiment_yaml
+  results_csv scan_batch move_batch)
 ros_targets=(scan_batch move_batch)
 usage="usage: $0 [SECONDS | --runs N] [TARGET...]  (a positive whole number of seconds, default 30, or of
   executions per target; targets: ${all_targets[*]})"
@@ -71,7 +72,7 @@ for target in "${targets[@]}"; do
   fi
 done
 # max_len_of TARGET: the largest input it is given.
-max_len_of() { case "$1" in ppp_parser | newick) echo 65536 ;; *) echo 4096 ;; esac; }
+max_len_of() { case "$1" in ppp_parser | movingai_map | newick) echo 65536 ;; *) echo 4096 ;; esac; }
 if [ -f "${build_dir}/CMakeCache.txt" ] && ! grep -q "CMAKE_PROJECT_NAME:STATIC=ppp_fuzz" "${build_dir}/CMakeCache.txt"; then
   rm -rf "${build_dir}"  # an older build of the core alone
 fi

@@ -23,11 +23,14 @@ void addTreeCommand(CLI::App& app);
 /// Adds `ppp select`: pick k diverse PPPs of a set.
 void addSelectCommand(CLI::App& app);
 
+/// Adds `ppp export`: write a set's PPPs in another format (MovingAI .map with a .scen, map_server, ...).
+void addExportCommand(CLI::App& app);
 /// Adds every generator subcommand.
 inline void addGeneratorCommands(CLI::App& app, FailureFitnessMaker make_failure_fitness) {
   addGenerateCommand(app, std::move(make_failure_fitness));
   addTreeCommand(app);
   addSelectCommand(app);
+  addExportCommand(app);
 }
 
 }  // namespace cli

@@ -63,7 +63,7 @@ void addTreeCommand(CLI::App& app) {
   CLI::App* command =
       app.add_subcommand("tree", "Rebuild a set's UPGMA taxonomy (tree.nwk, tree.json, tree.html) over a character set");
   command->add_option("dir", flags->dir, "Set directory written by ppp generate")->required();
-  command->add_option("--characters", flags->characters, "wei or extended")->capture_default_str();
+  command->add_option("--characters", flags->characters, "wei, extended or barn")->capture_default_str();
   command->callback([flags] { runTree(*flags); });
 }
 
@@ -75,7 +75,7 @@ void addSelectCommand(CLI::App& app) {
   command->add_option("-k", flags->k, "Number of PPPs to pick")->required();
   command->add_option("--prefer", flags->prefer, "Representative: medoid (most central) or hardest (best fitness)")
       ->capture_default_str();
-  command->add_option("--characters", flags->characters, "wei or extended")->capture_default_str();
+  command->add_option("--characters", flags->characters, "wei, extended or barn")->capture_default_str();
   command->add_option("--copy-to", flags->copy_to, "Also copy the picked .ppp files into this directory");
   command->callback([flags] { runSelect(*flags); });
 }

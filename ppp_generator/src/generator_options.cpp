@@ -40,7 +40,7 @@ void validateHuntOptions(const GeneratorOptions& o) {
   if (o.features.size() < 2) {
     throw InvalidArgument("features", "expected two or more character names, got " + std::to_string(o.features.size()));
   }
-  const std::vector<std::string>& names = characterNames();
+  const std::vector<std::string>& names = availableCharacterNames();
   for (std::size_t i = 0; i < o.features.size(); ++i) {
     if (std::find(names.begin(), names.end(), o.features[i]) == names.end()) {
       throw InvalidArgument("features", "unknown character '" + o.features[i] + "'; valid: " + joinNames(names));
@@ -134,7 +134,7 @@ const std::vector<OptionSpec<GeneratorOptions>>& generatorOptionSpecs() {
       declareOption("max_block_side", "longest random block side; 0 = a quarter of the shorter side",
                     +[](O& o) -> int& { return o.obstacle_shapes.max_block_side; }, Bounds{0, side_max}),
       declareOption("seed", "seed of every random choice", +[](O& o) -> std::uint64_t& { return o.seed; }),
-      declareOption("characters", "taxonomy characters: wei (Wei's four) or extended (all 14)",
+      declareOption("characters", "taxonomy characters: wei (Wei's four), extended (all 14) or barn (BARN's five)",
                     +[](O& o) -> std::string& { return o.characters; }),
       declareOption("replacement",
                     "crowding: a child replaces the most similar of crowding_window PPPs if as fit; tournament: "

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "ppp_core/barn_metrics.hpp"
 #include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/text_format.hpp"
@@ -25,7 +26,7 @@ double weightSum(const DifficultyWeights& w) {
 }
 
 std::size_t characterIndex(const std::string& name) {
-  const auto& names = characterNames();
+  const auto& names = availableCharacterNames();
   const auto found = std::find(names.begin(), names.end(), name);
   if (found == names.end()) throw InvalidArgument("features", "unknown character '" + name + "'");
   return static_cast<std::size_t>(found - names.begin());
@@ -36,13 +37,21 @@ std::size_t characterIndex(const std::string& name) {
 FeatureRange featureRange(const std::string& name, const GeneratorOptions& o) {
   const double w = o.width;
   const double h = o.height;
-  const double manhattan = std::abs(o.goalCell().x - o.startCell().x) + std::abs(o.goalCell().y - o.startCell().y);
+  const int dx = std::abs(o.goalCell().x - o.startCell().x);
+  const int dy = std::abs(o.goalCell().y - o.startCell().y);
+  const double manhattan = dx + dy;
+  const double most_advances = std::max(manhattan + 1.0, w * h / 2.0);
   characterIndex(name);
   if (name == "turns") return {0.0, w + h};
-  if (name == "advances") return {manhattan, std::max(manhattan + 1.0, w * h / 2.0)};
-  if (name == "turns_plus_advances") return {manhattan, std::max(manhattan + 1.0, w * h / 2.0 + w + h)};
+  if (name == "advances") return {manhattan, most_advances};
+  if (name == "turns_plus_advances") return {manhattan, most_advances + w + h};
   if (name == "obstacles") return {0.0, static_cast<double>(std::max(1, o.max_obstacles))};
   if (name == "difficulty") return {0.0, std::max(1.0, weightSum(o.weights))};
+  if (name == "barn_closest_obstacle") return {0.0, std::min(w, h) / 2};
+  if (name == "barn_visibility") return {0.0, std::max(w, h) / 2};
+  if (name == "barn_dispersion") return {0.0, BarnOptions{}.dispersion_rays / 2.0};
+  if (name == "barn_characteristic_dimension") return {0.0, std::min(w, h)};
+  if (name == "barn_tortuosity") return {manhattan / std::hypot(dx, dy), most_advances / std::hypot(dx, dy)};
   return {0.0, 1.0};
 }
 
@@ -99,7 +108,13 @@ MapElites::MapElites(const GeneratorOptions& options, Fitness fitness)
       archive_(rangesOf(options), options.bins) {}
 
 std::vector<double> MapElites::featuresOf(const Individual& individual) {
-  const std::vector<double> all = characterVector(evaluator_.evaluate(individual.problem, individual.grid));
+  std::vector<double> all = characterVector(evaluator_.evaluate(individual.problem, individual.grid));
+  const std::vector<std::string>& barn = barnCharacterNames();
+  const auto isBarn = [&](const std::string& name) { return std::find(barn.begin(), barn.end(), name) != barn.end(); };
+  if (std::any_of(options_.features.begin(), options_.features.end(), isBarn)) {
+    const std::vector<double> metrics = barnCharacterVector(barnMetrics(individual.problem, individual.grid));
+    all.insert(all.end(), metrics.begin(), metrics.end());
+  }
   std::vector<double> features;
   for (const std::string& name : options_.features) features.push_back(all[characterIndex(name)]);
   return features;

@@ -122,7 +122,9 @@ Taxonomy buildTaxonomy(const ProblemSet& set, CharacterSet characters) {
   if (set.problems.empty()) throw InvalidArgument("set", "no PPPs to build a taxonomy of");
   Taxonomy taxonomy;
   taxonomy.characters = characters;
-  taxonomy.normalised = normaliseColumns(characterMatrix(set.evaluations, characters));
+  const Eigen::MatrixXd raw = characters == CharacterSet::Barn ? barnCharacterMatrix(set.problems)
+                                                               : characterMatrix(set.evaluations, characters);
+  taxonomy.normalised = normaliseColumns(raw);
   taxonomy.distances = euclideanDistances(taxonomy.normalised);
   taxonomy.tree = upgma(taxonomy.distances);
   return taxonomy;

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "ppp_core/barn_metrics.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/text_format.hpp"
 
@@ -251,18 +252,35 @@ class Upgma {
 CharacterSet parseCharacterSet(const std::string& name) {
   if (name == "wei") return CharacterSet::Wei;
   if (name == "extended") return CharacterSet::Extended;
-  throw InvalidArgument("characters", "unknown character set '" + name + "'; valid: wei, extended");
+  if (name == "barn") return CharacterSet::Barn;
+  throw InvalidArgument("characters", "unknown character set '" + name + "'; valid: wei, extended, barn");
 }
 
-const char* characterSetName(CharacterSet set) { return set == CharacterSet::Wei ? "wei" : "extended"; }
+const char* characterSetName(CharacterSet set) {
+  if (set == CharacterSet::Wei) return "wei";
+  return set == CharacterSet::Extended ? "extended" : "barn";
+}
 
 std::vector<std::string> characterSetNames(CharacterSet set) {
   const std::vector<std::string>& all = ppp::characterNames();
   if (set == CharacterSet::Extended) return all;
+  if (set == CharacterSet::Barn) return ppp::barnCharacterNames();
   return std::vector<std::string>(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(kWeiCharacterCount));
 }
 
+const std::vector<std::string>& availableCharacterNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all = ppp::characterNames();
+    all.insert(all.end(), ppp::barnCharacterNames().begin(), ppp::barnCharacterNames().end());
+    return all;
+  }();
+  return names;
+}
+
 Eigen::MatrixXd characterMatrix(const std::vector<ppp::Evaluation>& evaluations, CharacterSet set) {
+  if (set == CharacterSet::Barn) {
+    throw InvalidArgument("characters", "the barn characters are measured on the grids: use barnCharacterMatrix");
+  }
   const std::size_t columns = characterSetNames(set).size();
   Eigen::MatrixXd m(static_cast<Eigen::Index>(evaluations.size()), static_cast<Eigen::Index>(columns));
   for (std::size_t r = 0; r < evaluations.size(); ++r) {
@@ -274,6 +292,21 @@ Eigen::MatrixXd characterMatrix(const std::vector<ppp::Evaluation>& evaluations,
     for (std::size_t c = 0; c < columns; ++c) {
       m(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = v[c];
     }
+  }
+  return m;
+}
+
+Eigen::MatrixXd barnCharacterMatrix(const std::vector<ppp::Problem>& problems) {
+  Eigen::MatrixXd m(static_cast<Eigen::Index>(problems.size()),
+                    static_cast<Eigen::Index>(ppp::barnCharacterNames().size()));
+  for (std::size_t r = 0; r < problems.size(); ++r) {
+    const ppp::BarnMetrics metrics = ppp::barnMetrics(problems[r], decodeGrid(problems[r]));
+    if (!metrics.valid) {
+      throw InvalidArgument("problems", "PPP " + std::to_string(r) + " is invalid (goal unreachable); only solvable "
+                                        "PPPs have characters");
+    }
+    const std::vector<double> v = ppp::barnCharacterVector(metrics);
+    for (std::size_t c = 0; c < v.size(); ++c) m(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = v[c];
   }
   return m;
 }

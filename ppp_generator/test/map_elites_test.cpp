@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
+#include "ppp_core/barn_metrics.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/evaluation.hpp"
 
@@ -47,6 +49,13 @@ TEST(MapElitesTest, FeatureRangesFollowTheGridAndBudget) {
   EXPECT_EQ(featureRange("difficulty", o).high, 15.0);
   EXPECT_EQ(featureRange("visibility_goal", o).high, 1.0);
   EXPECT_THROW(featureRange("width", o), InvalidArgument);
+  EXPECT_EQ(featureRange("barn_closest_obstacle", o).high, 10.0);
+  EXPECT_EQ(featureRange("barn_visibility", o).high, 10.0);
+  EXPECT_EQ(featureRange("barn_dispersion", o).high, 8.0);  // half of the 16 rays
+  EXPECT_EQ(featureRange("barn_characteristic_dimension", o).high, 20.0);
+  // The advances' range, 38 ... 200, over the start-to-goal distance 19*sqrt2.
+  EXPECT_DOUBLE_EQ(featureRange("barn_tortuosity", o).low, 38 / (19 * std::sqrt(2.0)));
+  EXPECT_DOUBLE_EQ(featureRange("barn_tortuosity", o).high, 200 / (19 * std::sqrt(2.0)));
 }
 
 TEST(MapElitesTest, EachCellKeepsItsFittestAndTheFirstOfEquals) {
@@ -105,6 +114,22 @@ TEST(MapElitesTest, ASearchReturnsDistinctElitesInTheirCellsFittestFirst) {
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   EXPECT_NE(svg.find(">obstacles<"), std::string::npos);
   EXPECT_EQ(static_cast<std::size_t>(std::count(svg.begin(), svg.end(), '\n')) > 36u, true);
+}
+
+TEST(MapElitesTest, BarnCharactersAreFeatures) {
+  GeneratorOptions o = smallSearch(4);
+  o.features = {"turns", "barn_dispersion", "barn_tortuosity"};
+  o.bins = 4;
+  o.matings = 200;
+  MapElites search(o, makeFitness(o.fitness));
+  search.run();
+  ASSERT_GT(search.archive().elites().size(), 1u);
+  for (const auto& [cell, elite] : search.archive().elites()) {
+    const Problem& p = elite.individual.problem;
+    const std::vector<double> barn = barnCharacterVector(barnMetrics(p, decodeGrid(p)));
+    EXPECT_EQ(elite.features, (std::vector<double>{elite.individual.value, barn[2], barn[4]}));
+    EXPECT_EQ(search.archive().cellOf(elite.features), cell);
+  }
 }
 
 TEST(MapElitesTest, SameSeedSameElites) {

@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "ppp_core/barn_metrics.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/rng.hpp"
 #include "hand_tree.hpp"
@@ -270,14 +271,14 @@ TEST(TaxonomyTest, CharacterSets) {
             (std::vector<std::string>{"turns", "advances", "turns_plus_advances", "obstacles"}));
   EXPECT_EQ(characterSetNames(CharacterSet::Extended), ppp::characterNames());
   EXPECT_EQ(characterSetNames(CharacterSet::Extended).size(), 14u);
-  for (const char* bad : {"", "Wei", "all", "extended "}) {
+  for (const char* bad : {"", "Wei", "all", "extended ", "BARN"}) {
     try {
       parseCharacterSet(bad);
       ADD_FAILURE() << "accepted '" << bad << "'";
     } catch (const InvalidArgument& e) {
       EXPECT_EQ(e.name(), "characters");
       EXPECT_EQ(std::string(e.what()),
-                std::string("characters: unknown character set '") + bad + "'; valid: wei, extended");
+                std::string("characters: unknown character set '") + bad + "'; valid: wei, extended, barn");
     }
   }
 }
@@ -313,6 +314,56 @@ TEST(TaxonomyTest, CharacterMatrixHasOneRowPerPpp) {
     ADD_FAILURE() << "accepted an invalid PPP";
   } catch (const InvalidArgument& e) {
     EXPECT_EQ(e.name(), "evaluations");
+  }
+}
+
+/// The PPP of the hand-worked corridor of barn_metrics_test: 5x3, walls above and below row 1, start (0,1), goal (4,1).
+Problem corridorProblem() {
+  Grid grid(5, 3);
+  for (int x = 0; x < 5; ++x) {
+    grid.setObstacle(Cell{x, 0}, true);
+    grid.setObstacle(Cell{x, 2}, true);
+  }
+  return problemFromGrid(grid, Cell{0, 1}, Cell{4, 1});
+}
+
+TEST(TaxonomyTest, BarnCharactersCanBeSelected) {
+  EXPECT_EQ(parseCharacterSet("barn"), CharacterSet::Barn);
+  EXPECT_STREQ(characterSetName(CharacterSet::Barn), "barn");
+  EXPECT_EQ(characterSetNames(CharacterSet::Barn), ppp::barnCharacterNames());
+  // The archive's features: the fourteen, then BARN's five; the default sets keep their characters.
+  const std::vector<std::string>& available = availableCharacterNames();
+  ASSERT_EQ(available.size(), 19u);
+  EXPECT_EQ(std::vector<std::string>(available.begin(), available.begin() + 14), ppp::characterNames());
+  EXPECT_EQ(available[14], "barn_closest_obstacle");
+  EXPECT_EQ(available[18], "barn_tortuosity");
+  EXPECT_EQ(characterSetNames(CharacterSet::Extended).size(), 14u);
+
+  Problem open = Problem::empty(5, 5, 0);
+  const std::vector<Problem> problems{corridorProblem(), open};
+  const Eigen::MatrixXd barn = barnCharacterMatrix(problems);
+  ASSERT_EQ(barn.rows(), 2);
+  ASSERT_EQ(barn.cols(), 5);
+  // The corridor's metrics worked by hand in barn_metrics_test: clearance 0.5, visibility 0.75 + 0.25*sqrt2,
+  // dispersion 1.6, characteristic dimension 1 (its width), tortuosity 1.
+  const double expected[] = {0.5, 0.75 + 0.25 * std::sqrt(2.0), 1.6, 1.0, 1.0};
+  for (int c = 0; c < 5; ++c) EXPECT_NEAR(barn(0, c), expected[c], 1e-12) << "column " << c;
+  const std::vector<double> second = ppp::barnCharacterVector(ppp::barnMetrics(open, decodeGrid(open)));
+  for (int c = 0; c < 5; ++c) EXPECT_EQ(barn(1, c), second[static_cast<std::size_t>(c)]);
+
+  Problem walled = Problem::empty(4, 4, 1);
+  walled.obstacles.push_back(Obstacle{Shape::VerticalBar, 2, 0, 4, 1});
+  try {
+    barnCharacterMatrix({open, walled});
+    ADD_FAILURE() << "accepted an invalid PPP";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.name(), "problems");
+  }
+  try {
+    characterMatrix({Evaluation{}}, CharacterSet::Barn);
+    ADD_FAILURE() << "took the barn characters from evaluations";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.name(), "characters");
   }
 }
 

@@ -91,7 +91,9 @@ void addSimulateCommand(CLI::App& app) {
   auto flags = std::make_shared<SimulateFlags>();
   CLI::App* command = app.add_subcommand("simulate", "Run one agent many times on one PPP and report its pass rate");
   flags->agent.add(command);
-  command->add_option("--problem", flags->problem, "A .ppp (or map .yaml) file, or empty:WxH for an empty grid")
+  command
+      ->add_option("--problem", flags->problem,
+                   "A .ppp (or map .yaml or MovingAI .map) file, or empty:WxH for an empty grid")
       ->required();
   command->add_option("--runs", flags->runs, "Number of runs")->capture_default_str();
   command->add_option("--seed", flags->seed, "Seed; run i uses a seed derived from it")->capture_default_str();

@@ -5,7 +5,7 @@ ppp="$1"
 config_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../config" && pwd)"
 source "$(dirname "${BASH_SOURCE[0]}")/cli_harness.sh"
 
-for sub in random evaluate convert generate tree select; do
+for sub in random evaluate convert generate tree select export; do
   expect_ok "help $sub" "$ppp" "$sub" --help
   grep -q "Usage" "$work/out" && pass || fail "help $sub has no usage"
 done
@@ -90,10 +90,27 @@ grep -q "^  goal: 3$" "$work/set_d/generator.yaml" && pass || fail "weight overr
 
 expect_ok "tree wei" "$ppp" tree "$work/set_a" --characters wei
 grep -q ";$" "$work/out" && pass || fail "tree printed no Newick"
+expect_ok "tree barn" "$ppp" tree "$work/set_a" --characters barn
+grep -q "barn characters" "$work/set_a/tree.html" && pass || fail "tree --characters barn did not title its tree"
 expect_ok "select" "$ppp" select "$work/set_a" -k 4
 [ "$(sort -u "$work/out" | wc -l)" -eq 4 ] && pass || fail "select -k 4 did not print 4 distinct PPPs"
 expect_ok "select hardest" "$ppp" select "$work/set_a" -k 3 --prefer hardest --copy-to "$work/picked"
 [ "$(ls "$work/picked" | wc -l)" -eq 3 ] && pass || fail "select --copy-to did not copy 3 files"
+
+# --- export: a set as MovingAI maps with a scenario list, each map converting back to its PPP's grid
+expect_ok "export map" "$ppp" export "$work/set_a" "$work/exported"
+[ "$(ls "$work/exported"/*.map | wc -l)" -eq 12 ] && pass || fail "export did not write 12 .map files"
+[ "$(head -1 "$work/exported/set_a.scen")" = "version 1" ] && [ "$(wc -l < "$work/exported/set_a.scen")" -eq 13 ] \
+  && pass || fail "set_a.scen is not a version 1 list of 12 scenarios"
+read -r _ map _ _ sx sy gx gy _ < <(sed -n 2p "$work/exported/set_a.scen")
+expect_ok "export map back" "$ppp" convert "$work/exported/$map" "$work/back.ppp" --start "$sx,$sy" --goal "$gx,$gy"
+expect_ok "export map back to .map" "$ppp" convert "$work/back.ppp" "$work/back.map"
+expect_ok "original to .map" "$ppp" convert "$work/set_a/ppp_000.ppp" "$work/orig.map"
+cmp -s "$work/back.map" "$work/orig.map" && pass || fail "exported ppp_000.map is not ppp_000's grid"
+expect_ok "export yaml" "$ppp" export "$work/set_a" "$work/exported_yaml" --format yaml
+[ "$(ls "$work/exported_yaml"/*.pgm | wc -l)" -eq 12 ] && pass || fail "export --format yaml did not write 12 maps"
+expect_error "export unknown format" "--format: cannot export to '.gif'" "$ppp" export "$work/set_a" "$work/x" --format gif
+expect_error "export no set" "set.csv" "$ppp" export "$work/nothing" "$work/x"
 
 # Bad options fail validation before any work, so these runs use the shipped defaults otherwise.
 expect_error "unknown fitness" "fitness: unknown fitness 'hardness'; valid: turns, advances" \

@@ -50,9 +50,10 @@ void runConvert(const ConvertOptions& o) {
 void addConvertCommand(CLI::App& app) {
   auto options = std::make_shared<ConvertOptions>();
   CLI::App* command = app.add_subcommand(
-      "convert", "Convert a PPP between .ppp, map_server .yaml (+.pgm), .png and OctoMap .bt (by extension)");
-  command->add_option("input", options->input, "Input: .ppp or .yaml")->required();
-  command->add_option("output", options->output, "Output: .ppp, .yaml, .png or .bt")->required();
+      "convert",
+      "Convert a PPP between .ppp, map_server .yaml (+.pgm), MovingAI .map, .png and OctoMap .bt (by extension)");
+  command->add_option("input", options->input, "Input: .ppp, .yaml or .map")->required();
+  command->add_option("output", options->output, "Output: .ppp, .yaml, .map, .png or .bt")->required();
   command->add_option("--resolution", options->resolution, "Metres per cell for .yaml and .bt")
       ->capture_default_str();
   command->add_option("--height", options->height, "Height in metres obstacles are extruded to in .bt")
@@ -60,8 +61,11 @@ void addConvertCommand(CLI::App& app) {
   command->add_option("--cell-pixels", options->cell_pixels, "Pixels per cell in .png")->capture_default_str();
   command->add_flag("--no-grid-lines", options->no_grid_lines, "Leave out the cell grid lines in .png");
   command->add_flag("--route", options->route, "Draw the fewest turns+advances route in .png");
-  command->add_option("--start", options->start, "Start cell X,Y when importing a foreign map (.yaml)");
-  command->add_option("--goal", options->goal, "Goal cell X,Y when importing a foreign map (.yaml)");
+  command->add_option("--start", options->start,
+                      "Start cell X,Y when importing a foreign map (.yaml: default 0,0; .map: the first free cell)");
+  command->add_option("--goal", options->goal,
+                      "Goal cell X,Y when importing a foreign map (.yaml: default bottom-right; .map: the last free "
+                      "cell)");
   command->callback([options] { runConvert(*options); });
 }
 

@@ -11,7 +11,7 @@ namespace cli {
 void addRandomCommand(CLI::App& app);
 /// Adds `ppp evaluate`: every measure of one or more PPPs, as text, JSON or CSV.
 void addEvaluateCommand(CLI::App& app);
-/// Adds `ppp convert`: between .ppp, map_server .yaml, .png and OctoMap .bt.
+/// Adds `ppp convert`: between .ppp, map_server .yaml, MovingAI .map, .png and OctoMap .bt.
 void addConvertCommand(CLI::App& app);
 
 /// Adds every core subcommand.

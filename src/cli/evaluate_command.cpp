@@ -6,6 +6,7 @@
 
 #include "cli_options.hpp"
 #include "core_commands.hpp"
+#include "ppp_core/barn_metrics.hpp"
 #include "ppp_core/csv.hpp"
 #include "ppp_core/evaluation_json.hpp"
 #include "ppp_core/problem_io.hpp"
@@ -50,9 +51,12 @@ void runEvaluate(const EvaluateOptions& o) {
   }
   for (const std::string& file : o.files) {
     const Problem problem = readProblemFile(file);
-    const Evaluation e = evaluator.evaluate(problem);
+    const Grid grid = decodeGrid(problem);
+    const Evaluation e = evaluator.evaluate(problem, grid);
     if (o.json) {
-      std::cout << evaluationToJson(problem, e).dump() << "\n";
+      nlohmann::json j = evaluationToJson(problem, e);
+      j["barn"] = barnMetricsToJson(barnMetrics(problem, grid));
+      std::cout << j.dump() << "\n";
     } else if (!csv) {
       printText(file, problem, e);
     }
@@ -71,8 +75,8 @@ void addEvaluateCommand(CLI::App& app) {
   auto options = std::make_shared<EvaluateOptions>();
   CLI::App* command =
       app.add_subcommand("evaluate", "Ashlock's DPA, visibility, openness and the difficulty score of PPP files");
-  command->add_option("files", options->files, "PPP files (.ppp or map_server .yaml)")->required();
-  command->add_flag("--json", options->json, "One JSON object per file, one per line");
+  command->add_option("files", options->files, "PPP files (.ppp, map_server .yaml or MovingAI .map)")->required();
+  command->add_flag("--json", options->json, "One JSON object per file, one per line, BARN's metrics under \"barn\"");
   command->add_option("--csv", options->csv, "Also write one CSV row of characters per file to this path");
   command->add_option("--weight", options->weights,
                       "Difficulty weight override NAME=VALUE (start, centre, top_right, bottom_left, goal, "

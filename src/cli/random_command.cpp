@@ -54,7 +54,7 @@ void addRandomCommand(CLI::App& app) {
   command->add_option("--seed", options->seed, "Seed of the random generator")->required();
   command->add_option("--start", options->start, "Start cell X,Y (default 0,0: top-left)");
   command->add_option("--goal", options->goal, "Goal cell X,Y (default bottom-right)");
-  command->add_option("-o,--output", options->output, "Output file: .ppp, .yaml, .png or .bt")->required();
+  command->add_option("-o,--output", options->output, "Output file: .ppp, .yaml, .png, .bt or .map")->required();
   command->callback([options] { runRandom(*options); });
 }
 

@@ -27,4 +27,13 @@ nlohmann::json evaluationToJson(const Problem& problem, const Evaluation& e) {
   return j;
 }
 
+nlohmann::json barnMetricsToJson(const BarnMetrics& m) {
+  auto value = [&](double v) { return m.valid ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  return {{"closest_obstacle", value(m.closest_obstacle)},
+          {"visibility", value(m.visibility)},
+          {"dispersion", value(m.dispersion)},
+          {"characteristic_dimension", value(m.characteristic_dimension)},
+          {"tortuosity", value(m.tortuosity)}};
+}
+
 }  // namespace ppp

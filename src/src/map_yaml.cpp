@@ -6,13 +6,13 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <filesystem>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/line_cursor.hpp"
 #include "ppp_core/ppp_file.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_core/text_format.hpp"
@@ -358,7 +358,7 @@ class PgmReader {
   Pgm read() {
     if (data_.size() < 2 || data_[0] != 'P' || (data_[1] != '5' && data_[1] != '2')) {
       const std::string got = data_.substr(0, 2);
-      fail(1, "magic", "expected a PGM image ('P5' binary or 'P2' ASCII), got " + printable(got));
+      fail(1, "magic", "expected a PGM image ('P5' binary or 'P2' ASCII), got " + quotedExcerpt(got));
     }
     const bool binary = data_[1] == '5';
     pos_ = 2;
@@ -413,20 +413,6 @@ class PgmReader {
            std::to_string(index / static_cast<std::size_t>(pgm.width)) + ")";
   }
 
-  static std::string printable(const std::string& bytes) {
-    std::string shown;
-    for (unsigned char c : bytes) {
-      if (c >= 0x20 && c < 0x7f) {
-        shown.push_back(static_cast<char>(c));
-      } else {
-        char hex[8];
-        std::snprintf(hex, sizeof hex, "\\x%02x", c);
-        shown += hex;
-      }
-    }
-    return "'" + shown + "'";
-  }
-
   void skipSpaceAndComments() {
     while (pos_ < data_.size()) {
       const char c = data_[pos_];
@@ -451,7 +437,7 @@ class PgmReader {
       std::size_t end = start;
       while (end < data_.size() && end - start < 20 && !isSpace(data_[end])) ++end;
       fail(line_, field,
-           "expected " + what + ", got " + printable(data_.substr(start, std::max(end, start + 1) - start)));
+           "expected " + what + ", got " + quotedExcerpt(data_.substr(start, std::max(end, start + 1) - start)));
     }
     long long value = 0;
     const auto result = std::from_chars(data_.data() + start, data_.data() + pos_, value);
@@ -512,35 +498,18 @@ Cell importCell(const std::optional<Cell>& option, Cell fallback, const char* na
 
 /// A foreign map: one hbar per horizontal run of obstacle pixels.
 Problem importForeign(const Pgm& pgm, const MapHeader& h, const MapImportOptions& options) {
-  Problem p;
-  p.width = pgm.width;
-  p.height = pgm.height;
-  p.start = importCell(options.start, Cell{0, 0}, "start", pgm, h);
-  p.goal = importCell(options.goal, Cell{pgm.width - 1, pgm.height - 1}, "goal", pgm, h);
-  if (p.start == p.goal) throw InvalidArgument("goal", "must differ from start " + cellText(p.start));
-  for (int y = 0; y < pgm.height; ++y) {
-    int x = 0;
-    while (x < pgm.width) {
-      auto obstacle = [&](int column) {
-        return classify(pgm.values[static_cast<std::size_t>(y) * pgm.width + column], pgm, h) != PixelClass::Free;
-      };
-      if (!obstacle(x)) {
-        ++x;
-        continue;
-      }
-      const int begin = x;
-      while (x < pgm.width && obstacle(x)) ++x;
-      if (p.obstacles.size() >= static_cast<std::size_t>(kMaxObstacleBudget)) {
-        throw ParseError(h.image_path, 0, "pixels",
-                         "more than " + std::to_string(kMaxObstacleBudget) +
-                             " horizontal obstacle runs; the map is too fragmented for an obstacle budget");
-      }
-      p.obstacles.push_back(Obstacle{Shape::HorizontalBar, begin, y, x - begin, 1});
-    }
+  const Cell start = importCell(options.start, Cell{0, 0}, "start", pgm, h);
+  const Cell goal = importCell(options.goal, Cell{pgm.width - 1, pgm.height - 1}, "goal", pgm, h);
+  if (start == goal) throw InvalidArgument("goal", "must differ from start " + cellText(start));
+  Grid grid(pgm.width, pgm.height);
+  for (int i = 0; i < grid.size(); ++i) {
+    grid.setObstacle(grid.cellAt(i), classify(pgm.values[static_cast<std::size_t>(i)], pgm, h) != PixelClass::Free);
   }
-  p.max_obstacles = static_cast<int>(p.obstacles.size());
-  validateProblem(p);
-  return p;
+  try {
+    return problemFromGrid(grid, start, goal);
+  } catch (const InvalidArgument& e) {
+    throw ParseError(h.image_path, 0, "pixels", e.problem());
+  }
 }
 
 /// A problem read from ppp_* keys must paint exactly the image.

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/line_cursor.hpp"
 #include "ppp_core/text_file.hpp"
 
 namespace ppp {
@@ -21,85 +22,28 @@ bool isMetadataKeyChar(char c) {
          c == '-';
 }
 
-/// Walks the text line by line and produces errors that point at the current line.
-class Cursor {
- public:
-  Cursor(const std::string& text, const std::string& source) : text_(text), source_(source) {}
-
-  /// Next line without its terminator; false at end of text.
-  bool next(std::string_view* line) {
-    if (pos_ >= text_.size()) return false;
-    std::size_t end = text_.find('\n', pos_);
-    if (end == std::string::npos) end = text_.size();
-    std::string_view view(text_.data() + pos_, end - pos_);
-    if (!view.empty() && view.back() == '\r') view.remove_suffix(1);
-    pos_ = end + 1;
-    ++line_;
-    *line = view;
-    return true;
-  }
-
-  /// Next line, or a "truncated file" error saying what was expected.
-  std::string_view require(const std::string& field, const std::string& expected) {
-    std::string_view line;
-    if (!next(&line)) fail(line_ + 1, field, "unexpected end of file; expected " + expected);
-    return line;
-  }
-
-  [[noreturn]] void fail(const std::string& field, const std::string& what) const { fail(line_, field, what); }
-  [[noreturn]] void fail(int line, const std::string& field, const std::string& what) const {
-    throw ParseError(source_, line, field, what);
-  }
-
-  int line() const { return line_; }
-
- private:
-  const std::string& text_;
-  const std::string& source_;
-  std::size_t pos_ = 0;
-  int line_ = 0;
-};
-
-std::vector<std::string_view> split(std::string_view line) {
-  std::vector<std::string_view> tokens;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    std::size_t start = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
-    if (i > start) tokens.push_back(line.substr(start, i - start));
-  }
-  return tokens;
-}
-
-std::string quoted(std::string_view text) {
-  constexpr std::size_t kShown = 40;
-  std::string shown(text.substr(0, kShown));
-  if (text.size() > kShown) shown += "...";
-  return "'" + shown + "'";
-}
-
-int parseInt(const Cursor& cursor, std::string_view token, const std::string& field, const char* what) {
+int parseInt(const LineCursor& cursor, std::string_view token, const std::string& field, const char* what) {
   int value = 0;
   const char* begin = token.data();
   const char* end = token.data() + token.size();
   auto result = std::from_chars(begin, end, value);
   if (token.empty() || result.ec != std::errc() || result.ptr != end) {
-    cursor.fail(field, std::string(what) + " must be an integer, got " + quoted(token));
+    cursor.fail(field, std::string(what) + " must be an integer, got " + quotedExcerpt(token));
   }
   return value;
 }
 
 /// Splits a "<keyword> <n values>" line, checking keyword and count.
-std::vector<std::string_view> keywordLine(Cursor& cursor, const std::string& keyword, std::size_t values,
+std::vector<std::string_view> keywordLine(LineCursor& cursor, const std::string& keyword, std::size_t values,
                                           const std::string& usage) {
   std::string_view line = cursor.require(keyword, "'" + usage + "'");
-  auto tokens = split(line);
+  auto tokens = splitFields(line);
   if (tokens.empty() || tokens[0] != keyword) {
-    cursor.fail(keyword, "expected '" + usage + "', got " + quoted(line));
+    cursor.fail(keyword, "expected '" + usage + "', got " + quotedExcerpt(line));
   }
   if (tokens.size() != values + 1) {
-    cursor.fail(keyword, "expected '" + usage + "' (" + std::to_string(values) + " values), got " + quoted(line));
+    cursor.fail(keyword,
+                "expected '" + usage + "' (" + std::to_string(values) + " values), got " + quotedExcerpt(line));
   }
   return tokens;
 }
@@ -124,7 +68,7 @@ void checkText(const std::string& text, const std::string& source) {
   }
 }
 
-Cell parseCellLine(Cursor& cursor, const std::string& keyword, int width, int height) {
+Cell parseCellLine(LineCursor& cursor, const std::string& keyword, int width, int height) {
   auto tokens = keywordLine(cursor, keyword, 2, keyword + " X Y");
   Cell c{parseInt(cursor, tokens[1], keyword, "x"), parseInt(cursor, tokens[2], keyword, "y")};
   if (c.x < 0 || c.y < 0 || c.x >= width || c.y >= height) {
@@ -134,19 +78,19 @@ Cell parseCellLine(Cursor& cursor, const std::string& keyword, int width, int he
   return c;
 }
 
-Obstacle parseObstacleLine(Cursor& cursor, int index, const Problem& p) {
+Obstacle parseObstacleLine(LineCursor& cursor, int index, const Problem& p) {
   const std::string field = "obstacle " + std::to_string(index);
   std::string_view line = cursor.require(field, "a descriptor such as 'hbar X Y LENGTH'");
-  auto tokens = split(line);
+  auto tokens = splitFields(line);
   Obstacle o;
   if (tokens.empty() || !parseShape(std::string(tokens[0]), &o.shape)) {
-    cursor.fail(field, "expected a shape (hbar, vbar, diag_down, diag_up, block), got " + quoted(line));
+    cursor.fail(field, "expected a shape (hbar, vbar, diag_down, diag_up, block), got " + quotedExcerpt(line));
   }
   const bool block = o.shape == Shape::Block;
   const std::size_t expected = block ? 5 : 4;
   if (tokens.size() != expected) {
-    cursor.fail(field, block ? "expected 'block X Y WIDTH HEIGHT', got " + quoted(line)
-                             : "expected '" + std::string(tokens[0]) + " X Y LENGTH', got " + quoted(line));
+    cursor.fail(field, block ? "expected 'block X Y WIDTH HEIGHT', got " + quotedExcerpt(line)
+                             : "expected '" + std::string(tokens[0]) + " X Y LENGTH', got " + quotedExcerpt(line));
   }
   o.x = parseInt(cursor, tokens[1], field, "x");
   o.y = parseInt(cursor, tokens[2], field, "y");
@@ -160,7 +104,7 @@ Obstacle parseObstacleLine(Cursor& cursor, int index, const Problem& p) {
   return o;
 }
 
-void parseGridRows(Cursor& cursor, const Problem& p) {
+void parseGridRows(LineCursor& cursor, const Problem& p) {
   auto tokens = keywordLine(cursor, "grid", 0, "grid");
   (void)tokens;
   const Grid decoded = decodeGrid(p);
@@ -245,15 +189,15 @@ std::string formatPpp(const Problem& p) {
 Problem parsePpp(const std::string& text, const std::string& source) {
   if (text.empty()) throw ParseError(source, 1, "magic", "empty file; expected 'ppp 1' on the first line");
   checkText(text, source);
-  Cursor cursor(text, source);
+  LineCursor cursor(text, source);
   {
     std::string_view line = cursor.require("magic", "'ppp 1'");
-    auto tokens = split(line);
+    auto tokens = splitFields(line);
     if (tokens.empty() || tokens[0] != kMagic) {
-      cursor.fail("magic", "expected 'ppp 1' (a .ppp file), got " + quoted(line));
+      cursor.fail("magic", "expected 'ppp 1' (a .ppp file), got " + quotedExcerpt(line));
     }
     if (tokens.size() != 2 || tokens[1] != "1") {
-      cursor.fail("version", "unsupported version " + quoted(line.substr(tokens[0].size())) +
+      cursor.fail("version", "unsupported version " + quotedExcerpt(line.substr(tokens[0].size())) +
                                  "; this reader understands 'ppp 1'");
     }
   }
@@ -293,10 +237,12 @@ Problem parsePpp(const std::string& text, const std::string& source) {
   for (;;) {
     std::string_view line = cursor.require("end", "'meta KEY VALUE' or 'end'");
     if (line == "end") break;
-    if (line.substr(0, 5) != "meta ") cursor.fail("meta", "expected 'meta KEY VALUE' or 'end', got " + quoted(line));
+    if (line.substr(0, 5) != "meta ") {
+      cursor.fail("meta", "expected 'meta KEY VALUE' or 'end', got " + quotedExcerpt(line));
+    }
     std::string_view rest = line.substr(5);
     const std::size_t space = rest.find(' ');
-    if (space == std::string_view::npos) cursor.fail("meta", "expected 'meta KEY VALUE', got " + quoted(line));
+    if (space == std::string_view::npos) cursor.fail("meta", "expected 'meta KEY VALUE', got " + quotedExcerpt(line));
     const std::string key(rest.substr(0, space));
     const std::string value(rest.substr(space + 1));
     try {
@@ -309,7 +255,7 @@ Problem parsePpp(const std::string& text, const std::string& source) {
   }
   std::string_view extra;
   while (cursor.next(&extra)) {
-    if (!split(extra).empty()) cursor.fail("end", "trailing data after 'end': " + quoted(extra));
+    if (!splitFields(extra).empty()) cursor.fail("end", "trailing data after 'end': " + quotedExcerpt(extra));
   }
   return p;
 }

@@ -138,6 +138,34 @@ Grid decodeGrid(const Problem& p) {
   return grid;
 }
 
+Problem problemFromGrid(const Grid& grid, Cell start, Cell goal) {
+  Problem p = Problem::empty(grid.width(), grid.height(), 0);
+  p.start = start;
+  p.goal = goal;
+  validateProblem(p);
+  if (grid.isObstacle(start)) throw InvalidArgument("start", "cell " + cellText(start) + " is an obstacle");
+  if (grid.isObstacle(goal)) throw InvalidArgument("goal", "cell " + cellText(goal) + " is an obstacle");
+  for (int y = 0; y < grid.height(); ++y) {
+    int x = 0;
+    while (x < grid.width()) {
+      if (!grid.isObstacle(Cell{x, y})) {
+        ++x;
+        continue;
+      }
+      const int begin = x;
+      while (x < grid.width() && grid.isObstacle(Cell{x, y})) ++x;
+      if (p.obstacles.size() >= static_cast<std::size_t>(kMaxObstacleBudget)) {
+        throw InvalidArgument("obstacles", "more than " + std::to_string(kMaxObstacleBudget) +
+                                               " horizontal obstacle runs; the map is too fragmented for an "
+                                               "obstacle budget");
+      }
+      p.obstacles.push_back(Obstacle{Shape::HorizontalBar, begin, y, x - begin, 1});
+    }
+  }
+  p.max_obstacles = static_cast<int>(p.obstacles.size());
+  return p;
+}
+
 const std::string* findMetadata(const Metadata& metadata, const std::string& key) {
   for (const auto& entry : metadata) {
     if (entry.first == key) return &entry.second;

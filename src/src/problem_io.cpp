@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/movingai_map.hpp"
 #include "ppp_core/ppp_file.hpp"
 
 namespace ppp {
@@ -22,7 +23,9 @@ Problem readProblemFile(const std::string& path, const MapImportOptions& map_opt
   const std::string extension = fileExtension(path);
   if (extension == ".ppp") return readPppFile(path);
   if (extension == ".yaml" || extension == ".yml") return readMapYaml(path, map_options);
-  throw InvalidArgument(path, "cannot read '" + extension + "' files; expected .ppp or .yaml (map_server)");
+  if (extension == ".map") return readMovingAiMap(path, map_options);
+  throw InvalidArgument(path,
+                        "cannot read '" + extension + "' files; expected .ppp, .yaml (map_server) or .map (MovingAI)");
 }
 
 void writeProblemFile(const Problem& problem, const std::string& path, const ProblemWriteOptions& options) {
@@ -35,8 +38,10 @@ void writeProblemFile(const Problem& problem, const std::string& path, const Pro
     writeProblemPng(problem, options.path, path, options.picture);
   } else if (extension == ".bt") {
     writeOctomap(problem, path, options.octomap);
+  } else if (extension == ".map") {
+    writeMovingAiMap(problem, path);
   } else {
-    throw InvalidArgument(path, "cannot write '" + extension + "' files; expected .ppp, .yaml, .png or .bt");
+    throw InvalidArgument(path, "cannot write '" + extension + "' files; expected .ppp, .yaml, .png, .bt or .map");
   }
 }
 

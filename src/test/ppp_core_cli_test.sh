@@ -17,6 +17,22 @@ check "the same seed draws the same PPP" 'cmp -s "$work/a.ppp" "$work/b.ppp"'
 check "evaluate prints JSON with the optimal turns" 'grep -q "\"turns\"" "$work/eval.json"'
 "$core" convert "$work/a.ppp" "$work/a.yaml" > /dev/null 2>&1
 check "convert writes map_server YAML and PGM" '[ -s "$work/a.yaml" ] && [ -s "$work/a.pgm" ]'
+"$core" convert "$work/a.ppp" "$work/a.map" > /dev/null 2>&1
+check "convert writes a MovingAI map" '[ "$(head -4 "$work/a.map" | tr "\n" " ")" = "type octile height 9 width 12 map " ]'
+"$core" convert "$work/a.map" "$work/from_map.ppp" > /dev/null 2>&1
+"$core" convert "$work/from_map.ppp" "$work/again.map" > /dev/null 2>&1
+check "a .map read and written again is the same map" 'cmp -s "$work/a.map" "$work/again.map"'
+check "a .map's first and last free cells are start and goal" \
+  'grep -qx "start 0 0" "$work/from_map.ppp" && grep -qx "goal 11 8" "$work/from_map.ppp"'
+printf 'type octile\nheight 2\nwidth 3\nmap\n.@.\n.T.\n' > "$work/walled.map"
+"$core" convert "$work/walled.map" "$work/walled.ppp" --start 0,1 --goal 2,0 > /dev/null 2>&1
+check "--start and --goal choose a .map's start and goal" \
+  'grep -qx "start 0 1" "$work/walled.ppp" && grep -qx "goal 2 0" "$work/walled.ppp"'
+printf 'type octile\nheight 2\nwidth 3\nmap\n.@.\n.x.\n' > "$work/bad.map"
+"$core" convert "$work/bad.map" "$work/bad.ppp" > "$work/err" 2>&1
+status=$?
+check "a bad .map is an error naming file, line and field" \
+  '[ "$status" -ne 0 ] && grep -q "bad.map:6: map: unknown terrain character" "$work/err" && [ ! -e "$work/bad.ppp" ]'
 "$core" --help > "$work/help" 2>&1
 check "help lists the core's subcommands only" \
   'grep -q "random" "$work/help" && grep -q "convert" "$work/help" && ! grep -q "generate" "$work/help"'

@@ -53,7 +53,7 @@ struct GeneratorOptions {
   int max_obstacles = 10;           ///< Obstacle budget: most descriptors per chromosome, >= 0.
   RandomObstacleOptions obstacle_shapes;  ///< Size limits of random descriptors.
   std::uint64_t seed = 1;           ///< Seed of every random choice of the run.
-  std::string characters = "extended";  ///< Character set of the taxonomy (wei or extended).
+  std::string characters = "extended";  ///< Character set of the taxonomy (wei, extended or barn).
   std::string replacement = kCrowdingReplacement;  ///< kCrowdingReplacement or kTournamentReplacement.
   int crowding_window = 20;         ///< Pool members a child is compared with under crowding (capped at the pool).
   std::vector<std::string> agents;  ///< Failure fitness: the panel's agent names.

@@ -17,7 +17,9 @@ namespace generator {
 /// The range of a taxonomic character that the archive divides into bins; values outside it fall into the
 /// first or last bin. Visibilities, opennesses, obstacle_use and one_turn: [0, 1]; turns: [0, W+H];
 /// advances: [|dx|+|dy| of start to goal, W·H/2]; turns_plus_advances: that plus W+H at the top;
-/// obstacles: [0, max_obstacles]; difficulty: [0, the sum of the weights].
+/// obstacles: [0, max_obstacles]; difficulty: [0, the sum of the weights]; BARN's: closest obstacle
+/// [0, min(W,H)/2], visibility [0, max(W,H)/2], dispersion [0, 8], characteristic dimension [0, min(W,H)],
+/// tortuosity the advances' range over the start-to-goal distance.
 struct FeatureRange {
   double low = 0;   ///< Lower end (first bin starts here).
   double high = 1;  ///< Upper end (last bin ends here).

@@ -13,18 +13,27 @@ namespace ppp::generator {
 enum class CharacterSet {
   Wei,       ///< Wei's four: turns, advances, turns_plus_advances, obstacles.
   Extended,  ///< All fourteen characters of ppp::characterNames().
+  Barn,      ///< BARN's five metrics, ppp::barnCharacterNames(), measured on the PPPs' grids.
 };
 
-/// Parses "wei" or "extended". @throws InvalidArgument naming "characters" for any other name.
+/// Parses "wei", "extended" or "barn". @throws InvalidArgument naming "characters" for any other name.
 CharacterSet parseCharacterSet(const std::string& name);
-/// The set's keyword ("wei" or "extended").
+/// The set's keyword ("wei", "extended" or "barn").
 const char* characterSetName(CharacterSet set);
-/// Names of the set's characters, in column order of characterMatrix().
+/// Names of the set's characters, in column order of characterMatrix() or barnCharacterMatrix().
 std::vector<std::string> characterSetNames(CharacterSet set);
+/// Every character a PPP can be described by (the archive's features): ppp::characterNames(), then
+/// ppp::barnCharacterNames().
+const std::vector<std::string>& availableCharacterNames();
 
-/// One row per PPP, one column per character of the set (raw values from ppp::characterVector()).
-/// @throws InvalidArgument naming "evaluations" when a PPP is invalid (goal unreachable).
+/// One row per PPP, one column per character of the Wei or Extended set (raw values from ppp::characterVector()).
+/// @throws InvalidArgument naming "evaluations" when a PPP is invalid (goal unreachable), "characters" for the
+/// Barn set (measured on the grids: barnCharacterMatrix()).
 Eigen::MatrixXd characterMatrix(const std::vector<ppp::Evaluation>& evaluations, CharacterSet set);
+
+/// One row per PPP, one column per BARN metric (ppp::barnMetrics() with default options, along its DPA route).
+/// @throws InvalidArgument naming "problems" when a PPP is invalid (goal unreachable).
+Eigen::MatrixXd barnCharacterMatrix(const std::vector<ppp::Problem>& problems);
 
 /// Min-max scales every column to [0, 1]; a constant column becomes all 0.
 /// @throws InvalidArgument naming "characters" for a NaN or infinite value.

@@ -34,10 +34,11 @@ struct MapYamlOptions {
   void validate() const;
 };
 
-/// Choices for importing a foreign map (one without the ppp_* keys); ignored for maps PPP Lab wrote.
+/// Choices for importing a foreign map: a map_server map without the ppp_* keys (ignored for maps PPP Lab wrote
+/// with them) or a MovingAI `.map`.
 struct MapImportOptions {
-  std::optional<Cell> start;  ///< Start cell in grid coordinates; default top-left (0, 0).
-  std::optional<Cell> goal;   ///< Goal cell in grid coordinates; default bottom-right (W-1, H-1).
+  std::optional<Cell> start;  ///< Start cell in grid coordinates; default top-left (0, 0), in a .map the first free.
+  std::optional<Cell> goal;   ///< Goal cell in grid coordinates; default bottom-right, in a .map the last free.
 };
 
 /// A map_server map in memory: the YAML text and the bytes of the PGM image it names.

@@ -73,6 +73,12 @@ void validateProblem(const Problem& problem);
 /// Paints the descriptors onto an empty grid, skipping the protected start and goal cells.
 Grid decodeGrid(const Problem& problem);
 
+/// The problem painting exactly `grid` (the inverse of decodeGrid for an imported map): one hbar per horizontal run
+/// of obstacle cells, row by row, max_obstacles their count, no metadata.
+/// @throws InvalidArgument naming the field for a bad size, a start or goal off the grid, on an obstacle or equal,
+/// and "obstacles" when the grid holds more than kMaxObstacleBudget runs (checked as they are collected).
+Problem problemFromGrid(const Grid& grid, Cell start, Cell goal);
+
 /// The value stored under `key`, or nullptr.
 const std::string* findMetadata(const Metadata& metadata, const std::string& key);
 /// Sets `key` to `value`, replacing an existing entry in place or appending a new one.

@@ -18,11 +18,11 @@ struct ProblemWriteOptions {
   OctomapOptions octomap;      ///< For .bt.
 };
 
-/// Reads a problem from a `.ppp` or map_server `.yaml` file, chosen by extension.
+/// Reads a problem from a `.ppp`, map_server `.yaml` or MovingAI `.map` file, chosen by extension.
 /// @throws InvalidArgument for another extension; IoError, ParseError from the readers.
 Problem readProblemFile(const std::string& path, const MapImportOptions& map_options = {});
 
-/// Writes a problem as `.ppp`, `.yaml` (+ `.pgm`), `.png` or `.bt` (OctoMap), chosen by extension.
+/// Writes a problem as `.ppp`, `.yaml` (+ `.pgm`), `.png`, `.bt` (OctoMap) or `.map` (MovingAI), chosen by extension.
 /// @throws InvalidArgument for another extension or bad options; IoError from the writers.
 void writeProblemFile(const Problem& problem, const std::string& path, const ProblemWriteOptions& options = {});
 
