@@ -11,6 +11,8 @@ namespace cli {
 void addSimulateCommand(CLI::App& app);
 /// Adds `ppp replay`: one episode drawn as a picture.
 void addReplayCommand(CLI::App& app);
+/// Adds `ppp scenarios`: one agent on every scenario of a MovingAI .scen file.
+void addScenariosCommand(CLI::App& app);
 /// Adds `ppp experiment`: the full experiment with resume and report.
 void addExperimentCommand(CLI::App& app);
 /// Adds `ppp compare`: Mann-Whitney comparison of two sets' pass rates.

@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   ppp::cli::addGeneratorCommands(app, failureFitness);
   ppp::cli::addSimulateCommand(app);
   ppp::cli::addReplayCommand(app);
+  ppp::cli::addScenariosCommand(app);
   ppp::cli::addExperimentCommand(app);
   ppp::cli::addCompareCommand(app);
   ppp::cli::addLaunchFileCommand(app);

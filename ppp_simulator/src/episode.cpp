@@ -11,19 +11,13 @@
 namespace ppp {
 namespace simulator {
 
-namespace {
-
-constexpr int kMaxBudget = 1000000;
-
-}  // namespace
-
 void EpisodeOptions::validate() const { checkOptionRanges(episodeOptionSpecs(), *this); }
 
 const std::vector<OptionSpec<EpisodeOptions>>& episodeOptionSpecs() {
   using E = EpisodeOptions;
   static const std::vector<OptionSpec<E>> specs = {
       declareOption("budget", "moves per episode before it fails", +[](E& e) -> int& { return e.budget; },
-                    Bounds{1, kMaxBudget}),
+                    Bounds{1, kMaxEpisodeBudget}),
       declareOption("sensor_range", "scan radius in cells (2: a 5x5 window)",
                     +[](E& e) -> int& { return e.sensor_range; }, Bounds{1, kMaxSensorRange}),
   };

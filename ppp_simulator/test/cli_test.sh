@@ -5,7 +5,7 @@ ppp="$1"
 config_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../config" && pwd)"
 source "$(dirname "${BASH_SOURCE[0]}")/cli_harness.sh"
 
-for sub in random evaluate convert generate tree select export; do
+for sub in random evaluate convert generate tree select export scenarios; do
   expect_ok "help $sub" "$ppp" "$sub" --help
   grep -q "Usage" "$work/out" && pass || fail "help $sub has no usage"
 done
@@ -111,6 +111,25 @@ expect_ok "export yaml" "$ppp" export "$work/set_a" "$work/exported_yaml" --form
 [ "$(ls "$work/exported_yaml"/*.pgm | wc -l)" -eq 12 ] && pass || fail "export --format yaml did not write 12 maps"
 expect_error "export unknown format" "--format: cannot export to '.gif'" "$ppp" export "$work/set_a" "$work/x" --format gif
 expect_error "export no set" "set.csv" "$ppp" export "$work/nothing" "$work/x"
+
+# --- scenarios: the exported set's own .scen, then MovingAI's arena map
+expect_ok "scenarios on an export" "$ppp" scenarios "$work/exported/set_a.scen" --agent astar
+grep -q "^astar on .*: 12 of 12 scenarios passed" "$work/out" && pass || fail "astar did not pass every exported PPP"
+arena="$(dirname "${BASH_SOURCE[0]}")/../../src/test/data/movingai/arena.map.scen"
+expect_ok "scenarios json" "$ppp" scenarios "$arena" --agent astar --json
+python3 -c "
+import json, sys
+j = json.load(open(sys.argv[1]))
+s = j['scenarios']
+assert len(s) == 130 and j['totals']['passed'] == 130, j['totals']
+assert s[0] == {'bucket': 0, 'start': [19, 26], 'goal': [19, 29], 'optimal_length': 3.0, 'path_length': 3,
+                'passed': True, 'steps': 3, 'seed': s[0]['seed']}, s[0]
+assert all(x['path_length'] >= x['optimal_length'] - 1e-9 for x in s)
+" "$work/out" && pass || fail "scenarios --json: $(head -c 300 "$work/out")"
+cp "$arena" "$work/lonely.scen"
+expect_error "scenarios map missing" "map 'arena.map' not found" "$ppp" scenarios "$work/lonely.scen" --agent astar
+expect_ok "scenarios --map-dir" "$ppp" scenarios "$work/lonely.scen" --agent astar --map-dir "$(dirname "$arena")"
+expect_error "scenarios no file" "cannot open" "$ppp" scenarios "$work/none.scen" --agent astar
 
 # Bad options fail validation before any work, so these runs use the shipped defaults otherwise.
 expect_error "unknown fitness" "fitness: unknown fitness 'hardness'; valid: turns, advances" \

@@ -13,6 +13,9 @@
 namespace ppp {
 namespace simulator {
 
+/// Largest move budget of an episode.
+constexpr int kMaxEpisodeBudget = 1000000;
+
 /// Rules of one episode besides the agent's own handicaps.
 struct EpisodeOptions {
   int budget = 300;       ///< Most actions before the episode fails.
