@@ -33,10 +33,11 @@ namespace protocol = ppp::protocol;
 /// Walks one ScanBatch (ppp_msgs/msg/ScanBatch.msg); false when it does not fit in the bytes left.
 bool walkScanBatch(ppp::fuzz::WireWalker* w) {
   std::uint32_t starts = 0;
-  const std::size_t least_start = 4 + 4 + 4 + 8 + 8 + 8 + 4;  // episode, size, start, goal, seed, prior_map length
+  // episode, size, start, goal, seed, prior_map length, connectivity
+  const std::size_t least_start = 4 + 4 + 4 + 8 + 8 + 8 + 4 + 1;
   if (!w->header() || !w->array(1) || !w->fixed(4) || !w->fixed(1) || !w->length(least_start, &starts)) return false;
   for (std::uint32_t i = 0; i < starts; ++i) {
-    if (!w->fixed(least_start - 4) || !w->array(1)) return false;
+    if (!w->fixed(4 + 4 + 4 + 8 + 8 + 8) || !w->array(1) || !w->fixed(1)) return false;
   }
   return w->array(4) && w->array(4) && w->array(8) && w->array(1) && w->array(1);
 }

@@ -10,6 +10,10 @@ const char* actionName(Action action) {
     case Action::East: return "east";
     case Action::South: return "south";
     case Action::West: return "west";
+    case Action::NorthEast: return "north_east";
+    case Action::SouthEast: return "south_east";
+    case Action::SouthWest: return "south_west";
+    case Action::NorthWest: return "north_west";
   }
   return "unknown";
 }

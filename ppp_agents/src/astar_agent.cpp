@@ -6,18 +6,23 @@
 #include <string>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/octile.hpp"
 
 namespace ppp {
 namespace agents {
 
 namespace {
 
-/// The move from a cell to one of its 4-neighbours.
+/// The move from a cell to one of its 8-neighbours.
 Action moveBetween(Cell from, Cell to) {
-  if (to.x > from.x) return Action::East;
-  if (to.x < from.x) return Action::West;
-  if (to.y > from.y) return Action::South;
-  if (to.y < from.y) return Action::North;
+  const int dx = (to.x > from.x) - (to.x < from.x);
+  const int dy = (to.y > from.y) - (to.y < from.y);
+  for (Action move : kMoves) {
+    if (offset(move) == Cell{dx, dy}) return move;
+  }
+  for (Action move : kDiagonalMoves) {
+    if (offset(move) == Cell{dx, dy}) return move;
+  }
   return Action::Stay;
 }
 
@@ -35,6 +40,7 @@ void AstarAgent::reset(const EpisodeInfo& info) {
   }
   map_ = info.prior_map;
   own_map_ = false;
+  connectivity_ = info.connectivity;
   goal_ = info.goal;
   plan(*map_, info.start, goal_, &plan_);
   next_ = 0;
@@ -69,6 +75,11 @@ bool AstarAgent::plan(const Grid& grid, Cell from, Cell goal, std::vector<Action
   plan->clear();
   if (!grid.isFree(from) || !grid.isFree(goal)) return false;
   if (from == goal) return true;
+  if (connectivity_ == 8) {  // octile-optimal: 1 per straight move, sqrt(2) per diagonal, no corner cut
+    const OctileRoute route = shortestOctileRoute(grid, from, goal);
+    for (std::size_t i = 1; i < route.cells.size(); ++i) plan->push_back(moveBetween(route.cells[i - 1], route.cells[i]));
+    return route.length >= 0;
+  }
   const auto cells = static_cast<std::size_t>(grid.size());
   g_.assign(cells, INT_MAX);
   parent_.assign(cells, -1);

@@ -23,7 +23,7 @@ ScanRequest scan(std::uint32_t id, int step, bool starting, bool prior_map) {
   s.cells = {kScanOutOfBounds, kScanFree, kScanObstacle, kScanUnknown, kScanFree,
              kScanFree,        kScanFree, kScanFree,     static_cast<std::int8_t>(id)};
   if (starting) {
-    EpisodeStart start{4, 5, Cell{0, 1}, Cell{3, 4}, 0x123456789abcdefULL + id, {}};
+    EpisodeStart start{4, 5, Cell{0, 1}, Cell{3, 4}, 0x123456789abcdefULL + id, {}, id % 2 == 1 ? 8 : 4};
     if (prior_map) {
       start.prior_map.assign(20, kScanFree);
       start.prior_map[7] = kScanObstacle;
@@ -49,6 +49,7 @@ void expectSameScan(const ScanRequest& got, const ScanRequest& sent, bool window
   EXPECT_EQ(got.start->goal, sent.start->goal);
   EXPECT_EQ(got.start->agent_seed, sent.start->agent_seed);
   EXPECT_EQ(got.start->prior_map, sent.start->prior_map);
+  EXPECT_EQ(got.start->connectivity, sent.start->connectivity);
 }
 
 TEST(BatchCodecTest, ScansSurviveTheRoundTripWithEveryField) {
@@ -116,6 +117,8 @@ TEST(BatchCodecTest, MalformedScanBatchesAreRefusedNamingTheField) {
   EXPECT_EQ(broken([](auto& m) { m.starts[0].prior_map.pop_back(); }), "prior_map");
   EXPECT_EQ(broken([](auto& m) { m.starts[0].prior_map[2] = kScanUnknown; }), "prior_map");
   EXPECT_EQ(broken([](auto& m) { m.starts[0].episode = 99; }), "starts");
+  EXPECT_EQ(broken([](auto& m) { m.starts[0].connectivity = 6; }), "connectivity");
+  EXPECT_EQ(broken([](auto& m) { m.starts[0].connectivity = 0; }), "no error");  // a sender without the field: 4
 }
 
 TEST(BatchCodecTest, MovesAndFailuresSurviveTheRoundTrip) {

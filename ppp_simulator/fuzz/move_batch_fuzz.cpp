@@ -40,7 +40,7 @@ const std::vector<sim::PreparedSet>& laneSets() {
       problems.push_back(p);
     }
     return std::vector<sim::PreparedSet>{
-        sim::prepareSet("fuzz", ppp::generator::problemSetFromProblems(problems, {}, "fuzz"), 2)};
+        sim::prepareSet("fuzz", ppp::generator::problemSetFromProblems(problems, {}, "fuzz"), sim::EpisodeOptions{})};
   }();
   return sets;
 }

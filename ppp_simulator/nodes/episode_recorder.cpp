@@ -195,7 +195,7 @@ void EpisodeRecorder::recordResults(const std::vector<EpisodeResult>& results) {
     m.passed = r.passed;
     m.steps = static_cast<std::uint32_t>(r.steps);
     m.bumps = static_cast<std::uint32_t>(r.bumps);
-    m.path_length = static_cast<std::uint32_t>(r.path_length);
+    m.path_length = r.path_length;
     m.optimal_length = r.optimal_length;
     m.reason = r.reason;
     pending_results_.results.push_back(std::move(m));

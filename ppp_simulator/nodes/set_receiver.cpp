@@ -28,7 +28,7 @@ PreparedSet prepareReceived(const SetSpec& spec, const ppp_msgs::ProblemSet& mes
   for (const ppp_msgs::Problem& m : message.problems) problems.push_back(ppp_msgs::fromMessage(m));
   PreparedSet set = prepareSet(
       spec.name, generator::problemSetFromProblems(std::move(problems), spec.generator->weights, topic),
-      config.episode.sensor_range);
+      config.episode);
   set.directory = output_dir + "/sets/" + spec.name;  // where the generator node wrote its trees
   return set;
 }
@@ -94,7 +94,7 @@ ReceivedSets receiveSets(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const
       result.sets.push_back(prepareReceived(spec, result.messages.back(), config, parameters.output_dir));
     } else {
       result.sets.push_back(prepareSet(spec.name, generator::readProblemSetDirectory(spec.directory),
-                                       config.episode.sensor_range));
+                                       config.episode));
       result.sets.back().directory = spec.directory;
       result.messages.push_back(ppp_msgs::toSetMessage(spec.name, result.sets.back().set.problems,
                                                          result.sets.back().set.ids, parameters.resolution));

@@ -50,7 +50,7 @@ void AgentLane::scans(std::vector<ScanRequest>* requests) {
     const std::uint64_t seed = seed_of_(work.set, work.problem, work.run);
     active_.push_back({next_id_++, work, seed,
                        Episode(set.set.problems[work.problem], set.grids[work.problem], sensor_, seed, options_.budget,
-                               false, windowsOf(set, work.problem)),
+                               options_.connectivity, false, windowsOf(set, work.problem)),
                        false});
   }
   requests->resize(active_.size());
@@ -77,8 +77,8 @@ void AgentLane::scans(std::vector<ScanRequest>* requests) {
     if (!a.started) {
       const PreparedSet& set = sets_[a.work.set];
       const Grid& grid = set.grids[a.work.problem];
-      const agents::EpisodeInfo info = episodeInfo(set.set.problems[a.work.problem], grid, config_, a.seed);
-      EpisodeStart start{info.width, info.height, info.start, info.goal, info.seed, {}};
+      const agents::EpisodeInfo info = episodeInfo(set.set.problems[a.work.problem], grid, config_, a.seed, options_.connectivity);
+      EpisodeStart start{info.width, info.height, info.start, info.goal, info.seed, {}, info.connectivity};
       if (info.prior_map != nullptr) start.prior_map = protocol::priorMapCells(grid);
       r.start = std::move(start);
       a.started = true;
@@ -119,7 +119,7 @@ std::vector<EpisodeResult> AgentLane::answer(const std::vector<MoveReply>& moves
       a.episode.fail(missing_reason);
     } else if (move->failure != nullptr) {
       a.episode.fail(move->failure);
-    } else if (static_cast<int>(move->step) != a.episode.step() || !agents::isAction(move->action)) {
+    } else if (static_cast<int>(move->step) != a.episode.step() || !agents::isAction(move->action, options_.connectivity)) {
       a.episode.fail(reason::kInvalidAction);
     } else {
       a.episode.apply(static_cast<agents::Action>(move->action));

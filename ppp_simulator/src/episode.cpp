@@ -3,6 +3,7 @@
 #include <string>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/octile.hpp"
 #include "ppp_core/option_yaml.hpp"
 #include "ppp_core/sensor.hpp"
 #include "ppp_core/rng.hpp"
@@ -11,7 +12,12 @@
 namespace ppp {
 namespace simulator {
 
-void EpisodeOptions::validate() const { checkOptionRanges(episodeOptionSpecs(), *this); }
+void EpisodeOptions::validate() const {
+  checkOptionRanges(episodeOptionSpecs(), *this);
+  if (connectivity != 4 && connectivity != 8) {
+    throw InvalidArgument("connectivity", "expected 4 or 8, got " + std::to_string(connectivity));
+  }
+}
 
 const std::vector<OptionSpec<EpisodeOptions>>& episodeOptionSpecs() {
   using E = EpisodeOptions;
@@ -20,8 +26,16 @@ const std::vector<OptionSpec<EpisodeOptions>>& episodeOptionSpecs() {
                     Bounds{1, kMaxEpisodeBudget}),
       declareOption("sensor_range", "scan radius in cells (2: a 5x5 window)",
                     +[](E& e) -> int& { return e.sensor_range; }, Bounds{1, kMaxSensorRange}),
+      declareOption("connectivity",
+                    "move model: 4 (stay and the four straight moves) or 8 (also the diagonals, never cutting a "
+                    "corner); agents other than astar move 4-connected either way",
+                    +[](E& e) -> int& { return e.connectivity; }, Bounds{4, 8}),
   };
   return specs;
+}
+
+double pathLength(const EpisodeOutcome& outcome) {
+  return outcome.path_length + outcome.diagonal_moves * (kDiagonalCost - 1);
 }
 
 std::uint64_t agentSeed(std::uint64_t run_seed) { return deriveSeed(run_seed, {1}); }
@@ -29,13 +43,14 @@ std::uint64_t agentSeed(std::uint64_t run_seed) { return deriveSeed(run_seed, {1
 std::uint64_t noiseSeed(std::uint64_t run_seed) { return deriveSeed(run_seed, {2}); }
 
 Episode::Episode(const Problem& problem, const Grid& grid, const SensorModel& sensor, std::uint64_t run_seed,
-                 int budget, bool record_path, const WindowAtlas* windows)
+                 int budget, int connectivity, bool record_path, const WindowAtlas* windows)
     : problem_(&problem),
       grid_(&grid),
       sensor_(&sensor),
       windows_(windows),
       noise_seed_(noiseSeed(run_seed)),
       budget_(budget),
+      connectivity_(connectivity),
       record_path_(record_path),
       position_(problem.start) {
   if (record_path_) outcome_.path.push_back(position_);
@@ -49,11 +64,16 @@ void Episode::apply(agents::Action action) {
   if (done_) return;
   ++outcome_.steps;
   bumped_ = false;
+  if (agents::isDiagonal(action) && connectivity_ != 8) {
+    fail(reason::kInvalidAction);
+    return;
+  }
   if (action != agents::Action::Stay) {
-    const Cell next = agents::target(position_, action);
-    if (grid_->isFree(next)) {
-      position_ = next;
+    const Cell d = agents::offset(action);
+    if (octileMoveAllowed(*grid_, position_, d.x, d.y)) {  // a straight move: the target is free
+      position_ = Cell{position_.x + d.x, position_.y + d.y};
       ++outcome_.path_length;
+      if (d.x != 0 && d.y != 0) ++outcome_.diagonal_moves;
       if (record_path_) outcome_.path.push_back(position_);
     } else {
       bumped_ = true;
@@ -78,8 +98,9 @@ void Episode::fail(const char* why) {
 }
 
 agents::EpisodeInfo episodeInfo(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
-                                std::uint64_t run_seed) {
+                                std::uint64_t run_seed, int connectivity) {
   agents::EpisodeInfo info;
+  info.connectivity = connectivity;
   info.width = grid.width();
   info.height = grid.height();
   info.start = problem.start;
@@ -96,8 +117,8 @@ EpisodeRunner::EpisodeRunner(const agents::AgentConfig& config, const EpisodeOpt
 
 EpisodeOutcome EpisodeRunner::run(const Problem& problem, const Grid& grid, agents::Agent& agent,
                                   std::uint64_t run_seed, bool record_path, const WindowAtlas* windows) {
-  agent.reset(episodeInfo(problem, grid, config_, run_seed));
-  Episode episode(problem, grid, sensor_, run_seed, options_.budget, record_path, windows);
+  agent.reset(episodeInfo(problem, grid, config_, run_seed, options_.connectivity));
+  Episode episode(problem, grid, sensor_, run_seed, options_.budget, options_.connectivity, record_path, windows);
   while (!episode.done()) episode.apply(agent.act(episode.scan()));
   return episode.outcome();
 }

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <charconv>
+#include <cstdio>
 
 #include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
@@ -20,6 +21,17 @@ T parseNumber(std::string_view text, const std::string& source, int line, const 
   const auto result = std::from_chars(text.data(), end, value);
   if (text.empty() || result.ec != std::errc() || result.ptr != end) {
     throw ParseError(source, line, field, "expected a whole number, got '" + std::string(text) + "'");
+  }
+  return value;
+}
+
+/// A path or optimal length: a whole number, or one with decimals (diagonal moves).
+double parseLength(std::string_view text, const std::string& source, int line, const char* field) {
+  double value = 0;
+  const char* end = text.data() + text.size();
+  const auto result = std::from_chars(text.data(), end, value);
+  if (text.empty() || result.ec != std::errc() || result.ptr != end || !(value >= -1 && value < 1e15)) {
+    throw ParseError(source, line, field, "expected a length, got '" + std::string(text) + "'");
   }
   return value;
 }
@@ -43,8 +55,8 @@ EpisodeResult rowFromFields(const Field* f, std::size_t count, const std::string
   r.passed = f[5] == "1";
   r.steps = parseNumber<int>(f[6], source, line, "steps");
   r.bumps = parseNumber<int>(f[7], source, line, "bumps");
-  r.path_length = parseNumber<int>(f[8], source, line, "path_length");
-  r.optimal_length = parseNumber<int>(f[9], source, line, "optimal_length");
+  r.path_length = parseLength(f[8], source, line, "path_length");
+  r.optimal_length = parseLength(f[9], source, line, "optimal_length");
   r.reason = f[10];
   return r;
 }
@@ -64,6 +76,24 @@ void appendNumber(T value, std::string* out) {
   out->append(digits, result.ptr);
 }
 
+/// A length as results.csv writes it: a whole number as such (every length of the 4-connected model), else with
+/// eight decimals, as MovingAI's scenario files do.
+void appendLength(double value, std::string* out) {
+  char digits[48];
+  const auto whole = static_cast<long long>(value);
+  if (static_cast<double>(whole) == value) {
+    out->append(digits, std::to_chars(digits, digits + sizeof digits, whole).ptr);
+  } else {
+    out->append(digits, static_cast<std::size_t>(std::snprintf(digits, sizeof digits, "%.8f", value)));
+  }
+}
+
+std::string lengthText(double value) {
+  std::string text;
+  appendLength(value, &text);
+  return text;
+}
+
 }  // namespace
 
 const std::vector<std::string>& resultCsvHeader() {
@@ -81,8 +111,8 @@ std::vector<std::string> toCsvFields(const EpisodeResult& r) {
           r.passed ? "1" : "0",
           std::to_string(r.steps),
           std::to_string(r.bumps),
-          std::to_string(r.path_length),
-          std::to_string(r.optimal_length),
+          lengthText(r.path_length),
+          lengthText(r.optimal_length),
           r.reason};
 }
 
@@ -105,9 +135,9 @@ void appendCsvRow(const EpisodeResult& r, std::string* out) {
   *out += ',';
   appendNumber(r.bumps, out);
   *out += ',';
-  appendNumber(r.path_length, out);
+  appendLength(r.path_length, out);
   *out += ',';
-  appendNumber(r.optimal_length, out);
+  appendLength(r.optimal_length, out);
   *out += ',';
   appendText(r.reason, out);
   *out += '\n';

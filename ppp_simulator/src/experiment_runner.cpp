@@ -9,6 +9,7 @@
 
 #include "ppp_core/dpa.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/octile.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_simulator/canonical_order.hpp"
@@ -59,7 +60,7 @@ EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::stri
   r.passed = outcome.passed;
   r.steps = outcome.steps;
   r.bumps = outcome.bumps;
-  r.path_length = outcome.path_length;
+  r.path_length = pathLength(outcome);
   r.optimal_length = set.optimal[problem];
   r.reason = outcome.reason;
   return r;
@@ -90,7 +91,8 @@ void checkExperimentDirectory(const ExperimentConfig& config, const std::string&
                          std::to_string(line) + "); use another output directory");
 }
 
-PreparedSet prepareSet(const std::string& name, generator::ProblemSet set, int sensor_range) {
+PreparedSet prepareSet(const std::string& name, generator::ProblemSet set, const EpisodeOptions& episode) {
+  const int sensor_range = episode.sensor_range;
   PreparedSet p;
   p.name = name;
   p.set = std::move(set);
@@ -99,7 +101,9 @@ PreparedSet prepareSet(const std::string& name, generator::ProblemSet set, int s
     p.grids.push_back(decodeGrid(problem));
     const DpaResult& result = dpa.solve(p.grids.back(), problem.start, problem.goal);
     if (!result.reachable) throw InvalidArgument("sets", "set '" + name + "' holds an unsolvable PPP");
-    p.optimal.push_back(result.advances);
+    p.optimal.push_back(episode.connectivity == 8
+                            ? shortestOctileRoute(p.grids.back(), problem.start, problem.goal).length
+                            : static_cast<double>(result.advances));
     p.windows.push_back(WindowAtlas::bytes(p.grids.back(), sensor_range) <= kMaxWindowAtlasBytes
                             ? std::optional<WindowAtlas>(std::in_place, p.grids.back(), sensor_range)
                             : std::nullopt);
@@ -127,7 +131,7 @@ std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::
         say(log, "set '" + spec.name + "': " + evolved.summary);
       }
     }
-    PreparedSet p = prepareSet(spec.name, generator::readProblemSetDirectory(set_dir), config.episode.sensor_range);
+    PreparedSet p = prepareSet(spec.name, generator::readProblemSetDirectory(set_dir), config.episode);
     p.directory = set_dir;
     prepared.push_back(std::move(p));
   }

@@ -25,7 +25,7 @@ HuntEvaluation::HuntEvaluation(const std::vector<Problem>& problems, const std::
     set.problems.push_back(problems[i]);
   }
   try {
-    sets_.push_back(prepareSet("candidates", std::move(set), episode.sensor_range));
+    sets_.push_back(prepareSet("candidates", std::move(set), episode));
   } catch (const InvalidArgument& e) {
     throw InvalidArgument("problems", e.what());
   }

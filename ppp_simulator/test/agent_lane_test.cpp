@@ -52,9 +52,10 @@ std::vector<EpisodeResult> playLane(AgentLane& lane) {
 }
 
 /// The in-process runner's results for the same runs.
-std::vector<EpisodeResult> inProcess(const agents::AgentConfig& c, int runs) {
+std::vector<EpisodeResult> inProcess(const agents::AgentConfig& c, int runs,
+                                     const EpisodeOptions& options = EpisodeOptions{}) {
   std::vector<EpisodeResult> results;
-  EpisodeRunner runner(c, EpisodeOptions{});
+  EpisodeRunner runner(c, options);
   auto agent = agents::makeAgent(c);
   for (const PreparedSet& set : smallSets()) {
     for (std::size_t p = 0; p < set.set.problems.size(); ++p) {
@@ -69,7 +70,7 @@ std::vector<EpisodeResult> inProcess(const agents::AgentConfig& c, int runs) {
         r.passed = o.passed;
         r.steps = o.steps;
         r.bumps = o.bumps;
-        r.path_length = o.path_length;
+        r.path_length = pathLength(o);
         r.optimal_length = set.optimal[p];
         r.reason = o.reason;
         results.push_back(r);
@@ -101,6 +102,35 @@ TEST(AgentLaneTest, BatchedPlayEqualsTheInProcessRunnerForEveryAgentAndBatchSize
       }
     }
   }
+}
+
+TEST(AgentLaneTest, BatchedPlayEqualsTheInProcessRunnerUnderConnectivityEight) {
+  EpisodeOptions octile;
+  octile.connectivity = 8;
+  for (const agents::AgentConfig& c : {config("astar"), config("random")}) {
+    auto expected = inProcess(c, 4, octile);
+    sortRows(&expected);
+    AgentLane lane(c, octile, smallSets(), 5, 4, {}, 9);
+    auto got = playLane(lane);
+    sortRows(&got);
+    ASSERT_EQ(got.size(), expected.size());
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      EXPECT_EQ(toCsvFields(got[i]), toCsvFields(expected[i])) << c.name << " row " << i;
+    }
+  }
+  // Sets prepared for connectivity 8 carry octile optimal lengths, which astar's lane meets exactly.
+  std::vector<PreparedSet> octile_sets;
+  for (const PreparedSet& set : smallSets()) octile_sets.push_back(prepareSet(set.name, set.set, octile));
+  AgentLane lane(config("astar"), octile, octile_sets, 5, 1, {}, 9);
+  int shorter = 0;
+  for (const EpisodeResult& r : playLane(lane)) {
+    EXPECT_TRUE(r.passed);
+    EXPECT_NEAR(r.path_length, r.optimal_length, 1e-9) << r.set << " " << r.problem;
+    const PreparedSet& four = smallSets()[r.set == smallSets()[0].name ? 0 : 1];
+    const auto p = std::find(four.set.ids.begin(), four.set.ids.end(), r.problem) - four.set.ids.begin();
+    shorter += r.optimal_length < four.optimal[static_cast<std::size_t>(p)] ? 1 : 0;
+  }
+  EXPECT_GT(shorter, 0);  // diagonals shorten some routes
 }
 
 TEST(AgentLaneTest, FaultsFailOnlyTheirEpisodes) {

@@ -126,6 +126,14 @@ assert s[0] == {'bucket': 0, 'start': [19, 26], 'goal': [19, 29], 'optimal_lengt
                 'passed': True, 'steps': 3, 'seed': s[0]['seed']}, s[0]
 assert all(x['path_length'] >= x['optimal_length'] - 1e-9 for x in s)
 " "$work/out" && pass || fail "scenarios --json: $(head -c 300 "$work/out")"
+expect_ok "scenarios connectivity 8" "$ppp" scenarios "$arena" --agent astar --connectivity 8 --json
+python3 -c "
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j['connectivity'] == 8 and j['totals']['passed'] == 130, j['totals']
+assert all(abs(x['path_length'] - x['optimal_length']) < 1e-3 for x in j['scenarios'])
+" "$work/out" && pass || fail "astar --connectivity 8 did not reproduce the published lengths"
+expect_error "scenarios connectivity 6" "--connectivity: expected 4 or 8, got 6" "$ppp" scenarios "$arena" --agent astar --connectivity 6
 cp "$arena" "$work/lonely.scen"
 expect_error "scenarios map missing" "map 'arena.map' not found" "$ppp" scenarios "$work/lonely.scen" --agent astar
 expect_ok "scenarios --map-dir" "$ppp" scenarios "$work/lonely.scen" --agent astar --map-dir "$(dirname "$arena")"

@@ -8,6 +8,7 @@
 #include "ppp_core/random_problem.hpp"
 #include "ppp_core/reachability.hpp"
 #include "ppp_core/rng.hpp"
+#include "ppp_simulator/episode_result.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -171,6 +172,99 @@ TEST(EpisodeTest, BadOptions) {
   options.sensor_range = 0;
   EXPECT_THROW(EpisodeRunner(config("random"), options), InvalidArgument);
   EXPECT_THROW(EpisodeRunner(config("flier"), EpisodeOptions{}), InvalidArgument);
+  options.sensor_range = 2;
+  for (int connectivity : {0, 5, 6, 9}) {
+    options.connectivity = connectivity;
+    try {
+      EpisodeRunner(config("random"), options);
+      FAIL() << "no error for connectivity " << connectivity;
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(e.name(), "connectivity");
+    }
+  }
+}
+
+// Rows of '.' (free) and '#' (obstacle), y down; start top-left, goal bottom-right.
+Problem problemOf(const std::vector<std::string>& rows) {
+  Problem p = Problem::empty(static_cast<int>(rows[0].size()), static_cast<int>(rows.size()), 10);
+  for (int y = 0; y < p.height; ++y) {
+    for (int x = 0; x < p.width; ++x) {
+      if (rows[y][x] == '#') p.obstacles.push_back(Obstacle{Shape::HorizontalBar, x, y, 1, 1});
+    }
+  }
+  return p;
+}
+
+TEST(EpisodeTest, DiagonalMovesUnderConnectivityEight) {
+  // . . .
+  // . # .
+  // . . .
+  const Problem problem = problemOf({"...", ".#.", "..."});
+  const Grid grid = decodeGrid(problem);
+  const SensorModel sensor(SensorOptions{2, 0.0});
+  Episode episode(problem, grid, sensor, 1, 10, 8, true);
+  episode.apply(agents::Action::SouthEast);  // would pass beside (1,0) and (0,1): free, but lands on the obstacle
+  EXPECT_TRUE(episode.scan().bumped());
+  episode.apply(agents::Action::East);        // (1,0)
+  episode.apply(agents::Action::SouthEast);   // passes beside (2,0) (free) and (1,1) (obstacle): a cut corner
+  EXPECT_TRUE(episode.scan().bumped());
+  episode.apply(agents::Action::East);        // (2,0)
+  episode.apply(agents::Action::South);       // (2,1)
+  episode.apply(agents::Action::SouthWest);   // passes beside (1,1): refused
+  EXPECT_TRUE(episode.scan().bumped());
+  episode.apply(agents::Action::South);       // (2,2): the goal
+  const EpisodeOutcome& o = episode.outcome();
+  EXPECT_TRUE(o.passed);
+  EXPECT_EQ(o.steps, 7);
+  EXPECT_EQ(o.bumps, 3);
+  EXPECT_EQ(o.path_length, 4);
+  EXPECT_EQ(o.diagonal_moves, 0);
+  EXPECT_EQ(pathLength(o), 4);
+  // On an open map the diagonal is taken and costs sqrt(2).
+  const Problem open = problemOf({"...", "...", "..."});
+  const Grid open_grid = decodeGrid(open);
+  Episode diagonal(open, open_grid, sensor, 1, 10, 8, true);
+  diagonal.apply(agents::Action::SouthEast);
+  diagonal.apply(agents::Action::SouthEast);
+  EXPECT_TRUE(diagonal.outcome().passed);
+  EXPECT_EQ(diagonal.outcome().diagonal_moves, 2);
+  EXPECT_DOUBLE_EQ(pathLength(diagonal.outcome()), 2 * std::sqrt(2.0));
+  EXPECT_EQ(diagonal.outcome().path, (std::vector<Cell>{{0, 0}, {1, 1}, {2, 2}}));
+}
+
+TEST(EpisodeTest, DiagonalUnderConnectivityFourIsAnInvalidAction) {
+  const Problem open = problemOf({"...", "...", "..."});
+  const Grid grid = decodeGrid(open);
+  const SensorModel sensor(SensorOptions{2, 0.0});
+  Episode episode(open, grid, sensor, 1, 10, 4);
+  episode.apply(agents::Action::East);
+  episode.apply(agents::Action::SouthEast);
+  EXPECT_TRUE(episode.done());
+  EXPECT_FALSE(episode.outcome().passed);
+  EXPECT_STREQ(episode.outcome().reason, reason::kInvalidAction);
+}
+
+TEST(EpisodeTest, AstarTakesOctileRoutesUnderConnectivityEight) {
+  // . . . .
+  // . # # .
+  // . . . .   start (0,0), goal (3,2). Every diagonal that would shorten the way passes beside the bar
+  //           ((2,0)-(3,1) beside (2,1), (0,1)-(1,2) beside (1,1)), so the octile optimum is 5 straight moves.
+  const Problem blocked = problemOf({"....", ".##.", "...."});
+  EpisodeOptions options;
+  options.connectivity = 8;
+  EpisodeRunner runner(config("astar"), options);
+  auto agent = agents::makeAgent(config("astar"));
+  const EpisodeOutcome o = runner.run(blocked, decodeGrid(blocked), *agent, 1);
+  EXPECT_TRUE(o.passed);
+  EXPECT_EQ(o.diagonal_moves, 0);
+  EXPECT_EQ(o.path_length, 5);
+  // 5 x 5 open: four diagonals, 4 sqrt(2), where 4-connected astar needs 8 moves.
+  const Problem open = Problem::empty(5, 5, 10);
+  const EpisodeOutcome d = runner.run(open, decodeGrid(open), *agent, 1);
+  EXPECT_EQ(d.steps, 4);
+  EXPECT_NEAR(pathLength(d), 4 * std::sqrt(2.0), 1e-12);
+  EpisodeRunner four(config("astar"), EpisodeOptions{});
+  EXPECT_EQ(four.run(open, decodeGrid(open), *agent, 1).steps, 8);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <filesystem>
 #include <fstream>
 
@@ -102,6 +104,40 @@ TEST(ResultsCsvText, RowsOfTextWithErrorsNamingTheGivenPath) {
     ADD_FAILURE() << "run zero accepted";
   } catch (const ParseError& e) {
     EXPECT_EQ(std::string(e.what()), "out/results.csv:3: run: expected a whole number, got 'zero'");
+  }
+}
+
+TEST(ResultsCsvText, LengthsAreWholeNumbersOrEightDecimals) {
+  // 4-connected lengths are written as the whole numbers they always were; a diagonal's sqrt(2) with eight
+  // decimals, which reads back to the same text (a resume rewrites nothing).
+  EpisodeResult r;
+  r.set = "s";
+  r.problem = "p";
+  r.agent = "astar";
+  r.reason = "goal_reached";
+  r.path_length = 12;
+  r.optimal_length = -1;
+  std::string line;
+  appendCsvRow(r, &line);
+  EXPECT_EQ(line, "s,p,astar,0,0,0,0,0,12,-1,goal_reached\n");
+  r.path_length = 3 + 2 * std::sqrt(2.0);
+  r.optimal_length = 5.65685424949238;
+  line.clear();
+  appendCsvRow(r, &line);
+  EXPECT_EQ(line, "s,p,astar,0,0,0,0,0,5.82842712,5.65685425,goal_reached\n");
+  const EpisodeResult back = parseCsvRow(line.substr(0, line.size() - 1), "x.csv", 2);
+  EXPECT_NEAR(back.path_length, 5.82842712, 1e-12);
+  std::string again;
+  appendCsvRow(back, &again);
+  EXPECT_EQ(again, line);
+  for (const std::string bad : {"s,p,a,0,0,0,0,0,long,1,r", "s,p,a,0,0,0,0,0,1,nan,r", "s,p,a,0,0,0,0,0,-2,1,r"}) {
+    EXPECT_THROW(parseCsvRow(bad, "x.csv", 3), ParseError) << bad;
+  }
+  try {
+    parseCsvRow("s,p,a,0,0,0,0,0,1e99,1,r", "x.csv", 3);
+    ADD_FAILURE() << "1e99 accepted";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(std::string(e.what()), "x.csv:3: path_length: expected a length, got '1e99'");
   }
 }
 

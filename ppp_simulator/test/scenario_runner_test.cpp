@@ -64,6 +64,20 @@ TEST(ScenarioRunnerTest, AstarTakesAShortestFourConnectedRouteOnEveryScenarioOfA
   }
 }
 
+TEST(ScenarioRunnerTest, AstarUnderConnectivityEightReproducesEveryPublishedLength) {
+  ScenarioRunOptions options = agent("astar");
+  options.episode.connectivity = 8;
+  const std::vector<ScenarioResult> results = runScenarios(kData + "/arena.map.scen", options);
+  ASSERT_EQ(results.size(), 130u);
+  int with_diagonals = 0;
+  for (const ScenarioResult& r : results) {
+    EXPECT_TRUE(r.outcome.passed) << "line " << r.scenario.line;
+    EXPECT_NEAR(pathLength(r.outcome), r.scenario.optimal_length, 1e-3) << "line " << r.scenario.line;
+    with_diagonals += r.outcome.diagonal_moves > 0 ? 1 : 0;
+  }
+  EXPECT_GT(with_diagonals, 100);
+}
+
 TEST(ScenarioRunnerTest, GivenBudgetAndSeedsAreUsed) {
   ScenarioRunOptions options = agent("astar");
   options.episode.budget = 5;

@@ -13,7 +13,8 @@ namespace agents {
 /// from start to goal and follows the plan, so on a valid PPP it passes in exactly the fewest moves. It reads
 /// only the scan's position and bump flag; if it ever bumps or finds itself off the plan (impossible with a
 /// correct prior map) it marks the cell it bumped into as an obstacle in its own copy of the map and plans again
-/// from where it is. With no path it stays put.
+/// from where it is. With no path it stays put. Under connectivity 8 it plans octile-optimal routes with diagonal
+/// moves (shortestOctileRoute), the only built-in agent that takes them.
 class AstarAgent final : public Agent {
  public:
   /// The memory window is accepted for uniformity and unused: the prior map is the agent's knowledge.
@@ -24,8 +25,9 @@ class AstarAgent final : public Agent {
   /// The next move of the plan.
   Action act(const Scan& scan) override;
 
-  /// A* from `from` to `goal` on `grid`: writes the moves of a shortest 4-connected path into `plan` (empty
-  /// when the goal is unreachable or equals `from`); returns whether a path exists.
+  /// A* from `from` to `goal` on `grid`: writes the moves of a shortest path (4-connected, or octile under
+  /// connectivity 8) into `plan` (empty when the goal is unreachable or equals `from`); returns whether a path
+  /// exists.
   bool plan(const Grid& grid, Cell from, Cell goal, std::vector<Action>* plan);
 
  private:
@@ -37,6 +39,7 @@ class AstarAgent final : public Agent {
   };
 
   const Grid* map_ = nullptr;  // the prior map, or corrected_ after a bump
+  int connectivity_ = 4;       // the episode's move model: 8 plans octile-optimal routes with diagonal moves
   Grid corrected_;
   bool own_map_ = false;
   Cell goal_;

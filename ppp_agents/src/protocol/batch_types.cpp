@@ -41,7 +41,8 @@ std::unique_ptr<Grid> priorGrid(const EpisodeStart& start) {
 }
 
 agents::EpisodeInfo episodeInfo(const EpisodeStart& start, const Grid* prior) {
-  return agents::EpisodeInfo{start.width, start.height, start.start, start.goal, start.agent_seed, prior};
+  return agents::EpisodeInfo{start.width, start.height, start.start, start.goal, start.agent_seed, prior,
+                             start.connectivity};
 }
 
 void requireOnGrid(Cell cell, int width, int height, const char* field) {

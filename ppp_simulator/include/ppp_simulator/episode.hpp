@@ -20,7 +20,10 @@ constexpr int kMaxEpisodeBudget = 1000000;
 struct EpisodeOptions {
   int budget = 300;       ///< Most actions before the episode fails.
   int sensor_range = 2;   ///< Scan radius (2: a 5x5 window).
-  /// @throws InvalidArgument("budget" or "sensor_range", ...).
+  /// Move model: 4 (the dissertation's: stay and four straight moves) or 8 (also the four diagonal moves, each
+  /// only when both cells it passes beside are free, MovingAI's rule).
+  int connectivity = 4;
+  /// @throws InvalidArgument("budget", "sensor_range" or "connectivity", ...).
   void validate() const;
 };
 
@@ -34,24 +37,29 @@ struct EpisodeOutcome {
   int steps = 0;            ///< Actions taken.
   int bumps = 0;            ///< Actions that hit an obstacle or the edge.
   int path_length = 0;      ///< Cells actually moved.
+  int diagonal_moves = 0;   ///< Of them, diagonal moves (connectivity 8).
   const char* reason = "";  ///< reason::kGoalReached or reason::kBudgetExhausted.
   std::vector<Cell> path;   ///< Cells visited, start first (only when asked for).
 };
+
+/// The length an episode moved: 1 per straight move, sqrt(2) per diagonal one.
+double pathLength(const EpisodeOutcome& outcome);
 
 /// The seed of the agent's own choices in a run with `run_seed`.
 std::uint64_t agentSeed(std::uint64_t run_seed);
 /// The seed of the sensor noise in a run with `run_seed`.
 std::uint64_t noiseSeed(std::uint64_t run_seed);
 
-/// One episode advanced a step at a time: the move model (4-connected; a move into an obstacle or off the map
-/// leaves the agent in place and the next scan reports a bump), the scans and the budget. The in-process
+/// One episode advanced a step at a time: the move model (4- or 8-connected; a move into an obstacle or off the
+/// map, or a diagonal past an obstacle, leaves the agent in place and the next scan reports a bump; a diagonal
+/// action under connectivity 4 fails the episode as an invalid action), the scans and the budget. The in-process
 /// runner and the ROS simulator node both drive episodes through this class.
 class Episode {
  public:
   /// Starts at the problem's start. `grid`, `sensor` and `windows` (the grid's atlas at the sensor's range,
   /// when there is one: scans become lookups) must outlive the episode.
   Episode(const Problem& problem, const Grid& grid, const SensorModel& sensor, std::uint64_t run_seed, int budget,
-          bool record_path = false, const WindowAtlas* windows = nullptr);
+          int connectivity, bool record_path = false, const WindowAtlas* windows = nullptr);
   /// True once the agent stood on the goal, the budget was spent or fail() was called.
   bool done() const { return done_; }
   /// What the agent senses now (computed on first read).
@@ -72,6 +80,7 @@ class Episode {
   const WindowAtlas* windows_;
   std::uint64_t noise_seed_;
   int budget_;
+  int connectivity_;
   bool record_path_;
   Cell position_;
   bool bumped_ = false;
@@ -79,12 +88,12 @@ class Episode {
   EpisodeOutcome outcome_;
 };
 
-/// The EpisodeInfo an agent is given at the start of a run of `problem` (prior map only for astar).
+/// The EpisodeInfo an agent is given at the start of a run of `problem` (prior map only for astar) under the
+/// move model with `connectivity`.
 agents::EpisodeInfo episodeInfo(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
-                                std::uint64_t run_seed);
+                                std::uint64_t run_seed, int connectivity);
 
-/// Runs episodes in process: the move model (4-connected; a move into an obstacle or off the map leaves the
-/// agent in place and the next scan reports a bump), scans by SensorModel with the agent's noise, the budget.
+/// Runs episodes in process: the move model (Episode), scans by SensorModel with the agent's noise, the budget.
 /// Holds the sensor and buffers, so reuse one runner for many episodes of one agent configuration.
 class EpisodeRunner {
  public:

@@ -23,8 +23,9 @@ struct EpisodeResult {
   bool passed = false;      ///< Reached the goal within the budget.
   int steps = 0;            ///< Actions taken.
   int bumps = 0;            ///< Actions that hit an obstacle or the edge.
-  int path_length = 0;      ///< Cells actually moved.
-  int optimal_length = 0;   ///< Fewest moves from start to goal (the DPA's fewest advances).
+  double path_length = 0;     ///< Length moved: 1 per straight move, sqrt(2) per diagonal (connectivity 8).
+  double optimal_length = 0;  ///< Optimal length from start to goal: the DPA's fewest advances, or the octile
+                              ///< length under connectivity 8.
   std::string reason;       ///< One of the reason:: constants.
 };
 

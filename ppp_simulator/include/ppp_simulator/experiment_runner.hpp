@@ -24,7 +24,7 @@ struct PreparedSet {
   std::string directory;         ///< The set's directory (PPP files, set.csv, trees, any archive).
   generator::ProblemSet set;     ///< The PPPs and their evaluations.
   std::vector<Grid> grids;       ///< Decoded grid of each PPP.
-  std::vector<int> optimal;      ///< Fewest moves from start to goal of each PPP.
+  std::vector<double> optimal;   ///< Optimal length of each PPP: fewest moves (connectivity 4), octile length (8).
   /// Each PPP's WindowAtlas at the experiment's sensor range, when it fits kMaxWindowAtlasBytes.
   std::vector<std::optional<WindowAtlas>> windows;
 };
@@ -44,9 +44,10 @@ std::uint64_t runSeed(std::uint64_t experiment_seed, const std::string& set, con
 EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::string& agent, int run,
                             std::uint64_t seed, const EpisodeOutcome& outcome);
 
-/// A set ready to play: its grids, fewest moves and window atlases at `sensor_range`.
+/// A set ready to play under `episode`'s rules: its grids, optimal lengths (the fewest moves, or the octile
+/// length under connectivity 8) and window atlases at the sensor range.
 /// @throws InvalidArgument naming "sets" for an unsolvable PPP.
-PreparedSet prepareSet(const std::string& name, generator::ProblemSet set, int sensor_range);
+PreparedSet prepareSet(const std::string& name, generator::ProblemSet set, const EpisodeOptions& episode);
 
 /// Generates (or reads) every set of the experiment into `dir`/sets/<name>/, reusing sets already there; a set
 /// being generated when `stop` says stop is not written. @throws IoError, ParseError, InvalidArgument, Interrupted.
