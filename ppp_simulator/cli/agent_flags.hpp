@@ -27,7 +27,7 @@ class AgentFlags {
   /// The episode options the flags give. @throws InvalidArgument naming the flag.
   simulator::EpisodeOptions episode() const;
   /// True when `flag` (e.g. "--budget") was given on the command line.
-  bool given(const std::string& flag) const { return given_.count(flag) > 0; }
+  bool given(const std::string& flag) const { return command_->count(flag) > 0; }
 
  private:
   CLI::App* command_ = nullptr;

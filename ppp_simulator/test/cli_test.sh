@@ -133,6 +133,22 @@ j = json.load(open(sys.argv[1]))
 assert j['connectivity'] == 8 and j['totals']['passed'] == 130, j['totals']
 assert all(abs(x['path_length'] - x['optimal_length']) < 1e-3 for x in j['scenarios'])
 " "$work/out" && pass || fail "astar --connectivity 8 did not reproduce the published lengths"
+# Without --budget a scenario may take as many moves as its map has free cells: a serpentine 41 x 41 map whose
+# only route is 880 moves long (21 rows of 40 and 40 steps down) passes by default and fails with --budget 300.
+python3 -c "
+rows = []
+for y in range(41):
+    if y % 2 == 0:
+        rows.append('.' * 41)
+    else:
+        rows.append(('@' * 40 + '.') if y % 4 == 1 else ('.' + '@' * 40))
+open('$work/snake.map', 'w').write('type octile\\nheight 41\\nwidth 41\\nmap\\n' + '\\n'.join(rows) + '\\n')
+open('$work/snake.map.scen', 'w').write('version 1\\n215\\tsnake.map\\t41\\t41\\t0\\t0\\t40\\t40\\t880\\n')
+"
+expect_ok "scenarios default budget" "$ppp" scenarios "$work/snake.map.scen" --agent astar --json
+grep -q '"passed":true,"path_length":880.0' "$work/out" && pass || fail "the 880-move route did not fit the default budget: $(cat "$work/out")"
+expect_ok "scenarios --budget" "$ppp" scenarios "$work/snake.map.scen" --agent astar --budget 300 --json
+grep -q '"passed":false,"path_length":300.0,.*"steps":300' "$work/out" && pass || fail "--budget 300 was not applied: $(cat "$work/out")"
 expect_error "scenarios connectivity 6" "--connectivity: expected 4 or 8, got 6" "$ppp" scenarios "$arena" --agent astar --connectivity 6
 cp "$arena" "$work/lonely.scen"
 expect_error "scenarios map missing" "map 'arena.map' not found" "$ppp" scenarios "$work/lonely.scen" --agent astar
