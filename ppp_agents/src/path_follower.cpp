@@ -20,6 +20,12 @@ Action stepTowards(Cell from, Cell to) {
   return to.y > from.y ? Action::South : Action::North;
 }
 
+/// The diagonal action from `from` to the diagonal neighbour `to`.
+Action diagonalTowards(Cell from, Cell to) {
+  if (to.x > from.x) return to.y > from.y ? Action::SouthEast : Action::NorthEast;
+  return to.y > from.y ? Action::SouthWest : Action::NorthWest;
+}
+
 }  // namespace
 
 std::int8_t KnownMap::at(Cell c) const {
@@ -68,10 +74,23 @@ std::string PathFollower::follow(const std::vector<MapPoint>& waypoints, const M
 
 std::optional<Action> PathFollower::next(Cell robot, const KnownMap& known) {
   if (walk_.empty()) return std::nullopt;
-  if (position_ + 1 < walk_.size() && walk_[position_ + 1] == robot) ++position_;
+  for (std::size_t skip = 1; skip <= 2; ++skip) {  // one cell of the walk, or two after a diagonal
+    if (position_ + skip < walk_.size() && walk_[position_ + skip] == robot) {
+      position_ += skip;
+      break;
+    }
+  }
   if (!(walk_[position_] == robot) || position_ + 1 >= walk_.size()) return std::nullopt;
   const Cell ahead = walk_[position_ + 1];
   if (known.at(ahead) == kScanObstacle) return std::nullopt;
+  if (connectivity_ == 8 && position_ + 2 < walk_.size()) {
+    const Cell beyond = walk_[position_ + 2];
+    const Cell side{robot.x + beyond.x - ahead.x, robot.y + beyond.y - ahead.y};  // the corner's other side
+    const bool corner = std::abs(beyond.x - robot.x) == 1 && std::abs(beyond.y - robot.y) == 1;
+    if (corner && known.at(ahead) == kScanFree && known.at(side) == kScanFree && known.at(beyond) == kScanFree) {
+      return diagonalTowards(robot, beyond);
+    }
+  }
   return stepTowards(robot, ahead);
 }
 

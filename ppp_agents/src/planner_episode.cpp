@@ -18,6 +18,7 @@ void PlannerEpisode::start(const EpisodeInfo& info, const Grid* prior, int memor
     memory_.reset(info.width, info.height, memory_window);
   }
   follower_.clear();
+  follower_.setConnectivity(info.connectivity);
 }
 
 void PlannerEpisode::observe(const Scan& scan) {

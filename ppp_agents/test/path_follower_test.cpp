@@ -57,6 +57,28 @@ TEST(PathFollowerTest, ADiagonalSegmentTakesTheXStepFirstAtCorners) {
   EXPECT_EQ(drive(follower, Cell{0, 0}, map), expected);
 }
 
+TEST(PathFollowerTest, UnderConnectivityEightCornersWithBothSidesKnownFreeAreCutDiagonally) {
+  // The same diagonal segment: its walk (0,0) (1,0) (1,1) (2,1) (2,2) turns three corners; with both sides of
+  // each known free the robot takes two diagonal moves.
+  const KnownMap open = known({"....", "....", "...."});
+  PathFollower follower;
+  follower.setConnectivity(8);
+  ASSERT_EQ(follower.follow({centre(0, 0, 3), centre(2, 2, 3)}, kFrame, Cell{0, 0}, Cell{2, 2}, open), "");
+  EXPECT_EQ(follower.next(Cell{0, 0}, open), Action::SouthEast);
+  EXPECT_EQ(drive(follower, Cell{0, 0}, open), (std::vector<Cell>{{0, 0}, {1, 1}, {2, 2}}));
+  // A corner whose other side is an obstacle or unknown is walked round: with (0,1) an obstacle, or unknown, the
+  // first corner is walked; the next one, (1,0)-(2,1) beside (2,0) and (1,1), is cut.
+  for (const char* side : {"#...", "?..."}) {
+    const KnownMap blocked = known({"....", side, "...."});
+    ASSERT_EQ(follower.follow({centre(0, 0, 3), centre(2, 2, 3)}, kFrame, Cell{0, 0}, Cell{2, 2}, blocked), "");
+    EXPECT_EQ(drive(follower, Cell{0, 0}, blocked), (std::vector<Cell>{{0, 0}, {1, 0}, {2, 1}, {2, 2}})) << side;
+  }
+  // Under the default connectivity 4 nothing is cut.
+  PathFollower four;
+  ASSERT_EQ(four.follow({centre(0, 0, 3), centre(2, 2, 3)}, kFrame, Cell{0, 0}, Cell{2, 2}, open), "");
+  EXPECT_EQ(drive(four, Cell{0, 0}, open).size(), 5u);
+}
+
 TEST(PathFollowerTest, RejectsPathsThroughWallsOffTheMapOrAwayFromTheRobot) {
   const KnownMap map = known({".#..", ".#..", "...."});
   PathFollower follower;

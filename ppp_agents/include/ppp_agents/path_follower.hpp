@@ -33,14 +33,18 @@ class PathFollower {
                      const KnownMap& known);
   /// The move that takes the robot from `robot` to the next cell of the path, or nothing when a re-plan is due:
   /// the path is used up, the robot left it, or the next cell is an obstacle in `known`. A robot that bumped
-  /// (still on its cell) is sent the same move again.
+  /// (still on its cell) is sent the same move again. Under connectivity 8, where the walk turns a corner whose
+  /// two sides `known` shows free, it cuts across with the diagonal move (two cells of the walk in one move).
   std::optional<Action> next(Cell robot, const KnownMap& known);
   /// Forgets the path.
   void clear();
+  /// Sets the move model (4 or 8) of the moves next() gives; 4 until set.
+  void setConnectivity(int connectivity) { connectivity_ = connectivity; }
 
  private:
   std::vector<Cell> walk_;
   std::size_t position_ = 0;  // index of the robot's cell in walk_
+  int connectivity_ = 4;
 };
 
 }  // namespace agents
