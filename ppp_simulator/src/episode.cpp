@@ -70,8 +70,10 @@ void Episode::apply(agents::Action action) {
   }
   if (action != agents::Action::Stay) {
     const Cell d = agents::offset(action);
-    if (octileMoveAllowed(*grid_, position_, d.x, d.y)) {  // a straight move: the target is free
-      position_ = Cell{position_.x + d.x, position_.y + d.y};
+    const Cell next{position_.x + d.x, position_.y + d.y};
+    // A straight move needs a free target; a diagonal also both cells beside it.
+    if (d.x != 0 && d.y != 0 ? octileMoveAllowed(*grid_, position_, d.x, d.y) : grid_->isFree(next)) {
+      position_ = next;
       ++outcome_.path_length;
       if (d.x != 0 && d.y != 0) ++outcome_.diagonal_moves;
       if (record_path_) outcome_.path.push_back(position_);
