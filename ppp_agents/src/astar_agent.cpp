@@ -11,23 +11,6 @@
 namespace ppp {
 namespace agents {
 
-namespace {
-
-/// The move from a cell to one of its 8-neighbours.
-Action moveBetween(Cell from, Cell to) {
-  const int dx = (to.x > from.x) - (to.x < from.x);
-  const int dy = (to.y > from.y) - (to.y < from.y);
-  for (Action move : kMoves) {
-    if (offset(move) == Cell{dx, dy}) return move;
-  }
-  for (Action move : kDiagonalMoves) {
-    if (offset(move) == Cell{dx, dy}) return move;
-  }
-  return Action::Stay;
-}
-
-}  // namespace
-
 AstarAgent::AstarAgent(int /*memory_window*/) {}
 
 void AstarAgent::reset(const EpisodeInfo& info) {
@@ -77,7 +60,9 @@ bool AstarAgent::plan(const Grid& grid, Cell from, Cell goal, std::vector<Action
   if (from == goal) return true;
   if (connectivity_ == 8) {  // octile-optimal: 1 per straight move, sqrt(2) per diagonal, no corner cut
     const OctileRoute route = shortestOctileRoute(grid, from, goal);
-    for (std::size_t i = 1; i < route.cells.size(); ++i) plan->push_back(moveBetween(route.cells[i - 1], route.cells[i]));
+    for (std::size_t i = 1; i < route.cells.size(); ++i) {
+      plan->push_back(actionTowards(route.cells[i - 1], route.cells[i]));
+    }
     return route.length >= 0;
   }
   const auto cells = static_cast<std::size_t>(grid.size());
@@ -124,7 +109,7 @@ bool AstarAgent::plan(const Grid& grid, Cell from, Cell goal, std::vector<Action
   }
   if (!found) return false;
   for (int i = target_index; parent_[i] >= 0; i = parent_[i]) {
-    plan->push_back(moveBetween(grid.cellAt(parent_[i]), grid.cellAt(i)));
+    plan->push_back(actionTowards(grid.cellAt(parent_[i]), grid.cellAt(i)));
   }
   std::reverse(plan->begin(), plan->end());
   return true;

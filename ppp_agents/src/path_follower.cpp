@@ -9,25 +9,6 @@
 namespace ppp {
 namespace agents {
 
-namespace {
-
-std::string cellText(Cell c) { return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")"; }
-
-/// The action from `from` to the 4-neighbour `to`.
-Action stepTowards(Cell from, Cell to) {
-  if (to.x > from.x) return Action::East;
-  if (to.x < from.x) return Action::West;
-  return to.y > from.y ? Action::South : Action::North;
-}
-
-/// The diagonal action from `from` to the diagonal neighbour `to`.
-Action diagonalTowards(Cell from, Cell to) {
-  if (to.x > from.x) return to.y > from.y ? Action::SouthEast : Action::NorthEast;
-  return to.y > from.y ? Action::SouthWest : Action::NorthWest;
-}
-
-}  // namespace
-
 std::int8_t KnownMap::at(Cell c) const {
   if (c.x < 0 || c.y < 0 || c.x >= width || c.y >= height) return kScanOutOfBounds;
   return cells[static_cast<std::size_t>(c.y * width + c.x)];
@@ -88,10 +69,10 @@ std::optional<Action> PathFollower::next(Cell robot, const KnownMap& known) {
     const Cell side{robot.x + beyond.x - ahead.x, robot.y + beyond.y - ahead.y};  // the corner's other side
     const bool corner = std::abs(beyond.x - robot.x) == 1 && std::abs(beyond.y - robot.y) == 1;
     if (corner && known.at(ahead) == kScanFree && known.at(side) == kScanFree && known.at(beyond) == kScanFree) {
-      return diagonalTowards(robot, beyond);
+      return actionTowards(robot, beyond);
     }
   }
-  return stepTowards(robot, ahead);
+  return actionTowards(robot, ahead);
 }
 
 void PathFollower::clear() {

@@ -105,13 +105,15 @@ MapElites::MapElites(const GeneratorOptions& options, Fitness fitness)
       rng_(options.seed),
       breeder_(options_, fitness_, &rng_),
       evaluator_(options.weights),
-      archive_(rangesOf(options), options.bins) {}
+      archive_(rangesOf(options), options.bins),
+      barn_features_(std::any_of(options.features.begin(), options.features.end(), [](const std::string& name) {
+        const std::vector<std::string>& barn = barnCharacterNames();
+        return std::find(barn.begin(), barn.end(), name) != barn.end();
+      })) {}
 
 std::vector<double> MapElites::featuresOf(const Individual& individual) {
   std::vector<double> all = characterVector(evaluator_.evaluate(individual.problem, individual.grid));
-  const std::vector<std::string>& barn = barnCharacterNames();
-  const auto isBarn = [&](const std::string& name) { return std::find(barn.begin(), barn.end(), name) != barn.end(); };
-  if (std::any_of(options_.features.begin(), options_.features.end(), isBarn)) {
+  if (barn_features_) {
     const std::vector<double> metrics = barnCharacterVector(barnMetrics(individual.problem, individual.grid));
     all.insert(all.end(), metrics.begin(), metrics.end());
   }

@@ -72,10 +72,11 @@ void Episode::apply(agents::Action action) {
     const Cell d = agents::offset(action);
     const Cell next{position_.x + d.x, position_.y + d.y};
     // A straight move needs a free target; a diagonal also both cells beside it.
-    if (d.x != 0 && d.y != 0 ? octileMoveAllowed(*grid_, position_, d.x, d.y) : grid_->isFree(next)) {
+    const bool diagonal = agents::isDiagonal(action);
+    if (diagonal ? octileMoveAllowed(*grid_, position_, d.x, d.y) : grid_->isFree(next)) {
       position_ = next;
       ++outcome_.path_length;
-      if (d.x != 0 && d.y != 0) ++outcome_.diagonal_moves;
+      if (diagonal) ++outcome_.diagonal_moves;
       if (record_path_) outcome_.path.push_back(position_);
     } else {
       bumped_ = true;

@@ -281,8 +281,6 @@ std::string reasonText(const std::string& reason) {
   return "";
 }
 
-std::string cellText(Cell c) { return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")"; }
-
 std::string pathText(const FailureExample& failure) {
   if (failure.path.empty()) return "no path recorded";
   std::size_t moves = 0;

@@ -133,8 +133,7 @@ void checkRoute(const Grid& grid, const std::vector<Cell>& route) {
   if (route.size() < 2) throw InvalidArgument("route", "needs two or more cells, got " + std::to_string(route.size()));
   for (const Cell& c : route) {
     if (!grid.isFree(c)) {
-      throw InvalidArgument(
-          "route", "cell (" + std::to_string(c.x) + ", " + std::to_string(c.y) + ") is off the grid or an obstacle");
+      throw InvalidArgument("route", "cell " + cellText(c) + " is off the grid or an obstacle");
     }
   }
   if (route.front() == route.back()) throw InvalidArgument("route", "ends where it starts; tortuosity needs a chord");

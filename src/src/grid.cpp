@@ -7,6 +7,8 @@
 
 namespace ppp {
 
+std::string cellText(Cell c) { return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")"; }
+
 void validateGridSize(int width, int height, const char* what) {
   if (width < kMinGridSide || height < kMinGridSide || width > kMaxGridSide || height > kMaxGridSide) {
     throw InvalidArgument(what, "expected width and height in [" + std::to_string(kMinGridSide) + ", " +

@@ -27,8 +27,6 @@ namespace fs = std::filesystem;
 const char* const kPppKeys[] = {"ppp_size",          "ppp_start",     "ppp_goal",
                                 "ppp_max_obstacles", "ppp_obstacles", "ppp_metadata"};
 
-std::string cellText(Cell c) { return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")"; }
-
 /// The text after "<name>: " in an InvalidArgument message, so it can be re-homed in a ParseError.
 std::string reasonOf(const InvalidArgument& e) {
   const std::string what = e.what();

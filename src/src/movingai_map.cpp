@@ -24,8 +24,6 @@ constexpr char kObstacleTerrain = '@';
 /// The terrain characters a map may hold, for error messages.
 constexpr const char* kTerrainChoices = "'.', 'G', 'S' (free) or '@', 'O', 'T', 'W' (obstacle)";
 
-std::string cellText(Cell c) { return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")"; }
-
 /// Classifies a terrain character; false when it is not one.
 bool readTerrain(char terrain, bool* obstacle) {
   switch (terrain) {

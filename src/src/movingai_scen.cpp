@@ -2,7 +2,7 @@
 
 #include <charconv>
 #include <cstdio>
-#include <sys/stat.h>
+#include <filesystem>
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/line_cursor.hpp"
@@ -37,24 +37,9 @@ double parseLength(const LineCursor& cursor, std::string_view text) {
 
 void requireInside(const LineCursor& cursor, Cell c, int width, int height, const char* field) {
   if (c.x >= width || c.y >= height) {
-    cursor.fail(field, "cell (" + std::to_string(c.x) + ", " + std::to_string(c.y) + ") is outside the " +
-                           std::to_string(width) + " x " + std::to_string(height) + " map the line names");
+    cursor.fail(field, "cell " + cellText(c) + " is outside the " + std::to_string(width) + " x " +
+                           std::to_string(height) + " map the line names");
   }
-}
-
-bool isFile(const std::string& path) {
-  struct stat info {};
-  return stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
-}
-
-std::string baseName(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
-std::string directoryOf(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? "." : path.substr(0, slash);
 }
 
 }  // namespace
@@ -113,10 +98,14 @@ void writeMovingAiScenarios(const std::vector<MovingAiScenario>& scenarios, cons
 }
 
 std::string findScenarioMap(const std::string& scen_path, const std::string& map, const std::string& map_dir) {
-  std::vector<std::string> tried = {map, directoryOf(scen_path) + "/" + baseName(map)};
-  if (!map_dir.empty()) tried.push_back(map_dir + "/" + baseName(map));
+  namespace fs = std::filesystem;
+  const fs::path name = fs::path(map).filename();
+  const fs::path scen_dir = fs::path(scen_path).parent_path();
+  std::vector<std::string> tried = {map, ((scen_dir.empty() ? fs::path(".") : scen_dir) / name).string()};
+  if (!map_dir.empty()) tried.push_back((fs::path(map_dir) / name).string());
   for (const std::string& candidate : tried) {
-    if (isFile(candidate)) return candidate;
+    std::error_code error;
+    if (fs::is_regular_file(candidate, error)) return candidate;
   }
   std::string where;
   for (const std::string& candidate : tried) where += (where.empty() ? "" : ", ") + candidate;
@@ -133,8 +122,8 @@ void checkScenarioOnMap(const MovingAiScenario& s, const Grid& grid, const std::
   }
   for (const auto& [cell, field] : {std::pair<Cell, const char*>{s.start, "start"}, {s.goal, "goal"}}) {
     if (!grid.isFree(cell)) {
-      fail(field, "cell (" + std::to_string(cell.x) + ", " + std::to_string(cell.y) + ") is " +
-                      (grid.contains(cell) ? "an obstacle" : "off the map") + " on '" + s.map + "'");
+      fail(field, "cell " + cellText(cell) + " is " + (grid.contains(cell) ? "an obstacle" : "off the map") + " on '" +
+                      s.map + "'");
     }
   }
 }

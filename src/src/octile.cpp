@@ -14,8 +14,8 @@ namespace {
 
 void requireOnGrid(const Grid& grid, Cell c, const char* name) {
   if (!grid.contains(c)) {
-    throw InvalidArgument(name, "cell (" + std::to_string(c.x) + ", " + std::to_string(c.y) + ") is off the " +
-                                    std::to_string(grid.width()) + " x " + std::to_string(grid.height()) + " grid");
+    throw InvalidArgument(name, "cell " + cellText(c) + " is off the " + std::to_string(grid.width()) + " x " +
+                                    std::to_string(grid.height()) + " grid");
   }
 }
 

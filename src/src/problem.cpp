@@ -19,8 +19,6 @@ constexpr ShapeKeyword kShapeKeywords[] = {
     {Shape::DiagonalUp, "diag_up"}, {Shape::Block, "block"},
 };
 
-std::string cellText(Cell c) { return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")"; }
-
 void validateCell(Cell c, int width, int height, const char* what) {
   if (c.x < 0 || c.y < 0 || c.x >= width || c.y >= height) {
     throw InvalidArgument(what, "cell " + cellText(c) + " is outside the " + std::to_string(width) + "x" +

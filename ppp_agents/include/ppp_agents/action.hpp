@@ -55,6 +55,16 @@ inline Cell target(Cell from, Action action) {
   return Cell{from.x + d.x, from.y + d.y};
 }
 
+/// The move from `from` to its neighbour `to` (one of the 8 around it; Stay for `from` itself).
+inline Action actionTowards(Cell from, Cell to) {
+  static constexpr Action kByOffset[3][3] = {{Action::NorthWest, Action::North, Action::NorthEast},
+                                             {Action::West, Action::Stay, Action::East},
+                                             {Action::SouthWest, Action::South, Action::SouthEast}};
+  const int dx = (to.x > from.x) - (to.x < from.x);
+  const int dy = (to.y > from.y) - (to.y < from.y);
+  return kByOffset[dy + 1][dx + 1];
+}
+
 /// True for the four diagonal moves.
 inline bool isDiagonal(Action action) { return static_cast<int>(action) >= static_cast<int>(Action::NorthEast); }
 

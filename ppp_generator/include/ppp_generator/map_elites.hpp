@@ -99,6 +99,7 @@ class MapElites {
   Evaluator evaluator_;
   Archive archive_;
   ArchiveStats stats_;
+  bool barn_features_;  // some feature is a BARN metric: measure them too
 };
 
 /// The archive as CSV: one row per occupied cell (bin and value per feature, fitness value, and the set id

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace ppp {
@@ -14,6 +15,9 @@ struct Cell {
   /// Negation of ==.
   friend bool operator!=(const Cell& a, const Cell& b) { return !(a == b); }
 };
+
+/// A cell as messages write it: "(x, y)".
+std::string cellText(Cell c);
 
 /// Smallest accepted grid side, in cells.
 constexpr int kMinGridSide = 2;
