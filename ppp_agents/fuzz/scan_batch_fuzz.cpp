@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -54,9 +55,10 @@ void checkDecoding(const ppp_msgs::ScanBatch& batch, bool reads_window) {
   }
 }
 
-/// The responder's answer to `batch` is complete and well formed.
+/// The responder's answer to `batch` is complete and well formed; diagonal moves only in episodes whose start
+/// said connectivity 8 (`connectivity`: the last start's value per episode id).
 void checkAnswer(const ppp_msgs::ScanBatch& batch, const ppp_msgs::MoveBatch& moves, const std::string& agent,
-                 bool malformed) {
+                 bool malformed, const std::map<std::uint32_t, int>& connectivity) {
   const std::size_t n = batch.episodes.size();
   if (moves.agent != agent || moves.batch != batch.batch) {
     finding("scan_batch_fuzz", "agent or batch not echoed", agent);
@@ -67,7 +69,9 @@ void checkAnswer(const ppp_msgs::ScanBatch& batch, const ppp_msgs::MoveBatch& mo
   for (std::size_t i = 0; i < n; ++i) {
     if (moves.steps[i] != (i < batch.steps.size() ? batch.steps[i] : 0)) finding("scan_batch_fuzz", "step", agent);
     const std::uint8_t action = moves.actions[i];
-    if (!ppp::agents::isAction(action) && action != protocol::kRejectedAction) {
+    const auto started = connectivity.find(batch.episodes[i]);
+    const int model = started == connectivity.end() ? 4 : started->second;
+    if (!ppp::agents::isAction(action, model) && action != protocol::kRejectedAction) {
       finding("scan_batch_fuzz", "an action that is no action and no rejection", agent);
     }
     if (malformed && action != protocol::kRejectedAction) {
@@ -112,6 +116,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const ppp::agents::AgentConfig& config : configs()) {
     responders.push_back(std::make_unique<protocol::BatchResponder>(config));
   }
+  std::map<std::uint32_t, int> connectivity;
   for (std::size_t at = 0; at < size;) {
     ppp::fuzz::WireWalker walker(data + at, size - at);
     if (!walkScanBatch(&walker)) return 0;
@@ -121,11 +126,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     checkDecoding(batch, true);
     checkDecoding(batch, false);
     if (!smallMaps(batch)) continue;
+    for (const ppp_msgs::EpisodeStart& start : batch.starts) {
+      connectivity[start.episode] = start.connectivity == 8 ? 8 : 4;
+    }
     for (std::size_t r = 0; r < responders.size(); ++r) {
       const ppp::agents::AgentConfig& config = configs()[r];
       std::string what;
       const bool malformed = !protocol::checkScanBatch(batch, ppp::agents::readsScanWindow(config), &what).empty();
-      checkAnswer(batch, responders[r]->answer(batch), config.name, malformed);
+      checkAnswer(batch, responders[r]->answer(batch), config.name, malformed, connectivity);
     }
   }
   return 0;
