@@ -2,6 +2,7 @@
 set(PPP_SIMULATOR_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/episode_result.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/episode.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/episode_animation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/scenario_runner.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/experiment_config.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/failure_fitness.cpp

@@ -14,8 +14,10 @@ packages=(
   libompl-dev
   # rviz, headless under a virtual X server, screenshots and their check
   rviz xvfb xauth imagemagick python3-pil
+  # headless rviz videos of a bag (screen capture, encoding, ffprobe's checks)
+  ffmpeg
   # libraries the core and the tools use
-  libpng-dev libyaml-cpp-dev liboctomap-dev libeigen3-dev nlohmann-json3-dev libcli11-dev
+  libpng-dev libgif-dev libyaml-cpp-dev liboctomap-dev libeigen3-dev nlohmann-json3-dev libcli11-dev
   # a network namespace of its own for the main command (unshare, ip) and the sockets check (ss); the
   # multi-machine test's second host: ssh keys, and the library Debian's sshd (unpacked below) needs
   util-linux iproute2 openssh-client libwrap0

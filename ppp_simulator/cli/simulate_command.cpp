@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -14,7 +15,9 @@
 #include "ppp_core/picture.hpp"
 #include "ppp_core/problem_io.hpp"
 #include "ppp_core/rng.hpp"
+#include "ppp_core/text_file.hpp"
 #include "ppp_simulator/episode.hpp"
+#include "ppp_simulator/episode_animation.hpp"
 
 namespace ppp {
 namespace cli {
@@ -36,7 +39,12 @@ struct SimulateFlags : PlayFlags {
 struct ReplayFlags : PlayFlags {
   std::uint64_t seed = 1;
   std::string output;
+  simulator::AnimationOptions animation;
 };
+
+bool endsWith(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
 
 Problem loadProblem(const std::string& source) {
   const std::string prefix = "empty:";
@@ -74,15 +82,40 @@ void runSimulate(const SimulateFlags& f) {
 }
 
 void runReplay(const ReplayFlags& f) {
+  const bool animated = endsWith(f.output, ".gif");
+  if (!animated && !endsWith(f.output, ".png")) {
+    throw InvalidArgument("--output", "expected a .png (the path drawn) or .gif (the episode animated) file name, got '" +
+                                          f.output + "'");
+  }
+  try {
+    f.animation.validate();
+  } catch (const InvalidArgument& e) {  // name the flag, not the field
+    std::string flag = "--" + e.name();
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    throw InvalidArgument(flag, e.problem());
+  }
   const agents::AgentConfig config = f.agent.agent();
-  simulator::EpisodeRunner runner(config, f.agent.episode());
+  const simulator::EpisodeOptions options = f.agent.episode();
   const Problem problem = loadProblem(f.problem);
-  auto agent = agents::makeAgent(config);
-  const auto outcome = runner.run(problem, decodeGrid(problem), *agent, f.seed, true);
-  writeProblemPng(problem, outcome.path, f.output);
+  const Grid grid = decodeGrid(problem);
+  simulator::EpisodeOutcome outcome;
+  std::string drawn;
+  if (animated) {
+    const simulator::EpisodeAnimation animation = simulator::animateEpisode(problem, grid, config, options, f.seed, f.animation);
+    writeFileAtomically(f.output, animation.gif);
+    outcome = animation.outcome;
+    drawn = "animated in " + f.output + " (" + std::to_string(animation.frames) + " frames" +
+            (animation.stride > 1 ? ", every " + std::to_string(animation.stride) + " steps" : std::string()) + ")";
+  } else {
+    simulator::EpisodeRunner runner(config, options);
+    auto agent = agents::makeAgent(config);
+    outcome = runner.run(problem, grid, *agent, f.seed, true);
+    writeProblemPng(problem, outcome.path, f.output);
+    drawn = "path drawn in " + f.output;
+  }
   std::cout << config.name << " with seed " << f.seed << ": " << (outcome.passed ? "passed" : "failed") << " ("
             << outcome.reason << ") after " << outcome.steps << " steps, " << outcome.bumps << " bumps, "
-            << outcome.path_length << " cells moved; path drawn in " << f.output << "\n";
+            << outcome.path_length << " cells moved; " << drawn << "\n";
 }
 
 }  // namespace
@@ -108,7 +141,16 @@ void addReplayCommand(CLI::App& app) {
   command->add_option("problem", flags->problem, "A .ppp (or map .yaml) file, or empty:WxH")->required();
   flags->agent.add(command);
   command->add_option("--seed", flags->seed, "The run's seed (results.csv column seed)")->required();
-  command->add_option("-o,--output", flags->output, "PNG picture of the map with the path")->required();
+  command->add_option("-o,--output", flags->output,
+                      "OUT.png: the map with the path; OUT.gif: the episode frame by frame (trail, scan window, "
+                      "what the agent has not sensed shaded, bumps marked)")
+      ->required();
+  command
+      ->add_option("--max-frames", flags->animation.max_frames,
+                   "GIF: most frames; a longer episode shows every ceil(steps / (N - 1))-th step and its last")
+      ->capture_default_str();
+  command->add_option("--frame-ms", flags->animation.frame_ms, "GIF: milliseconds per frame, a multiple of 10")
+      ->capture_default_str();
   command->callback([flags] { runReplay(*flags); });
 }
 

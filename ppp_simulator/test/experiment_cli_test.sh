@@ -117,6 +117,37 @@ expect_ok "simulate json" "$ppp" simulate --agent astar --problem "$ppp_file" --
 expect_ok "simulate empty grid" "$ppp" simulate --agent random --problem empty:5x5 --runs 200 --seed 2
 expect_ok "replay" "$ppp" replay "$ppp_file" --agent explorer --memory 5x5 --seed 12345 -o "$work/replay.png"
 [ -s "$work/replay.png" ] && pass || fail "replay wrote no picture"
+# The animation, read by another decoder (Pillow): one frame per step plus the start, the agent's disc on the start
+# cell first and on its last cell at the end, the same bytes for the same seed.
+expect_ok "replay gif" "$ppp" replay "$ppp_file" --agent bumper --seed 7 -o "$work/replay.gif"
+steps="$(sed -n 's/.* after \([0-9]*\) steps.*/\1/p' "$work/out")"
+/usr/bin/python3 - "$work/replay.gif" "$ppp_file" "$steps" <<'PY' && pass || fail "replay gif frames: $(cat "$work/out")"
+import sys
+from PIL import Image
+gif, ppp_file, steps = sys.argv[1], sys.argv[2], int(sys.argv[3])
+lines = open(ppp_file).read().splitlines()
+field = lambda key: next(l.split()[1:] for l in lines if l.startswith(key + ' '))
+start = tuple(int(v) for v in field('start'))
+im = Image.open(gif)
+assert im.n_frames == steps + 1, (im.n_frames, steps)
+centre = lambda c: (c[0] * 12 + 6, c[1] * 12 + 6)
+im.seek(0)
+assert im.convert('RGB').getpixel(centre(start)) == (255, 120, 0), 'first frame: no agent on the start cell'
+im.seek(im.n_frames - 1)
+last = im.convert('RGB')
+agent = [(x, y) for y in range(last.height // 12) for x in range(last.width // 12)
+         if last.getpixel(centre((x, y))) == (255, 120, 0)]
+assert len(agent) == 1, agent
+print('last cell', agent[0])
+PY
+"$ppp" replay "$ppp_file" --agent bumper --seed 7 -o "$work/replay2.gif" > /dev/null 2>&1
+cmp -s "$work/replay.gif" "$work/replay2.gif" && pass || fail "replay gif: the same seed gave different bytes"
+expect_error "replay unknown extension" "--output: expected a .png (the path drawn) or .gif (the episode animated) file name, got '$work/replay.jpg'" \
+  "$ppp" replay "$ppp_file" --agent bumper --seed 7 -o "$work/replay.jpg"
+[ ! -e "$work/replay.jpg" ] && pass || fail "replay wrote a .jpg"
+expect_error "replay unwritable" "$work/no/such/dir/replay.gif" "$ppp" replay "$ppp_file" --agent bumper --seed 7 -o "$work/no/such/dir/replay.gif"
+expect_error "replay frame ms" "--frame-ms: expected a multiple of 10 ms" "$ppp" replay "$ppp_file" --agent bumper --seed 7 --frame-ms 15 -o "$work/r.gif"
+expect_error "replay max frames" "--max-frames: expected an integer in [2, 10000], got 1" "$ppp" replay "$ppp_file" --agent bumper --seed 7 --max-frames 1 -o "$work/r.gif"
 expect_ok "compare" "$ppp" compare "$work/a" "$work/a" --set-a turns --set-b difficulty
 grep -q "long_term_explorer" "$work/out" && pass || fail "compare lacks an agent row: $(cat "$work/out")"
 

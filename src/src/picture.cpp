@@ -8,81 +8,13 @@
 #include <string>
 #include <utility>
 
+#include "ppp_core/canvas.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/text_file.hpp"
 
 namespace ppp {
 
 namespace {
-
-/// A row-major RGB canvas that ignores drawing outside its bounds.
-class Canvas {
- public:
-  Canvas(int width, int height)
-      : width_(width), height_(height), pixels_(static_cast<std::size_t>(width) * height * 3, 0) {}
-
-  void set(int x, int y, Rgb colour) {
-    if (x < 0 || y < 0 || x >= width_ || y >= height_) return;
-    std::uint8_t* p = &pixels_[(static_cast<std::size_t>(y) * width_ + x) * 3];
-    p[0] = colour.r;
-    p[1] = colour.g;
-    p[2] = colour.b;
-  }
-
-  /// Fills the rectangle [x0, x1) × [y0, y1).
-  void fill(int x0, int y0, int x1, int y1, Rgb colour) {
-    for (int y = y0; y < y1; ++y) {
-      for (int x = x0; x < x1; ++x) set(x, y, colour);
-    }
-  }
-
-  /// A filled disc of `radius` pixels (0 is a single pixel).
-  void disc(Pixel centre, int radius, Rgb colour) {
-    for (int dy = -radius; dy <= radius; ++dy) {
-      for (int dx = -radius; dx <= radius; ++dx) {
-        if (dx * dx + dy * dy <= radius * radius + radius) set(centre.x + dx, centre.y + dy, colour);
-      }
-    }
-  }
-
-  /// A Bresenham line from a to b, `thickness` pixels wide.
-  void line(Pixel a, Pixel b, int thickness, Rgb colour) {
-    const int dx = std::abs(b.x - a.x);
-    const int dy = -std::abs(b.y - a.y);
-    const int sx = a.x < b.x ? 1 : -1;
-    const int sy = a.y < b.y ? 1 : -1;
-    int error = dx + dy;
-    const int lo = -(thickness - 1) / 2;
-    const int hi = thickness / 2;
-    for (Pixel p = a;;) {
-      fill(p.x + lo, p.y + lo, p.x + hi + 1, p.y + hi + 1, colour);
-      if (p.x == b.x && p.y == b.y) break;
-      const int twice = 2 * error;
-      if (twice >= dy) {
-        error += dy;
-        p.x += sx;
-      }
-      if (twice <= dx) {
-        error += dx;
-        p.y += sy;
-      }
-    }
-  }
-
-  std::vector<std::uint8_t> release() { return std::move(pixels_); }
-
- private:
-  int width_;
-  int height_;
-  std::vector<std::uint8_t> pixels_;
-};
-
-/// Colours a cell's square, leaving its grid lines alone.
-void fillCell(Canvas& canvas, Cell c, Rgb colour, const PictureOptions& options) {
-  const Pixel o = cellOrigin(c, options);
-  const int inset = options.grid_lines ? 1 : 0;
-  canvas.fill(o.x + inset, o.y + inset, o.x + options.cell_pixels, o.y + options.cell_pixels, colour);
-}
 
 void checkPictureSize(const Problem& problem, const PictureOptions& options) {
   const long long width = static_cast<long long>(problem.width) * options.cell_pixels + (options.grid_lines ? 1 : 0);
@@ -139,14 +71,12 @@ std::vector<std::uint8_t> renderProblemRgb(const Problem& problem, const std::ve
     }
   }
   const Grid grid = decodeGrid(problem);
-  Canvas canvas(pictureWidth(problem.width, options), pictureHeight(problem.height, options));
-  if (options.grid_lines) {
-    canvas.fill(0, 0, pictureWidth(problem.width, options), pictureHeight(problem.height, options), kGridLineColour);
-  }
+  Canvas<Rgb> canvas(pictureWidth(problem.width, options), pictureHeight(problem.height, options),
+                     options.grid_lines ? kGridLineColour : kFreeColour);
   for (int y = 0; y < problem.height; ++y) {
     for (int x = 0; x < problem.width; ++x) {
       const Cell c{x, y};
-      fillCell(canvas, c, grid.isObstacle(c) ? kObstacleColour : kFreeColour, options);
+      canvas.fillCell(c, grid.isObstacle(c) ? kObstacleColour : kFreeColour, options);
     }
   }
   const int thickness = std::max(1, options.cell_pixels / 8);
@@ -155,9 +85,12 @@ std::vector<std::uint8_t> renderProblemRgb(const Problem& problem, const std::ve
   }
   for (const Cell c : path) canvas.disc(cellCentre(c, options), options.cell_pixels / 5, kPathColour);
   // Start and goal go last so they stay solid squares where the path enters them.
-  fillCell(canvas, problem.start, kStartColour, options);
-  fillCell(canvas, problem.goal, kGoalColour, options);
-  return canvas.release();
+  canvas.fillCell(problem.start, kStartColour, options);
+  canvas.fillCell(problem.goal, kGoalColour, options);
+  std::vector<std::uint8_t> rgb;
+  rgb.reserve(canvas.pixels().size() * 3);
+  for (const Rgb& p : canvas.pixels()) rgb.insert(rgb.end(), {p.r, p.g, p.b});
+  return rgb;
 }
 
 std::string encodePng(const std::vector<std::uint8_t>& rgb, int width, int height) {

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "ppp_agents/agent_config.hpp"
+#include "ppp_core/grid.hpp"
+#include "ppp_core/picture.hpp"
+#include "ppp_core/problem.hpp"
+#include "ppp_simulator/episode.hpp"
+
+namespace ppp {
+namespace simulator {
+
+/// Largest frame cap of an animation.
+constexpr int kMaxAnimationFrames = 10000;
+
+/// How an episode is animated.
+struct AnimationOptions {
+  int cell_pixels = 12;      ///< Side of a cell in pixels, in [3, 64].
+  /// Most frames: an episode of more steps shows every stride-th step, stride = ceil(steps / (max_frames - 1)),
+  /// and always its last. In [2, kMaxAnimationFrames]; the default shows every step of budgets up to 1,000.
+  int max_frames = 1001;
+  int frame_ms = 60;         ///< How long each frame is shown: a multiple of 10 ms (GIF's unit) in [20, 10000].
+  int last_frame_ms = 2000;  ///< How long the last frame is held before the animation loops (same rule).
+  /// @throws InvalidArgument naming "cell_pixels", "max_frames", "frame_ms" or "last_frame_ms".
+  void validate() const;
+};
+
+/// Palette colours of the animation (with picture.hpp's map colours).
+constexpr Rgb kAgentColour{255, 120, 0};     ///< The agent's disc.
+constexpr Rgb kBumpColour{220, 0, 200};      ///< Bump marks.
+constexpr Rgb kScannedColour{255, 238, 160}; ///< Free cells in the current scan.
+constexpr Rgb kUnsensedColour{214, 214, 222};  ///< Free cells the agent does not know.
+
+/// An animated episode: how it went and its GIF.
+struct EpisodeAnimation {
+  EpisodeOutcome outcome;  ///< The episode, as EpisodeRunner::run gives it with its path.
+  std::string gif;         ///< The GIF file's bytes.
+  int frames = 0;          ///< Frames in the GIF: steps + 1, or the cap.
+  int stride = 1;          ///< Steps between two frames (1 unless the cap applied).
+};
+
+/// Plays one episode of the agent `config` with `run_seed` (the same episode as EpisodeRunner::run) and draws it
+/// frame by frame: frame 0 at the start, then one frame after each step (or each stride-th, see max_frames) and
+/// the last. Each frame shows the true map, shaded where the agent has not sensed a cell or has forgotten it
+/// (its memory as rebuilt from the scans it was given, with its memory window; nothing is shaded for an agent
+/// given the map), the cells of the current scan tinted, the scan window outlined, the trail so far, a mark on
+/// the side of a cell for every bump (towards the blocked move), start, goal, and the agent as an orange disc.
+/// @throws InvalidArgument for bad options or a picture larger than kMaxPictureSide.
+EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
+                                const EpisodeOptions& options, std::uint64_t run_seed,
+                                const AnimationOptions& animation = {});
+
+}  // namespace simulator
+}  // namespace ppp

@@ -1,0 +1,196 @@
+#include "ppp_simulator/episode_animation.hpp"
+
+#include <algorithm>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "ppp_agents/agent_memory.hpp"
+#include "ppp_agents/agent_registry.hpp"
+#include "ppp_core/canvas.hpp"
+#include "ppp_core/error.hpp"
+#include "ppp_core/gif_animation.hpp"
+
+namespace ppp {
+namespace simulator {
+
+namespace {
+
+/// Palette indices of a frame.
+enum Ink : std::uint8_t {
+  kGridLineInk,
+  kFreeInk,
+  kObstacleInk,
+  kUnsensedFreeInk,
+  kUnsensedObstacleInk,
+  kScannedInk,
+  kWindowInk,
+  kStartInk,
+  kGoalInk,
+  kTrailInk,
+  kAgentInk,
+  kBumpInk,
+};
+
+const std::vector<Rgb> kPalette = {kGridLineColour, kFreeColour,  kObstacleColour, kUnsensedColour,
+                                   Rgb{128, 128, 136}, kScannedColour, Rgb{235, 180, 40}, kStartColour,
+                                   kGoalColour,     kPathColour,  kAgentColour,    kBumpColour};
+
+void checkMilliseconds(int ms, const char* name) {
+  if (ms < 20 || ms > 10000 || ms % 10 != 0) {
+    throw InvalidArgument(name, "expected a multiple of 10 ms (GIF's unit) in [20, 10000], got " + std::to_string(ms));
+  }
+}
+
+/// A blocked move: the agent's cell and the action that bumped.
+struct Bump {
+  Cell cell;
+  agents::Action action;
+};
+
+/// What one frame shows.
+struct FrameState {
+  Cell position;
+  const std::vector<Cell>* trail;  // cells visited so far, start first
+  const std::vector<Bump>* bumps;
+  const Scan* scan;
+  const agents::AgentMemory* memory;  // null: the agent knows the map
+};
+
+/// Draws frames of one problem as palette indices.
+class FramePainter {
+ public:
+  FramePainter(const Problem& problem, const Grid& grid, const AnimationOptions& options)
+      : problem_(problem), grid_(grid), picture_{options.cell_pixels, true},
+        width_(pictureWidth(problem.width, picture_)), height_(pictureHeight(problem.height, picture_)) {
+    if (width_ > kMaxPictureSide || height_ > kMaxPictureSide) {
+      throw InvalidArgument("cell_pixels", "a " + std::to_string(problem.width) + "x" + std::to_string(problem.height) +
+                                               " map at " + std::to_string(options.cell_pixels) +
+                                               " pixels per cell exceeds " + std::to_string(kMaxPictureSide) +
+                                               " pixels per side");
+    }
+  }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  std::vector<std::uint8_t> paint(const FrameState& s) const {
+    Canvas<std::uint8_t> canvas(width_, height_, kGridLineInk);
+    for (int y = 0; y < problem_.height; ++y) {
+      for (int x = 0; x < problem_.width; ++x) {
+        const Cell c{x, y};
+        const bool known = s.memory == nullptr || s.memory->at(c) != kScanUnknown;
+        std::uint8_t ink = grid_.isObstacle(c) ? (known ? kObstacleInk : kUnsensedObstacleInk)
+                                               : (known ? kFreeInk : kUnsensedFreeInk);
+        const int dx = x - s.position.x, dy = y - s.position.y;
+        const int range = s.scan->range();
+        if (!grid_.isObstacle(c) && std::abs(dx) <= range && std::abs(dy) <= range && s.scan->at(dx, dy) != kScanUnknown) {
+          ink = kScannedInk;
+        }
+        canvas.fillCell(c, ink, picture_);
+      }
+    }
+    const int cp = picture_.cell_pixels;
+    const std::vector<Cell>& trail = *s.trail;
+    const int thickness = std::max(1, cp / 8);
+    for (std::size_t i = 1; i < trail.size(); ++i) {
+      canvas.line(cellCentre(trail[i - 1], picture_), cellCentre(trail[i], picture_), thickness, kTrailInk);
+    }
+    canvas.fillCell(problem_.start, kStartInk, picture_);
+    canvas.fillCell(problem_.goal, kGoalInk, picture_);
+    const int bar = std::max(2, cp / 5);
+    for (const Bump& b : *s.bumps) {
+      const Pixel o = cellOrigin(b.cell, picture_);
+      const Cell d = agents::offset(b.action);
+      // A bar along the side the move was blocked at (a corner square for a diagonal).
+      const int x0 = d.x > 0 ? o.x + cp - bar : o.x + 1, x1 = d.x < 0 ? o.x + 1 + bar : o.x + cp;
+      const int y0 = d.y > 0 ? o.y + cp - bar : o.y + 1, y1 = d.y < 0 ? o.y + 1 + bar : o.y + cp;
+      canvas.fill(x0, y0, x1, y1, kBumpInk);
+    }
+    outlineWindow(canvas, s.position, s.scan->range());
+    canvas.disc(cellCentre(s.position, picture_), std::max(1, cp / 3), kAgentInk);
+    return canvas.release();
+  }
+
+ private:
+  /// A one-pixel frame on the grid lines around the scan window, clipped to the map.
+  void outlineWindow(Canvas<std::uint8_t>& canvas, Cell at, int range) const {
+    const Cell lo{std::max(at.x - range, 0), std::max(at.y - range, 0)};
+    const Cell hi{std::min(at.x + range, problem_.width - 1) + 1, std::min(at.y + range, problem_.height - 1) + 1};
+    const Pixel a = cellOrigin(lo, picture_), b = cellOrigin(hi, picture_);
+    canvas.fill(a.x, a.y, b.x + 1, a.y + 1, kWindowInk);
+    canvas.fill(a.x, b.y, b.x + 1, b.y + 1, kWindowInk);
+    canvas.fill(a.x, a.y, a.x + 1, b.y + 1, kWindowInk);
+    canvas.fill(b.x, a.y, b.x + 1, b.y + 1, kWindowInk);
+  }
+
+  const Problem& problem_;
+  const Grid& grid_;
+  PictureOptions picture_;
+  int width_;
+  int height_;
+};
+
+}  // namespace
+
+void AnimationOptions::validate() const {
+  if (cell_pixels < 3 || cell_pixels > 64) {
+    throw InvalidArgument("cell_pixels", "expected an integer in [3, 64], got " + std::to_string(cell_pixels));
+  }
+  if (max_frames < 2 || max_frames > kMaxAnimationFrames) {
+    throw InvalidArgument("max_frames", "expected an integer in [2, " + std::to_string(kMaxAnimationFrames) +
+                                            "], got " + std::to_string(max_frames));
+  }
+  checkMilliseconds(frame_ms, "frame_ms");
+  checkMilliseconds(last_frame_ms, "last_frame_ms");
+}
+
+EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
+                                const EpisodeOptions& options, std::uint64_t run_seed,
+                                const AnimationOptions& animation) {
+  animation.validate();
+  const FramePainter painter(problem, grid, animation);
+  EpisodeRunner runner(config, options);
+  std::unique_ptr<agents::Agent> agent = agents::makeAgent(config);
+  EpisodeAnimation result;
+  // A first run counts the steps, so the frames can be spread over the episode before any is drawn.
+  const int steps = runner.run(problem, grid, *agent, run_seed).steps;
+  result.stride = std::max(1, (steps + animation.max_frames - 2) / (animation.max_frames - 1));
+
+  const agents::EpisodeInfo info = episodeInfo(problem, grid, config, run_seed, options.connectivity);
+  agent->reset(info);
+  Episode episode(problem, grid, runner.sensor(), run_seed, options.budget, options.connectivity, true);
+  std::unique_ptr<agents::AgentMemory> memory;
+  if (info.prior_map == nullptr) {
+    memory = std::make_unique<agents::AgentMemory>();
+    memory->reset(problem.width, problem.height, config.memory_window);
+  }
+  GifAnimation gif(painter.width(), painter.height(), kPalette);
+  std::vector<Bump> bumps;
+  Cell position = problem.start;
+  for (;;) {
+    const Scan scan = episode.scan();
+    const bool last = episode.done();
+    if (memory != nullptr && !last) memory->update(scan);  // the final scan is never given to the agent
+    if (last || episode.step() % result.stride == 0) {
+      const FrameState state{position, &episode.outcome().path, &bumps, &scan, memory.get()};
+      gif.addFrame(painter.paint(state), (last ? animation.last_frame_ms : animation.frame_ms) / 10);
+    }
+    if (last) break;
+    const agents::Action action = agent->act(scan);
+    const int bumps_before = episode.outcome().bumps;
+    episode.apply(action);
+    if (episode.outcome().bumps > bumps_before) bumps.push_back(Bump{position, action});
+    position = episode.outcome().path.back();
+  }
+  if (episode.outcome().steps != steps) {
+    throw Error("the animated replay of " + config.name + " with seed " + std::to_string(run_seed) + " took " +
+                std::to_string(episode.outcome().steps) + " steps where its run took " + std::to_string(steps));
+  }
+  result.outcome = episode.outcome();
+  result.frames = gif.frames();
+  result.gif = gif.encode();
+  return result;
+}
+
+}  // namespace simulator
+}  // namespace ppp

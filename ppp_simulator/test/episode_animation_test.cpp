@@ -1,0 +1,170 @@
+#include "ppp_simulator/episode_animation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/gif_animation.hpp"
+#include "ppp_core/random_problem.hpp"
+#include "ppp_core/rng.hpp"
+
+namespace ppp {
+namespace simulator {
+namespace {
+
+agents::AgentConfig agentConfig(const std::string& type, int memory_window = 0) {
+  agents::AgentConfig c;
+  c.type = type;
+  c.name = type;
+  c.memory_window = memory_window;
+  return c;
+}
+
+/// A solvable 20x20 PPP with 20 random obstacles, drawn from a fixed seed.
+Problem obstacleProblem() {
+  Rng rng(5);
+  return randomProblem(rng, Problem::empty(20, 20, 20), 20);
+}
+
+/// The colour shown at a cell's centre in frame `frame`.
+Rgb centreColour(const GifMovie& movie, int frame, Cell c, const AnimationOptions& options = {}) {
+  const Pixel p = cellCentre(c, PictureOptions{options.cell_pixels, true});
+  const std::uint8_t* rgb = &movie.frames.at(frame).rgb[(static_cast<std::size_t>(p.y) * movie.width + p.x) * 3];
+  return Rgb{rgb[0], rgb[1], rgb[2]};
+}
+
+/// The cells whose centre shows the agent's colour in a frame.
+std::vector<Cell> agentCells(const GifMovie& movie, int frame, const Problem& problem) {
+  std::vector<Cell> cells;
+  for (int y = 0; y < problem.height; ++y) {
+    for (int x = 0; x < problem.width; ++x) {
+      if (centreColour(movie, frame, Cell{x, y}) == kAgentColour) cells.push_back(Cell{x, y});
+    }
+  }
+  return cells;
+}
+
+bool anyPixel(const GifFrame& frame, Rgb colour) {
+  for (std::size_t i = 0; i < frame.rgb.size(); i += 3) {
+    if (Rgb{frame.rgb[i], frame.rgb[i + 1], frame.rgb[i + 2]} == colour) return true;
+  }
+  return false;
+}
+
+TEST(EpisodeAnimationTest, OneFramePerStepPlusTheStartWithTheAgentMovingACellAtATime) {
+  const Problem problem = obstacleProblem();
+  const Grid grid = decodeGrid(problem);
+  for (const std::string type : {"bumper", "wall_follower_left", "explorer"}) {
+    const EpisodeAnimation a = animateEpisode(problem, grid, agentConfig(type), EpisodeOptions{}, 3);
+    EpisodeRunner runner(agentConfig(type), EpisodeOptions{});
+    auto agent = agents::makeAgent(agentConfig(type));
+    const EpisodeOutcome run = runner.run(problem, grid, *agent, 3, true);
+    EXPECT_EQ(a.outcome.steps, run.steps) << type;  // the same episode as a run with that seed
+    EXPECT_EQ(a.outcome.path, run.path) << type;
+    const GifMovie movie = decodeGif(a.gif, type + ".gif");
+    ASSERT_EQ(static_cast<int>(movie.frames.size()), run.steps + 1) << type;
+    EXPECT_EQ(a.frames, run.steps + 1);
+    EXPECT_EQ(a.stride, 1);
+    Cell previous = problem.start;
+    for (int f = 0; f < static_cast<int>(movie.frames.size()); ++f) {
+      const std::vector<Cell> cells = agentCells(movie, f, problem);
+      ASSERT_EQ(cells.size(), 1u) << type << " frame " << f;
+      EXPECT_LE(std::abs(cells[0].x - previous.x) + std::abs(cells[0].y - previous.y), 1) << type << " frame " << f;
+      previous = cells[0];
+      EXPECT_EQ(movie.frames[f].delay_centiseconds, f + 1 < static_cast<int>(movie.frames.size()) ? 6 : 200);
+    }
+    EXPECT_EQ(agentCells(movie, 0, problem)[0], problem.start) << type;
+    EXPECT_EQ(previous, run.path.back()) << type << ": the last frame shows the agent where the episode ended";
+    EXPECT_EQ(anyPixel(movie.frames.back(), kBumpColour), run.bumps > 0) << type << " bumped " << run.bumps;
+  }
+}
+
+TEST(EpisodeAnimationTest, TheSameSeedGivesTheSameBytes) {
+  const Problem problem = obstacleProblem();
+  const Grid grid = decodeGrid(problem);
+  const std::string once = animateEpisode(problem, grid, agentConfig("random"), EpisodeOptions{}, 11).gif;
+  EXPECT_EQ(animateEpisode(problem, grid, agentConfig("random"), EpisodeOptions{}, 11).gif, once);
+  EXPECT_NE(animateEpisode(problem, grid, agentConfig("random"), EpisodeOptions{}, 12).gif, once);
+}
+
+TEST(EpisodeAnimationTest, LongEpisodesShowEveryStrideThStepAndTheLast) {
+  const Problem problem = Problem::empty(20, 20, 0);  // random on an empty map: 300 steps, no pass, for this seed
+  const Grid grid = decodeGrid(problem);
+  AnimationOptions options;
+  options.max_frames = 11;
+  const EpisodeAnimation a = animateEpisode(problem, grid, agentConfig("random"),
+                                            EpisodeOptions{}, 5, options);
+  ASSERT_EQ(a.outcome.steps, 300) << "the seed was chosen for an episode that uses the whole budget";
+  EXPECT_EQ(a.stride, 30);  // ceil(300 / 10)
+  EXPECT_EQ(a.frames, 11);  // steps 0, 30, ..., 300
+  EXPECT_EQ(decodeGif(a.gif, "capped.gif").frames.size(), 11u);
+  // An episode whose steps the stride does not divide: 0, s, 2s, ... and its last step.
+  options.max_frames = 4;
+  const EpisodeAnimation b = animateEpisode(problem, grid, agentConfig("astar"), EpisodeOptions{}, 5, options);
+  ASSERT_EQ(b.outcome.steps, 38);  // the shortest route corner to corner
+  EXPECT_EQ(b.stride, 13);         // ceil(38 / 3)
+  EXPECT_EQ(b.frames, 4);          // steps 0, 13, 26 and 38
+}
+
+TEST(EpisodeAnimationTest, ShadesWhatTheAgentHasNotSensedOrHasForgotten) {
+  const Problem problem = Problem::empty(20, 20, 0);
+  const Grid grid = decodeGrid(problem);
+  const EpisodeAnimation full = animateEpisode(problem, grid, agentConfig("explorer"), EpisodeOptions{}, 1);
+  const GifMovie movie = decodeGif(full.gif, "explorer.gif");
+  EXPECT_EQ(centreColour(movie, 0, Cell{1, 1}), kScannedColour);   // in the first scan
+  EXPECT_EQ(centreColour(movie, 0, Cell{10, 10}), kUnsensedColour);  // far from the start
+  // The known map agent shades nothing.
+  const GifMovie astar = decodeGif(animateEpisode(problem, grid, agentConfig("astar"), EpisodeOptions{}, 1).gif, "a.gif");
+  EXPECT_FALSE(anyPixel(astar.frames[0], kUnsensedColour));
+  // With a 5x5 memory, cells seen at the start and off the trail are forgotten once the agent is far away; with
+  // full memory they stay known (white).
+  const EpisodeAnimation limited = animateEpisode(problem, grid, agentConfig("explorer", 5), EpisodeOptions{}, 1);
+  const GifMovie forgetful = decodeGif(limited.gif, "limited.gif");
+  const std::set<std::pair<int, int>> trail_full = [&] {
+    std::set<std::pair<int, int>> s;
+    for (const Cell c : full.outcome.path) s.insert({c.x, c.y});
+    for (const Cell c : limited.outcome.path) s.insert({c.x, c.y});
+    return s;
+  }();
+  int checked = 0;
+  for (int y = 0; y <= 2; ++y) {
+    for (int x = 0; x <= 2; ++x) {
+      if (trail_full.count({x, y}) != 0 || Cell{x, y} == problem.start) continue;
+      EXPECT_EQ(centreColour(movie, static_cast<int>(movie.frames.size()) - 1, Cell{x, y}), kFreeColour);
+      EXPECT_EQ(centreColour(forgetful, static_cast<int>(forgetful.frames.size()) - 1, Cell{x, y}), kUnsensedColour);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 0) << "no cell near the start was off both trails";
+}
+
+TEST(EpisodeAnimationTest, RejectsBadOptionsByName) {
+  const Problem problem = Problem::empty(5, 5, 0);
+  const Grid grid = decodeGrid(problem);
+  const auto error = [&](AnimationOptions o) {
+    try {
+      animateEpisode(problem, grid, agentConfig("astar"), EpisodeOptions{}, 1, o);
+    } catch (const InvalidArgument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  AnimationOptions o;
+  o.max_frames = 1;
+  EXPECT_NE(error(o).find("max_frames"), std::string::npos) << error(o);
+  o = AnimationOptions{};
+  o.frame_ms = 65;
+  EXPECT_NE(error(o).find("frame_ms: expected a multiple of 10 ms"), std::string::npos) << error(o);
+  o = AnimationOptions{};
+  o.cell_pixels = 2;
+  EXPECT_NE(error(o).find("cell_pixels"), std::string::npos) << error(o);
+}
+
+}  // namespace
+}  // namespace simulator
+}  // namespace ppp
