@@ -9,6 +9,7 @@
 #include "ppp_core/csv.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_simulator/episode.hpp"
+#include "ppp_simulator/episode_animation.hpp"
 #include "ppp_simulator/pass_rates.hpp"
 
 namespace ppp {
@@ -16,7 +17,10 @@ namespace simulator {
 
 namespace {
 
-/// The first failing run of `agent` on PPP `problem` of `set`, replayed for its path.
+/// Longer side of a failure's animation, roughly, in pixels (12 per cell on the default 20x20 maps).
+constexpr int kAnimationTargetPixels = 240;
+
+/// The first failing run of `agent` on PPP `problem` of `set`, replayed for its path and animated.
 FailureExample failingRun(const ExperimentConfig& config, const PreparedSet& set, int problem,
                           const agents::AgentConfig& agent_config, const std::vector<ResultGroup>& groups) {
   const EpisodeResult* first_fail = nullptr;
@@ -27,23 +31,33 @@ FailureExample failingRun(const ExperimentConfig& config, const PreparedSet& set
       first_fail = f;
     }
   }
-  EpisodeRunner runner(agent_config, config.episode);
-  auto agent = agents::makeAgent(agent_config);
-  const EpisodeOutcome outcome =
-      runner.run(set.set.problems[problem], set.grids[problem], *agent, first_fail->seed, true);
+  const Problem& ppp = set.set.problems[problem];
+  AnimationOptions animation;
+  animation.cell_pixels = std::clamp(kAnimationTargetPixels / std::max(ppp.width, ppp.height), 3, 12);
+  EpisodeAnimation run;
+  if (pictureWidth(std::max(ppp.width, ppp.height), PictureOptions{animation.cell_pixels, true}) <= kMaxPictureSide) {
+    run = animateEpisode(ppp, set.grids[problem], agent_config, config.episode, first_fail->seed, animation);
+  } else {  // too large to animate: the path only
+    EpisodeRunner runner(agent_config, config.episode);
+    auto agent = agents::makeAgent(agent_config);
+    run.outcome = runner.run(ppp, set.grids[problem], *agent, first_fail->seed, true);
+  }
+  const EpisodeOutcome& outcome = run.outcome;
   FailureExample example;
   example.set = set.name;
   example.problem = set.set.ids[problem];
   example.agent = agent_config.name;
   example.run = first_fail->run;
   example.seed = first_fail->seed;
-  example.ppp = set.set.problems[problem];
+  example.ppp = ppp;
   example.path = outcome.path;
   example.reason = outcome.reason;
+  example.animation_gif = run.gif;
   example.replay_flags = "--agent " + agent_config.type + " --memory " +
                          agents::memoryWindowText(agent_config.memory_window) + " --sensor-noise " + formatNumber(agent_config.sensor_noise) + " --budget " +
                          std::to_string(config.episode.budget) + " --sensor-range " +
-                         std::to_string(config.episode.sensor_range);
+                         std::to_string(config.episode.sensor_range) +
+                         (config.episode.connectivity == 4 ? "" : " --connectivity " + std::to_string(config.episode.connectivity));
   return example;
 }
 

@@ -147,6 +147,7 @@ struct Plot {
 
 struct Picture {
   std::string png_file;  // relative to the report directory
+  std::string gif_file;  // the animation beside it, relative to the report directory; empty without one
   std::string ppp_file;  // relative to the report directory
   std::string png;       // PNG bytes
   int width = 0;
@@ -266,6 +267,9 @@ std::vector<Picture> makePictures(const std::vector<FailureExample>& failures, c
       picture.ppp_file =
           "ppps/" + ppp_names.claim(safeStem(failure.set) + "_" + safeStem(failure.problem), ".ppp");
       if (known == ppp_files.end()) ppp_files.emplace(key, std::make_pair(picture.ppp_file, failure.ppp));
+    }
+    if (!failure.animation_gif.empty()) {
+      picture.gif_file = picture.png_file.substr(0, picture.png_file.size() - 4) + ".gif";
     }
     pictures.push_back(std::move(picture));
   }
@@ -509,7 +513,9 @@ void failureEntry(const FailureExample& failure, const Picture& picture, const s
 
   out->md += "### " + number + mdCode(failure.set, false) + " / " + mdCode(failure.problem, false) +
              " \xE2\x80\x94 " + mdCode(failure.agent, false) + "\n\n";
-  out->md += "![" + mdText(alt) + "](" + picture.png_file + ")\n\n";
+  out->md += "![" + mdText(alt) + "](" + picture.png_file + ")";
+  if (!picture.gif_file.empty()) out->md += " ![" + mdText("The same run, step by step") + "](" + picture.gif_file + ")";
+  out->md += "\n\n";
   out->md += "- agent " + mdCode(failure.agent, false) + ", run " + std::to_string(failure.run) + ", seed " +
              mdCode(std::to_string(failure.seed), false) + "\n";
   out->md += "- reason " + mdCode(failure.reason, false) + (reason.empty() ? "" : ": " + mdText(reason)) + "\n";
@@ -522,14 +528,22 @@ void failureEntry(const FailureExample& failure, const Picture& picture, const s
                "</code></h3>\n<div class=\"failure\">\n";
   out->html += "<img src=\"data:image/png;base64," + generator::base64Encode(picture.png) + "\" width=\"" +
                std::to_string(picture.width) + "\" height=\"" + std::to_string(picture.height) + "\" alt=\"" +
-               escapeMarkup(alt) + "\">\n<ul>\n";
+               escapeMarkup(alt) + "\">\n";
+  if (!picture.gif_file.empty()) {
+    out->html += "<img class=\"run\" src=\"data:image/gif;base64," + generator::base64Encode(failure.animation_gif) +
+                 "\" width=\"" + std::to_string(picture.width) + "\" height=\"" + std::to_string(picture.height) +
+                 "\" alt=\"" + escapeMarkup("The same run, step by step") + "\">\n";
+  }
+  out->html += "<ul>\n";
   out->html += "<li>agent <code>" + escapeMarkup(failure.agent) + "</code>, run " + std::to_string(failure.run) +
                ", seed <code>" + std::to_string(failure.seed) + "</code></li>\n";
   out->html += "<li>reason <code>" + escapeMarkup(failure.reason) + "</code>" +
                (reason.empty() ? "" : ": " + escapeMarkup(reason)) + "</li>\n";
   out->html += "<li>grid " + escapeMarkup(grid) + "</li>\n";
   out->html += "<li>path " + escapeMarkup(pathText(failure)) + "</li>\n";
-  out->html += "<li>picture <code>" + escapeMarkup(picture.png_file) + "</code>, PPP file <code>" +
+  out->html += "<li>picture <code>" + escapeMarkup(picture.png_file) + "</code>" +
+               (picture.gif_file.empty() ? "" : ", animation <code>" + escapeMarkup(picture.gif_file) + "</code>") +
+               ", PPP file <code>" +
                escapeMarkup(picture.ppp_file) + "</code></li>\n";
   out->html += "<li>replay: <code>" + escapeMarkup(command) + "</code></li>\n</ul>\n</div>\n";
 }
@@ -544,7 +558,10 @@ void failureSection(const ReportInput& input, const std::vector<Picture>& pictur
   }
   const std::string intro =
       "A failed run on each of the hardest PPPs: the agent's path in blue (dots on the cells it stood on), start "
-      "green, goal red, obstacles dark grey. Run the replay command from this report's directory to reproduce it.";
+      "green, goal red, obstacles dark grey. Beside it, the same run step by step: the agent as an orange disc, "
+      "its scan window outlined in gold with the free cells it sees yellow, cells it has not sensed or has "
+      "forgotten shaded, and a magenta mark on the side of a cell for every bump. Run the replay command from "
+      "this report's directory to reproduce it (-o run.gif for the animation).";
   out->md += mdText(intro) + "\n\n";
   out->html += "<p>" + escapeMarkup(intro) + "</p>\n";
   for (std::size_t i = 0; i < input.failures.size(); ++i) {
@@ -664,6 +681,7 @@ void writeReport(const std::string& dir, const ReportInput& input, const StopChe
   std::set<std::string> written_ppps;
   for (std::size_t i = 0; i < all_pictures.size(); ++i) {
     write(all_pictures[i].png_file, all_pictures[i].png);
+    if (!all_pictures[i].gif_file.empty()) write(all_pictures[i].gif_file, shown[i].animation_gif);
     if (written_ppps.insert(all_pictures[i].ppp_file).second) write(all_pictures[i].ppp_file, formatPpp(shown[i].ppp));
   }
   write("report.md", text.md);

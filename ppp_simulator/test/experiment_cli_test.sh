@@ -16,6 +16,20 @@ for f in experiment.yaml summary.csv report.md report.html sets/turns/set.csv se
   [ -s "$work/a/$f" ] && pass || fail "experiment did not write $f"
 done
 ls "$work/a/pictures/"*.png > /dev/null 2>&1 && pass || fail "report has no pictures"
+# Every failing run pictured is also animated, beside the picture and inline in the HTML.
+for png in "$work/a/pictures/"*.png; do
+  [ -s "${png%.png}.gif" ] && pass || fail "no animation beside $png"
+done
+gifs="$(ls "$work/a/pictures/"*.gif 2> /dev/null | wc -l)"
+[ "$(grep -o 'data:image/gif;base64,' "$work/a/report.html" | wc -l)" -eq "$gifs" ] && pass || \
+  fail "report.html embeds $(grep -o 'data:image/gif;base64,' "$work/a/report.html" | wc -l) animations for $gifs files"
+/usr/bin/python3 -c '
+import sys
+from PIL import Image
+for name in sys.argv[1:]:
+    im = Image.open(name)
+    assert im.format == "GIF" and im.n_frames >= 2 and im.info.get("loop") == 0, name
+' "$work/a/pictures/"*.gif && pass || fail "the animations of the report do not read as looping GIFs"
 expect_ok "rerun of a finished experiment" "$ppp" experiment "$work/experiment.yaml" -o "$work/a" --quiet
 grep -q "0 runs simulated, 54000 resumed" "$work/out" && pass || fail "rerun did work again: $(cat "$work/out")"
 

@@ -180,6 +180,26 @@ TEST_F(ReportTest, FaultsFoundCountsFailedPppsShowsTheWorstAndTheArchive) {
   EXPECT_NE(read("report.html").find("<svg><title>the beta archive</title></svg>"), std::string::npos);
 }
 
+TEST_F(ReportTest, AFailureWithAnAnimationShowsItBesideThePictureAndWritesItsFile) {
+  ReportInput input = handMadeInput();
+  input.failures[0].animation_gif = "GIF89a the run";  // the report embeds bytes as given
+  FailureExample worst = input.failures[0];
+  worst.agent = "explorer";
+  worst.animation_gif.clear();  // an example without one shows the picture alone
+  input.worst = {worst};
+  writeReport(dir_, input);
+  EXPECT_EQ(read("pictures/beta_q1_random.gif"), "GIF89a the run");
+  EXPECT_FALSE(fs::exists(dir_ + "/pictures/beta_q1_explorer.gif"));
+  const std::string md = read("report.md");
+  EXPECT_NE(md.find("](pictures/beta_q1_random.png) ![The same run, step by step](pictures/beta_q1_random.gif)\n"),
+            std::string::npos) << md;
+  const std::string html = read("report.html");
+  const std::string embedded = "src=\"data:image/gif;base64," + generator::base64Encode("GIF89a the run") + "\"";
+  ASSERT_NE(html.find(embedded), std::string::npos);
+  EXPECT_EQ(html.find(embedded, html.find(embedded) + 1), std::string::npos) << "one animation, embedded once";
+  EXPECT_NE(html.find("animation <code>pictures/beta_q1_random.gif</code>"), std::string::npos);
+}
+
 TEST_F(ReportTest, HtmlIsSelfContainedAndEscaped) {
   writeReport(dir_, handMadeInput());
   const std::string html = read("report.html");

@@ -26,6 +26,7 @@ struct FailureExample {
   std::string reason;           ///< Why the episode ended (a reason:: constant).
   std::string replay_flags;     ///< `ppp replay` flags recreating the agent configuration (e.g. "--agent explorer
                                 ///< --memory 5x5"); empty means "--agent <agent>".
+  std::string animation_gif;    ///< The run frame by frame (animateEpisode's GIF bytes); empty when there is none.
 };
 
 /// What the report says about a set besides its pass rates.
@@ -56,7 +57,8 @@ struct ReportInput {
 /// `report.md` (Markdown, referring to the files below by relative path), `report.html` (self-contained: the
 /// same content with inline SVG charts and base64 PNG pictures, nothing fetched), `plots/pass_rate_by_agent.svg`,
 /// `plots/pass_rate_by_ppp_<set>.svg` per set (a heat map), and per failure example (hardest and worst) `pictures/<set>_<problem>_<agent>.png`
-/// (the PPP with the agent's path) and `ppps/<set>_<problem>.ppp` (the PPP, for `ppp replay`). Names are
+/// (the PPP with the agent's path), beside it `.gif` (the run animated, when the example has one; inline in the
+/// HTML too) and `ppps/<set>_<problem>.ppp` (the PPP, for `ppp replay`). Names are
 /// reduced to letters, digits, '.', '-' and '_' in file names. Every file is written atomically.
 /// Everything is checked and rendered before the first file is written.
 /// @throws InvalidArgument naming "comparisons" for a pair naming a set the table does not have, and
