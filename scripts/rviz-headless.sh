@@ -5,6 +5,7 @@
 #                                 SIGINT or SIGTERM to this first run is passed on to the rerun as SIGTERM, so
 #                                 the rerun stops what it started and xvfb-run then stops Xvfb. In the rerun:
 #                                 sets the exit trap (below) and returns.
+#   rviz_headless_in_xvfb         true in the rerun (e.g. to skip checks the first run made).
 #   rviz_headless_start           a scratch directory $work, a private roscore on a free loopback port
 #                                 (ROS_HOME in $work, /use_sim_time true) and rviz with launch/ppp.rviz
 #                                 ($rviz_pid); logs in $work/roscore.log and $work/rviz.log.
@@ -20,14 +21,19 @@
 # shellcheck shell=bash
 RVIZ_HEADLESS_SCREEN=1280x960
 
+_rh_rerun="${PPP_RVIZ_HEADLESS_PIDFILE:+1}"
 _rh_pids=()
 declare -A _rh_grace=()
 _rh_remove=()
 _rh_sleep=""
 work=""
 
+rviz_headless_in_xvfb() {
+  [ -n "$_rh_rerun" ]
+}
+
 rviz_headless_xvfb() {
-  if [ -n "${PPP_RVIZ_HEADLESS_PIDFILE:-}" ]; then
+  if rviz_headless_in_xvfb; then
     # The rerun under xvfb-run: trap first, then tell the first run where to send signals.
     trap _rviz_headless_cleanup EXIT
     trap 'exit 130' INT TERM
@@ -50,13 +56,17 @@ rviz_headless_xvfb() {
     kill -0 "$_rh_xvfb_run" 2>/dev/null || break  # else wait was cut short by a signal: wait again
   done
   rm -f "$_rh_pidfile"
+  # Interrupted: 130, also when a Ctrl-C to the whole process group made xvfb-run fail on its own.
+  [ -z "$_rh_pending" ] || [ "$status" -eq 0 ] || status=130
   exit "$status"
 }
 
-# The first run on SIGINT/SIGTERM: SIGTERM to the rerun (once it has said its pid; at most 10 s).
+# The first run on SIGINT/SIGTERM: SIGTERM to the rerun (once it has said its pid; at most 10 s). A signal
+# before xvfb-run started is passed on right after it started.
 _rviz_headless_forward() {
   local inner="" _
-  if [ -z "$_rh_xvfb_run" ]; then _rh_pending=1; return 0; fi
+  _rh_pending=1
+  [ -n "$_rh_xvfb_run" ] || return 0
   for _ in $(seq 100); do
     inner="$(cat "$_rh_pidfile" 2>/dev/null)" || true
     [ -n "$inner" ] && break

@@ -1,4 +1,5 @@
-// Agent-steps per second through the real episode engine (EpisodeRunner), per agent and map size.
+// Agent-steps per second through the real episode engine (EpisodeRunner), per agent and map size; and the cost
+// of animating one episode for the report.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -6,6 +7,7 @@
 #include "ppp_core/random_problem.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_simulator/episode.hpp"
+#include "ppp_simulator/episode_animation.hpp"
 
 namespace {
 
@@ -33,5 +35,25 @@ void BM_Episodes(benchmark::State& state) {
 }
 
 BENCHMARK(BM_Episodes)->ArgsProduct({{0, 1, 2, 3, 4, 5}, {20, 50, 100}})->Unit(benchmark::kMicrosecond);
+
+/// One failing 300-step episode animated as the report does it (12 pixels per cell on 20x20: 301 frames of
+/// 241 x 241 pixels, encoded as a GIF); the label gives the GIF's size.
+void BM_AnimateEpisode(benchmark::State& state) {
+  ppp::Rng rng(20);
+  const ppp::Problem problem = ppp::randomProblem(rng, ppp::Problem::empty(20, 20, 10), 10);
+  const ppp::Grid grid = ppp::decodeGrid(problem);
+  ppp::agents::AgentConfig config;
+  config.type = config.name = "random";
+  std::size_t bytes = 0;
+  int frames = 0;
+  for (auto _ : state) {
+    const auto animation = ppp::simulator::animateEpisode(problem, grid, config, ppp::simulator::EpisodeOptions{}, 1);
+    bytes = animation.gif.size();
+    frames = animation.frames;
+  }
+  state.SetLabel(std::to_string(frames) + " frames, " + std::to_string(bytes / 1024) + " KiB");
+}
+
+BENCHMARK(BM_AnimateEpisode)->Unit(benchmark::kMillisecond);
 
 }  // namespace

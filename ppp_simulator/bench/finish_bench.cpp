@@ -107,7 +107,7 @@ std::string unorderedResults(const sim::ExperimentConfig& config, const std::vec
             sim::EpisodeOutcome outcome;
             outcome.passed = static_cast<double>(rng.below(1000)) < 1000.0 * pass_probability;
             outcome.steps = outcome.passed ? 20 + static_cast<int>(rng.below(200)) : 300;
-            outcome.bumps = static_cast<int>(rng.below(40));
+            outcome.bumps = static_cast<int>(rng.below(40)) % (outcome.steps + 1);  // never more than the steps
             outcome.path_length = outcome.steps - outcome.bumps;
             outcome.reason = outcome.passed ? sim::reason::kGoalReached : sim::reason::kBudgetExhausted;
             const std::uint64_t seed = sim::runSeed(config.seed, sets[s].name, sets[s].set.ids[p], agent.name, run);

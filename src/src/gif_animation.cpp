@@ -3,6 +3,7 @@
 #include <gif_lib.h>
 
 #include <algorithm>
+#include <cstring>
 #include <utility>
 
 #include "ppp_core/error.hpp"
@@ -79,12 +80,14 @@ void GifAnimation::addFrame(const std::vector<std::uint8_t>& indices, int delay_
   if (!last_.empty()) {
     left = width_, top = height_, right = -1, bottom = -1;
     for (int y = 0; y < height_; ++y) {
-      const std::size_t row = static_cast<std::size_t>(y) * width_;
-      for (int x = 0; x < width_; ++x) {
-        if (indices[row + x] == last_[row + x]) continue;
-        left = std::min(left, x), right = std::max(right, x);
-        top = std::min(top, y), bottom = std::max(bottom, y);
-      }
+      const std::uint8_t* now = indices.data() + static_cast<std::size_t>(y) * width_;
+      const std::uint8_t* before = last_.data() + static_cast<std::size_t>(y) * width_;
+      if (std::memcmp(now, before, static_cast<std::size_t>(width_)) == 0) continue;
+      int first = 0, last = width_ - 1;
+      while (now[first] == before[first]) ++first;
+      while (now[last] == before[last]) --last;
+      left = std::min(left, first), right = std::max(right, last);
+      top = std::min(top, y), bottom = y;
     }
     if (right < 0) left = top = right = bottom = 0;
   }

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdlib>
 #include <utility>
 #include <vector>
@@ -24,10 +26,13 @@ class Canvas {
     pixels_[static_cast<std::size_t>(y) * width_ + x] = colour;
   }
 
-  /// Fills the rectangle [x0, x1) × [y0, y1).
+  /// Fills the rectangle [x0, x1) × [y0, y1) (clipped to the canvas).
   void fill(int x0, int y0, int x1, int y1, Colour colour) {
+    x0 = std::max(x0, 0), y0 = std::max(y0, 0), x1 = std::min(x1, width_), y1 = std::min(y1, height_);
+    if (x0 >= x1) return;
     for (int y = y0; y < y1; ++y) {
-      for (int x = x0; x < x1; ++x) set(x, y, colour);
+      const auto row = pixels_.begin() + static_cast<std::ptrdiff_t>(y) * width_;
+      std::fill(row + x0, row + x1, colour);
     }
   }
 
