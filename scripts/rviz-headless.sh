@@ -1,7 +1,8 @@
 # Shared set-up of the headless rviz scripts (rviz-screenshot.sh, rviz-video.sh); source it after env.sh, with
 # rviz_headless_name set to the script's name (the prefix of its messages). Argument-independent parts only:
 #   rviz_headless_xvfb ARGS...    first run (the user's): reruns "$0" ARGS under xvfb-run (-a: a free display;
-#                                 a ${RVIZ_HEADLESS_SCREEN}x24 screen), waits for it and exits with its status.
+#                                 a 1280x960x24 screen, $RVIZ_HEADLESS_SCREEN), waits for it and exits with its
+#                                 status.
 #                                 SIGINT or SIGTERM to this first run is passed on to the rerun as SIGTERM, so
 #                                 the rerun stops what it started and xvfb-run then stops Xvfb. In the rerun:
 #                                 sets the exit trap (below) and returns.
@@ -10,8 +11,8 @@
 #                                 (ROS_HOME in $work, /use_sim_time true) and rviz with launch/ppp.rviz
 #                                 ($rviz_pid); logs in $work/roscore.log and $work/rviz.log.
 #   rviz_headless_wait_map        waits until rviz has subscribed to /map (at most 60 s); else exits 1.
-#   rviz_headless_track PID [S]   stops PID at exit: SIGINT, then SIGKILL after S seconds (default 5). Later
-#                                 tracked processes are stopped first.
+#   rviz_headless_track PID [S]   stops PID at exit: SIGINT, then SIGKILL after S seconds (default 5); waited for
+#                                 in reverse order of tracking.
 #   rviz_headless_untrack PID     forgets PID (call it once the script has waited for PID itself).
 #   rviz_headless_remove PATH     removes PATH at exit, after the processes stopped.
 #   rviz_headless_sleep S         sleeps S seconds, cut short by SIGINT/SIGTERM (a foreground sleep would delay

@@ -8,7 +8,10 @@
 #   .mp4   H.264 (libx264, yuv420p, moov atom first), plays in browsers;
 #   .webm  VP9 (libvpx-vp9, yuv420p).
 # SECONDS (a positive number) defaults to the bag's length (`rosbag info` duration), at least 1 s (a bag of one
-# instant still gives a 1 s video). Longer than the bag, the video keeps showing the last state.
+# instant still gives a 1 s video). Longer than the bag, the video keeps showing the last state. rosbag play
+# takes about 0.4 s to start (its default 0.2 s delay after advertising included), so the first frames show rviz
+# before the map and the default length ends that much before the bag's last messages: give SECONDS a second
+# more than the bag to see its very end.
 # The video is written beside OUT under a temporary name (.OUT.XXXXXX) and renamed to OUT only once ffmpeg has
 # finished it; on SIGINT/SIGTERM everything is stopped (ffmpeg with SIGINT, so it closes the file) and no file is
 # left. Bad input (no bag, not a bag, unknown extension, unwritable OUT, bad SECONDS) exits 2 before starting
@@ -66,7 +69,8 @@ ffmpeg -nostdin -hide_banner -loglevel error -y -f x11grab -draw_mouse 0 -framer
 ffmpeg_pid=$!
 rviz_headless_track "$ffmpeg_pid" 30  # time to close the file when stopped early
 rosbag play --clock -q "$bag" > "$work/rosbag.log" 2>&1 &
-rviz_headless_track "$!"
+rosbag_pid=$!
+rviz_headless_track "$rosbag_pid"
 
 status=0
 wait "$ffmpeg_pid" || status=$?
@@ -75,6 +79,12 @@ if [ "$status" -ne 0 ] || [ ! -s "$part" ]; then
   cat "$work/ffmpeg.log" >&2
   echo "rviz-video: ffmpeg failed (exit $status), no video written" >&2
   exit 1
+fi
+if ! kill -0 "$rosbag_pid" 2>/dev/null; then  # played to its end (else stopped at exit)
+  status=0
+  wait "$rosbag_pid" || status=$?
+  rviz_headless_untrack "$rosbag_pid"
+  [ "$status" -eq 0 ] || echo "rviz-video: warning: rosbag play failed (exit $status): $(tail -3 "$work/rosbag.log")" >&2
 fi
 chmod "$(printf '%o' $((0666 & ~0$(umask))))" "$part"  # mktemp made it private
 mv -f "$part" "$out"

@@ -42,18 +42,6 @@ void requireInside(const LineCursor& cursor, Cell c, int width, int height, cons
   }
 }
 
-// MovingAI's files give lengths with 8 decimals; a length those do not hold exactly is written in the shortest
-// form that reads back as the same double, so writing never changes a scenario.
-std::string lengthText(double length) {
-  char text[64];  // kMaxLength with 8 decimals fits, and so does any double's shortest form
-  const int written = std::snprintf(text, sizeof text, "%.8f", length);
-  double reread = -1;
-  std::from_chars(text, text + written, reread);
-  if (reread == length) return std::string(text, static_cast<std::size_t>(written));
-  const auto shortest = std::to_chars(text, text + sizeof text, length);
-  return std::string(text, shortest.ptr);
-}
-
 }  // namespace
 
 std::vector<MovingAiScenario> parseMovingAiScenarios(const std::string& text, const std::string& source) {
@@ -96,7 +84,8 @@ std::vector<MovingAiScenario> readMovingAiScenarios(const std::string& path) {
 std::string formatMovingAiScenarios(const std::vector<MovingAiScenario>& scenarios) {
   std::string text = "version 1\n";
   for (const MovingAiScenario& s : scenarios) {
-    const std::string length = lengthText(s.optimal_length);
+    char length[32];  // kMaxLength with 8 decimals fits
+    std::snprintf(length, sizeof length, "%.8f", s.optimal_length);
     text += std::to_string(s.bucket) + "\t" + s.map + "\t" + std::to_string(s.map_width) + "\t" +
             std::to_string(s.map_height) + "\t" + std::to_string(s.start.x) + "\t" + std::to_string(s.start.y) +
             "\t" + std::to_string(s.goal.x) + "\t" + std::to_string(s.goal.y) + "\t" + length + "\n";

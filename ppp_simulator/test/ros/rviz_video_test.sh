@@ -23,7 +23,7 @@ probe() {
 leftovers() {
   local f pid
   for f in /proc/[0-9]*/environ; do
-    grep -qzx "PPP_RVIZ_VIDEO_TEST=$1" "$f" 2>/dev/null || continue
+    grep -qzxF "PPP_RVIZ_VIDEO_TEST=$1" "$f" 2>/dev/null || continue
     pid="${f#/proc/}"; pid="${pid%/environ}"
     echo -n "$pid $(tr '\0' ' ' < "/proc/$pid/cmdline" 2>/dev/null | cut -c1-80); "
   done

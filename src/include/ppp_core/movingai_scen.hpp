@@ -32,7 +32,7 @@ std::vector<MovingAiScenario> parseMovingAiScenarios(const std::string& text, co
 std::vector<MovingAiScenario> readMovingAiScenarios(const std::string& path);
 
 /// The text of a "version 1" `.scen` file of `scenarios`, tab-separated, lengths with 8 decimals (as the
-/// benchmark's files) unless those would change the length, which is then written in its shortest exact form.
+/// benchmark's files).
 std::string formatMovingAiScenarios(const std::vector<MovingAiScenario>& scenarios);
 
 /// Writes formatMovingAiScenarios() to `path`, atomically. @throws IoError.
