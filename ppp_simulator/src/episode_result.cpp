@@ -3,6 +3,7 @@
 #include <array>
 #include <charconv>
 #include <cstdio>
+#include <string_view>
 
 #include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
@@ -25,12 +26,13 @@ T parseNumber(std::string_view text, const std::string& source, int line, const 
   return value;
 }
 
-/// A path or optimal length: a whole number, or one with decimals (diagonal moves).
+/// A path or optimal length: a whole number, or one with decimals (diagonal moves), never negative but for -1
+/// (no optimal length known).
 double parseLength(std::string_view text, const std::string& source, int line, const char* field) {
   double value = 0;
   const char* end = text.data() + text.size();
   const auto result = std::from_chars(text.data(), end, value);
-  if (text.empty() || result.ec != std::errc() || result.ptr != end || !(value >= -1 && value < 1e15)) {
+  if (text.empty() || result.ec != std::errc() || result.ptr != end || !((value >= 0 || value == -1) && value < 1e15)) {
     throw ParseError(source, line, field, "expected a length, got '" + std::string(text) + "'");
   }
   return value;
@@ -77,15 +79,18 @@ void appendNumber(T value, std::string* out) {
 }
 
 /// A length as results.csv writes it: a whole number as such (every length of the 4-connected model), else with
-/// eight decimals, as MovingAI's scenario files do.
+/// eight decimals, as MovingAI's scenario files do; a length that rounds to a whole number at eight decimals is
+/// written as that number, so that writing what was read back gives the same text.
 void appendLength(double value, std::string* out) {
   char digits[48];
   const auto whole = static_cast<long long>(value);
   if (static_cast<double>(whole) == value) {
     out->append(digits, std::to_chars(digits, digits + sizeof digits, whole).ptr);
-  } else {
-    out->append(digits, static_cast<std::size_t>(std::snprintf(digits, sizeof digits, "%.8f", value)));
+    return;
   }
+  std::size_t length = static_cast<std::size_t>(std::snprintf(digits, sizeof digits, "%.8f", value));
+  if (std::string_view(digits, length).substr(length - 9) == ".00000000") length -= 9;
+  out->append(digits, length);
 }
 
 std::string lengthText(double value) {

@@ -127,6 +127,12 @@ TEST(ResultsCsvText, LengthsAreWholeNumbersOrEightDecimals) {
   EXPECT_EQ(line, "s,p,astar,0,0,0,0,0,5.82842712,5.65685425,goal_reached\n");
   const EpisodeResult back = parseCsvRow(line.substr(0, line.size() - 1), "x.csv", 2);
   EXPECT_NEAR(back.path_length, 5.82842712, 1e-12);
+  // A length that rounds to a whole number at eight decimals is written as that number (the text of a row read
+  // back and written again does not change).
+  r.path_length = 7 + 1.5e-9;
+  r.optimal_length = 2.999999996;
+  EXPECT_EQ(csvLine(toCsvFields(r)), "s,p,astar,0,0,0,0,0,7,3,goal_reached");
+  EXPECT_THROW(parseCsvRow("s,p,astar,0,0,0,0,0,7,-0.5,goal_reached", "x.csv", 2), ParseError);  // only -1 is negative
   std::string again;
   appendCsvRow(back, &again);
   EXPECT_EQ(again, line);
