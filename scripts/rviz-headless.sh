@@ -18,7 +18,9 @@
 #   rviz_headless_sleep S         sleeps S seconds, cut short by SIGINT/SIGTERM (a foreground sleep would delay
 #                                 the trap until it ends).
 # The exit trap stops every tracked process (all at once, then waiting for each) and removes $work and the
-# paths; SIGINT and SIGTERM exit with status 130 through it, and further signals do not cut it short.
+# paths; SIGTERM (what the first run sends on SIGINT or SIGTERM) exits with status 130 through it, and further
+# signals do not cut it short. (The rerun starts as a background job of the first run, so it ignores SIGINT
+# itself; a Ctrl-C to the whole process group reaches it as the first run's SIGTERM.)
 # shellcheck shell=bash
 RVIZ_HEADLESS_SCREEN=1280x960
 
@@ -62,23 +64,18 @@ rviz_headless_xvfb() {
   exit "$status"
 }
 
-# The first run on SIGINT/SIGTERM: SIGTERM to the rerun (once it has said its pid; at most 10 s). A signal
-# before xvfb-run started is passed on right after it started.
+# The first run on SIGINT/SIGTERM: SIGTERM to the rerun, once it has said its pid (its first act under
+# xvfb-run); nothing when xvfb-run ended first. A signal before xvfb-run started is passed on right after.
 _rviz_headless_forward() {
-  local inner="" _
+  local inner=""
   _rh_pending=1
   [ -n "$_rh_xvfb_run" ] || return 0
-  for _ in $(seq 100); do
+  while [ -z "$inner" ]; do
     inner="$(cat "$_rh_pidfile" 2>/dev/null)" || true
-    [ -n "$inner" ] && break
-    kill -0 "$_rh_xvfb_run" 2>/dev/null || return 0
-    sleep 0.1
+    [ -n "$inner" ] || kill -0 "$_rh_xvfb_run" 2>/dev/null || return 0
+    [ -n "$inner" ] || sleep 0.1
   done
-  if [ -n "$inner" ]; then
-    kill -TERM "$inner" 2>/dev/null || true
-  else
-    kill -TERM "$_rh_xvfb_run" 2>/dev/null || true
-  fi
+  kill -TERM "$inner" 2>/dev/null || true
 }
 
 _rviz_headless_cleanup() {

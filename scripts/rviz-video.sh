@@ -53,7 +53,7 @@ if ! rviz_headless_in_xvfb; then
   info="$(rosbag info --yaml "$bag" 2>&1)" ||
     error "$1 is not a readable bag: rosbag info says: $(tail -1 <<< "${info//"ERROR reading $bag: "/}")"
   duration="$(sed -n 's/^duration: *//p' <<< "$info")"  # none in a bag without messages
-  [ -n "$seconds" ] || seconds="$(awk -v d="${duration:-0}" -v m="$min_seconds" 'BEGIN { printf "%g", d < m ? m : d }')"
+  [ -n "$seconds" ] || seconds="$(awk -v d="${duration:-0}" -v m="$min_seconds" 'BEGIN { printf "%.3f", d < m ? m : d }')"
 fi
 
 # Re-run this script inside a virtual X server; there: roscore and rviz, then the bag and the recording.
@@ -75,6 +75,7 @@ rviz_headless_track "$rosbag_pid"
 status=0
 wait "$ffmpeg_pid" || status=$?
 rviz_headless_untrack "$ffmpeg_pid"
+[ "$status" -ne 255 ] || exit 130  # ffmpeg stopped by a Ctrl-C to the process group: interrupted, not failed
 if [ "$status" -ne 0 ] || [ ! -s "$part" ]; then
   cat "$work/ffmpeg.log" >&2
   echo "rviz-video: ffmpeg failed (exit $status), no video written" >&2

@@ -36,8 +36,9 @@ void BM_Episodes(benchmark::State& state) {
 
 BENCHMARK(BM_Episodes)->ArgsProduct({{0, 1, 2, 3, 4, 5}, {20, 50, 100}})->Unit(benchmark::kMicrosecond);
 
-/// One failing 300-step episode animated as the report does it (12 pixels per cell on 20x20: 301 frames of
-/// 241 x 241 pixels, encoded as a GIF); the label gives the GIF's size.
+/// One failing episode of the random agent animated (12 pixels per cell on 20x20, frames of 241 x 241 pixels,
+/// at most 1,001 of them, encoded as a GIF) with the budget given as the argument: 300 (301 frames, as in the
+/// report) and 100,000 (every 100th step); the label gives the frames and the GIF's size.
 void BM_AnimateEpisode(benchmark::State& state) {
   ppp::Rng rng(20);
   const ppp::Problem problem = ppp::randomProblem(rng, ppp::Problem::empty(20, 20, 10), 10);
@@ -46,14 +47,16 @@ void BM_AnimateEpisode(benchmark::State& state) {
   config.type = config.name = "random";
   std::size_t bytes = 0;
   int frames = 0;
+  ppp::simulator::EpisodeOptions options;
+  options.budget = static_cast<int>(state.range(0));
   for (auto _ : state) {
-    const auto animation = ppp::simulator::animateEpisode(problem, grid, config, ppp::simulator::EpisodeOptions{}, 1);
+    const auto animation = ppp::simulator::animateEpisode(problem, grid, config, options, 1);
     bytes = animation.gif.size();
     frames = animation.frames;
   }
   state.SetLabel(std::to_string(frames) + " frames, " + std::to_string(bytes / 1024) + " KiB");
 }
 
-BENCHMARK(BM_AnimateEpisode)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_AnimateEpisode)->Arg(300)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cctype>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -42,8 +43,11 @@ struct ReplayFlags : PlayFlags {
   simulator::AnimationOptions animation;
 };
 
+/// True when `text` ends in `suffix` (lower case), in any case.
 bool endsWith(const std::string& text, const std::string& suffix) {
-  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+  if (text.size() < suffix.size()) return false;
+  return std::equal(suffix.begin(), suffix.end(), text.end() - static_cast<std::ptrdiff_t>(suffix.size()),
+                    [](char s, char t) { return s == std::tolower(static_cast<unsigned char>(t)); });
 }
 
 Problem loadProblem(const std::string& source) {
@@ -107,9 +111,7 @@ void runReplay(const ReplayFlags& f) {
     drawn = "animated in " + f.output + " (" + std::to_string(animation.frames) + " frames" +
             (animation.stride > 1 ? ", every " + std::to_string(animation.stride) + " steps" : std::string()) + ")";
   } else {
-    simulator::EpisodeRunner runner(config, options);
-    auto agent = agents::makeAgent(config);
-    outcome = runner.run(problem, grid, *agent, f.seed, true);
+    outcome = simulator::recordEpisode(problem, grid, config, options, f.seed);
     writeProblemPng(problem, outcome.path, f.output);
     drawn = "path drawn in " + f.output;
   }
@@ -147,7 +149,8 @@ void addReplayCommand(CLI::App& app) {
       ->required();
   command
       ->add_option("--max-frames", flags->animation.max_frames,
-                   "GIF: most frames; a longer episode shows every ceil(steps / (N - 1))-th step and its last")
+                   "GIF: most frames; an episode of more than N - 1 steps shows every ceil(steps / (N - 1))-th step "
+                   "and its last")
       ->capture_default_str();
   command->add_option("--frame-ms", flags->animation.frame_ms, "GIF: milliseconds per frame, a multiple of 10")
       ->capture_default_str();

@@ -126,5 +126,12 @@ EpisodeOutcome EpisodeRunner::run(const Problem& problem, const Grid& grid, agen
   return episode.outcome();
 }
 
+EpisodeOutcome recordEpisode(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
+                             const EpisodeOptions& options, std::uint64_t run_seed) {
+  EpisodeRunner runner(config, options);
+  auto agent = agents::makeAgent(config);
+  return runner.run(problem, grid, *agent, run_seed, true);
+}
+
 }  // namespace simulator
 }  // namespace ppp

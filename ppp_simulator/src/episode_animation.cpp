@@ -51,23 +51,52 @@ struct Bump {
 /// What one frame shows.
 struct FrameState {
   Cell position;
-  const std::vector<Cell>* trail;  // cells visited so far, start first
-  const std::vector<Bump>* bumps;
+  const std::vector<std::pair<Cell, Cell>>* trail;  // the distinct moves so far (from, to)
+  const std::vector<Bump>* bumps;                   // the distinct bumps so far
   const Scan* scan;
   const agents::AgentMemory* memory;  // null: the agent knows the map
 };
 
+/// Records each distinct item once, in the order first seen; `key` maps an item to a number below `keys`.
+template <typename Item>
+class DistinctList {
+ public:
+  explicit DistinctList(std::size_t keys) : seen_(keys, false) {}
+  void add(const Item& item, std::size_t key) {
+    if (seen_[key]) return;
+    seen_[key] = true;
+    items_.push_back(item);
+  }
+  const std::vector<Item>& items() const { return items_; }
+
+ private:
+  std::vector<bool> seen_;
+  std::vector<Item> items_;
+};
+
+/// The number of a move or bump from `cell` with `action` among a map's cells x 9 actions.
+std::size_t moveKey(const Problem& problem, Cell cell, agents::Action action) {
+  return (static_cast<std::size_t>(cell.y) * problem.width + cell.x) * 9 + static_cast<std::size_t>(action);
+}
+
+/// The cell size for `options` on `problem`: as given, or chosen by map size.
+int cellPixels(const Problem& problem, const AnimationOptions& options) {
+  if (options.cell_pixels != 0) return options.cell_pixels;
+  return std::clamp(kAnimationTargetPixels / std::max(problem.width, problem.height), 3, 12);
+}
+
 /// Draws frames of one problem as palette indices.
 class FramePainter {
  public:
-  FramePainter(const Problem& problem, const Grid& grid, const AnimationOptions& options)
-      : problem_(problem), grid_(grid), picture_{options.cell_pixels, true},
+  FramePainter(const Problem& problem, const Grid& grid, int cell_pixels)
+      : problem_(problem), grid_(grid), picture_{cell_pixels, true},
         width_(pictureWidth(problem.width, picture_)), height_(pictureHeight(problem.height, picture_)) {
     if (width_ > kMaxPictureSide || height_ > kMaxPictureSide) {
-      throw InvalidArgument("cell_pixels", "a " + std::to_string(problem.width) + "x" + std::to_string(problem.height) +
-                                               " map at " + std::to_string(options.cell_pixels) +
-                                               " pixels per cell exceeds " + std::to_string(kMaxPictureSide) +
-                                               " pixels per side");
+      const int most = (kMaxPictureSide - 1) / cell_pixels;
+      throw InvalidArgument("map", "a " + std::to_string(problem.width) + "x" + std::to_string(problem.height) +
+                                       " map is too large to animate at " + std::to_string(cell_pixels) +
+                                       " pixels per cell (at most " + std::to_string(most) + " cells a side, " +
+                                       std::to_string(kMaxPictureSide) + " pixels); draw its path as a .png");
     }
   }
   int width() const { return width_; }
@@ -90,10 +119,9 @@ class FramePainter {
       }
     }
     const int cp = picture_.cell_pixels;
-    const std::vector<Cell>& trail = *s.trail;
     const int thickness = std::max(1, cp / 8);
-    for (std::size_t i = 1; i < trail.size(); ++i) {
-      canvas.line(cellCentre(trail[i - 1], picture_), cellCentre(trail[i], picture_), thickness, kTrailInk);
+    for (const auto& [from, to] : *s.trail) {
+      canvas.line(cellCentre(from, picture_), cellCentre(to, picture_), thickness, kTrailInk);
     }
     canvas.fillCell(problem_.start, kStartInk, picture_);
     canvas.fillCell(problem_.goal, kGoalInk, picture_);
@@ -133,8 +161,9 @@ class FramePainter {
 }  // namespace
 
 void AnimationOptions::validate() const {
-  if (cell_pixels < 3 || cell_pixels > 64) {
-    throw InvalidArgument("cell_pixels", "expected an integer in [3, 64], got " + std::to_string(cell_pixels));
+  if (cell_pixels != 0 && (cell_pixels < 3 || cell_pixels > 64)) {
+    throw InvalidArgument("cell_pixels", "expected an integer in [3, 64], or 0 (by map size), got " +
+                                             std::to_string(cell_pixels));
   }
   if (max_frames < 2 || max_frames > kMaxAnimationFrames) {
     throw InvalidArgument("max_frames", "expected an integer in [2, " + std::to_string(kMaxAnimationFrames) +
@@ -146,9 +175,9 @@ void AnimationOptions::validate() const {
 
 EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
                                 const EpisodeOptions& options, std::uint64_t run_seed,
-                                const AnimationOptions& animation) {
+                                const AnimationOptions& animation, const StopCheck& stop) {
   animation.validate();
-  const FramePainter painter(problem, grid, animation);
+  const FramePainter painter(problem, grid, cellPixels(problem, animation));
   EpisodeRunner runner(config, options);
   std::unique_ptr<agents::Agent> agent = agents::makeAgent(config);
   EpisodeAnimation result;
@@ -165,22 +194,27 @@ EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const 
     memory->reset(problem.width, problem.height, config.memory_window);
   }
   GifAnimation gif(painter.width(), painter.height(), kPalette);
-  std::vector<Bump> bumps;
+  const std::size_t keys = static_cast<std::size_t>(problem.width) * problem.height * 9;
+  DistinctList<std::pair<Cell, Cell>> trail(keys);
+  DistinctList<Bump> bumps(keys);
   Cell position = problem.start;
   for (;;) {
     const Scan scan = episode.scan();
     const bool last = episode.done();
-    if (memory != nullptr && !last) memory->update(scan);  // the final scan is never given to the agent
+    if (memory != nullptr) memory->update(scan);  // the last one only for the picture: the agent never acts on it
     if (last || episode.step() % result.stride == 0) {
-      const FrameState state{position, &episode.outcome().path, &bumps, &scan, memory.get()};
+      stopIfAsked(stop);
+      const FrameState state{position, &trail.items(), &bumps.items(), &scan, memory.get()};
       gif.addFrame(painter.paint(state), (last ? animation.last_frame_ms : animation.frame_ms) / 10);
     }
     if (last) break;
     const agents::Action action = agent->act(scan);
     const int bumps_before = episode.outcome().bumps;
     episode.apply(action);
-    if (episode.outcome().bumps > bumps_before) bumps.push_back(Bump{position, action});
-    position = episode.outcome().path.back();
+    const Cell now = episode.outcome().path.back();
+    if (episode.outcome().bumps > bumps_before) bumps.add(Bump{position, action}, moveKey(problem, position, action));
+    if (now != position) trail.add({position, now}, moveKey(problem, position, action));
+    position = now;
   }
   if (episode.outcome().steps != steps) {
     throw Error("the animated replay of " + config.name + " with seed " + std::to_string(run_seed) + " took " +
@@ -188,6 +222,8 @@ EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const 
   }
   result.outcome = episode.outcome();
   result.frames = gif.frames();
+  result.width = painter.width();
+  result.height = painter.height();
   result.gif = gif.encode();
   return result;
 }

@@ -17,12 +17,14 @@ namespace simulator {
 
 namespace {
 
-/// Longer side of a failure's animation, roughly, in pixels (12 per cell on the default 20x20 maps).
-constexpr int kAnimationTargetPixels = 240;
+/// Most frames of a failure's animation: every step of the default budget (300), a stride beyond it.
+constexpr int kReportAnimationFrames = 301;
 
 /// The first failing run of `agent` on PPP `problem` of `set`, replayed for its path and animated.
 FailureExample failingRun(const ExperimentConfig& config, const PreparedSet& set, int problem,
-                          const agents::AgentConfig& agent_config, const std::vector<ResultGroup>& groups) {
+                          const agents::AgentConfig& agent_config, const std::vector<ResultGroup>& groups,
+                          const StopCheck& stop) {
+  stopIfAsked(stop);
   const EpisodeResult* first_fail = nullptr;
   for (const ResultGroup& g : groups) {
     const EpisodeResult* f = g.first_fail;
@@ -33,14 +35,12 @@ FailureExample failingRun(const ExperimentConfig& config, const PreparedSet& set
   }
   const Problem& ppp = set.set.problems[problem];
   AnimationOptions animation;
-  animation.cell_pixels = std::clamp(kAnimationTargetPixels / std::max(ppp.width, ppp.height), 3, 12);
+  animation.max_frames = kReportAnimationFrames;
   EpisodeAnimation run;
-  if (pictureWidth(std::max(ppp.width, ppp.height), PictureOptions{animation.cell_pixels, true}) <= kMaxPictureSide) {
-    run = animateEpisode(ppp, set.grids[problem], agent_config, config.episode, first_fail->seed, animation);
-  } else {  // too large to animate: the path only
-    EpisodeRunner runner(agent_config, config.episode);
-    auto agent = agents::makeAgent(agent_config);
-    run.outcome = runner.run(ppp, set.grids[problem], *agent, first_fail->seed, true);
+  if (std::max(ppp.width, ppp.height) <= kReportAnimationMaxSide) {
+    run = animateEpisode(ppp, set.grids[problem], agent_config, config.episode, first_fail->seed, animation, stop);
+  } else {
+    run.outcome = recordEpisode(ppp, set.grids[problem], agent_config, config.episode, first_fail->seed);
   }
   const EpisodeOutcome& outcome = run.outcome;
   FailureExample example;
@@ -64,7 +64,8 @@ FailureExample failingRun(const ExperimentConfig& config, const PreparedSet& set
 }  // namespace
 
 std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
-                                            const std::vector<ResultGroup>& groups, int count) {
+                                            const std::vector<ResultGroup>& groups, int count,
+                                            const StopCheck& stop) {
   std::map<std::string, const agents::AgentConfig*> agent_by_name;
   for (const auto& a : config.agents) agent_by_name[a.name] = &a;
   // Pass counts per (set, problem, agent), over the agents that are not the control.
@@ -117,13 +118,13 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
   if (static_cast<int>(candidates.size()) > count) candidates.resize(static_cast<std::size_t>(count));
   std::vector<FailureExample> failures;
   for (const Candidate& c : candidates) {
-    failures.push_back(failingRun(config, sets[c.set], c.problem, *agent_by_name.at(c.worst_agent), groups));
+    failures.push_back(failingRun(config, sets[c.set], c.problem, *agent_by_name.at(c.worst_agent), groups, stop));
   }
   return failures;
 }
 
 std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
-                                          const std::vector<ResultGroup>& groups) {
+                                          const std::vector<ResultGroup>& groups, const StopCheck& stop) {
   std::map<std::string, int> set_index;
   std::vector<std::map<std::string, int>> problem_index(sets.size());
   for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
@@ -149,7 +150,7 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
       const double rate = static_cast<double>(c.first) / c.second;
       if (rate < lowest) lowest = rate, at = where;
     }
-    if (at.first >= 0) worst.push_back(failingRun(config, sets[at.first], at.second, agent, groups));
+    if (at.first >= 0) worst.push_back(failingRun(config, sets[at.first], at.second, agent, groups, stop));
   }
   return worst;
 }
@@ -186,9 +187,9 @@ void writeExperimentReport(const std::string& dir, const ExperimentConfig& confi
     for (std::size_t b = a + 1; b < sets.size(); ++b) input.comparisons.emplace_back(sets[a].name, sets[b].name);
   }
   stopIfAsked(stop);
-  input.failures = hardestFailures(config, sets, groups, config.hardest);
+  input.failures = hardestFailures(config, sets, groups, config.hardest, stop);
   stopIfAsked(stop);
-  input.worst = worstFailures(config, sets, groups);
+  input.worst = worstFailures(config, sets, groups, stop);
   stopIfAsked(stop);
   for (const PreparedSet& set : sets) {
     SetInfo info{set.name, set.set.diversity, ""};

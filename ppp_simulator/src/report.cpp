@@ -148,6 +148,8 @@ struct Plot {
 struct Picture {
   std::string png_file;  // relative to the report directory
   std::string gif_file;  // the animation beside it, relative to the report directory; empty without one
+  int gif_width = 0;     // its size, from the GIF's header
+  int gif_height = 0;
   std::string ppp_file;  // relative to the report directory
   std::string png;       // PNG bytes
   int width = 0;
@@ -269,6 +271,14 @@ std::vector<Picture> makePictures(const std::vector<FailureExample>& failures, c
       if (known == ppp_files.end()) ppp_files.emplace(key, std::make_pair(picture.ppp_file, failure.ppp));
     }
     if (!failure.animation_gif.empty()) {
+      const std::string& gif = failure.animation_gif;
+      if (gif.size() < 10 || gif.compare(0, 6, "GIF89a") != 0) {
+        throw InvalidArgument("failures", "example " + std::to_string(i) + " (" + failure.set + " / " +
+                                              failure.problem + " / " + failure.agent + "): its animation is not a GIF");
+      }
+      const auto byte = [&](std::size_t k) { return static_cast<int>(static_cast<unsigned char>(gif[k])); };
+      picture.gif_width = byte(6) | byte(7) << 8;  // the logical screen size, little-endian
+      picture.gif_height = byte(8) | byte(9) << 8;
       picture.gif_file = picture.png_file.substr(0, picture.png_file.size() - 4) + ".gif";
     }
     pictures.push_back(std::move(picture));
@@ -295,6 +305,17 @@ std::string pathText(const FailureExample& failure) {
                      (moves == 1 ? " move" : " moves") + "), ending at " + cellText(failure.path.back());
   if (failure.path.back() == failure.ppp.goal) text += ", the goal";
   return text;
+}
+
+/// What the animations beside the pictures show, when any of `examples` has one; else "".
+std::string animationGuide(const std::vector<FailureExample>& examples) {
+  const bool animated = std::any_of(examples.begin(), examples.end(),
+                                    [](const FailureExample& f) { return !f.animation_gif.empty(); });
+  if (!animated) return "";
+  return " Beside a picture, the same run step by step (where the map is small enough to animate): the agent as "
+         "an orange disc, its scan window outlined in gold with the free cells it sees yellow, cells it has not "
+         "sensed or has forgotten shaded, and a magenta mark on the side of a cell for every bump (replay with "
+         "-o run.gif).";
 }
 
 std::string replayCommand(const FailureExample& failure, const Picture& picture) {
@@ -529,10 +550,11 @@ void failureEntry(const FailureExample& failure, const Picture& picture, const s
   out->html += "<img src=\"data:image/png;base64," + generator::base64Encode(picture.png) + "\" width=\"" +
                std::to_string(picture.width) + "\" height=\"" + std::to_string(picture.height) + "\" alt=\"" +
                escapeMarkup(alt) + "\">\n";
-  if (!picture.gif_file.empty()) {
-    out->html += "<img class=\"run\" src=\"data:image/gif;base64," + generator::base64Encode(failure.animation_gif) +
-                 "\" width=\"" + std::to_string(picture.width) + "\" height=\"" + std::to_string(picture.height) +
-                 "\" alt=\"" + escapeMarkup("The same run, step by step") + "\">\n";
+  if (!picture.gif_file.empty()) {  // shown at twice its size, each pixel doubled
+    out->html += "<img src=\"data:image/gif;base64," + generator::base64Encode(failure.animation_gif) +
+                 "\" width=\"" + std::to_string(2 * picture.gif_width) + "\" height=\"" +
+                 std::to_string(2 * picture.gif_height) + "\" alt=\"" + escapeMarkup("The same run, step by step") +
+                 "\">\n";
   }
   out->html += "<ul>\n";
   out->html += "<li>agent <code>" + escapeMarkup(failure.agent) + "</code>, run " + std::to_string(failure.run) +
@@ -558,12 +580,10 @@ void failureSection(const ReportInput& input, const std::vector<Picture>& pictur
   }
   const std::string intro =
       "A failed run on each of the hardest PPPs: the agent's path in blue (dots on the cells it stood on), start "
-      "green, goal red, obstacles dark grey. Beside it, the same run step by step: the agent as an orange disc, "
-      "its scan window outlined in gold with the free cells it sees yellow, cells it has not sensed or has "
-      "forgotten shaded, and a magenta mark on the side of a cell for every bump. Run the replay command from "
-      "this report's directory to reproduce it (-o run.gif for the animation).";
-  out->md += mdText(intro) + "\n\n";
-  out->html += "<p>" + escapeMarkup(intro) + "</p>\n";
+      "green, goal red, obstacles dark grey. Run the replay command from this report's directory to reproduce it.";
+  const std::string text = intro + animationGuide(input.failures);
+  out->md += mdText(text) + "\n\n";
+  out->html += "<p>" + escapeMarkup(text) + "</p>\n";
   for (std::size_t i = 0; i < input.failures.size(); ++i) {
     failureEntry(input.failures[i], pictures[i], std::to_string(i + 1) + ". ", out);
   }
@@ -578,8 +598,9 @@ void faultSection(const ReportInput& input, const std::vector<Picture>& pictures
       "Per agent and set: the PPPs the agent passes in fewer than half of its runs, out of the set's PPPs. "
       "Below, every agent that fails somewhere with a failing run on its worst PPP (not the control, the random "
       "baseline or planner agents, whose runs cannot be replayed in process).";
-  out->md += mdText(intro) + "\n\n";
-  out->html += "<p>" + escapeMarkup(intro) + "</p>\n";
+  const std::string text = intro + animationGuide(input.worst);
+  out->md += mdText(text) + "\n\n";
+  out->html += "<p>" + escapeMarkup(text) + "</p>\n";
   std::map<std::pair<std::string, std::string>, std::pair<int, int>> failed;  // (set, agent) -> (failed, PPPs)
   for (const ProblemPassRate& row : rates.per_problem) {
     auto& count = failed[{row.set, row.agent}];

@@ -31,9 +31,9 @@ Problem obstacleProblem() {
   return randomProblem(rng, Problem::empty(20, 20, 20), 20);
 }
 
-/// The colour shown at a cell's centre in frame `frame`.
-Rgb centreColour(const GifMovie& movie, int frame, Cell c, const AnimationOptions& options = {}) {
-  const Pixel p = cellCentre(c, PictureOptions{options.cell_pixels, true});
+/// The colour shown at a cell's centre in frame `frame` (12 pixels per cell: the size chosen for 20x20 maps).
+Rgb centreColour(const GifMovie& movie, int frame, Cell c) {
+  const Pixel p = cellCentre(c, PictureOptions{12, true});
   const std::uint8_t* rgb = &movie.frames.at(frame).rgb[(static_cast<std::size_t>(p.y) * movie.width + p.x) * 3];
   return Rgb{rgb[0], rgb[1], rgb[2]};
 }
@@ -92,6 +92,22 @@ TEST(EpisodeAnimationTest, TheSameSeedGivesTheSameBytes) {
   EXPECT_NE(animateEpisode(problem, grid, agentConfig("random"), EpisodeOptions{}, 12).gif, once);
 }
 
+/// Where the agent stands after each step of the run with `seed` (entry 0: the start), stepping Episode directly.
+std::vector<Cell> positionsAfterEachStep(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
+                                         std::uint64_t seed) {
+  const EpisodeOptions options;
+  EpisodeRunner runner(config, options);
+  auto agent = agents::makeAgent(config);
+  agent->reset(episodeInfo(problem, grid, config, seed, options.connectivity));
+  Episode episode(problem, grid, runner.sensor(), seed, options.budget, options.connectivity, true);
+  std::vector<Cell> positions = {problem.start};
+  while (!episode.done()) {
+    episode.apply(agent->act(episode.scan()));
+    positions.push_back(episode.outcome().path.back());
+  }
+  return positions;
+}
+
 TEST(EpisodeAnimationTest, LongEpisodesShowEveryStrideThStepAndTheLast) {
   const Problem problem = Problem::empty(20, 20, 0);  // random on an empty map: 300 steps, no pass, for this seed
   const Grid grid = decodeGrid(problem);
@@ -102,13 +118,25 @@ TEST(EpisodeAnimationTest, LongEpisodesShowEveryStrideThStepAndTheLast) {
   ASSERT_EQ(a.outcome.steps, 300) << "the seed was chosen for an episode that uses the whole budget";
   EXPECT_EQ(a.stride, 30);  // ceil(300 / 10)
   EXPECT_EQ(a.frames, 11);  // steps 0, 30, ..., 300
-  EXPECT_EQ(decodeGif(a.gif, "capped.gif").frames.size(), 11u);
+  const GifMovie capped = decodeGif(a.gif, "capped.gif");
+  ASSERT_EQ(capped.frames.size(), 11u);
+  const std::vector<Cell> at = positionsAfterEachStep(problem, grid, agentConfig("random"), 5);
+  for (int f = 0; f < 11; ++f) {
+    EXPECT_EQ(agentCells(capped, f, problem), std::vector<Cell>{at[30 * f]}) << "frame " << f << ": step " << 30 * f;
+  }
   // An episode whose steps the stride does not divide: 0, s, 2s, ... and its last step.
   options.max_frames = 4;
   const EpisodeAnimation b = animateEpisode(problem, grid, agentConfig("astar"), EpisodeOptions{}, 5, options);
   ASSERT_EQ(b.outcome.steps, 38);  // the shortest route corner to corner
   EXPECT_EQ(b.stride, 13);         // ceil(38 / 3)
   EXPECT_EQ(b.frames, 4);          // steps 0, 13, 26 and 38
+  const GifMovie uneven = decodeGif(b.gif, "uneven.gif");
+  const std::vector<Cell> route = positionsAfterEachStep(problem, grid, agentConfig("astar"), 5);
+  const int shown[] = {0, 13, 26, 38};
+  ASSERT_EQ(uneven.frames.size(), 4u);
+  for (int f = 0; f < 4; ++f) {
+    EXPECT_EQ(agentCells(uneven, f, problem), std::vector<Cell>{route[shown[f]]}) << "frame " << f;
+  }
 }
 
 TEST(EpisodeAnimationTest, ShadesWhatTheAgentHasNotSensedOrHasForgotten) {
@@ -141,6 +169,33 @@ TEST(EpisodeAnimationTest, ShadesWhatTheAgentHasNotSensedOrHasForgotten) {
     }
   }
   EXPECT_GT(checked, 0) << "no cell near the start was off both trails";
+}
+
+TEST(EpisodeAnimationTest, ChoosesTheCellSizeByMapSizeAndRefusesMapsTooLargeToAnimate) {
+  const agents::AgentConfig astar = agentConfig("astar");
+  const Problem small = Problem::empty(20, 20, 0);
+  EXPECT_EQ(animateEpisode(small, decodeGrid(small), astar, EpisodeOptions{}, 1).width, 20 * 12 + 1);
+  const Problem wide = Problem::empty(200, 10, 0);  // 240 / 200 -> at least 3 pixels per cell
+  EXPECT_EQ(animateEpisode(wide, decodeGrid(wide), astar, EpisodeOptions{}, 1).width, 200 * 3 + 1);
+  const Problem huge = Problem::empty(2731, 2, 0);  // 2731 * 3 + 1 = 8194 pixels > 8192
+  try {
+    animateEpisode(huge, decodeGrid(huge), astar, EpisodeOptions{}, 1);
+    FAIL() << "no error";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.name(), "map");
+    EXPECT_NE(std::string(e.what()).find("too large to animate at 3 pixels per cell (at most 2730 cells a side"),
+              std::string::npos) << e.what();
+  }
+}
+
+TEST(EpisodeAnimationTest, AStopCheckIsAskedBeforeEachFrame) {
+  const Problem problem = obstacleProblem();
+  int asked = 0;
+  const StopCheck stop_at_the_fifth = [&asked] { return ++asked == 5; };
+  EXPECT_THROW(animateEpisode(problem, decodeGrid(problem), agentConfig("random"), EpisodeOptions{}, 1, {},
+                              stop_at_the_fifth),
+               Interrupted);
+  EXPECT_EQ(asked, 5);
 }
 
 TEST(EpisodeAnimationTest, RejectsBadOptionsByName) {

@@ -7,19 +7,20 @@ set -u
 ppp="$1"
 source "$(dirname "${BASH_SOURCE[0]}")/cli_harness.sh"
 
-# Forty 250x250 PPPs and forty pictures: the report takes some 0.4 s to render and write, the runs
-# (2 agents x 2 runs per PPP) next to nothing.
+# Eighty 100x100 PPPs, each pictured and its failing run animated (the report's largest animated maps): the
+# report takes some 2 s to replay, animate, render and write (the animations most of it), the runs (2 agents x
+# 2 runs per PPP) next to nothing.
 cat > "$work/experiment.yaml" <<'YAML'
 seed: 2
 runs: 2
 threads: 2
-hardest: 40
+hardest: 80
 agents:
   - {name: random, type: random}
   - {name: explorer, type: explorer}
 sets:
   - name: big
-    generator: {fitness: turns, population: 40, matings: 40, width: 250, height: 250, seed: 3}
+    generator: {fitness: turns, population: 80, matings: 40, width: 100, height: 100, seed: 3}
 YAML
 report_files="summary.csv report.md report.html plots pictures ppps"
 expect_ok "uninterrupted experiment" "$ppp" experiment "$work/experiment.yaml" -o "$work/ref" --quiet

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/gif_animation.hpp"
 #include "ppp_core/picture.hpp"
 #include "ppp_core/ppp_file.hpp"
 #include "ppp_core/text_file.hpp"
@@ -181,23 +182,44 @@ TEST_F(ReportTest, FaultsFoundCountsFailedPppsShowsTheWorstAndTheArchive) {
 }
 
 TEST_F(ReportTest, AFailureWithAnAnimationShowsItBesideThePictureAndWritesItsFile) {
+  GifAnimation run(7, 5, {{255, 255, 255}, {0, 0, 0}});
+  run.addFrame(std::vector<std::uint8_t>(35, 0), 10);
+  const std::string gif = run.encode();
   ReportInput input = handMadeInput();
-  input.failures[0].animation_gif = "GIF89a the run";  // the report embeds bytes as given
+  input.failures[0].animation_gif = gif;
   FailureExample worst = input.failures[0];
   worst.agent = "explorer";
   worst.animation_gif.clear();  // an example without one shows the picture alone
   input.worst = {worst};
   writeReport(dir_, input);
-  EXPECT_EQ(read("pictures/beta_q1_random.gif"), "GIF89a the run");
+  EXPECT_EQ(read("pictures/beta_q1_random.gif"), gif);
   EXPECT_FALSE(fs::exists(dir_ + "/pictures/beta_q1_explorer.gif"));
   const std::string md = read("report.md");
   EXPECT_NE(md.find("](pictures/beta_q1_random.png) ![The same run, step by step](pictures/beta_q1_random.gif)\n"),
             std::string::npos) << md;
   const std::string html = read("report.html");
-  const std::string embedded = "src=\"data:image/gif;base64," + generator::base64Encode("GIF89a the run") + "\"";
+  // Shown at twice its 7x5 size, each pixel doubled.
+  const std::string embedded = "src=\"data:image/gif;base64," + generator::base64Encode(gif) + "\" width=\"14\" height=\"10\"";
   ASSERT_NE(html.find(embedded), std::string::npos);
   EXPECT_EQ(html.find(embedded, html.find(embedded) + 1), std::string::npos) << "one animation, embedded once";
   EXPECT_NE(html.find("animation <code>pictures/beta_q1_random.gif</code>"), std::string::npos);
+  // The guide to the animations only where a section has one: the hardest PPPs here, not the faults found.
+  const std::string guide = "Beside a picture, the same run step by step";
+  const std::size_t faults = md.find("## Faults found"), hardest = md.find("## Hardest PPPs");
+  EXPECT_EQ(md.substr(faults, hardest - faults).find(guide), std::string::npos);
+  EXPECT_NE(md.substr(hardest).find(guide), std::string::npos);
+}
+
+TEST_F(ReportTest, AnAnimationThatIsNotAGifIsRefusedBeforeAnyFile) {
+  ReportInput input = handMadeInput();
+  input.failures[0].animation_gif = "\x89PNG....";
+  try {
+    writeReport(dir_, input);
+    FAIL() << "no error";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(std::string(e.what()), "failures: example 0 (beta / q1 / random): its animation is not a GIF");
+  }
+  EXPECT_FALSE(fs::exists(dir_ + "/report.html"));
 }
 
 TEST_F(ReportTest, HtmlIsSelfContainedAndEscaped) {

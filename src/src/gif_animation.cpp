@@ -12,26 +12,28 @@ namespace ppp {
 
 namespace {
 
-/// giflib's output callback: appends to the std::string in UserData.
-int appendToString(GifFileType* gif, const GifByteType* bytes, int count) {
-  static_cast<std::string*>(gif->UserData)->append(reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(count));
-  return count;
-}
-
-/// Bits per palette index that hold `colours` (GIF palettes have 2^bits entries).
-int paletteBits(int colours) {
-  int bits = 1;
-  while ((1 << bits) < colours) ++bits;
-  return bits;
-}
-
-/// Closes `gif` and throws Error naming the giflib call that failed.
-[[noreturn]] void failGif(GifFileType* gif, const char* call) {
-  const int code = gif->Error;
-  int ignored = 0;
-  EGifCloseFile(gif, &ignored);
+/// giflib's message for an error code.
+std::string gifErrorText(int code) {
   const char* text = GifErrorString(code);
-  throw Error(std::string("GIF encoding failed in ") + call + ": " + (text != nullptr ? text : "unknown error"));
+  return text != nullptr ? text : "error " + std::to_string(code);
+}
+
+/// Where the encoder's bytes go, and whether appending them failed (no exception may cross giflib's C code).
+struct ByteSink {
+  std::string bytes;
+  bool failed = false;
+};
+
+/// giflib's output callback: appends to the ByteSink in UserData; 0 (a write error to giflib) when it cannot.
+int appendToSink(GifFileType* gif, const GifByteType* bytes, int count) {
+  auto* sink = static_cast<ByteSink*>(gif->UserData);
+  try {
+    sink->bytes.append(reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(count));
+  } catch (...) {
+    sink->failed = true;
+    return 0;
+  }
+  return count;
 }
 
 /// giflib's input callback: reads from the ByteReader in UserData.
@@ -45,6 +47,77 @@ int readFromString(GifFileType* gif, GifByteType* out, int count) {
   std::copy_n(reader->bytes->data() + reader->offset, n, out);
   reader->offset += n;
   return static_cast<int>(n);
+}
+
+/// An open giflib encoder, closed when it goes out of scope (close() reports the closing's own error).
+class GifWriter {
+ public:
+  explicit GifWriter(ByteSink* sink) {
+    int error = 0;
+    gif_ = EGifOpen(sink, &appendToSink, &error);
+    if (gif_ == nullptr) throw Error("GIF encoding failed in EGifOpen: " + gifErrorText(error));
+  }
+  ~GifWriter() {
+    int ignored = 0;
+    if (gif_ != nullptr) EGifCloseFile(gif_, &ignored);
+  }
+  GifWriter(const GifWriter&) = delete;
+  GifWriter& operator=(const GifWriter&) = delete;
+  GifFileType* get() const { return gif_; }
+  /// Throws Error naming `call` unless `result` is GIF_OK.
+  void check(int result, const char* call) const {
+    if (result == GIF_ERROR) throw Error(std::string("GIF encoding failed in ") + call + ": " + gifErrorText(gif_->Error));
+  }
+  void close() {
+    int error = 0;
+    GifFileType* gif = gif_;
+    gif_ = nullptr;
+    if (EGifCloseFile(gif, &error) == GIF_ERROR) throw Error("GIF encoding failed in EGifCloseFile: " + gifErrorText(error));
+  }
+
+ private:
+  GifFileType* gif_ = nullptr;
+};
+
+/// An open giflib decoder, closed when it goes out of scope.
+class GifReader {
+ public:
+  GifReader(ByteReader* reader, const std::string& source) {
+    int error = 0;
+    gif_ = DGifOpen(reader, &readFromString, &error);
+    if (gif_ == nullptr) throw Error(source + ": not a GIF file (" + gifErrorText(error) + ")");
+  }
+  ~GifReader() {
+    int ignored = 0;
+    DGifCloseFile(gif_, &ignored);
+  }
+  GifReader(const GifReader&) = delete;
+  GifReader& operator=(const GifReader&) = delete;
+  GifFileType* get() const { return gif_; }
+
+ private:
+  GifFileType* gif_;
+};
+
+/// Bits per palette index that hold `colours` (GIF palettes have 2^bits entries).
+int paletteBits(int colours) {
+  int bits = 1;
+  while ((1 << bits) < colours) ++bits;
+  return bits;
+}
+
+/// True when an image's extension blocks hold a NETSCAPE2.0 block asking to loop forever (loop count 0).
+bool loopsForever(const SavedImage& image) {
+  for (int e = 0; e + 1 < image.ExtensionBlockCount; ++e) {
+    const ExtensionBlock& block = image.ExtensionBlocks[e];
+    const ExtensionBlock& data = image.ExtensionBlocks[e + 1];
+    if (block.Function == APPLICATION_EXT_FUNC_CODE && block.ByteCount == 11 &&
+        std::memcmp(block.Bytes, "NETSCAPE2.0", 11) == 0 && data.Function == CONTINUE_EXT_FUNC_CODE &&
+        data.ByteCount == 3 && data.Bytes[0] == 1 && (data.Bytes[1] | data.Bytes[2] << 8) == 0) {
+      return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace
@@ -103,73 +176,60 @@ void GifAnimation::addFrame(const std::vector<std::uint8_t>& indices, int delay_
 
 std::string GifAnimation::encode() const {
   if (frames_.empty()) throw Error("GIF encoding: the animation has no frame");
-  std::string out;
-  int error = 0;
-  GifFileType* gif = EGifOpen(&out, &appendToString, &error);
-  if (gif == nullptr) throw Error(std::string("GIF encoding failed in EGifOpen: ") + GifErrorString(error));
+  ByteSink sink;
+  GifWriter writer(&sink);
+  GifFileType* gif = writer.get();
   const int bits = paletteBits(static_cast<int>(palette_.size()));
   std::vector<GifColorType> colours(static_cast<std::size_t>(1) << bits, GifColorType{0, 0, 0});
   for (std::size_t i = 0; i < palette_.size(); ++i) colours[i] = GifColorType{palette_[i].r, palette_[i].g, palette_[i].b};
   ColorMapObject* map = GifMakeMapObject(static_cast<int>(colours.size()), colours.data());
-  if (map == nullptr) failGif(gif, "GifMakeMapObject");
+  if (map == nullptr) throw Error("GIF encoding failed in GifMakeMapObject");
   EGifSetGifVersion(gif, true);  // GIF89a: delays and the loop block are extensions
   const int described = EGifPutScreenDesc(gif, width_, height_, bits, 0, map);
   GifFreeMapObject(map);
-  if (described == GIF_ERROR) failGif(gif, "EGifPutScreenDesc");
+  writer.check(described, "EGifPutScreenDesc");
   // NETSCAPE2.0 application block: loop count 0 = forever.
   const GifByteType netscape[] = {'N', 'E', 'T', 'S', 'C', 'A', 'P', 'E', '2', '.', '0'};
   const GifByteType loop[] = {1, 0, 0};
-  if (EGifPutExtensionLeader(gif, APPLICATION_EXT_FUNC_CODE) == GIF_ERROR ||
-      EGifPutExtensionBlock(gif, sizeof netscape, netscape) == GIF_ERROR ||
-      EGifPutExtensionBlock(gif, sizeof loop, loop) == GIF_ERROR || EGifPutExtensionTrailer(gif) == GIF_ERROR) {
-    failGif(gif, "the loop block");
-  }
+  writer.check(EGifPutExtensionLeader(gif, APPLICATION_EXT_FUNC_CODE), "the loop block");
+  writer.check(EGifPutExtensionBlock(gif, sizeof netscape, netscape), "the loop block");
+  writer.check(EGifPutExtensionBlock(gif, sizeof loop, loop), "the loop block");
+  writer.check(EGifPutExtensionTrailer(gif), "the loop block");
+  std::vector<GifPixelType> line;  // EGifPutLine masks the line it is given in place, so it gets a copy
   for (const Frame& frame : frames_) {
     GraphicsControlBlock control{DISPOSE_DO_NOT, false, frame.delay_centiseconds, NO_TRANSPARENT_COLOR};
     GifByteType extension[4];
     const std::size_t length = EGifGCBToExtension(&control, extension);
-    if (EGifPutExtension(gif, GRAPHICS_EXT_FUNC_CODE, static_cast<int>(length), extension) == GIF_ERROR) {
-      failGif(gif, "EGifPutExtension");
-    }
-    if (EGifPutImageDesc(gif, frame.left, frame.top, frame.width, frame.height, false, nullptr) == GIF_ERROR) {
-      failGif(gif, "EGifPutImageDesc");
-    }
+    writer.check(EGifPutExtension(gif, GRAPHICS_EXT_FUNC_CODE, static_cast<int>(length), extension), "EGifPutExtension");
+    writer.check(EGifPutImageDesc(gif, frame.left, frame.top, frame.width, frame.height, false, nullptr),
+                 "EGifPutImageDesc");
     for (int y = 0; y < frame.height; ++y) {
-      // giflib's API takes non-const lines; it only reads them.
-      auto* line = const_cast<GifPixelType*>(frame.indices.data() + static_cast<std::size_t>(y) * frame.width);
-      if (EGifPutLine(gif, line, frame.width) == GIF_ERROR) failGif(gif, "EGifPutLine");
+      const auto row = frame.indices.begin() + static_cast<std::ptrdiff_t>(y) * frame.width;
+      line.assign(row, row + frame.width);
+      writer.check(EGifPutLine(gif, line.data(), frame.width), "EGifPutLine");
     }
   }
-  if (EGifCloseFile(gif, &error) == GIF_ERROR) {
-    throw Error(std::string("GIF encoding failed in EGifCloseFile: ") + GifErrorString(error));
-  }
-  return out;
+  writer.close();
+  if (sink.failed) throw Error("GIF encoding: out of memory for the file's bytes");
+  return std::move(sink.bytes);
 }
 
 GifMovie decodeGif(const std::string& bytes, const std::string& source) {
-  ByteReader reader{&bytes, 0};
-  int error = 0;
-  GifFileType* gif = DGifOpen(&reader, &readFromString, &error);
-  if (gif == nullptr) throw Error(source + ": not a GIF file (" + GifErrorString(error) + ")");
-  if (DGifSlurp(gif) == GIF_ERROR) {
-    const std::string text = GifErrorString(gif->Error);
-    DGifCloseFile(gif, &error);
-    throw Error(source + ": cannot read the GIF (" + text + ")");
-  }
+  ByteReader input{&bytes, 0};
+  GifReader reader(&input, source);
+  GifFileType* gif = reader.get();
+  if (DGifSlurp(gif) == GIF_ERROR) throw Error(source + ": cannot read the GIF (" + gifErrorText(gif->Error) + ")");
   GifMovie movie;
   movie.width = gif->SWidth;
   movie.height = gif->SHeight;
+  if (movie.width < 1 || movie.height < 1 || movie.width > kMaxPictureSide || movie.height > kMaxPictureSide) {
+    throw Error(source + ": a " + std::to_string(movie.width) + "x" + std::to_string(movie.height) +
+                " picture; this reader takes sides in [1, " + std::to_string(kMaxPictureSide) + "]");
+  }
   std::vector<std::uint8_t> shown(static_cast<std::size_t>(movie.width) * movie.height * 3, 0);
-  std::string problem;
-  for (int i = 0; i < gif->ImageCount && problem.empty(); ++i) {
+  for (int i = 0; i < gif->ImageCount; ++i) {
     const SavedImage& image = gif->SavedImages[i];
-    for (int e = 0; e < image.ExtensionBlockCount; ++e) {
-      const ExtensionBlock& block = image.ExtensionBlocks[e];
-      if (block.Function == APPLICATION_EXT_FUNC_CODE && block.ByteCount == 11 &&
-          std::string(reinterpret_cast<const char*>(block.Bytes), 11) == "NETSCAPE2.0") {
-        movie.loops = true;
-      }
-    }
+    movie.loops = movie.loops || loopsForever(image);
     GraphicsControlBlock control{DISPOSAL_UNSPECIFIED, false, 0, NO_TRANSPARENT_COLOR};
     DGifSavedExtensionToGCB(gif, i, &control);
     const GifImageDesc& d = image.ImageDesc;
@@ -177,15 +237,13 @@ GifMovie decodeGif(const std::string& bytes, const std::string& source) {
     if (map == nullptr || d.Interlace || control.TransparentColor != NO_TRANSPARENT_COLOR ||
         control.DisposalMode == DISPOSE_BACKGROUND || control.DisposalMode == DISPOSE_PREVIOUS ||
         d.Left < 0 || d.Top < 0 || d.Left + d.Width > movie.width || d.Top + d.Height > movie.height) {
-      problem = "frame " + std::to_string(i) + " uses a GIF feature this reader does not support";
-      break;
+      throw Error(source + ": frame " + std::to_string(i) + " uses a GIF feature this reader does not support");
     }
     for (int y = 0; y < d.Height; ++y) {
       for (int x = 0; x < d.Width; ++x) {
         const int index = image.RasterBits[static_cast<std::size_t>(y) * d.Width + x];
         if (index >= map->ColorCount) {
-          problem = "frame " + std::to_string(i) + " has a palette index outside its palette";
-          break;
+          throw Error(source + ": frame " + std::to_string(i) + " has a palette index outside its palette");
         }
         const GifColorType c = map->Colors[index];
         std::uint8_t* p = &shown[(static_cast<std::size_t>(d.Top + y) * movie.width + d.Left + x) * 3];
@@ -194,8 +252,6 @@ GifMovie decodeGif(const std::string& bytes, const std::string& source) {
     }
     movie.frames.push_back(GifFrame{shown, control.DelayTime});
   }
-  DGifCloseFile(gif, &error);
-  if (!problem.empty()) throw Error(source + ": " + problem);
   return movie;
 }
 

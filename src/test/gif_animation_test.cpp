@@ -50,6 +50,19 @@ TEST(GifAnimationTest, ReadingBackShowsEveryFrameAsDrawn) {
   }
 }
 
+TEST(GifAnimationTest, LoopsForeverAndAReaderTellsAnotherLoopCount) {
+  GifAnimation animation(5, 4, kPalette);
+  animation.addFrame(frameWithDot(0, 0, 1), 10);
+  std::string bytes = animation.encode();
+  EXPECT_TRUE(decodeGif(bytes, "loop.gif").loops);
+  // The NETSCAPE2.0 block: the 11-byte name, then the sub-block {3, 1, count low, count high}.
+  const std::size_t name = bytes.find("NETSCAPE2.0");
+  ASSERT_NE(name, std::string::npos);
+  ASSERT_EQ(bytes.substr(name + 11, 4), std::string("\x03\x01\x00\x00", 4));
+  bytes[name + 13] = 1;  // play once more, not forever
+  EXPECT_FALSE(decodeGif(bytes, "once.gif").loops);
+}
+
 TEST(GifAnimationTest, StoresOnlyTheChangedRectangle) {
   std::vector<std::uint8_t> big(200 * 200, 0);
   GifAnimation one(200, 200, kPalette);

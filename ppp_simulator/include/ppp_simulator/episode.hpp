@@ -112,5 +112,9 @@ class EpisodeRunner {
   SensorModel sensor_;
 };
 
+/// One episode of a fresh agent of `config` with `run_seed`, its path recorded (a run of results.csv replayed).
+EpisodeOutcome recordEpisode(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
+                             const EpisodeOptions& options, std::uint64_t run_seed);
+
 }  // namespace simulator
 }  // namespace ppp

@@ -7,6 +7,7 @@
 #include "ppp_core/grid.hpp"
 #include "ppp_core/picture.hpp"
 #include "ppp_core/problem.hpp"
+#include "ppp_core/stop.hpp"
 #include "ppp_simulator/episode.hpp"
 
 namespace ppp {
@@ -15,11 +16,17 @@ namespace simulator {
 /// Largest frame cap of an animation.
 constexpr int kMaxAnimationFrames = 10000;
 
+/// Longer side of an animation, roughly, when the cell size is chosen by map size (12 pixels per cell on 20x20).
+constexpr int kAnimationTargetPixels = 240;
+
 /// How an episode is animated.
 struct AnimationOptions {
-  int cell_pixels = 12;      ///< Side of a cell in pixels, in [3, 64].
-  /// Most frames: an episode of more steps shows every stride-th step, stride = ceil(steps / (max_frames - 1)),
-  /// and always its last. In [2, kMaxAnimationFrames]; the default shows every step of budgets up to 1,000.
+  /// Side of a cell in pixels, in [3, 64], or 0 to choose by map size: kAnimationTargetPixels / the longer map
+  /// side, within [3, 12]. A map whose picture would exceed kMaxPictureSide pixels a side cannot be animated.
+  int cell_pixels = 0;
+  /// Most frames, in [2, kMaxAnimationFrames]. An episode of more than max_frames - 1 steps shows every stride-th
+  /// step, stride = ceil(steps / (max_frames - 1)), and its last; the default shows every step of budgets up
+  /// to 1,000.
   int max_frames = 1001;
   int frame_ms = 60;         ///< How long each frame is shown: a multiple of 10 ms (GIF's unit) in [20, 10000].
   int last_frame_ms = 2000;  ///< How long the last frame is held before the animation loops (same rule).
@@ -37,20 +44,25 @@ constexpr Rgb kUnsensedColour{214, 214, 222};  ///< Free cells the agent does no
 struct EpisodeAnimation {
   EpisodeOutcome outcome;  ///< The episode, as EpisodeRunner::run gives it with its path.
   std::string gif;         ///< The GIF file's bytes.
-  int frames = 0;          ///< Frames in the GIF: steps + 1, or the cap.
+  int frames = 0;          ///< Frames in the GIF: floor(steps / stride) + 1, and one more for the last step
+                           ///< when stride does not divide steps (steps + 1 when stride is 1); at most max_frames.
   int stride = 1;          ///< Steps between two frames (1 unless the cap applied).
+  int width = 0;           ///< Picture columns.
+  int height = 0;          ///< Picture rows.
 };
 
 /// Plays one episode of the agent `config` with `run_seed` (the same episode as EpisodeRunner::run) and draws it
 /// frame by frame: frame 0 at the start, then one frame after each step (or each stride-th, see max_frames) and
-/// the last. Each frame shows the true map, shaded where the agent has not sensed a cell or has forgotten it
+/// the last. Drawing a frame costs the same whatever the episode's length (the trail and the bump marks are
+/// drawn once per distinct move and bump). Each frame shows the true map, shaded where the agent has not sensed a cell or has forgotten it
 /// (its memory as rebuilt from the scans it was given, with its memory window; nothing is shaded for an agent
 /// given the map), the cells of the current scan tinted, the scan window outlined, the trail so far, a mark on
 /// the side of a cell for every bump (towards the blocked move), start, goal, and the agent as an orange disc.
-/// @throws InvalidArgument for bad options or a picture larger than kMaxPictureSide.
+/// @throws InvalidArgument for bad options, or naming "map" for a map too large to animate; Interrupted when
+/// `stop`, asked before each frame, says stop.
 EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
                                 const EpisodeOptions& options, std::uint64_t run_seed,
-                                const AnimationOptions& animation = {});
+                                const AnimationOptions& animation = {}, const StopCheck& stop = {});
 
 }  // namespace simulator
 }  // namespace ppp

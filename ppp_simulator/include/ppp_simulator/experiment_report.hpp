@@ -12,17 +12,26 @@
 namespace ppp {
 namespace simulator {
 
+/// Largest map side whose failing runs the report animates (at most kReportAnimationFrames frames, 3 pixels per
+/// cell or more); larger maps get the still picture only, which keeps the report's time bounded.
+constexpr int kReportAnimationMaxSide = 100;
+/// Most frames of a failure's animation in the report: every step of the default budget (300), a stride beyond.
+constexpr int kReportAnimationFrames = 301;
+
 /// The hardest PPPs of an experiment (lowest mean pass rate over every agent but the astar control), each with
 /// the first failing run of the agent it hurts most (largest drop below that agent's mean pass rate over all
-/// PPPs), replayed to recover its path; `groups` are the experiment's results grouped (groupResults()).
+/// PPPs), replayed to recover its path and animated (maps up to kReportAnimationMaxSide); `groups` are the
+/// experiment's results grouped (groupResults()). @throws Interrupted when `stop`, asked before each failure
+/// and each frame, says stop.
 std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
-                                            const std::vector<ResultGroup>& groups, int count);
+                                            const std::vector<ResultGroup>& groups, int count,
+                                            const StopCheck& stop = {});
 
 /// Per agent (but the astar control, the random baseline and planners), the first failing run on its worst PPP
-/// (lowest pass rate over every set; the first of equals), replayed for its path; agents that never fail are
-/// left out.
+/// (lowest pass rate over every set; the first of equals), replayed for its path and animated as above; agents
+/// that never fail are left out. @throws Interrupted as hardestFailures().
 std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
-                                          const std::vector<ResultGroup>& groups);
+                                          const std::vector<ResultGroup>& groups, const StopCheck& stop = {});
 
 /// Writes summary.csv and report.{md,html} (with plots and pictures) of a finished experiment into `dir`;
 /// `stop` is asked between the pieces (the pass rates, the failures replayed, each picture and file).

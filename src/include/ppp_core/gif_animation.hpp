@@ -58,7 +58,8 @@ struct GifMovie {
 
 /// Reads GIF file bytes back as whole frames (frames drawn over the previous one; disposal to background or
 /// previous is not supported). Meant for checking what GifAnimation wrote.
-/// @throws Error naming `source` when giflib cannot read the bytes or a frame uses an unsupported feature.
+/// @throws Error naming `source` when giflib cannot read the bytes, the picture is larger than kMaxPictureSide,
+/// or a frame uses an unsupported feature.
 GifMovie decodeGif(const std::string& bytes, const std::string& source);
 
 }  // namespace ppp
