@@ -162,6 +162,9 @@ expect_error "replay unknown extension" "--output: expected a .png (the path dra
 expect_error "replay unwritable" "$work/no/such/dir/replay.gif" "$ppp" replay "$ppp_file" --agent bumper --seed 7 -o "$work/no/such/dir/replay.gif"
 expect_error "replay frame ms" "--frame-ms: expected a multiple of 10 ms" "$ppp" replay "$ppp_file" --agent bumper --seed 7 --frame-ms 15 -o "$work/r.gif"
 expect_error "replay max frames" "--max-frames: expected an integer in [2, 10000], got 1" "$ppp" replay "$ppp_file" --agent bumper --seed 7 --max-frames 1 -o "$work/r.gif"
+expect_error "replay map too large to animate" "map: a 2731x2 map is too large to animate at 3 pixels per cell (at most 2730 cells a side" \
+  "$ppp" replay empty:2731x2 --agent random --seed 1 -o "$work/huge.gif"
+[ ! -e "$work/huge.gif" ] && pass || fail "replay wrote a GIF of a map too large to animate"
 expect_ok "compare" "$ppp" compare "$work/a" "$work/a" --set-a turns --set-b difficulty
 grep -q "long_term_explorer" "$work/out" && pass || fail "compare lacks an agent row: $(cat "$work/out")"
 
