@@ -31,11 +31,9 @@ class AgentNode {
   // Scans are answered in roscpp's network thread as they are read (InlineCallbackQueue): the batch's moves go
   // out without waking a spinner thread to answer and the network thread again to send.
   ros::Subscriber subscribeInline(ros::NodeHandle& nh) {
-    ros::SubscribeOptions options = ros::SubscribeOptions::create<ppp_msgs::ScanBatch>(
-        ppp_msgs::topics::kScans, 10, [this](const ppp_msgs::ScanBatch::ConstPtr& batch) { onScans(batch); },
-        ros::VoidConstPtr(), &inline_queue_);
-    options.transport_hints = ros::TransportHints().tcpNoDelay();
-    return nh.subscribe(options);
+    return ppp_msgs::subscribeInline<ppp_msgs::ScanBatch>(
+        nh, ppp_msgs::topics::kScans, 10, [this](const ppp_msgs::ScanBatch::ConstPtr& batch) { onScans(batch); },
+        &inline_queue_);
   }
 
   void onScans(const ppp_msgs::ScanBatch::ConstPtr& batch) {

@@ -112,9 +112,11 @@ MapElites::MapElites(const GeneratorOptions& options, Fitness fitness)
       })) {}
 
 std::vector<double> MapElites::featuresOf(const Individual& individual) {
-  std::vector<double> all = characterVector(evaluator_.evaluate(individual.problem, individual.grid));
+  const Problem& problem = individual.problem;
+  const DpaResult& dpa = dpa_.solve(individual.grid, problem.start, problem.goal);  // one DPA for both
+  std::vector<double> all = characterVector(evaluator_.evaluate(problem, individual.grid, dpa));
   if (barn_features_) {
-    const std::vector<double> metrics = barnCharacterVector(barnMetrics(individual.problem, individual.grid));
+    const std::vector<double> metrics = barnCharacterVector(barnMetrics(individual.grid, dpa));
     all.insert(all.end(), metrics.begin(), metrics.end());
   }
   std::vector<double> features;

@@ -1,5 +1,3 @@
-#include <algorithm>
-#include <cctype>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -10,6 +8,7 @@
 #include "cli_options.hpp"
 #include "ppp_core/text_format.hpp"
 #include "commands.hpp"
+#include "option_flags.hpp"
 #include "ppp_agents/agent_config.hpp"
 #include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
@@ -43,12 +42,6 @@ struct ReplayFlags : PlayFlags {
   simulator::AnimationOptions animation;
 };
 
-/// True when `text` ends in `suffix` (lower case), in any case.
-bool endsWith(const std::string& text, const std::string& suffix) {
-  if (text.size() < suffix.size()) return false;
-  return std::equal(suffix.begin(), suffix.end(), text.end() - static_cast<std::ptrdiff_t>(suffix.size()),
-                    [](char s, char t) { return s == std::tolower(static_cast<unsigned char>(t)); });
-}
 
 Problem loadProblem(const std::string& source) {
   const std::string prefix = "empty:";
@@ -86,17 +79,16 @@ void runSimulate(const SimulateFlags& f) {
 }
 
 void runReplay(const ReplayFlags& f) {
-  const bool animated = endsWith(f.output, ".gif");
-  if (!animated && !endsWith(f.output, ".png")) {
+  const std::string extension = fileExtension(f.output);
+  const bool animated = extension == ".gif";
+  if (!animated && extension != ".png") {
     throw InvalidArgument("--output", "expected a .png (the path drawn) or .gif (the episode animated) file name, got '" +
                                           f.output + "'");
   }
   try {
     f.animation.validate();
   } catch (const InvalidArgument& e) {  // name the flag, not the field
-    std::string flag = "--" + e.name();
-    std::replace(flag.begin(), flag.end(), '_', '-');
-    throw InvalidArgument(flag, e.problem());
+    throw InvalidArgument(flagFor(e.name()), e.problem());
   }
   const agents::AgentConfig config = f.agent.agent();
   const simulator::EpisodeOptions options = f.agent.episode();

@@ -27,11 +27,9 @@ LaneRunner::LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameter
   const std::string graph_name = agents::agentGraphName(agent.name);
   message_.agent = agent.name;
   scans_ = nh.advertise<ppp_msgs::ScanBatch>(ppp_msgs::topics::under(graph_name, ppp_msgs::topics::kScans), 2);
-  ros::SubscribeOptions options = ros::SubscribeOptions::create<ppp_msgs::MoveBatch>(
-      ppp_msgs::topics::under(graph_name, ppp_msgs::topics::kMoves), 2, [this](const ppp_msgs::MoveBatch::ConstPtr& m) { onMoves(m); },
-      ros::VoidConstPtr(), &replies_);
-  options.transport_hints = ros::TransportHints().tcpNoDelay();
-  moves_ = nh.subscribe(options);
+  moves_ = ppp_msgs::subscribeInline<ppp_msgs::MoveBatch>(
+      nh, ppp_msgs::topics::under(graph_name, ppp_msgs::topics::kMoves), 2,
+      [this](const ppp_msgs::MoveBatch::ConstPtr& m) { onMoves(m); }, &replies_);
 }
 
 void LaneRunner::run(AgentLane* lane) {

@@ -64,7 +64,8 @@ void Episode::apply(agents::Action action) {
   if (done_) return;
   ++outcome_.steps;
   bumped_ = false;
-  if (agents::isDiagonal(action) && connectivity_ != 8) {
+  const bool diagonal = agents::isDiagonal(action);
+  if (diagonal && connectivity_ != 8) {
     fail(reason::kInvalidAction);
     return;
   }
@@ -72,7 +73,6 @@ void Episode::apply(agents::Action action) {
     const Cell d = agents::offset(action);
     const Cell next{position_.x + d.x, position_.y + d.y};
     // A straight move needs a free target; a diagonal also both cells beside it.
-    const bool diagonal = agents::isDiagonal(action);
     if (diagonal ? octileMoveAllowed(*grid_, position_, d.x, d.y) : grid_->isFree(next)) {
       position_ = next;
       ++outcome_.path_length;

@@ -2,7 +2,6 @@
 
 #include <array>
 #include <charconv>
-#include <cstdio>
 #include <string_view>
 
 #include "ppp_core/csv.hpp"
@@ -88,7 +87,8 @@ void appendLength(double value, std::string* out) {
     out->append(digits, std::to_chars(digits, digits + sizeof digits, whole).ptr);
     return;
   }
-  std::size_t length = static_cast<std::size_t>(std::snprintf(digits, sizeof digits, "%.8f", value));
+  std::size_t length =
+      static_cast<std::size_t>(std::to_chars(digits, digits + sizeof digits, value, std::chars_format::fixed, 8).ptr - digits);
   if (std::string_view(digits, length).substr(length - 9) == ".00000000") length -= 9;
   out->append(digits, length);
 }

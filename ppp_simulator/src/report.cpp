@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/gif_animation.hpp"
 #include "ppp_core/picture.hpp"
 #include "ppp_core/ppp_file.hpp"
 #include "ppp_core/text_file.hpp"
@@ -271,14 +272,10 @@ std::vector<Picture> makePictures(const std::vector<FailureExample>& failures, c
       if (known == ppp_files.end()) ppp_files.emplace(key, std::make_pair(picture.ppp_file, failure.ppp));
     }
     if (!failure.animation_gif.empty()) {
-      const std::string& gif = failure.animation_gif;
-      if (gif.size() < 10 || gif.compare(0, 6, "GIF89a") != 0) {
+      if (!gifScreenSize(failure.animation_gif, &picture.gif_width, &picture.gif_height)) {
         throw InvalidArgument("failures", "example " + std::to_string(i) + " (" + failure.set + " / " +
                                               failure.problem + " / " + failure.agent + "): its animation is not a GIF");
       }
-      const auto byte = [&](std::size_t k) { return static_cast<int>(static_cast<unsigned char>(gif[k])); };
-      picture.gif_width = byte(6) | byte(7) << 8;  // the logical screen size, little-endian
-      picture.gif_height = byte(8) | byte(9) << 8;
       picture.gif_file = picture.png_file.substr(0, picture.png_file.size() - 4) + ".gif";
     }
     pictures.push_back(std::move(picture));

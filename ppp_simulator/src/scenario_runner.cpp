@@ -13,10 +13,13 @@ namespace simulator {
 
 namespace {
 
-/// A map of the scenario file, read once: its grid and a problem on it whose start and goal each scenario sets.
+/// A map of the scenario file, read once: its grid, a problem on it whose start and goal each scenario sets, and
+/// the episode runner with the budget for it.
 struct LoadedMap {
   Grid grid;
   Problem problem;
+  int budget;
+  std::unique_ptr<EpisodeRunner> runner;
 };
 
 }  // namespace
@@ -29,31 +32,33 @@ int scenarioBudget(const Grid& grid) {
 std::vector<ScenarioResult> runScenarios(const std::string& scen_path, const ScenarioRunOptions& options) {
   const std::vector<MovingAiScenario> scenarios = readMovingAiScenarios(scen_path);
   const std::unique_ptr<agents::Agent> agent = agents::makeAgent(options.agent);
-  std::map<std::string, LoadedMap> maps;  // by the path found
+  std::map<std::string, std::string> paths;  // the path found, by the map's name in the file
+  std::map<std::string, LoadedMap> maps;     // by the path found
   std::vector<ScenarioResult> results;
   for (std::size_t i = 0; i < scenarios.size(); ++i) {
     const MovingAiScenario& s = scenarios[i];
-    const std::string path = findScenarioMap(scen_path, s.map, options.map_dir);
-    auto found = maps.find(path);
+    auto named = paths.find(s.map);
+    if (named == paths.end()) named = paths.emplace(s.map, findScenarioMap(scen_path, s.map, options.map_dir)).first;
+    auto found = maps.find(named->second);
     if (found == maps.end()) {
-      Problem problem = readMovingAiMap(path);
+      Problem problem = readMovingAiMap(named->second);
       Grid grid = decodeGrid(problem);  // the map as drawn: the default start and goal are free cells
-      found = maps.emplace(path, LoadedMap{std::move(grid), std::move(problem)}).first;
+      EpisodeOptions episode = options.episode;
+      if (!options.budget_given) episode.budget = scenarioBudget(grid);
+      auto runner = std::make_unique<EpisodeRunner>(options.agent, episode);
+      found = maps.emplace(named->second, LoadedMap{std::move(grid), std::move(problem), episode.budget,
+                                                    std::move(runner)}).first;
     }
     LoadedMap& map = found->second;
     checkScenarioOnMap(s, map.grid, scen_path);
-    if (s.start == s.goal) throw ParseError(scen_path, s.line, "goal", "equals the start");
     // Start and goal are free cells of the map, so protecting them changes no cell: the grid stays the map's.
     map.problem.start = s.start;
     map.problem.goal = s.goal;
-    EpisodeOptions episode = options.episode;
-    if (!options.budget_given) episode.budget = scenarioBudget(map.grid);
-    EpisodeRunner runner(options.agent, episode);
     ScenarioResult result;
     result.scenario = s;
     result.seed = deriveSeed(options.seed, {static_cast<std::uint64_t>(i)});
-    result.budget = episode.budget;
-    result.outcome = runner.run(map.problem, map.grid, *agent, result.seed);
+    result.budget = map.budget;
+    result.outcome = map.runner->run(map.problem, map.grid, *agent, result.seed);
     results.push_back(std::move(result));
   }
   return results;

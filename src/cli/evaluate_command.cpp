@@ -43,6 +43,7 @@ void printText(const std::string& file, const Problem& p, const Evaluation& e) {
 
 void runEvaluate(const EvaluateOptions& o) {
   Evaluator evaluator(parseWeights(o.weights));
+  DpaSolver dpa_solver;
   std::optional<CsvWriter> csv;
   if (!o.csv.empty()) {
     std::vector<std::string> header{"file", "width", "height", "valid"};
@@ -52,10 +53,11 @@ void runEvaluate(const EvaluateOptions& o) {
   for (const std::string& file : o.files) {
     const Problem problem = readProblemFile(file);
     const Grid grid = decodeGrid(problem);
-    const Evaluation e = evaluator.evaluate(problem, grid);
+    const DpaResult& dpa = dpa_solver.solve(grid, problem.start, problem.goal);  // one DPA for both
+    const Evaluation e = evaluator.evaluate(problem, grid, dpa);
     if (o.json) {
       nlohmann::json j = evaluationToJson(problem, e);
-      j["barn"] = barnMetricsToJson(barnMetrics(problem, grid));
+      j["barn"] = barnMetricsToJson(barnMetrics(grid, dpa));
       std::cout << j.dump() << "\n";
     } else if (!csv) {
       printText(file, problem, e);

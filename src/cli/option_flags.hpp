@@ -12,13 +12,17 @@
 namespace ppp {
 namespace cli {
 
-/// The command-line flag of a declared option: "--" + its flag, or its name with '_' and '.' as '-'
-/// ("--weights-goal").
-template <typename Options>
-std::string flagName(const OptionSpec<Options>& spec) {
-  std::string flag = "--" + (spec.flag.empty() ? spec.name : spec.flag);
+/// The command-line flag of an option named `name`: "--" + the name with '_' and '.' as '-' ("--weights-goal").
+inline std::string flagFor(const std::string& name) {
+  std::string flag = "--" + name;
   for (char& c : flag) c = c == '_' || c == '.' ? '-' : c;
   return flag;
+}
+
+/// The command-line flag of a declared option: flagFor() its flag, or its name.
+template <typename Options>
+std::string flagName(const OptionSpec<Options>& spec) {
+  return flagFor(spec.flag.empty() ? spec.name : spec.flag);
 }
 
 /// Adds one flag per declared option to `command`, documented from its declaration with `defaults`' value (or,

@@ -1,16 +1,16 @@
 // libFuzzer target for the MovingAI .scen reader: parseMovingAiScenarios must either return scenarios or throw
 // ppp::Error. Any other exception, crash or sanitizer report is a finding, and so is a read that does not survive
-// formatMovingAiScenarios -> parseMovingAiScenarios: every field equal, the lengths
-// within the rounding to the 8 decimals written, and writing the scenarios read back gives the same text.
+// formatMovingAiScenarios -> parseMovingAiScenarios (checkTextRoundTrip): every field equal, the lengths within the
+// rounding to the 8 decimals written, and writing the scenarios read back gives the same text.
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include "ppp_core/error.hpp"
-#include "ppp_core/fuzz_finding.hpp"
+#include "ppp_core/fuzz_round_trip.hpp"
 #include "ppp_core/movingai_scen.hpp"
 
 namespace {
@@ -25,27 +25,10 @@ bool sameScenario(const ppp::MovingAiScenario& a, const ppp::MovingAiScenario& b
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const char* target = "movingai_scen_fuzz";
-  std::vector<ppp::MovingAiScenario> read;
-  try {
-    read = ppp::parseMovingAiScenarios(std::string(reinterpret_cast<const char*>(data), size), "fuzz.scen");
-  } catch (const ppp::Error&) {
-    return 0;  // rejecting bad input with a ppp::Error is the contract
-  }
-  const std::string formatted = ppp::formatMovingAiScenarios(read);
-  std::vector<ppp::MovingAiScenario> reread;
-  try {
-    reread = ppp::parseMovingAiScenarios(formatted, "formatted fuzz.scen");
-  } catch (const ppp::Error& e) {
-    ppp::fuzz::finding(target, "the reader rejects the writer's output",
-                       std::string(e.what()) + "\n--- formatted ---\n" + formatted);
-  }
-  if (reread.size() != read.size()) ppp::fuzz::finding(target, "writing and reading again changed the count", formatted);
-  for (std::size_t i = 0; i < read.size(); ++i) {
-    if (!sameScenario(read[i], reread[i])) ppp::fuzz::finding(target, "writing and reading again changed a scenario", formatted);
-  }
-  if (ppp::formatMovingAiScenarios(reread) != formatted) {
-    ppp::fuzz::finding(target, "writing what was read back gave different text", formatted);
-  }
+  const auto same = [](const std::vector<ppp::MovingAiScenario>& a, const std::vector<ppp::MovingAiScenario>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), sameScenario);
+  };
+  ppp::fuzz::checkTextRoundTrip("movingai_scen_fuzz", std::string(reinterpret_cast<const char*>(data), size),
+                                "fuzz.scen", ppp::parseMovingAiScenarios, ppp::formatMovingAiScenarios, same);
   return 0;
 }

@@ -187,11 +187,14 @@ BarnMetrics barnMetrics(const Grid& grid, const std::vector<Cell>& route, const 
   return m;
 }
 
-BarnMetrics barnMetrics(const Problem& problem, const Grid& grid, const BarnOptions& options) {
+BarnMetrics barnMetrics(const Grid& grid, const DpaResult& dpa, const BarnOptions& options) {
   options.validate();
-  const DpaResult dpa = solveDpa(grid, problem.start, problem.goal);
   if (!dpa.reachable) return BarnMetrics{};
   return barnMetrics(grid, dpa.route, options);
+}
+
+BarnMetrics barnMetrics(const Problem& problem, const Grid& grid, const BarnOptions& options) {
+  return barnMetrics(grid, solveDpa(grid, problem.start, problem.goal), options);
 }
 
 const std::vector<std::string>& barnCharacterNames() {

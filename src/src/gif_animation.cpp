@@ -214,6 +214,14 @@ std::string GifAnimation::encode() const {
   return std::move(sink.bytes);
 }
 
+bool gifScreenSize(const std::string& bytes, int* width, int* height) {
+  if (bytes.size() < 10 || bytes.compare(0, 6, "GIF89a") != 0) return false;
+  const auto byte = [&](std::size_t k) { return static_cast<int>(static_cast<unsigned char>(bytes[k])); };
+  *width = byte(6) | byte(7) << 8;  // little-endian
+  *height = byte(8) | byte(9) << 8;
+  return true;
+}
+
 GifMovie decodeGif(const std::string& bytes, const std::string& source) {
   ByteReader input{&bytes, 0};
   GifReader reader(&input, source);

@@ -27,13 +27,6 @@ namespace fs = std::filesystem;
 const char* const kPppKeys[] = {"ppp_size",          "ppp_start",     "ppp_goal",
                                 "ppp_max_obstacles", "ppp_obstacles", "ppp_metadata"};
 
-/// The text after "<name>: " in an InvalidArgument message, so it can be re-homed in a ParseError.
-std::string reasonOf(const InvalidArgument& e) {
-  const std::string what = e.what();
-  const std::string prefix = e.name() + ": ";
-  return what.compare(0, prefix.size(), prefix) == 0 ? what.substr(prefix.size()) : what;
-}
-
 // ---------------------------------------------------------------------------------------------------------
 // Writing
 
@@ -273,7 +266,7 @@ Obstacle readObstacle(const YamlReader& r, const YAML::Node& node, const std::st
   try {
     validateObstacle(o, width, height, field);
   } catch (const InvalidArgument& e) {
-    r.fail(node, field, reasonOf(e));
+    r.fail(node, field, e.problem());
   }
   return o;
 }
@@ -289,7 +282,7 @@ Problem readPppKeys(const YamlReader& r, const YAML::Node& root) {
     try {
       validateGridSize(p.width, p.height, "ppp_size");
     } catch (const InvalidArgument& e) {
-      r.fail(node, "ppp_size", reasonOf(e));
+      r.fail(node, "ppp_size", e.problem());
     }
   }
   p.start = readCell(r, root, "ppp_start", p.width, p.height);
@@ -330,7 +323,7 @@ Problem readPppKeys(const YamlReader& r, const YAML::Node& root) {
       try {
         formatPpp(probe);
       } catch (const InvalidArgument& e) {
-        r.fail(entry.first, field, reasonOf(e));
+        r.fail(entry.first, field, e.problem());
       }
       p.metadata.emplace_back(key, value);
     }

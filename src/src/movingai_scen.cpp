@@ -1,12 +1,12 @@
 #include "ppp_core/movingai_scen.hpp"
 
 #include <charconv>
-#include <cstdio>
 #include <filesystem>
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/line_cursor.hpp"
 #include "ppp_core/text_file.hpp"
+#include "ppp_core/text_format.hpp"
 
 namespace ppp {
 
@@ -84,8 +84,7 @@ std::vector<MovingAiScenario> readMovingAiScenarios(const std::string& path) {
 std::string formatMovingAiScenarios(const std::vector<MovingAiScenario>& scenarios) {
   std::string text = "version 1\n";
   for (const MovingAiScenario& s : scenarios) {
-    char length[32];  // kMaxLength with 8 decimals fits
-    std::snprintf(length, sizeof length, "%.8f", s.optimal_length);
+    const std::string length = formatFixed(s.optimal_length, 8);
     text += std::to_string(s.bucket) + "\t" + s.map + "\t" + std::to_string(s.map_width) + "\t" +
             std::to_string(s.map_height) + "\t" + std::to_string(s.start.x) + "\t" + std::to_string(s.start.y) +
             "\t" + std::to_string(s.goal.x) + "\t" + std::to_string(s.goal.y) + "\t" + length + "\n";
@@ -126,6 +125,7 @@ void checkScenarioOnMap(const MovingAiScenario& s, const Grid& grid, const std::
                       s.map + "'");
     }
   }
+  if (s.start == s.goal) fail("goal", "equals the start");
 }
 
 }  // namespace ppp

@@ -72,7 +72,7 @@ Cell parseCellLine(LineCursor& cursor, const std::string& keyword, int width, in
   auto tokens = keywordLine(cursor, keyword, 2, keyword + " X Y");
   Cell c{parseInt(cursor, tokens[1], keyword, "x"), parseInt(cursor, tokens[2], keyword, "y")};
   if (c.x < 0 || c.y < 0 || c.x >= width || c.y >= height) {
-    cursor.fail(keyword, "cell (" + std::to_string(c.x) + ", " + std::to_string(c.y) + ") is outside the " +
+    cursor.fail(keyword, "cell " + cellText(c) + " is outside the " +
                              std::to_string(width) + "x" + std::to_string(height) + " grid");
   }
   return c;

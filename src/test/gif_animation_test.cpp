@@ -103,6 +103,17 @@ TEST(GifAnimationTest, RejectsBadSizesPalettesFramesAndDelays) {
   }
 }
 
+TEST(GifAnimationTest, TheHeaderGivesThePictureSize) {
+  GifAnimation animation(300, 4, kPalette);
+  animation.addFrame(std::vector<std::uint8_t>(1200, 0), 10);
+  int width = 0, height = 0;
+  ASSERT_TRUE(gifScreenSize(animation.encode(), &width, &height));
+  EXPECT_EQ(width, 300);
+  EXPECT_EQ(height, 4);
+  EXPECT_FALSE(gifScreenSize("GIF87a", &width, &height));
+  EXPECT_EQ(width, 300);
+}
+
 TEST(GifAnimationTest, ReadingSomethingElseNamesTheSource) {
   try {
     decodeGif("\\x89PNG not a gif", "run.gif");

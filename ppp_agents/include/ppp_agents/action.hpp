@@ -30,9 +30,6 @@ constexpr int kOctileActionCount = 9;
 /// The four moves in the order North, East, South, West.
 constexpr Action kMoves[4] = {Action::North, Action::East, Action::South, Action::West};
 
-/// The four diagonal moves in the order NorthEast, SouthEast, SouthWest, NorthWest.
-constexpr Action kDiagonalMoves[4] = {Action::NorthEast, Action::SouthEast, Action::SouthWest, Action::NorthWest};
-
 /// The cell offset (dx, dy) of an action ((0, 0) for Stay).
 inline Cell offset(Action action) {
   switch (action) {

@@ -47,7 +47,7 @@ agents::EpisodeInfo episodeInfo(const EpisodeStart& start, const Grid* prior) {
 
 void requireOnGrid(Cell cell, int width, int height, const char* field) {
   if (cell.x < 0 || cell.y < 0 || cell.x >= width || cell.y >= height) {
-    throw InvalidArgument(field, "(" + std::to_string(cell.x) + ", " + std::to_string(cell.y) + ") is off the " +
+    throw InvalidArgument(field, cellText(cell) + " is off the " +
                                      std::to_string(width) + "x" + std::to_string(height) + " map");
   }
 }

@@ -97,6 +97,7 @@ class MapElites {
   Rng rng_;
   Breeder breeder_;
   Evaluator evaluator_;
+  DpaSolver dpa_;  // a child's DPA, shared by its evaluation and its BARN metrics
   Archive archive_;
   ArchiveStats stats_;
   bool barn_features_;  // some feature is a BARN metric: measure them too

@@ -1,6 +1,12 @@
 #pragma once
 
+#include <functional>
+#include <string>
+
 #include <ros/callback_queue_interface.h>
+#include <ros/node_handle.h>
+#include <ros/subscribe_options.h>
+#include <ros/transport_hints.h>
 
 namespace ppp_msgs {
 
@@ -19,5 +25,17 @@ class InlineCallbackQueue : public ros::CallbackQueueInterface {
   /// Nothing is ever queued, so there is nothing to remove.
   void removeByID(uint64_t /*owner_id*/) override {}
 };
+
+/// Subscribes to `topic` with `callback` run in roscpp's network thread through `queue` (which must outlive the
+/// subscription), over TCP with Nagle's algorithm off: a lockstep batch protocol's low-latency subscription.
+template <typename Message>
+ros::Subscriber subscribeInline(ros::NodeHandle& nh, const std::string& topic, uint32_t queue_size,
+                                const std::function<void(const typename Message::ConstPtr&)>& callback,
+                                InlineCallbackQueue* queue) {
+  ros::SubscribeOptions options =
+      ros::SubscribeOptions::create<Message>(topic, queue_size, callback, ros::VoidConstPtr(), queue);
+  options.transport_hints = ros::TransportHints().tcpNoDelay();
+  return nh.subscribe(options);
+}
 
 }  // namespace ppp_msgs

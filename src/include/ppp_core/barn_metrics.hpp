@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "ppp_core/dpa.hpp"
 #include "ppp_core/grid.hpp"
 #include "ppp_core/problem.hpp"
 
@@ -40,6 +41,10 @@ struct BarnMetrics {
 /// stop it). @throws InvalidArgument naming the option for bad options, "route" for fewer than two cells, a cell
 /// off the grid or on an obstacle, or a route ending where it starts.
 BarnMetrics barnMetrics(const Grid& grid, const std::vector<Cell>& route, const BarnOptions& options = {});
+
+/// BARN's metrics along the route of a DPA result the caller already has for `grid` (not valid when the goal is
+/// unreachable). @throws InvalidArgument naming the option for bad options.
+BarnMetrics barnMetrics(const Grid& grid, const DpaResult& dpa, const BarnOptions& options = {});
 
 /// BARN's metrics of a PPP along the DPA route achieving the fewest turns+advances (not valid when the goal is
 /// unreachable). @throws InvalidArgument naming the option for bad options.

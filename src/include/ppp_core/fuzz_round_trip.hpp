@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "ppp_core/error.hpp"
@@ -9,11 +10,12 @@ namespace ppp {
 namespace fuzz {
 
 /// The check of a fuzz target for a text reader and its writer: `parse(text, source)` returns a value or throws
-/// ppp::Error, `format(value)` accepts every value `parse` returns, and parsing the formatted text gives back an
-/// equal value. Anything else is a finding of `target` (which aborts).
-template <class Parse, class Format>
+/// ppp::Error, `format(value)` accepts every value `parse` returns, parsing the formatted text gives back a value
+/// `same` as the one read (equal, by default), and formatting that gives the same text again. Anything else is a
+/// finding of `target` (which aborts).
+template <class Parse, class Format, class Same = std::equal_to<>>
 void checkTextRoundTrip(const char* target, const std::string& text, const std::string& source, const Parse& parse,
-                        const Format& format) {
+                        const Format& format, const Same& same = Same()) {
   decltype(parse(text, source)) read;
   try {
     read = parse(text, source);
@@ -33,7 +35,8 @@ void checkTextRoundTrip(const char* target, const std::string& text, const std::
     finding(target, "the reader rejects the writer's output",
             std::string(e.what()) + "\n--- formatted ---\n" + formatted);
   }
-  if (!(reread == read)) finding(target, "writing and reading again changed the value", formatted);
+  if (!same(reread, read)) finding(target, "writing and reading again changed the value", formatted);
+  if (format(reread) != formatted) finding(target, "writing what was read back gave different text", formatted);
 }
 
 }  // namespace fuzz

@@ -42,6 +42,10 @@ class GifAnimation {
   std::vector<Frame> frames_;
 };
 
+/// Reads the picture size (the logical screen) from the header of GIF89a file bytes into `width` and `height`;
+/// false, leaving them alone, when the bytes do not start with a GIF89a header.
+bool gifScreenSize(const std::string& bytes, int* width, int* height);
+
 /// One frame of a decoded GIF animation, as shown: the whole picture after drawing this frame's rectangle.
 struct GifFrame {
   std::vector<std::uint8_t> rgb;  ///< width × height × 3 bytes, row-major from the top-left.

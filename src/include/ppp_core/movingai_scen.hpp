@@ -43,7 +43,7 @@ void writeMovingAiScenarios(const std::vector<MovingAiScenario>& scenarios, cons
 /// @throws IoError naming the scenario file and every place looked.
 std::string findScenarioMap(const std::string& scen_path, const std::string& map, const std::string& map_dir);
 
-/// Checks a scenario against its map: the sizes agree, start and goal are free cells.
+/// Checks a scenario against its map: the sizes agree, start and goal are free cells and not the same cell.
 /// @throws ParseError "source:line: field: ..." naming the scenario's line.
 void checkScenarioOnMap(const MovingAiScenario& scenario, const Grid& grid, const std::string& source);
 
