@@ -106,7 +106,8 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
                       +[](A& a) -> std::string& { return a.name; }),
         declareTextOption("memory", "a memory window KxK (odd K) or 'full'",
                           "limited memory: keep only a KxK window around the agent",
-                          +[](A& a) -> int& { return a.memory_window; }, &memoryWindowProblem, &memoryWindowText),
+                          +[](A& a) -> int& { return a.memory_window; }, &memoryWindowProblem, &memoryWindowText,
+                          {"full", "5x5", "3x3"}),
         declareOption("sensor_noise", "probability that a sensed cell is reported flipped",
                       +[](A& a) -> double& { return a.sensor_noise; }, Bounds{0, 1}),
         declareOption("runs", "runs per PPP for this agent (0: the experiment's runs)",
@@ -116,7 +117,8 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
         declareOption("planner_node", "planner agents: package/executable of the planner to start",
                       +[](A& a) -> std::string& { return a.planner_node; }),
         declareOption("host", "through ROS: the machine the agent's nodes run on ('': the simulator's)",
-                      +[](A& a) -> std::string& { return a.host; }),
+                      +[](A& a) -> std::string& { return a.host; })
+            .notAffectingResults(),
     };
     list[0].flag = "agent";
     return list;

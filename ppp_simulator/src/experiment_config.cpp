@@ -132,9 +132,11 @@ const std::vector<OptionSpec<ExperimentConfig>>& experimentOptionSpecs() {
       list.push_back(spec);
     }
     list.push_back(declareOption("threads", "worker threads (0: every core)", +[](X& x) -> int& { return x.threads; },
-                                 Bounds{0, kMaxThreads}));
+                                 Bounds{0, kMaxThreads})
+                       .notAffectingResults());
     list.push_back(declareOption("hardest", "pictures of the hardest PPPs in the report",
-                                 +[](X& x) -> int& { return x.hardest; }, Bounds{0, kMaxHardest}));
+                                 +[](X& x) -> int& { return x.hardest; }, Bounds{0, kMaxHardest})
+                       .notAffectingResults());
     return list;
   }();
   return specs;
@@ -190,25 +192,27 @@ void checkWork(const ExperimentWork& work, bool allow_large) {
 
 std::string experimentFingerprint(const ExperimentConfig& c) {
   std::ostringstream out;
-  out << "# PPP Lab experiment: everything that decides its results. A rerun on this directory resumes only\n"
+  out << "# PPP Lab experiment: every option that may change its results. A rerun on this directory resumes only\n"
       << "# if this text is unchanged.\n"
-      << optionsYaml(selectOptions(experimentOptionSpecs(), {"seed", "runs", "budget", "sensor_range"}), c, false)
-      << "sets:\n";
+      << optionsYaml(resultOptions(experimentOptionSpecs()), c, false) << "sets:\n";
   for (const SetSpec& s : c.sets) {
-    out << "  - name: " << s.name << "\n";
+    out << "  - name: " << option_detail::quoted(s.name) << "\n";
     if (s.generator) {
       out << "    generator:\n";
-      std::istringstream lines(generator::generatorOptionsYaml(*s.generator));
+      std::istringstream lines(optionsYaml(resultOptions(generator::generatorOptionSpecs()), *s.generator, false));
       for (std::string line; std::getline(lines, line);) out << "      " << line << "\n";
     } else {
-      out << "    directory: " << s.directory << "\n";
+      out << "    directory: " << option_detail::quoted(s.directory) << "\n";
     }
   }
   out << "agents:\n";
   for (const agents::AgentConfig& a : c.agents) {
-    out << "  - {name: " << a.name << ", type: " << a.type << ", memory: " << agents::memoryWindowText(a.memory_window)
-        << ", sensor_noise: " << a.sensor_noise << (a.runs > 0 ? ", runs: " + std::to_string(a.runs) : "")
-        << (a.prior_map ? ", prior_map: true" : "") << "}\n";
+    std::string fields;
+    for (const OptionSpec<agents::AgentConfig>& spec : resultOptions(agents::agentOptionSpecs())) {
+      const std::string value = spec.text(a);
+      fields += (fields.empty() ? "" : ", ") + spec.name + ": " + (value.empty() ? "''" : value);
+    }
+    out << "  - {" << fields << "}\n";
   }
   return out.str();
 }

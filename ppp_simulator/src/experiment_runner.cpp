@@ -12,6 +12,7 @@
 #include "ppp_core/octile.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_core/text_file.hpp"
+#include "ppp_core/yaml_reader.hpp"
 #include "ppp_simulator/canonical_order.hpp"
 #include "ppp_simulator/episode.hpp"
 #include "ppp_simulator/experiment_report.hpp"
@@ -84,11 +85,21 @@ void checkExperimentDirectory(const ExperimentConfig& config, const std::string&
   const std::string stored = readTextFile(fingerprint.string(), 1u << 20);
   const std::string wanted = experimentFingerprint(config);
   if (stored == wanted) return;
-  std::size_t line = 1;
-  std::size_t i = 0;
-  for (; i < std::min(stored.size(), wanted.size()) && stored[i] == wanted[i]; ++i) line += stored[i] == '\n';
-  throw IoError(dir, "holds a different experiment (" + fingerprint.string() + " differs from this configuration at line " +
-                         std::to_string(line) + "); use another output directory");
+  std::string difference;
+  try {
+    difference = yamlDifference(YAML::Load(stored), YAML::Load(wanted));
+  } catch (const YAML::Exception&) {
+    difference = "";  // not YAML: say where the texts part instead
+  }
+  if (difference.empty()) {
+    std::size_t line = 1;
+    for (std::size_t i = 0; i < std::min(stored.size(), wanted.size()) && stored[i] == wanted[i]; ++i) {
+      line += stored[i] == '\n';
+    }
+    difference = "the text differs at line " + std::to_string(line);
+  }
+  throw IoError(dir, "holds a different experiment (" + fingerprint.string() + " against this configuration: " +
+                         difference + "); its rows would be mixed with this one's, so use another output directory");
 }
 
 PreparedSet prepareSet(const std::string& name, generator::ProblemSet set, const EpisodeOptions& episode) {

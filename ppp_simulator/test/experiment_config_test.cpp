@@ -8,6 +8,7 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/option_cases.hpp"
 #include "ppp_core/text_file.hpp"
+#include "ppp_core/yaml_reader.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
 
 namespace ppp {
@@ -209,8 +210,21 @@ TEST_F(ExperimentYaml, DirectoryHoldingAnotherExperimentIsRefused) {
     FAIL();
   } catch (const IoError& e) {
     EXPECT_NE(std::string(e.what()).find("holds a different experiment"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("line 4"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("runs: '1000' there, '5' here"), std::string::npos) << e.what();
   }
+  c.runs = 1000;
+  c.episode.connectivity = 8;  // the same rows under another move model would be mixed with these
+  try {
+    checkExperimentDirectory(c, out);
+    FAIL();
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("connectivity: '4' there, '8' here"), std::string::npos) << e.what();
+  }
+  c.episode.connectivity = 4;
+  c.threads = 1;  // pace only: the same experiment
+  c.hardest = 2;
+  c.agents[0].host = "10.0.0.2";
+  EXPECT_NO_THROW(checkExperimentDirectory(c, out));
   fs::remove(out + "/experiment.yaml");
   std::ofstream(out + "/notes.txt") << "mine";
   EXPECT_THROW(checkExperimentDirectory(c, out), IoError);
@@ -228,11 +242,58 @@ TEST_F(ExperimentYaml, PlannerAgentsKeepTheirOwnRunsAndMapChoiceInTheFingerprint
   EXPECT_EQ(c.runsFor(c.agents[0]), 7);
   EXPECT_EQ(c.runsFor(c.agents[1]), 3);
   const std::string fingerprint = experimentFingerprint(c);
-  EXPECT_NE(fingerprint.find("  - {name: ompl, type: planner, memory: full, sensor_noise: 0, runs: 3, prior_map: true}"),
+  EXPECT_NE(fingerprint.find("  - {type: planner, name: ompl, memory: full, sensor_noise: 0, runs: 3, prior_map: true, "
+                             "planner_node: ''}"),
             std::string::npos)
       << fingerprint;
   c.agents[1].runs = 4;  // a change of the planner's runs is a different experiment
   EXPECT_NE(experimentFingerprint(c), fingerprint);
+}
+
+/// Applies `value` (YAML text) to option `spec` of `options`, failing the test when the option refuses it.
+template <typename Options>
+void setOption(const OptionSpec<Options>& spec, const std::string& value, Options* options) {
+  const std::string problem = spec.set(options, YAML::Load(value));
+  ASSERT_EQ(problem, "") << spec.name << " = " << value;
+}
+
+// Over the declaration tables, so that an option added later is covered without editing this test: every option
+// that may change results changes the fingerprint (a resume refuses it, naming the key), and every other leaves it.
+TEST_F(ExperimentYaml, EveryOptionThatAffectsResultsChangesTheFingerprint) {
+  ExperimentConfig base;
+  generator::GeneratorOptions hunt;
+  hunt.fitness = generator::kFailureFitness;
+  hunt.agents = {"random"};
+  base.sets.push_back(SetSpec{"a", hunt, ""});
+  base.agents.push_back(agents::AgentConfig{"random", "random", 0, 0.0});
+  const std::string fingerprint = experimentFingerprint(base);
+  const auto expectChange = [&](const std::string& key, bool affects, const ExperimentConfig& changed) {
+    const std::string other = experimentFingerprint(changed);
+    EXPECT_EQ(other != fingerprint, affects) << key;
+    if (!affects) return;
+    const std::string difference = yamlDifference(YAML::Load(fingerprint), YAML::Load(other));
+    EXPECT_NE(difference.find(key), std::string::npos) << key << ": " << difference;
+  };
+  int affecting = 0;
+  for (const OptionSpec<ExperimentConfig>& spec : experimentOptionSpecs()) {
+    ExperimentConfig changed = base;
+    setOption(spec, differentOptionValue(spec, base), &changed);
+    expectChange(spec.name, spec.affects_results, changed);
+    affecting += spec.affects_results;
+  }
+  for (const OptionSpec<generator::GeneratorOptions>& spec : generator::generatorOptionSpecs()) {
+    ExperimentConfig changed = base;
+    setOption(spec, differentOptionValue(spec, *base.sets[0].generator), &*changed.sets[0].generator);
+    expectChange("sets[0].generator." + spec.name, spec.affects_results, changed);
+    affecting += spec.affects_results;
+  }
+  for (const OptionSpec<agents::AgentConfig>& spec : agents::agentOptionSpecs()) {
+    ExperimentConfig changed = base;
+    setOption(spec, differentOptionValue(spec, base.agents[0]), &changed.agents[0]);
+    expectChange("agents[0]." + spec.name, spec.affects_results, changed);
+    affecting += spec.affects_results;
+  }
+  EXPECT_GE(affecting, 40);  // the tables were walked
 }
 
 }  // namespace

@@ -25,6 +25,25 @@ std::string flagName(const OptionSpec<Options>& spec) {
   return flagFor(spec.flag.empty() ? spec.name : spec.flag);
 }
 
+/// What --help shows as a flag's value: its kind and range ("INT in [2, 100000]", "X,Y", "A,B,...").
+template <typename Options>
+std::string flagValueName(const OptionSpec<Options>& spec) {
+  const std::string range = spec.rangeText();
+  const std::string in = range.empty() ? "" : (range[0] == '[' ? " in " : " ") + range;
+  switch (spec.kind) {
+    case OptionKind::Integer: return "INT" + in;
+    case OptionKind::Number: return "FLOAT" + in;
+    case OptionKind::Boolean: return "true|false";
+    case OptionKind::Text: return "TEXT";
+    case OptionKind::TextList: return "A,B,...";
+    case OptionKind::Cell: return "X,Y";
+    case OptionKind::Custom: break;
+  }
+  std::string examples;
+  for (const std::string& example : spec.examples) examples += (examples.empty() ? "" : "|") + example;
+  return examples.empty() ? "TEXT" : examples + "|...";
+}
+
 /// Adds one flag per declared option to `command`, documented from its declaration with `defaults`' value (or,
 /// when `defaults` is null, as overriding the config file's); the texts given land in `given` (by flag name), for
 /// applyOptionFlags().
@@ -38,8 +57,8 @@ void addOptionFlags(CLI::App* command, const std::vector<OptionSpec<Options>>& s
                                      : value.empty() || value == "''" ? ""
                                                                       : "; default " + value;
     std::string& storage = (*given)[flagName(spec)];
-    command->add_option(flagName(spec), storage,
-                        spec.doc + " (" + spec.type + (range.empty() ? "" : " " + range) + default_text + ")");
+    command->add_option(flagName(spec), storage, spec.doc + " (" + spec.type + (range.empty() ? "" : " " + range) + default_text + ")")
+        ->type_name(flagValueName(spec));
   }
 }
 

@@ -1,5 +1,6 @@
 #include "ppp_core/yaml_reader.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include "ppp_core/text_file.hpp"
@@ -53,5 +54,46 @@ std::string YamlMapReader::scalarText(const YAML::Node& node) {
   if (node.IsMap()) return "a mapping";
   return "nothing";
 }
+
+namespace {
+
+/// A node as a difference shows it: a scalar as itself, else what it is.
+std::string shownNode(const YAML::Node& node) {
+  if (!node || node.IsNull()) return "absent";
+  if (node.IsScalar()) return "'" + node.Scalar() + "'";
+  return node.IsMap() ? "a mapping" : "a list of " + std::to_string(node.size());
+}
+
+std::string differenceAt(const YAML::Node& there, const YAML::Node& here, const std::string& path) {
+  const auto child = [&path](const std::string& key) { return path.empty() ? key : path + "." + key; };
+  const std::string at = path.empty() ? "the document" : path;
+  if (there && here && there.IsMap() && here.IsMap()) {
+    for (const auto& entry : here) {
+      const std::string key = entry.first.Scalar();
+      const std::string found = differenceAt(there[key], entry.second, child(key));
+      if (!found.empty()) return found;
+    }
+    for (const auto& entry : there) {
+      const std::string key = entry.first.Scalar();
+      if (!here[key]) return child(key) + ": " + shownNode(entry.second) + " there, absent here";
+    }
+    return "";
+  }
+  if (there && here && there.IsSequence() && here.IsSequence()) {
+    for (std::size_t i = 0; i < std::min(there.size(), here.size()); ++i) {
+      const std::string found = differenceAt(there[i], here[i], path + "[" + std::to_string(i) + "]");
+      if (!found.empty()) return found;
+    }
+    if (there.size() == here.size()) return "";
+    return at + ": " + std::to_string(there.size()) + " items there, " + std::to_string(here.size()) + " here";
+  }
+  const bool same = (!there || there.IsNull()) == (!here || here.IsNull()) &&
+                    (!there || there.IsNull() || (there.IsScalar() && here.IsScalar() && there.Scalar() == here.Scalar()));
+  return same ? "" : at + ": " + shownNode(there) + " there, " + shownNode(here) + " here";
+}
+
+}  // namespace
+
+std::string yamlDifference(const YAML::Node& there, const YAML::Node& here) { return differenceAt(there, here, ""); }
 
 }  // namespace ppp

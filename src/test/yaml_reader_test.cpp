@@ -63,5 +63,21 @@ TEST(YamlReaderTest, AListOrMappingAsAKeyIsAParseError) {
   }
 }
 
+TEST(YamlReaderTest, DifferenceNamesTheFirstKeyThatDiffers) {
+  const auto difference = [](const char* there, const char* here) {
+    return yamlDifference(YAML::Load(there), YAML::Load(here));
+  };
+  EXPECT_EQ(difference("a: 1\nb: [x, {c: 2}]\n", "a: 1\nb: [x, {c: 2}]\n"), "");
+  EXPECT_EQ(difference("{b: 2, a: 1}", "{a: 1, b: 2}"), "");  // key order is not data
+  EXPECT_EQ(difference("a: 1\nb: 2\n", "a: 1\nb: 3\n"), "b: '2' there, '3' here");
+  EXPECT_EQ(difference("a: 1\n", "a: 1\nconnectivity: 8\n"), "connectivity: absent there, '8' here");
+  EXPECT_EQ(difference("a: 1\nold: x\n", "a: 1\n"), "old: 'x' there, absent here");
+  EXPECT_EQ(difference("agents: [{n: a}, {n: b, m: 1}]", "agents: [{n: a}, {n: b, m: 2}]"),
+            "agents[1].m: '1' there, '2' here");
+  EXPECT_EQ(difference("s: [1, 2]", "s: [1, 2, 3]"), "s: 2 items there, 3 here");
+  EXPECT_EQ(difference("s: {a: 1}", "s: [1]"), "s: a mapping there, a list of 1 here");
+  EXPECT_EQ(difference("1", "2"), "the document: '1' there, '2' here");
+}
+
 }  // namespace
 }  // namespace ppp

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -29,6 +30,17 @@ struct Bounds {
   double max = std::numeric_limits<double>::infinity();   ///< Largest value allowed.
 };
 
+/// The kind of value an option holds: how sources parse it and which cases tests play (never the prose `type`).
+enum class OptionKind {
+  Integer,   ///< A whole number (signed or not).
+  Number,    ///< A finite real number.
+  Boolean,   ///< true or false.
+  Text,      ///< Any string.
+  TextList,  ///< A list of strings (or one comma-separated string).
+  Cell,      ///< A grid cell [x, y].
+  Custom,    ///< A value written in a form of its own (declareTextOption()); `examples` shows valid ones.
+};
+
 /// One option of the struct `Options`.
 template <typename Options>
 struct OptionSpec {
@@ -36,7 +48,12 @@ struct OptionSpec {
   std::string type;  ///< What a value is, as errors say it ("an integer", "a list of strings", ...).
   std::string doc;   ///< One line for --help, errors and the config file.
   std::string flag;  ///< Command-line flag name without "--" when it is not derived from `name` ("" = derived).
+  OptionKind kind = OptionKind::Text;  ///< The kind of value.
   Bounds bounds;     ///< Numeric range (ignored for other types).
+  /// Whether a different value may give different results: such options make up an experiment's fingerprint, so
+  /// a resumed run never mixes rows made under different values. Only pace and presentation options are false.
+  bool affects_results = true;
+  std::vector<std::string> examples;  ///< Valid values as YAML text, for docs and tests (Custom kinds).
   /// The value in `options` as YAML flow text ("" for an unset optional).
   std::function<std::string(const Options& options)> text;
   /// Sets the value from a YAML node; returns what is wrong with it ("" when nothing is).
@@ -53,6 +70,12 @@ struct OptionSpec {
     if (low) return ">= " + shown(bounds.min);
     if (high) return "<= " + shown(bounds.max);
     return "";
+  }
+  /// This declaration, marked as never changing a result (threads, pictures, hosts): out of the fingerprint.
+  OptionSpec notAffectingResults() const {
+    OptionSpec copy = *this;
+    copy.affects_results = false;
+    return copy;
   }
 };
 
@@ -105,6 +128,7 @@ struct Value;
 
 template <>
 struct Value<int> {
+  static constexpr OptionKind kKind = OptionKind::Integer;
   static constexpr const char* kType = "an integer";
   static bool parse(const YAML::Node& n, int* v) { return n.IsScalar() && YAML::convert<int>::decode(n, *v); }
   static std::string text(int v) { return std::to_string(v); }
@@ -112,6 +136,7 @@ struct Value<int> {
 };
 template <>
 struct Value<long> {
+  static constexpr OptionKind kKind = OptionKind::Integer;
   static constexpr const char* kType = "an integer";
   static bool parse(const YAML::Node& n, long* v) { return n.IsScalar() && YAML::convert<long>::decode(n, *v); }
   static std::string text(long v) { return std::to_string(v); }
@@ -119,6 +144,7 @@ struct Value<long> {
 };
 template <>
 struct Value<std::uint64_t> {
+  static constexpr OptionKind kKind = OptionKind::Integer;
   static constexpr const char* kType = "a non-negative integer";
   static bool parse(const YAML::Node& n, std::uint64_t* v) {
     unsigned long long u = 0;
@@ -133,6 +159,7 @@ struct Value<std::uint64_t> {
 };
 template <>
 struct Value<bool> {
+  static constexpr OptionKind kKind = OptionKind::Boolean;
   static constexpr const char* kType = "true or false";
   static bool parse(const YAML::Node& n, bool* v) { return n.IsScalar() && YAML::convert<bool>::decode(n, *v); }
   static std::string text(bool v) { return v ? "true" : "false"; }
@@ -140,6 +167,7 @@ struct Value<bool> {
 };
 template <>
 struct Value<double> {
+  static constexpr OptionKind kKind = OptionKind::Number;
   static constexpr const char* kType = "a number";
   static bool parse(const YAML::Node& n, double* v) {
     return n.IsScalar() && YAML::convert<double>::decode(n, *v) && std::isfinite(*v);
@@ -149,6 +177,7 @@ struct Value<double> {
 };
 template <>
 struct Value<std::string> {
+  static constexpr OptionKind kKind = OptionKind::Text;
   static constexpr const char* kType = "a string";
   static bool parse(const YAML::Node& n, std::string* v) {
     if (!n.IsScalar()) return false;
@@ -160,6 +189,7 @@ struct Value<std::string> {
 };
 template <>
 struct Value<std::vector<std::string>> {
+  static constexpr OptionKind kKind = OptionKind::TextList;
   static constexpr const char* kType = "a list of strings";
   /// A list, or one comma-separated scalar ("a,b": what a command line or `_name:=a,b` gives).
   static bool parse(const YAML::Node& n, std::vector<std::string>* v) {
@@ -192,6 +222,7 @@ struct Value<std::vector<std::string>> {
 };
 template <>
 struct Value<std::optional<Cell>> {
+  static constexpr OptionKind kKind = OptionKind::Cell;
   static constexpr const char* kType = "a cell [x, y]";
   /// [x, y], or "x,y" as one scalar.
   static bool parse(const YAML::Node& n, std::optional<Cell>* v) {
@@ -232,6 +263,7 @@ OptionSpec<Options> declareOption(const std::string& name, const std::string& do
   spec.name = name;
   spec.type = V::kType;
   spec.doc = doc;
+  spec.kind = V::kKind;
   spec.bounds = bounds;
   spec.text = [field](const Options& o) { return V::text(field(const_cast<Options&>(o))); };
   spec.set = [field](Options* o, const YAML::Node& node) -> std::string {
@@ -252,15 +284,17 @@ OptionSpec<Options> declareOption(const std::string& name, const std::string& do
 
 /// Declares option `name` whose value is written as text in a form of its own (a memory window "5x5"): `parse`
 /// reads the text into the value and returns what is wrong ("" when nothing is), `show` writes it; `type` says
-/// what a value is.
+/// what a value is and `examples` are valid values (two or more, as YAML text).
 template <typename Options, typename T>
 OptionSpec<Options> declareTextOption(const std::string& name, const std::string& type, const std::string& doc,
                                       T& (*field)(Options&), std::string (*parse)(const std::string&, T*),
-                                      std::string (*show)(T)) {
+                                      std::string (*show)(T), const std::vector<std::string>& examples) {
   OptionSpec<Options> spec;
   spec.name = name;
   spec.type = type;
   spec.doc = doc;
+  spec.kind = OptionKind::Custom;
+  spec.examples = examples;
   spec.text = [field, show](const Options& o) { return option_detail::quoted(show(field(const_cast<Options&>(o)))); };
   spec.set = [field, parse, type](Options* o, const YAML::Node& node) -> std::string {
     if (!node.IsScalar()) return "expected " + type + ", got '" + option_detail::nodeText(node) + "'";
@@ -283,13 +317,24 @@ std::vector<OptionSpec<Outer>> nestedOptions(const std::vector<OptionSpec<Inner>
     spec.type = inner.type;
     spec.doc = inner.doc;
     spec.flag = inner.flag;
+    spec.kind = inner.kind;
     spec.bounds = inner.bounds;
+    spec.affects_results = inner.affects_results;
+    spec.examples = inner.examples;
     spec.text = [inner, member](const Outer& o) { return inner.text(member(const_cast<Outer&>(o))); };
     spec.set = [inner, member](Outer* o, const YAML::Node& node) { return inner.set(&member(*o), node); };
     spec.check = [inner, member](const Outer& o) { return inner.check(member(const_cast<Outer&>(o))); };
     nested.push_back(spec);
   }
   return nested;
+}
+
+/// The declarations of `specs` that may change results (affects_results), in declaration order.
+template <typename Options>
+std::vector<OptionSpec<Options>> resultOptions(const std::vector<OptionSpec<Options>>& specs) {
+  std::vector<OptionSpec<Options>> selected;
+  std::copy_if(specs.begin(), specs.end(), std::back_inserter(selected), [](const auto& s) { return s.affects_results; });
+  return selected;
 }
 
 /// The declarations of `specs` named in `names`, in the order of `names` (a source that takes only some options).

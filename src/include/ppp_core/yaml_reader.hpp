@@ -20,6 +20,11 @@ YAML::Node loadYamlFile(const std::string& path);
 /// Parses YAML text from `source` (a file or parameter name for errors). @throws ParseError.
 YAML::Node parseYaml(const std::string& text, const std::string& source);
 
+/// Where two YAML documents first differ, as a person reads it: "connectivity: absent there, 8 here" or
+/// "agents[2].planner_node: 'a/b' there, 'c/d' here" (`there` names the first document, `here` the second);
+/// "" when they hold the same data. Mapping keys are compared in the order of `here`, then keys only `there` has.
+std::string yamlDifference(const YAML::Node& there, const YAML::Node& here);
+
 /// Reads the keys of one YAML mapping into typed fields, remembering which keys were used so that an
 /// unknown (misspelt) key is reported with its line instead of being silently ignored.
 class YamlMapReader {
