@@ -191,7 +191,9 @@ expect_error "wrong yaml type" "type.yaml:2: runs: expected an integer, got 'lot
 [ ! -e "$work/typo" ] && pass || fail "a refused experiment left an output directory"
 sed 's/runs: 1500/runs: 1400/' "$work/experiment.yaml" > "$work/other.yaml"
 cp "$work/agents.yaml" "$work/other_agents.yaml"
-expect_error "different experiment" "holds a different experiment" "$ppp" experiment "$work/other.yaml" -o "$work/a"
+expect_error "different experiment" "runs: '1500' there, '1400' here" "$ppp" experiment "$work/other.yaml" -o "$work/a"
+printf 'connectivity: 8\n' | cat - "$work/experiment.yaml" > "$work/diagonal.yaml"
+expect_error "other move model" "connectivity: '4' there, '8' here" "$ppp" experiment "$work/diagonal.yaml" -o "$work/a"
 cmp -s "$work/a/results.csv" "$work/b/results.csv" && pass || fail "a refused experiment touched the results"
 
 # Planner agents are external ROS planners: the in-process run says it skips them and reports the others.
