@@ -6,9 +6,11 @@
 #include <vector>
 
 #include "generator_commands.hpp"
+#include "cli_options.hpp"
 #include "option_flags.hpp"
 #include "stop_signals.hpp"
 #include "ppp_core/csv.hpp"
+#include "ppp_core/episode_options.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_generator/set_evolution.hpp"
 #include "progress.hpp"
@@ -21,7 +23,8 @@ namespace {
 struct GenerateFlags {
   std::string config = PPP_DEFAULT_CONFIG_DIR "/generator.yaml";
   std::map<std::string, std::string> options;  ///< The generator options' flags given, by flag name.
-  int budget = 0;
+  std::map<std::string, std::string> episode;  ///< The episode options' flags given (failure fitness), by flag name.
+  std::string size;                            ///< --size WIDTHxHEIGHT, as `ppp random` takes it.
   int threads = 0;
   std::string output;
   bool quiet = false;
@@ -31,8 +34,24 @@ struct GenerateFlags {
 /// The options of --config with the option flags applied. @throws IoError, ParseError, InvalidArgument.
 generator::GeneratorOptions resolveOptions(const CLI::App& command, const GenerateFlags& f) {
   generator::GeneratorOptions o = generator::loadGeneratorOptions(f.config);
+  if (command.count("--size") > 0) {
+    if (command.count("--width") > 0 || command.count("--height") > 0) {
+      throw InvalidArgument("--size", "give either --size or --width/--height, not both");
+    }
+    const Size size = parseSize(f.size, "--size");
+    o.width = size.width;
+    o.height = size.height;
+  }
   applyAndValidateFlags(command, generator::generatorOptionSpecs(), f.options, &o);
   return o;
+}
+
+/// Whether any flag of the episode options or --threads was given (they serve the failure fitness only).
+bool episodeFlagsGiven(const CLI::App& command) {
+  for (const OptionSpec<EpisodeOptions>& spec : episodeOptionSpecs()) {
+    if (command.count(flagName(spec)) > 0) return true;
+  }
+  return command.count("--threads") > 0;
 }
 
 void runGenerate(const CLI::App& command, const GenerateFlags& flags, const FailureFitnessMaker& make_failure) {
@@ -45,13 +64,15 @@ void runGenerate(const CLI::App& command, const GenerateFlags& flags, const Fail
   }
   if (flags.output.empty()) throw InvalidArgument("--output", "required: the set's directory");
   const generator::GeneratorOptions options = resolveOptions(command, flags);
-  if (options.fitness != generator::kFailureFitness && (command.count("--budget") > 0 || command.count("--threads") > 0)) {
-    throw InvalidArgument("--budget", "--budget and --threads are for the failure fitness, which plays episodes");
+  if (options.fitness != generator::kFailureFitness && episodeFlagsGiven(command)) {
+    throw InvalidArgument("--fitness", "--budget, --sensor-range, --connectivity and --threads are for the failure "
+                                       "fitness, which plays episodes; this run's fitness is " + options.fitness);
   }
-  const std::optional<int> budget = command.count("--budget") > 0 ? std::optional<int>(flags.budget) : std::nullopt;
+  EpisodeOptions episode;
+  applyAndValidateFlags(command, episodeOptionSpecs(), flags.episode, &episode);
   const generator::Fitness fitness =
       options.fitness == generator::kFailureFitness
-          ? make_failure(options, budget, flags.threads)
+          ? make_failure(options, episode, flags.threads)
           : generator::makeFitness(options.fitness, generator::FitnessParameters{options.weights, options.seed});
   Progress progress("matings", flags.quiet);
   const generator::EvolvedSet evolved = generator::evolveSetDirectory(
@@ -75,7 +96,9 @@ void addGenerateCommand(CLI::App& app, FailureFitnessMaker make_failure_fitness)
       ->capture_default_str();
   static const generator::GeneratorOptions defaults;
   addOptionFlags(command, generator::generatorOptionSpecs(), &defaults, &flags->options);
-  command->add_option("--budget", flags->budget, "failure: moves per episode (default 300)");
+  command->add_option("--size", flags->size, "grid size, for --width and --height together")->type_name("WIDTHxHEIGHT");
+  static const EpisodeOptions episode_defaults;
+  addOptionFlags(command, episodeOptionSpecs(), &episode_defaults, &flags->episode);
   command->add_option("--threads", flags->threads, "failure: worker threads (default 0: every core)");
   command->add_option("-o,--output", flags->output, "Output directory (required)");
   command->add_flag("--print-options", flags->print_options,

@@ -5,16 +5,17 @@
 
 #include <CLI/CLI.hpp>
 
+#include "ppp_core/episode_options.hpp"
 #include "ppp_generator/fitness.hpp"
 #include "ppp_generator/generator_options.hpp"
 
 namespace ppp {
 namespace cli {
 
-/// Makes the `failure` fitness of `ppp generate` (its episodes are the simulator's): the options, the --budget
-/// given (nullopt: the default) and --threads. @throws InvalidArgument, IoError, ParseError.
+/// Makes the `failure` fitness of `ppp generate` (its episodes are the simulator's): the options, the episode
+/// rules of the flags (validated) and --threads. @throws InvalidArgument, IoError, ParseError.
 using FailureFitnessMaker = std::function<generator::Fitness(const generator::GeneratorOptions& options,
-                                                             std::optional<int> budget, int threads)>;
+                                                             const EpisodeOptions& episode, int threads)>;
 
 /// Adds `ppp generate`: evolve a PPP set and write it with its taxonomy.
 void addGenerateCommand(CLI::App& app, FailureFitnessMaker make_failure_fitness);

@@ -41,7 +41,8 @@ TEST(OptionFlagsTest, EveryOptionHasADocumentedFlag) {
   EXPECT_EQ(given.size(), generatorOptionSpecs().size());
   const std::string help = app.help();
   for (const char* expected : {"--max-bar-length", "--max-block-side", "--weights-one-turn-penalty",
-                               "an integer [2, 100000]; default 60", "a cell [x, y]"}) {
+                               "--population INT in [2, 100000]", "PPPs in the pool (default 60)", "--start X,Y",
+                               "--features A,B,...", "--seed INT "}) {
     EXPECT_NE(help.find(expected), std::string::npos) << expected << " missing from:\n" << help;
   }
 }

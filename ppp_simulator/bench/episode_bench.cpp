@@ -23,7 +23,7 @@ void BM_Episodes(benchmark::State& state) {
   const ppp::Grid grid = ppp::decodeGrid(problem);
   ppp::agents::AgentConfig config;
   config.type = config.name = type;
-  ppp::simulator::EpisodeRunner runner(config, ppp::simulator::EpisodeOptions{});
+  ppp::simulator::EpisodeRunner runner(config, ppp::EpisodeOptions{});
   auto agent = ppp::agents::makeAgent(config);
   std::uint64_t run = 0;
   std::int64_t steps = 0;
@@ -47,7 +47,7 @@ void BM_AnimateEpisode(benchmark::State& state) {
   config.type = config.name = "random";
   std::size_t bytes = 0;
   int frames = 0;
-  ppp::simulator::EpisodeOptions options;
+  ppp::EpisodeOptions options;
   options.budget = static_cast<int>(state.range(0));
   for (auto _ : state) {
     const auto animation = ppp::simulator::animateEpisode(problem, grid, config, options, 1);

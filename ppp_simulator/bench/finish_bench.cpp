@@ -84,7 +84,7 @@ std::vector<sim::PreparedSet> benchSets() {
       set.ids.push_back(id);
       set.problems.push_back(p);
     }
-    sets.push_back(sim::prepareSet("set" + std::to_string(s), set, sim::EpisodeOptions{}));
+    sets.push_back(sim::prepareSet("set" + std::to_string(s), set, ppp::EpisodeOptions{}));
   }
   return sets;
 }

@@ -64,7 +64,7 @@ void BM_Hunt(benchmark::State& state) {
   options.archive = state.range(1) == 0 ? ppp::generator::kNoArchive : ppp::generator::kMapElitesArchive;
   for (auto _ : state) {
     benchmark::DoNotOptimize(ppp::generator::evolveSet(
-        options, ppp::simulator::fitnessFor(options, {}, ppp::simulator::EpisodeOptions{}, 0)));
+        options, ppp::simulator::fitnessFor(options, {}, ppp::EpisodeOptions{}, 0)));
   }
   state.SetLabel(options.archive);
   state.counters["evaluations/s"] =

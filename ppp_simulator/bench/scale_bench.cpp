@@ -54,10 +54,10 @@ void BM_Step(benchmark::State& state) {
   const int side = static_cast<int>(state.range(1));
   const ppp::Problem problem = scaledProblem(side);
   const ppp::Grid grid = ppp::decodeGrid(problem);
-  const int range = sim::EpisodeOptions{}.sensor_range;
+  const int range = ppp::EpisodeOptions{}.sensor_range;
   std::optional<ppp::WindowAtlas> windows;
   if (ppp::WindowAtlas::bytes(grid, range) <= ppp::kMaxWindowAtlasBytes) windows.emplace(grid, range);
-  sim::EpisodeRunner runner(config, sim::EpisodeOptions{});
+  sim::EpisodeRunner runner(config, ppp::EpisodeOptions{});
   auto agent = ppp::agents::makeAgent(config);
   std::uint64_t run = 0;
   std::int64_t steps = 0;
@@ -95,7 +95,7 @@ void BM_Mating(benchmark::State& state) {
   }
   const auto timed_run = [&](int count) {
     options.matings = count;
-    ppp::generator::GeneticAlgorithm ga(options, sim::fitnessFor(options, {}, sim::EpisodeOptions{}, 1));
+    ppp::generator::GeneticAlgorithm ga(options, sim::fitnessFor(options, {}, ppp::EpisodeOptions{}, 1));
     const auto start = std::chrono::steady_clock::now();
     benchmark::DoNotOptimize(ga.run());
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

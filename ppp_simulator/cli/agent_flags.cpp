@@ -15,10 +15,10 @@ const std::vector<OptionSpec<agents::AgentConfig>>& agentFlagSpecs() {
 void AgentFlags::add(CLI::App* command) {
   command_ = command;
   static const agents::AgentConfig agent_defaults;
-  static const simulator::EpisodeOptions episode_defaults;
+  static const EpisodeOptions episode_defaults;
   addOptionFlags(command, agentFlagSpecs(), &agent_defaults, &given_);
   command->get_option(flagName(agentFlagSpecs()[0]))->required();
-  addOptionFlags(command, simulator::episodeOptionSpecs(), &episode_defaults, &given_);
+  addOptionFlags(command, episodeOptionSpecs(), &episode_defaults, &given_);
 }
 
 agents::AgentConfig AgentFlags::agent() const {
@@ -38,9 +38,9 @@ agents::AgentConfig AgentFlags::agent() const {
   return config;
 }
 
-simulator::EpisodeOptions AgentFlags::episode() const {
-  simulator::EpisodeOptions options;
-  applyAndValidateFlags(*command_, simulator::episodeOptionSpecs(), given_, &options);
+EpisodeOptions AgentFlags::episode() const {
+  EpisodeOptions options;
+  applyAndValidateFlags(*command_, episodeOptionSpecs(), given_, &options);
   return options;
 }
 

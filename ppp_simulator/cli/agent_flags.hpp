@@ -25,7 +25,7 @@ class AgentFlags {
   /// @throws InvalidArgument naming the flag.
   agents::AgentConfig agent() const;
   /// The episode options the flags give. @throws InvalidArgument naming the flag.
-  simulator::EpisodeOptions episode() const;
+  EpisodeOptions episode() const;
   /// True when `flag` (e.g. "--budget") was given on the command line.
   bool given(const std::string& flag) const { return command_->count(flag) > 0; }
 

@@ -9,11 +9,8 @@
 namespace {
 
 /// The failure fitness of `ppp generate`: the panel from --agents-file (or built-in types) played in process.
-ppp::generator::Fitness failureFitness(const ppp::generator::GeneratorOptions& options, std::optional<int> budget,
-                                       int threads) {
-  ppp::simulator::EpisodeOptions episode;
-  if (budget) episode.budget = *budget;
-  episode.validate();
+ppp::generator::Fitness failureFitness(const ppp::generator::GeneratorOptions& options,
+                                       const ppp::EpisodeOptions& episode, int threads) {
   const std::vector<ppp::agents::AgentConfig> available =
       options.agents_file.empty() ? std::vector<ppp::agents::AgentConfig>{}
                                   : ppp::agents::loadAgentConfigs(options.agents_file);

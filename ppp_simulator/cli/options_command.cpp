@@ -35,7 +35,9 @@ std::string optionsReference() {
       << "output). Each option is declared once, with its type, range, default and meaning; the YAML files, ROS\n"
       << "parameters and command-line flags below all read it from that declaration and accept and refuse the\n"
       << "same values. A flag is `--` plus the name with `_` and `.` as `-` (`--weights-goal`); a ROS parameter is\n"
-      << "`~` plus the name with `.` as `/` (`~weights/goal`).\n\n"
+      << "`~` plus the name with `.` as `/` (`~weights/goal`). An option that changes results is part of an\n"
+      << "experiment's fingerprint (its `experiment.yaml`): a rerun on the same directory resumes only when\n"
+      << "every such option is unchanged, and otherwise names the first one that differs.\n\n"
       << "## Experiment\n\n"
       << "Top-level keys of an experiment YAML (`config/experiment.yaml`) besides `sets` and `agents`;\n"
       << "`ppp experiment --threads` overrides `threads`.\n\n"
@@ -48,7 +50,8 @@ std::string optionsReference() {
       << optionsMarkdownTable(agents::agentOptionSpecs(), agents::AgentConfig{}, &key)
       << "\n## Generator\n\n"
       << "Keys of `config/generator.yaml` and of a set's `generator` mapping, `generator_node` `~` parameters and\n"
-      << "`ppp generate` flags.\n\n"
+      << "`ppp generate` flags (`--size WIDTHxHEIGHT` sets `width` and `height` together, as for `ppp random`;\n"
+      << "the failure fitness also takes the episode's `--budget`, `--sensor-range` and `--connectivity`).\n\n"
       << optionsMarkdownTable(generator::generatorOptionSpecs(), generator::GeneratorOptions{}, &key)
       << "\n## Simulator node\n\n"
       << "`simulator_node` `~` parameters, each also a `ppp launch-file` flag; `launch/experiment.launch` passes its\n"

@@ -91,7 +91,7 @@ void runReplay(const ReplayFlags& f) {
     throw InvalidArgument(flagFor(e.name()), e.problem());
   }
   const agents::AgentConfig config = f.agent.agent();
-  const simulator::EpisodeOptions options = f.agent.episode();
+  const EpisodeOptions options = f.agent.episode();
   const Problem problem = loadProblem(f.problem);
   const Grid grid = decodeGrid(problem);
   simulator::EpisodeOutcome outcome;

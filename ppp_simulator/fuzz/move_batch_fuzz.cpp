@@ -40,14 +40,14 @@ const std::vector<sim::PreparedSet>& laneSets() {
       problems.push_back(p);
     }
     return std::vector<sim::PreparedSet>{
-        sim::prepareSet("fuzz", ppp::generator::problemSetFromProblems(problems, {}, "fuzz"), sim::EpisodeOptions{})};
+        sim::prepareSet("fuzz", ppp::generator::problemSetFromProblems(problems, {}, "fuzz"), ppp::EpisodeOptions{})};
   }();
   return sets;
 }
 
 /// A fresh lane of `type`'s runs: 2 per PPP, a budget of 12 moves, batches of up to 3 episodes.
 sim::AgentLane lane(const std::string& type) {
-  return sim::AgentLane({type, type}, sim::EpisodeOptions{12, 2}, laneSets(), 1, 2, {}, 3);
+  return sim::AgentLane({type, type}, ppp::EpisodeOptions{12, 2}, laneSets(), 1, 2, {}, 3);
 }
 
 /// Walks one MoveBatch (ppp_msgs/msg/MoveBatch.msg); false when it does not fit in the bytes left.

@@ -12,28 +12,6 @@
 namespace ppp {
 namespace simulator {
 
-void EpisodeOptions::validate() const {
-  checkOptionRanges(episodeOptionSpecs(), *this);
-  if (connectivity != 4 && connectivity != 8) {
-    throw InvalidArgument("connectivity", "expected 4 or 8, got " + std::to_string(connectivity));
-  }
-}
-
-const std::vector<OptionSpec<EpisodeOptions>>& episodeOptionSpecs() {
-  using E = EpisodeOptions;
-  static const std::vector<OptionSpec<E>> specs = {
-      declareOption("budget", "moves per episode before it fails", +[](E& e) -> int& { return e.budget; },
-                    Bounds{1, kMaxEpisodeBudget}),
-      declareOption("sensor_range", "scan radius in cells (2: a 5x5 window)",
-                    +[](E& e) -> int& { return e.sensor_range; }, Bounds{1, kMaxSensorRange}),
-      declareOption("connectivity",
-                    "move model: 4 (stay and the four straight moves) or 8 (also the diagonals, never cutting a "
-                    "corner); agents other than astar move 4-connected either way",
-                    +[](E& e) -> int& { return e.connectivity; }, Bounds{4, 8}),
-  };
-  return specs;
-}
-
 double pathLength(const EpisodeOutcome& outcome) {
   return outcome.path_length + outcome.diagonal_moves * (kDiagonalCost - 1);
 }

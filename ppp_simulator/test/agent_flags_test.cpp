@@ -59,8 +59,8 @@ TEST(AgentFlagsTest, AgentFlagsAcceptAndRefuseWhatEverySourceDoes) {
 
 TEST(AgentFlagsTest, EpisodeFlagsAcceptAndRefuseWhatTheExperimentYamlDoes) {
   // The same cases as experiment_config_test's EpisodeKeysAcceptAndRefuseWhatEverySourceDoes.
-  expectFlagsHoldTo(simulator::episodeOptionSpecs(),
-                    declaredOptionCases(simulator::episodeOptionSpecs(), simulator::EpisodeOptions{}));
+  expectFlagsHoldTo(episodeOptionSpecs(),
+                    declaredOptionCases(episodeOptionSpecs(), EpisodeOptions{}));
 }
 
 TEST(AgentFlagsTest, FlagsAreTheDeclaredOnesWithTheirDocs) {
@@ -68,9 +68,9 @@ TEST(AgentFlagsTest, FlagsAreTheDeclaredOnesWithTheirDocs) {
   AgentFlags flags;
   flags.add(&app);
   const std::string help = app.help();
-  for (const char* expected : {"--agent", "--memory", "--sensor-noise", "--budget", "--sensor-range",
-                               "a memory window KxK (odd K) or 'full'; default full", "a number [0, 1]; default 0",
-                               "an integer [1, 1000000]; default 300", "an integer [1, 7]; default 2"}) {
+  for (const char* expected : {"--agent", "--memory full|5x5|3x3|...", "a memory window KxK (odd K) or 'full'; default full",
+                               "--sensor-noise FLOAT in [0, 1]", "flipped (default 0)", "--budget INT in [1, 1000000]",
+                               "fails (default 300)", "--sensor-range INT in [1, 7]", "window) (default 2)"}) {
     EXPECT_NE(help.find(expected), std::string::npos) << expected << " missing from:\n" << help;
   }
   EXPECT_EQ(flagsError({"--budget", "50"}), "");

@@ -75,6 +75,12 @@ gen=(generate --population 12 --matings 300 --width 14 --height 10 --max-obstacl
 expect_ok "generate" "$ppp" "${gen[@]}" --seed 5 -o "$work/set_a"
 expect_ok "generate same seed" "$ppp" "${gen[@]}" --seed 5 -o "$work/set_b"
 diff -r "$work/set_a" "$work/set_b" > /dev/null && pass || fail "same seed gave different set directories"
+expect_ok "generate --size" "$ppp" generate --population 12 --matings 300 --size 14x10 --max-obstacles 6 --quiet --seed 5 \
+  -o "$work/set_size"
+diff -r "$work/set_a" "$work/set_size" > /dev/null && pass || fail "--size 14x10 and --width 14 --height 10 differ"
+expect_ok "generate help" "$ppp" generate --help
+grep -q -- "--population INT in \[2, 100000\]" "$work/out" && pass || fail "generate --help hides the population's kind and range"
+grep -q -- "--connectivity INT in \[4, 8\]" "$work/out" && pass || fail "generate --help lacks --connectivity"
 expect_ok "generate other seed" "$ppp" "${gen[@]}" --seed 6 -o "$work/set_c"
 diff -r "$work/set_a" "$work/set_c" > /dev/null && fail "different seeds gave the same set" || pass
 [ "$(ls "$work/set_a"/*.ppp | wc -l)" -eq 12 ] && pass || fail "generate did not write 12 .ppp files"
@@ -167,6 +173,13 @@ expect_error "not a number" "--height: expected an integer, got 'tall'" "$ppp" g
 expect_error "negative budget" "--max-obstacles: expected an integer in [0, 1048576], got -1" "$ppp" generate --quiet --max-obstacles -1 -o "$work/bad1"
 expect_error "goal outside" "goal: cell (14, 0) is outside the 14x10 grid" "$ppp" generate --quiet --width 14 --height 10 --goal 14,0 -o "$work/bad1"
 expect_error "start is goal" "goal: must differ from start" "$ppp" generate --quiet --width 14 --height 10 --start 13,9 -o "$work/bad1"
+expect_error "size and width" "--size: give either --size or --width/--height, not both" \
+  "$ppp" generate --quiet --size 14x10 --width 12 -o "$work/bad1"
+expect_error "bad size" "--size: expected" "$ppp" generate --quiet --size 14by10 -o "$work/bad1"
+expect_error "episode flag without failure" "--fitness: --budget, --sensor-range, --connectivity and --threads are for" \
+  "$ppp" generate --quiet --fitness turns --connectivity 8 -o "$work/bad1"
+expect_error "connectivity 6" "--connectivity: expected 4 or 8, got 6" \
+  "$ppp" generate --quiet --fitness failure --agents bumper --connectivity 6 -o "$work/bad1"
 expect_error "unknown characters" "characters: unknown character set 'all'" \
   "$ppp" generate --quiet --characters all -o "$work/bad1"
 expect_error "bad config key" "generator.yaml:1: populaton: unknown key" \

@@ -51,13 +51,14 @@ template <typename Options>
 void addOptionFlags(CLI::App* command, const std::vector<OptionSpec<Options>>& specs, const Options* defaults,
                     std::map<std::string, std::string>* given) {
   for (const OptionSpec<Options>& spec : specs) {
-    const std::string range = spec.rangeText();
     const std::string value = defaults == nullptr ? "" : spec.text(*defaults);
     const std::string default_text = defaults == nullptr          ? "; default: the config file's"
                                      : value.empty() || value == "''" ? ""
                                                                       : "; default " + value;
     std::string& storage = (*given)[flagName(spec)];
-    command->add_option(flagName(spec), storage, spec.doc + " (" + spec.type + (range.empty() ? "" : " " + range) + default_text + ")")
+    // The kind and range are the value's name; a value in a form of its own also says what it is.
+    const std::string what = (spec.kind == OptionKind::Custom ? spec.type : "") + default_text;
+    command->add_option(flagName(spec), storage, spec.doc + (what.empty() ? "" : " (" + what.substr(what[0] == ';' ? 2 : 0) + ")"))
         ->type_name(flagValueName(spec));
   }
 }

@@ -9,17 +9,19 @@
 namespace ppp {
 
 /// The declared options as a Markdown table: key (with `spelled` applied, e.g. "~" + name for a parameter or the
-/// flag), value type and range, the value in `defaults`, and the one-line doc.
+/// flag), value type and range, the value in `defaults`, whether it may change results (a resume refuses a
+/// change of it), and the one-line doc.
 template <typename Options>
 std::string optionsMarkdownTable(const std::vector<OptionSpec<Options>>& specs, const Options& defaults,
                                  std::string (*spelled)(const OptionSpec<Options>&)) {
   std::ostringstream out;
-  out << "| option | value | default | meaning |\n|---|---|---|---|\n";
+  out << "| option | value | default | changes results | meaning |\n|---|---|---|---|---|\n";
   for (const OptionSpec<Options>& spec : specs) {
     const std::string range = spec.rangeText();
     const std::string value = spec.text(defaults);
     out << "| `" << spelled(spec) << "` | " << spec.type << (range.empty() ? "" : " " + range) << " | "
-        << (value.empty() || value == "''" ? "" : "`" + value + "`") << " | " << spec.doc << " |\n";
+        << (value.empty() || value == "''" ? "" : "`" + value + "`") << " | " << (spec.affects_results ? "yes" : "no")
+        << " | " << spec.doc << " |\n";
   }
   return out.str();
 }
