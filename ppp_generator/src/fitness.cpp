@@ -77,6 +77,12 @@ std::string fitnessNames() {
   return names;
 }
 
+std::vector<OptionChoice> fitnessChoices() {
+  std::vector<OptionChoice> choices;
+  for (const FitnessInfo& info : fitnessCatalogue()) choices.push_back({info.name, info.description});
+  return choices;
+}
+
 Fitness makeFitness(const std::string& name, const FitnessParameters& parameters) {
   for (const Entry& e : kEntries) {
     if (name == e.name) return Fitness{e.name, e.maximise, e.make(parameters), {}, 1};

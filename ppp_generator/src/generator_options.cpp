@@ -34,9 +34,6 @@ void validateHuntOptions(const GeneratorOptions& o) {
       if (o.agents[i] == o.agents[j]) throw InvalidArgument("agents", "'" + o.agents[i] + "' named twice");
     }
   }
-  if (o.archive != kNoArchive && o.archive != kMapElitesArchive) {
-    throw InvalidArgument("archive", "unknown archive '" + o.archive + "'; valid: none, map_elites");
-  }
   if (o.features.size() < 2) {
     throw InvalidArgument("features", "expected two or more character names, got " + std::to_string(o.features.size()));
   }
@@ -76,9 +73,6 @@ void GeneratorOptions::validate() const {
                                             formatShortest(pool_cells) + " grid cells held at once; at most " +
                                             formatShortest(kMaxPoolCells) + ": lower the population or the map size");
   }
-  if (replacement != kCrowdingReplacement && replacement != kTournamentReplacement) {
-    throw InvalidArgument("replacement", "unknown rule '" + replacement + "'; valid: crowding, tournament");
-  }
   weights.validate();
   Problem shape = Problem::empty(width, height, max_obstacles);
   shape.start = startCell();
@@ -112,7 +106,8 @@ const std::vector<OptionSpec<GeneratorOptions>>& generatorOptionSpecs() {
   using O = GeneratorOptions;
   const double side_min = kMinGridSide, side_max = kMaxGridSide;
   static const std::vector<OptionSpec<O>> specs = {
-      declareOption("fitness", "fitness function: " + fitnessNames(), +[](O& o) -> std::string& { return o.fitness; }),
+      declareOption("fitness", "fitness function", +[](O& o) -> std::string& { return o.fitness; })
+          .withChoices("fitness", fitnessChoices()),
       declareOption("population", "PPPs in the pool", +[](O& o) -> int& { return o.population; },
                     Bounds{2, kMaxPopulation}),
       declareOption("matings", "steady-state mating events", +[](O& o) -> long& { return o.matings; },
@@ -134,12 +129,11 @@ const std::vector<OptionSpec<GeneratorOptions>>& generatorOptionSpecs() {
       declareOption("max_block_side", "longest random block side; 0 = a quarter of the shorter side",
                     +[](O& o) -> int& { return o.obstacle_shapes.max_block_side; }, Bounds{0, side_max}),
       declareOption("seed", "seed of every random choice", +[](O& o) -> std::uint64_t& { return o.seed; }),
-      declareOption("characters", "taxonomy characters: wei (Wei's four), extended (all 14) or barn (BARN's five)",
-                    +[](O& o) -> std::string& { return o.characters; }),
-      declareOption("replacement",
-                    "crowding: a child replaces the most similar of crowding_window PPPs if as fit; tournament: "
-                    "the least fit of its tournament",
-                    +[](O& o) -> std::string& { return o.replacement; }),
+      declareOption("characters", "taxonomy characters", +[](O& o) -> std::string& { return o.characters; })
+          .withChoices("character set", {{"wei", "Wei's four"}, {"extended", "all 14"}, {"barn", "BARN's five"}}),
+      declareOption("replacement", "how a child enters the pool", +[](O& o) -> std::string& { return o.replacement; })
+          .withChoices("rule", {{kCrowdingReplacement, "it replaces the most similar of crowding_window PPPs if as fit"},
+                                {kTournamentReplacement, "it replaces the least fit of its tournament"}}),
       declareOption("crowding_window", "PPPs a child is compared with under crowding (capped at the population)",
                     +[](O& o) -> int& { return o.crowding_window; }, Bounds{2, kMaxCrowdingWindow}),
       declareOption("agents", "failure: the panel's agent names",
@@ -148,8 +142,9 @@ const std::vector<OptionSpec<GeneratorOptions>>& generatorOptionSpecs() {
                     +[](O& o) -> std::string& { return o.agents_file; }),
       declareOption("runs_per_eval", "failure: episodes per agent per evaluated PPP",
                     +[](O& o) -> int& { return o.runs_per_eval; }, Bounds{1, kMaxRunsPerEval}),
-      declareOption("archive", "none, or map_elites: the set is the elites of an archive over features",
-                    +[](O& o) -> std::string& { return o.archive; }),
+      declareOption("archive", "what the set is", +[](O& o) -> std::string& { return o.archive; })
+          .withChoices("archive", {{kNoArchive, "the final pool"},
+                                   {kMapElitesArchive, "the elites of an archive binned over features"}}),
       declareOption("features", "map_elites: taxonomic characters binned (two or more)",
                     +[](O& o) -> std::vector<std::string>& { return o.features; }),
       declareOption("bins", "map_elites: bins per feature", +[](O& o) -> int& { return o.bins; }, Bounds{2, kMaxBins}),

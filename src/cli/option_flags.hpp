@@ -28,6 +28,11 @@ std::string flagName(const OptionSpec<Options>& spec) {
 /// What --help shows as a flag's value: its kind and range ("INT in [2, 100000]", "X,Y", "A,B,...").
 template <typename Options>
 std::string flagValueName(const OptionSpec<Options>& spec) {
+  if (!spec.choices.empty()) {
+    std::string names;
+    for (const OptionChoice& choice : spec.choices) names += (names.empty() ? "" : "|") + choice.name;
+    return names;
+  }
   const std::string range = spec.rangeText();
   const std::string in = range.empty() ? "" : (range[0] == '[' ? " in " : " ") + range;
   switch (spec.kind) {
@@ -58,7 +63,7 @@ void addOptionFlags(CLI::App* command, const std::vector<OptionSpec<Options>>& s
     std::string& storage = (*given)[flagName(spec)];
     // The kind and range are the value's name; a value in a form of its own also says what it is.
     const std::string what = (spec.kind == OptionKind::Custom ? spec.type : "") + default_text;
-    command->add_option(flagName(spec), storage, spec.doc + (what.empty() ? "" : " (" + what.substr(what[0] == ';' ? 2 : 0) + ")"))
+    command->add_option(flagName(spec), storage, spec.docWithChoices() + (what.empty() ? "" : " (" + what.substr(what[0] == ';' ? 2 : 0) + ")"))
         ->type_name(flagValueName(spec));
   }
 }

@@ -8,12 +8,7 @@
 
 namespace ppp {
 
-void EpisodeOptions::validate() const {
-  checkOptionRanges(episodeOptionSpecs(), *this);
-  if (connectivity != 4 && connectivity != 8) {
-    throw InvalidArgument("connectivity", "expected 4 or 8, got " + std::to_string(connectivity));
-  }
-}
+void EpisodeOptions::validate() const { checkOptionRanges(episodeOptionSpecs(), *this); }
 
 const std::vector<OptionSpec<EpisodeOptions>>& episodeOptionSpecs() {
   using E = EpisodeOptions;
@@ -22,10 +17,10 @@ const std::vector<OptionSpec<EpisodeOptions>>& episodeOptionSpecs() {
                     Bounds{1, kMaxEpisodeBudget}),
       declareOption("sensor_range", "scan radius in cells (2: a 5x5 window)",
                     +[](E& e) -> int& { return e.sensor_range; }, Bounds{1, kMaxSensorRange}),
-      declareOption("connectivity",
-                    "move model: 4 (stay and the four straight moves) or 8 (also the diagonals, never cutting a "
-                    "corner); agents other than astar move 4-connected either way",
-                    +[](E& e) -> int& { return e.connectivity; }, Bounds{4, 8}),
+      declareOption("connectivity", "move model (agents other than astar move 4-connected either way)",
+                    +[](E& e) -> int& { return e.connectivity; }, Bounds{4, 8})
+          .withChoices("connectivity", {{"4", "stay and the four straight moves"},
+                                        {"8", "also the four diagonals, never cutting a corner"}}),
   };
   return specs;
 }

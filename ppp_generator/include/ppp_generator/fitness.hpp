@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "ppp_core/option_spec.hpp"
 #include "ppp_core/dpa.hpp"
 #include "ppp_core/evaluation.hpp"
 #include "ppp_core/problem.hpp"
@@ -55,6 +56,9 @@ std::vector<FitnessInfo> fitnessCatalogue();
 
 /// Comma-separated registry names, for error messages.
 std::string fitnessNames();
+
+/// The registry as an option's choices: each fitness's name and description.
+std::vector<OptionChoice> fitnessChoices();
 
 /// The fitness that is the failure rate of a panel of agents (SPEC 6b); built by the episode engine's
 /// makeFailureFitness (ppp_simulator), or through ROS by the simulator node, not by makeFitness.

@@ -49,6 +49,7 @@ std::vector<OptionCase> declaredOptionCases(const std::vector<OptionSpec<Options
     if (spec.kind == OptionKind::TextList) cases.push_back({spec.name, "{a: 1}", false});
     if (spec.kind == OptionKind::Cell) cases.push_back({spec.name, "[1, 2, 3]", false});
     if (spec.kind != OptionKind::TextList && spec.kind != OptionKind::Cell) cases.push_back({spec.name, "[a, b]", false});
+    if (!spec.choices.empty()) cases.push_back({spec.name, "not_a_choice", false});
   }
   return cases;
 }
@@ -58,6 +59,9 @@ std::vector<OptionCase> declaredOptionCases(const std::vector<OptionSpec<Options
 template <typename Options>
 std::string differentOptionValue(const OptionSpec<Options>& spec, const Options& options) {
   const std::string current = spec.text(options);
+  for (const OptionChoice& choice : spec.choices) {
+    if (choice.name != current) return choice.name;
+  }
   switch (spec.kind) {
     case OptionKind::Integer:
     case OptionKind::Number: {

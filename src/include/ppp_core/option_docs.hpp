@@ -19,9 +19,10 @@ std::string optionsMarkdownTable(const std::vector<OptionSpec<Options>>& specs, 
   for (const OptionSpec<Options>& spec : specs) {
     const std::string range = spec.rangeText();
     const std::string value = spec.text(defaults);
-    out << "| `" << spelled(spec) << "` | " << spec.type << (range.empty() ? "" : " " + range) << " | "
+    const std::string kind = spec.choices.empty() ? spec.type + (range.empty() ? "" : " " + range) : "one of " + spec.choiceList();
+    out << "| `" << spelled(spec) << "` | " << kind << " | "
         << (value.empty() || value == "''" ? "" : "`" + value + "`") << " | " << (spec.affects_results ? "yes" : "no")
-        << " | " << spec.doc << " |\n";
+        << " | " << spec.docWithChoices() << " |\n";
   }
   return out.str();
 }

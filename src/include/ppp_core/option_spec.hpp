@@ -41,6 +41,12 @@ enum class OptionKind {
   Custom,    ///< A value written in a form of its own (declareTextOption()); `examples` shows valid ones.
 };
 
+/// One valid value of an option that takes a fixed set of them.
+struct OptionChoice {
+  std::string name;  ///< The value as YAML, parameters and flags write it.
+  std::string doc;   ///< What it means, one line.
+};
+
 /// One option of the struct `Options`.
 template <typename Options>
 struct OptionSpec {
@@ -54,6 +60,7 @@ struct OptionSpec {
   /// a resumed run never mixes rows made under different values. Only pace and presentation options are false.
   bool affects_results = true;
   std::vector<std::string> examples;  ///< Valid values as YAML text, for docs and tests (Custom kinds).
+  std::vector<OptionChoice> choices;  ///< The only values allowed, when the option takes a fixed set (else empty).
   /// The value in `options` as YAML flow text ("" for an unset optional).
   std::function<std::string(const Options& options)> text;
   /// Sets the value from a YAML node; returns what is wrong with it ("" when nothing is).
@@ -70,6 +77,46 @@ struct OptionSpec {
     if (low) return ">= " + shown(bounds.min);
     if (high) return "<= " + shown(bounds.max);
     return "";
+  }
+  /// The choices' names as errors list them ("crowding, tournament").
+  std::string choiceList() const {
+    std::string list;
+    for (const OptionChoice& choice : choices) list += (list.empty() ? "" : ", ") + choice.name;
+    return list;
+  }
+  /// The doc, followed by each choice with its meaning when the option takes a fixed set of values.
+  std::string docWithChoices() const {
+    std::string text = doc;
+    for (std::size_t i = 0; i < choices.size(); ++i) {
+      text += (i == 0 ? ": " : ", ") + choices[i].name + (choices[i].doc.empty() ? "" : " (" + choices[i].doc + ")");
+    }
+    return text;
+  }
+  /// This declaration restricted to `allowed`: any other value is refused as "unknown <noun> 'x'; valid: a, b"
+  /// when read and when checked.
+  OptionSpec withChoices(const std::string& noun, std::vector<OptionChoice> allowed) const {
+    OptionSpec copy = *this;
+    copy.choices = std::move(allowed);
+    const auto problem = [noun, names = copy.choiceList(), choices = copy.choices](const std::string& text) {
+      for (const OptionChoice& choice : choices) {
+        if (choice.name == text) return std::string();
+      }
+      return "unknown " + noun + " '" + text + "'; valid: " + names;
+    };
+    const auto chosen = [text = text, problem](const Options& options) {
+      std::string value = text(options);
+      if (value.size() >= 2 && value.front() == '\'' && value.back() == '\'') value = value.substr(1, value.size() - 2);
+      return problem(value);
+    };
+    copy.set = [set = set, chosen](Options* options, const YAML::Node& node) {
+      const std::string wrong = set(options, node);  // a value of the wrong kind is refused as such first
+      return wrong.empty() ? chosen(*options) : wrong;
+    };
+    copy.check = [check = check, chosen](const Options& options) {
+      const std::string wrong = chosen(options);
+      return wrong.empty() ? check(options) : wrong;
+    };
+    return copy;
   }
   /// This declaration, marked as never changing a result (threads, pictures, hosts): out of the fingerprint.
   OptionSpec notAffectingResults() const {
@@ -321,6 +368,7 @@ std::vector<OptionSpec<Outer>> nestedOptions(const std::vector<OptionSpec<Inner>
     spec.bounds = inner.bounds;
     spec.affects_results = inner.affects_results;
     spec.examples = inner.examples;
+    spec.choices = inner.choices;
     spec.text = [inner, member](const Outer& o) { return inner.text(member(const_cast<Outer&>(o))); };
     spec.set = [inner, member](Outer* o, const YAML::Node& node) { return inner.set(&member(*o), node); };
     spec.check = [inner, member](const Outer& o) { return inner.check(member(const_cast<Outer&>(o))); };

@@ -62,7 +62,7 @@ std::string optionsYaml(const std::vector<OptionSpec<Options>>& specs, const Opt
     std::string line = (value.empty() ? "# " + key + ":" : key + ": " + value);
     line.resize(std::max<std::size_t>(line.size() + 1, 30), ' ');
     const std::string range = spec.rangeText();
-    out << line << "# " << spec.doc << (range.empty() ? "" : " " + range) << "\n";
+    out << line << "# " << spec.docWithChoices() << (range.empty() || !spec.choices.empty() ? "" : " " + range) << "\n";
   }
   return out.str();
 }
