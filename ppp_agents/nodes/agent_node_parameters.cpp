@@ -17,12 +17,6 @@ std::string baseName(const std::string& graph_name) {
   return slash == std::string::npos ? graph_name : graph_name.substr(slash + 1);
 }
 
-const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs() {
-  static const std::vector<OptionSpec<AgentConfig>> specs =
-      selectOptions(agentOptionSpecs(), {"type", "name", "memory", "sensor_noise"});
-  return specs;
-}
-
 AgentConfig readAgentNodeParameters(const ros::NodeHandle& nh, const std::string& default_name) {
   AgentConfig config;
   config.name = default_name;

@@ -12,9 +12,6 @@
 namespace ppp {
 namespace agents {
 
-/// The agent options an agent node reads as `~` parameters (declared in agentOptionSpecs()).
-const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs();
-
 /// Reads and validates the agent node's private parameters: `~type` (required), `~name` (default
 /// `default_name`), `~memory` ("KxK" or "full", default full) and `~sensor_noise` (default 0).
 /// @throws InvalidArgument naming the parameter ("~type: unknown agent type 'x'; valid: ...").

@@ -126,6 +126,12 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
   return specs;
 }
 
+const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs() {
+  static const std::vector<OptionSpec<AgentConfig>> specs =
+      selectOptions(agentOptionSpecs(), {"type", "name", "memory", "sensor_noise"});
+  return specs;
+}
+
 bool isPlanner(const AgentConfig& config) { return config.type == kPlannerType; }
 
 const std::vector<std::string>& agentTypeNames() {

@@ -56,7 +56,10 @@ std::string optionsReference() {
       << "\n## Simulator node\n\n"
       << "`simulator_node` `~` parameters, each also a `ppp launch-file` flag; `launch/experiment.launch` passes its\n"
       << "arguments `batch_size`, `step_timeout` and `record` on.\n\n"
-      << optionsMarkdownTable(simulator::simulatorOptionSpecs(), simulator::SimulatorOptions{}, &parameter);
+      << optionsMarkdownTable(simulator::simulatorOptionSpecs(), simulator::SimulatorOptions{}, &parameter)
+      << "\nWhat the node runs, set by the graph `ppp launch-file` writes (`~mode`, `~config`, `~output_dir`,\n"
+      << "`~generator_nodes`):\n\n"
+      << optionsMarkdownTable(simulator::simulatorTaskSpecs(), simulator::SimulatorTask{}, &parameter);
   return out.str();
 }
 

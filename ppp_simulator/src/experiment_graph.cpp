@@ -43,10 +43,24 @@ std::string param(const std::string& name, const std::string& type, const std::s
 /// The roslaunch param type of a declared option ("int", "double", "bool"; else "str").
 template <typename Options>
 std::string parameterType(const OptionSpec<Options>& spec) {
-  if (spec.type == "an integer") return "int";
-  if (spec.type == "a number") return "double";
-  if (spec.type == "true or false") return "bool";
-  return "str";
+  switch (spec.kind) {
+    case OptionKind::Integer: return "int";
+    case OptionKind::Number: return "double";
+    case OptionKind::Boolean: return "bool";
+    default: return "str";
+  }
+}
+
+/// One `<param>` line per declared option of `specs`, with its value in `values` (strings unquoted).
+template <typename Options>
+std::string params(const std::vector<OptionSpec<Options>>& specs, const Options& values, const std::string& indent) {
+  std::string lines;
+  for (const OptionSpec<Options>& spec : specs) {
+    const std::string text = spec.text(values);
+    const std::string value = parameterType(spec) == "str" && !text.empty() ? YAML::Load(text).as<std::string>() : text;
+    lines += indent + param(spec.name, parameterType(spec), value) + "\n";
+  }
+  return lines;
 }
 
 /// `<remap from="TOPIC" to="~TOPIC"/>`: the node's topic under its own name.
@@ -79,10 +93,7 @@ void writeGenerator(std::ostream& out, const SetSpec& set, const std::string& ou
 void writeAgent(std::ostream& out, const agents::AgentConfig& agent) {
   out << "  <node pkg=\"ppp_agents\" type=\"agent_node\" name=" << attribute(agents::agentGraphName(agent.name), "name")
       << machineOf(agent) << " output=\"screen\">\n"
-      << "    " << param("name", "str", agent.name) << "\n"
-      << "    " << param("type", "str", agent.type) << "\n"
-      << "    " << param("memory", "str", agents::memoryWindowText(agent.memory_window)) << "\n"
-      << "    " << param("sensor_noise", "double", formatShortest(agent.sensor_noise)) << "\n"
+      << params(agents::agentNodeOptionSpecs(), agent, "    ")
       << "    " << privateTopic(ppp_msgs::topics::kScans) << "\n"
       << "    " << privateTopic(ppp_msgs::topics::kMoves) << "\n"
       << "  </node>\n";
@@ -179,18 +190,14 @@ std::string experimentLaunchXml(const ExperimentConfig& config, const GraphOptio
     }
   }
   out << "  <node pkg=\"ppp_simulator\" type=\"simulator_node\" name=\"simulator\" output=\"screen\""
-      << (hunted ? "" : " required=\"true\"") << ">\n"
-      << "    " << param("config", "str", options.config_path) << "\n";
-  for (const OptionSpec<SimulatorOptions>& spec : simulatorOptionSpecs()) {
-    out << "    " << param(spec.name, parameterType(spec), spec.text(options.simulator)) << "\n";
-  }
-  if (hunted) {
-    out << "    " << param("mode", "str", "hunt") << "\n";
-  } else {
-    out << "    " << param("output_dir", "str", options.output_dir) << "\n"
-        << "    " << param("generator_nodes", "bool", "true") << "\n";
-  }
-  out << "  </node>\n";
+      << (hunted ? "" : " required=\"true\"") << ">\n";
+  SimulatorTask task;
+  task.mode = hunted ? kHuntMode : kExperimentMode;
+  task.config = options.config_path;
+  task.output_dir = hunted ? "" : options.output_dir;
+  task.generator_nodes = !hunted;
+  out << params(simulatorTaskSpecs(), task, "    ") << params(simulatorOptionSpecs(), options.simulator, "    ")
+      << "  </node>\n";
   for (const agents::AgentConfig& agent : agents) {
     if (agents::isPlanner(agent)) {
       writePlanner(out, agent);

@@ -50,5 +50,24 @@ const std::vector<OptionSpec<SimulatorOptions>>& simulatorOptionSpecs() {
   return specs;
 }
 
+const std::vector<OptionSpec<SimulatorTask>>& simulatorTaskSpecs() {
+  using T = SimulatorTask;
+  static const std::vector<OptionSpec<T>> specs = [] {
+    std::vector<OptionSpec<T>> list = {
+        declareOption("mode", "what the node does", +[](T& t) -> std::string& { return t.mode; })
+            .withChoices("mode", {{kExperimentMode, "run the experiment of ~config into ~output_dir"},
+                                  {kHuntMode, "serve ~evaluate for hunts with ~config's agents until shut down"}}),
+        declareOption("config", "the experiment YAML (required)", +[](T& t) -> std::string& { return t.config; }),
+        declareOption("output_dir", "where results, report and bag go (required for an experiment)",
+                      +[](T& t) -> std::string& { return t.output_dir; }),
+        declareOption("generator_nodes", "play the sets the generator nodes publish instead of evolving them here",
+                      +[](T& t) -> bool& { return t.generator_nodes; }),
+    };
+    for (OptionSpec<T>& spec : list) spec = spec.notAffectingResults();  // where and how, never what
+    return list;
+  }();
+  return specs;
+}
+
 }  // namespace simulator
 }  // namespace ppp

@@ -33,6 +33,9 @@ struct AgentConfig {
 /// parameters, the `ppp simulate` and `replay` flags; "type" is the flag --agent).
 const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs();
 
+/// The agent options an agent node reads as `~` parameters (and the experiment's graph writes for it).
+const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs();
+
 /// The type of agents played by an external ROS planner through planner_bridge_node, one episode at a time.
 constexpr const char* kPlannerType = "planner";
 

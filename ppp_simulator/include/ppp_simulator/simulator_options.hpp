@@ -1,5 +1,6 @@
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "ppp_core/option_spec.hpp"
@@ -26,6 +27,24 @@ struct SimulatorOptions {
 
 /// One declaration per simulator option (the node's `~` parameters, `ppp launch-file` flags).
 const std::vector<OptionSpec<SimulatorOptions>>& simulatorOptionSpecs();
+
+/// ~mode: run the experiment of ~config (the default).
+constexpr const char* kExperimentMode = "experiment";
+/// ~mode: serve ~evaluate, playing a hunt's candidate PPPs with ~config's agents, until shut down.
+constexpr const char* kHuntMode = "hunt";
+
+/// What the simulator node runs: its `~` parameters besides SimulatorOptions, which the experiment's graph sets.
+struct SimulatorTask {
+  std::string mode = kExperimentMode;  ///< kExperimentMode or kHuntMode.
+  std::string config;                  ///< Experiment YAML (required), as for `ppp experiment`.
+  std::string output_dir;              ///< Output directory (required for an experiment); rerun to resume.
+  /// Play the evolved sets the generator nodes publish (setTopic() of each set, as launch/experiment.launch starts
+  /// them) instead of evolving them here; sets given as directories are read from disk either way.
+  bool generator_nodes = false;
+};
+
+/// One declaration per SimulatorTask parameter.
+const std::vector<OptionSpec<SimulatorTask>>& simulatorTaskSpecs();
 
 }  // namespace simulator
 }  // namespace ppp
