@@ -4,6 +4,7 @@
 
 #include "commands.hpp"
 #include "ppp_core/option_docs.hpp"
+#include "ppp_generator/generator_node_options.hpp"
 #include "ppp_generator/generator_options.hpp"
 #include "ppp_simulator/experiment_config.hpp"
 #include "ppp_simulator/simulator_options.hpp"
@@ -53,6 +54,10 @@ std::string optionsReference() {
       << "`ppp generate` flags (`--size WIDTHxHEIGHT` sets `width` and `height` together, as for `ppp random`;\n"
       << "the failure fitness also takes the episode's `--budget`, `--sensor-range` and `--connectivity`).\n\n"
       << optionsMarkdownTable(generator::generatorOptionSpecs(), generator::GeneratorOptions{}, &key)
+      << "\n## Generator node\n\n"
+      << "`generator_node` `~` parameters besides the generator options above (which it reads as `~options`, YAML\n"
+      << "text, and as single parameters of their names).\n\n"
+      << optionsMarkdownTable(generator::generatorNodeOptionSpecs(), generator::GeneratorNodeOptions{}, &parameter)
       << "\n## Simulator node\n\n"
       << "`simulator_node` `~` parameters, each also a `ppp launch-file` flag; `launch/experiment.launch` passes its\n"
       << "arguments `batch_size`, `step_timeout` and `record` on.\n\n"

@@ -7,6 +7,7 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/text_format.hpp"
 #include "ppp_generator/fitness.hpp"
+#include "ppp_generator/generator_node_options.hpp"
 #include "ppp_msgs/topic_names.h"
 
 namespace ppp {
@@ -78,13 +79,15 @@ std::string machineOf(const agents::AgentConfig& agent) {
 
 /// A generator node for `set` writing `output_dir`; a hunt's is required and exits when its set is written.
 void writeGenerator(std::ostream& out, const SetSpec& set, const std::string& output_dir, bool hunt) {
+  generator::GeneratorNodeOptions node;
+  node.options_yaml = generator::generatorOptionsYaml(*set.generator);
+  node.set_name = set.name;
+  node.output_dir = output_dir;
+  node.resume = true;
+  node.exit_when_done = hunt;
   out << "  <node pkg=\"ppp_generator\" type=\"generator_node\" name=" << attribute(generatorNodeName(set.name), "sets")
       << " output=\"screen\"" << (hunt ? " required=\"true\"" : "") << ">\n"
-      << "    " << param("options", "str", generator::generatorOptionsYaml(*set.generator)) << "\n"
-      << "    " << param("set_name", "str", set.name) << "\n"
-      << "    " << param("output_dir", "str", output_dir) << "\n"
-      << "    " << param("resume", "bool", "true") << "\n"
-      << "    " << param("exit_when_done", "bool", hunt ? "true" : "false") << "\n"
+      << params(generator::generatorNodeOptionSpecs(), node, "    ")
       << "    " << privateTopic(ppp_msgs::topics::kProblemSet) << "\n"
       << "    " << privateTopic(ppp_msgs::topics::kMap) << "\n"
       << "  </node>\n";
