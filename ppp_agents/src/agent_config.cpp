@@ -132,6 +132,12 @@ const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs() {
   return specs;
 }
 
+const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs() {
+  static const std::vector<OptionSpec<AgentConfig>> specs =
+      selectOptions(agentOptionSpecs(), {"type", "memory", "sensor_noise"});
+  return specs;
+}
+
 bool isPlanner(const AgentConfig& config) { return config.type == kPlannerType; }
 
 const std::vector<std::string>& agentTypeNames() {

@@ -6,32 +6,26 @@
 namespace ppp {
 namespace cli {
 
-const std::vector<OptionSpec<agents::AgentConfig>>& agentFlagSpecs() {
-  static const std::vector<OptionSpec<agents::AgentConfig>> specs =
-      selectOptions(agents::agentOptionSpecs(), {"type", "memory", "sensor_noise"});
-  return specs;
-}
-
 void AgentFlags::add(CLI::App* command) {
   command_ = command;
   static const agents::AgentConfig agent_defaults;
   static const EpisodeOptions episode_defaults;
-  addOptionFlags(command, agentFlagSpecs(), &agent_defaults, &given_);
-  command->get_option(flagName(agentFlagSpecs()[0]))->required();
+  addOptionFlags(command, agents::agentPlayOptionSpecs(), &agent_defaults, &given_);
+  command->get_option(flagName(agents::agentPlayOptionSpecs()[0]))->required();
   addOptionFlags(command, episodeOptionSpecs(), &episode_defaults, &given_);
 }
 
 agents::AgentConfig AgentFlags::agent() const {
   agents::AgentConfig config;
-  applyOptionFlags(*command_, agentFlagSpecs(), given_, &config);
+  applyOptionFlags(*command_, agents::agentPlayOptionSpecs(), given_, &config);
   config.name = config.type;
   try {
     config.validate();
   } catch (const InvalidArgument& e) {
-    throw namingTheFlag(*command_, agentFlagSpecs(), e);
+    throw namingTheFlag(*command_, agents::agentPlayOptionSpecs(), e);
   }
   if (agents::isPlanner(config)) {
-    throw InvalidArgument(flagName(agentFlagSpecs()[0]), "planner agents play through ROS (planner_bridge_node), "
+    throw InvalidArgument(flagName(agents::agentPlayOptionSpecs()[0]), "planner agents play through ROS (planner_bridge_node), "
                                                          "never in process; valid here: " +
                                                              joinNames(agents::agentTypeNames()));
   }

@@ -12,11 +12,8 @@
 namespace ppp {
 namespace cli {
 
-/// The agent options that commands playing one agent take as flags (--agent, --memory, --sensor-noise).
-const std::vector<OptionSpec<agents::AgentConfig>>& agentFlagSpecs();
-
-/// The flags of a command that plays one agent: the agent's (agentFlagSpecs) and the episode's (--budget,
-/// --sensor-range), declared in the agent and episode option tables.
+/// The flags of a command that plays one agent: the agent's (agents::agentPlayOptionSpecs) and the episode's
+/// (--budget, --sensor-range, --connectivity), declared in the agent and episode option tables.
 class AgentFlags {
  public:
   /// Adds the flags to `command`; --agent is required.

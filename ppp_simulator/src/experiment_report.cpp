@@ -53,11 +53,9 @@ FailureExample failingRun(const ExperimentConfig& config, const PreparedSet& set
   example.path = outcome.path;
   example.reason = outcome.reason;
   example.animation_gif = run.gif;
-  example.replay_flags = "--agent " + agent_config.type + " --memory " +
-                         agents::memoryWindowText(agent_config.memory_window) + " --sensor-noise " + formatNumber(agent_config.sensor_noise) + " --budget " +
-                         std::to_string(config.episode.budget) + " --sensor-range " +
-                         std::to_string(config.episode.sensor_range) +
-                         (config.episode.connectivity == 4 ? "" : " --connectivity " + std::to_string(config.episode.connectivity));
+  example.replay_flags = optionFlags(agents::agentPlayOptionSpecs(), agent_config, agents::AgentConfig{});
+  const std::string episode_flags = optionFlags(episodeOptionSpecs(), config.episode, EpisodeOptions{});
+  if (!episode_flags.empty()) example.replay_flags += " " + episode_flags;
   return example;
 }
 

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include "agent_option_cases.hpp"
 #include "option_flags.hpp"
 #include "ppp_core/option_cases.hpp"
@@ -54,7 +56,7 @@ void expectFlagsHoldTo(const std::vector<OptionSpec<Options>>& specs, const std:
 }
 
 TEST(AgentFlagsTest, AgentFlagsAcceptAndRefuseWhatEverySourceDoes) {
-  expectFlagsHoldTo(agentFlagSpecs(), agents::test::agentOptionCases(agentFlagSpecs()));
+  expectFlagsHoldTo(agents::agentPlayOptionSpecs(), agents::test::agentOptionCases(agents::agentPlayOptionSpecs()));
 }
 
 TEST(AgentFlagsTest, EpisodeFlagsAcceptAndRefuseWhatTheExperimentYamlDoes) {
@@ -92,6 +94,32 @@ TEST(AgentFlagsTest, TheAgentIsNamedAfterItsTypeWithTheGivenHandicaps) {
   EXPECT_EQ(agent.sensor_noise, 0.25);
   EXPECT_EQ(flags.episode().budget, 40);
   EXPECT_EQ(flags.episode().sensor_range, 2);
+}
+
+// The replay command a report prints is generated from the same tables: its flags give back the run's agent and
+// episode options, and the flags of defaults are left out.
+TEST(AgentFlagsTest, FlagsWrittenFromTheTablesReadBackAsTheSameOptions) {
+  agents::AgentConfig agent{"explorer_memory_5x5", "explorer", 5, 0.1};
+  EpisodeOptions episode;
+  episode.budget = 120;
+  episode.connectivity = 8;
+  const std::string agent_flags = optionFlags(agents::agentPlayOptionSpecs(), agent, agents::AgentConfig{});
+  const std::string episode_flags = optionFlags(episodeOptionSpecs(), episode, EpisodeOptions{});
+  EXPECT_EQ(agent_flags, "--agent explorer --memory 5x5 --sensor-noise 0.1");
+  EXPECT_EQ(episode_flags, "--budget 120 --connectivity 8");
+  std::vector<std::string> args;
+  std::istringstream words(agent_flags + " " + episode_flags);
+  for (std::string word; words >> word;) args.insert(args.begin(), word);  // CLI11 takes them in reverse
+  CLI::App app;
+  AgentFlags flags;
+  flags.add(&app);
+  app.parse(args);
+  EXPECT_EQ(flags.agent().memory_window, 5);
+  EXPECT_EQ(flags.agent().sensor_noise, 0.1);
+  EXPECT_EQ(flags.episode().budget, 120);
+  EXPECT_EQ(flags.episode().connectivity, 8);
+  EXPECT_EQ(flags.episode().sensor_range, EpisodeOptions{}.sensor_range);
+  EXPECT_EQ(optionFlags(episodeOptionSpecs(), EpisodeOptions{}, EpisodeOptions{}), "");
 }
 
 }  // namespace

@@ -12,19 +12,6 @@
 namespace ppp {
 namespace cli {
 
-/// The command-line flag of an option named `name`: "--" + the name with '_' and '.' as '-' ("--weights-goal").
-inline std::string flagFor(const std::string& name) {
-  std::string flag = "--" + name;
-  for (char& c : flag) c = c == '_' || c == '.' ? '-' : c;
-  return flag;
-}
-
-/// The command-line flag of a declared option: flagFor() its flag, or its name.
-template <typename Options>
-std::string flagName(const OptionSpec<Options>& spec) {
-  return flagFor(spec.flag.empty() ? spec.name : spec.flag);
-}
-
 /// What --help shows as a flag's value: its kind and range ("INT in [2, 100000]", "X,Y", "A,B,...").
 template <typename Options>
 std::string flagValueName(const OptionSpec<Options>& spec) {

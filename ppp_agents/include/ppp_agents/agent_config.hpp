@@ -36,6 +36,10 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs();
 /// The agent options an agent node reads as `~` parameters (and the experiment's graph writes for it).
 const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs();
 
+/// The agent options that decide how one run plays (type, memory, sensor_noise): the flags of `ppp simulate` and
+/// `ppp replay`, and of the replay commands a report gives.
+const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs();
+
 /// The type of agents played by an external ROS planner through planner_bridge_node, one episode at a time.
 constexpr const char* kPlannerType = "planner";
 

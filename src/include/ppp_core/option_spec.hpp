@@ -377,6 +377,37 @@ std::vector<OptionSpec<Outer>> nestedOptions(const std::vector<OptionSpec<Inner>
   return nested;
 }
 
+/// The command-line flag of an option named `name`: "--" + the name with '_' and '.' as '-' ("--weights-goal").
+inline std::string flagFor(const std::string& name) {
+  std::string flag = "--" + name;
+  for (char& c : flag) c = c == '_' || c == '.' ? '-' : c;
+  return flag;
+}
+
+/// The command-line flag of a declared option: flagFor() its flag, or its name.
+template <typename Options>
+std::string flagName(const OptionSpec<Options>& spec) {
+  return flagFor(spec.flag.empty() ? spec.name : spec.flag);
+}
+
+/// The flags that give `values` where they differ from `defaults`, as a shell reads them ("--memory 5x5
+/// --budget 100"; a value with other characters than letters, digits and ._-/+=:,@ in single quotes).
+template <typename Options>
+std::string optionFlags(const std::vector<OptionSpec<Options>>& specs, const Options& values, const Options& defaults) {
+  std::string flags;
+  for (const OptionSpec<Options>& spec : specs) {
+    const std::string value = spec.text(values);
+    if (value == spec.text(defaults)) continue;
+    const bool plain = !value.empty() && std::all_of(value.begin(), value.end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) != 0 || std::string("._-/+=:,@").find(c) != std::string::npos;
+    });
+    std::string word = "'";
+    for (const char c : value) word += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    flags += (flags.empty() ? "" : " ") + flagName(spec) + " " + (plain ? value : word + "'");
+  }
+  return flags;
+}
+
 /// The declarations of `specs` that may change results (affects_results), in declaration order.
 template <typename Options>
 std::vector<OptionSpec<Options>> resultOptions(const std::vector<OptionSpec<Options>>& specs) {
