@@ -57,9 +57,7 @@ template <typename Options>
 std::string params(const std::vector<OptionSpec<Options>>& specs, const Options& values, const std::string& indent) {
   std::string lines;
   for (const OptionSpec<Options>& spec : specs) {
-    const std::string text = spec.text(values);
-    const std::string value = parameterType(spec) == "str" && !text.empty() ? YAML::Load(text).as<std::string>() : text;
-    lines += indent + param(spec.name, parameterType(spec), value) + "\n";
+    lines += indent + param(spec.name, parameterType(spec), spec.plainText(values)) + "\n";
   }
   return lines;
 }

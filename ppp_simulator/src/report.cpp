@@ -97,17 +97,6 @@ std::string mdFence(const std::string& text, const std::string& info) {
   return fence + info + "\n" + body + fence + "\n";
 }
 
-/// One shell word: kept as is when made of safe characters, single-quoted otherwise.
-std::string shellWord(const std::string& word) {
-  const bool safe = !word.empty() && std::all_of(word.begin(), word.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) != 0 || std::string("._-/+=:,@").find(c) != std::string::npos;
-  });
-  if (safe) return word;
-  std::string quoted = "'";
-  for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
 // ---------------------------------------------------------------------------------------------------------
 // File names.
 

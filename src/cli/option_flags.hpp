@@ -15,11 +15,7 @@ namespace cli {
 /// What --help shows as a flag's value: its kind and range ("INT in [2, 100000]", "X,Y", "A,B,...").
 template <typename Options>
 std::string flagValueName(const OptionSpec<Options>& spec) {
-  if (!spec.choices.empty()) {
-    std::string names;
-    for (const OptionChoice& choice : spec.choices) names += (names.empty() ? "" : "|") + choice.name;
-    return names;
-  }
+  if (!spec.choices.empty()) return spec.choiceList("|");
   const std::string range = spec.rangeText();
   const std::string in = range.empty() ? "" : (range[0] == '[' ? " in " : " ") + range;
   switch (spec.kind) {

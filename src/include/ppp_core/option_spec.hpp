@@ -78,11 +78,19 @@ struct OptionSpec {
     if (high) return "<= " + shown(bounds.max);
     return "";
   }
-  /// The choices' names as errors list them ("crowding, tournament").
-  std::string choiceList() const {
+  /// The choices' names as errors list them ("crowding, tournament"), or joined by another `separator`.
+  std::string choiceList(const std::string& separator = ", ") const {
     std::string list;
-    for (const OptionChoice& choice : choices) list += (list.empty() ? "" : ", ") + choice.name;
+    for (const OptionChoice& choice : choices) list += (list.empty() ? "" : separator) + choice.name;
     return list;
+  }
+  /// A scalar value in `options` without YAML's quoting ("it's", not 'it''s'); "" when unset; a list or cell as
+  /// its flow text.
+  std::string plainText(const Options& options) const {
+    const std::string flow = text(options);
+    if (flow.empty()) return flow;
+    const YAML::Node node = YAML::Load(flow);
+    return node.IsScalar() ? node.Scalar() : flow;
   }
   /// The doc, followed by each choice with its meaning when the option takes a fixed set of values.
   std::string docWithChoices() const {
@@ -103,11 +111,7 @@ struct OptionSpec {
       }
       return "unknown " + noun + " '" + text + "'; valid: " + names;
     };
-    const auto chosen = [text = text, problem](const Options& options) {
-      std::string value = text(options);
-      if (value.size() >= 2 && value.front() == '\'' && value.back() == '\'') value = value.substr(1, value.size() - 2);
-      return problem(value);
-    };
+    const auto chosen = [copy, problem](const Options& options) { return problem(copy.plainText(options)); };
     copy.set = [set = set, chosen](Options* options, const YAML::Node& node) {
       const std::string wrong = set(options, node);  // a value of the wrong kind is refused as such first
       return wrong.empty() ? chosen(*options) : wrong;
@@ -391,19 +395,13 @@ std::string flagName(const OptionSpec<Options>& spec) {
 }
 
 /// The flags that give `values` where they differ from `defaults`, as a shell reads them ("--memory 5x5
-/// --budget 100"; a value with other characters than letters, digits and ._-/+=:,@ in single quotes).
+/// --budget 100"; see shellWord()).
 template <typename Options>
 std::string optionFlags(const std::vector<OptionSpec<Options>>& specs, const Options& values, const Options& defaults) {
   std::string flags;
   for (const OptionSpec<Options>& spec : specs) {
     const std::string value = spec.text(values);
-    if (value == spec.text(defaults)) continue;
-    const bool plain = !value.empty() && std::all_of(value.begin(), value.end(), [](char c) {
-      return std::isalnum(static_cast<unsigned char>(c)) != 0 || std::string("._-/+=:,@").find(c) != std::string::npos;
-    });
-    std::string word = "'";
-    for (const char c : value) word += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    flags += (flags.empty() ? "" : " ") + flagName(spec) + " " + (plain ? value : word + "'");
+    if (value != spec.text(defaults)) flags += (flags.empty() ? "" : " ") + flagName(spec) + " " + shellWord(value);
   }
   return flags;
 }

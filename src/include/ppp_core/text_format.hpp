@@ -28,6 +28,9 @@ std::string shortenText(const std::string& text, std::size_t limit);
 /// Escapes `& < > " '` so text can go into HTML or SVG, as element text or inside a quoted attribute.
 std::string escapeMarkup(const std::string& text);
 
+/// One shell word: `word` as is when made of letters, digits and ._-/+=:,@ only, else single-quoted.
+std::string shellWord(const std::string& word);
+
 /// The items separated by ", " (for error messages listing the valid names).
 std::string joinNames(const std::vector<std::string>& items);
 
