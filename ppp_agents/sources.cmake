@@ -1,6 +1,5 @@
 # The sources of the ROS-free ppp_agents library (the package build and the fuzz build list them from here).
 set(PPP_AGENTS_SOURCES
-  ${CMAKE_CURRENT_LIST_DIR}/src/action.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/agent_config.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/agent_memory.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/agent_registry.cpp
@@ -13,6 +12,10 @@ set(PPP_AGENTS_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/explorer_agent.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/bumper_agent.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/path_follower.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/episode_runner.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/episode_result.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/prepared_set.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/agent_lane.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/planner_episode.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/protocol/batch_types.cpp
 )

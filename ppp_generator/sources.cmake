@@ -3,6 +3,8 @@ set(PPP_GENERATOR_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/breeder.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/diversity.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/fitness.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/failure_fitness.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/hunt_evaluation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/generator_options.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/generator_node_options.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/genetic_algorithm.cpp

@@ -51,9 +51,9 @@ void agentSteps(benchmark::State& state, AgentConfig config) {
   std::int64_t passes = 0;
   for (auto _ : state) {
     const ppp::Scan scan(sensor, grid, position, problem.goal, bumped, step, info.seed, &windows);
-    const ppp::agents::Action action = agent->act(scan);
-    const Cell next = ppp::agents::target(position, action);
-    bumped = action != ppp::agents::Action::Stay && !grid.isFree(next);
+    const ppp::Action action = agent->act(scan);
+    const Cell next = ppp::target(position, action);
+    bumped = action != ppp::Action::Stay && !grid.isFree(next);
     if (!bumped) position = next;
     ++step;
     if (position == problem.goal || step == 300) {

@@ -20,7 +20,7 @@
 
 #include <ros/console.h>
 
-#include "ppp_agents/action.hpp"
+#include "ppp_core/action.hpp"
 #include "ppp_agents/protocol/batch_responder.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/fuzz_finding.hpp"
@@ -71,7 +71,7 @@ void checkAnswer(const ppp_msgs::ScanBatch& batch, const ppp_msgs::MoveBatch& mo
     const std::uint8_t action = moves.actions[i];
     const auto started = connectivity.find(batch.episodes[i]);
     const int model = started == connectivity.end() ? 4 : started->second;
-    if (!ppp::agents::isAction(action, model) && action != protocol::kRejectedAction) {
+    if (!ppp::isAction(action, model) && action != protocol::kRejectedAction) {
       finding("scan_batch_fuzz", "an action that is no action and no rejection", agent);
     }
     if (malformed && action != protocol::kRejectedAction) {

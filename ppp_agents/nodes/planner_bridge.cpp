@@ -90,7 +90,7 @@ PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch)
   };
   const ros::Time stamp = ros::Time::now();
   link_.publishState(stamp, episode_, robot, batch.cells.data(), range);
-  if (link_.gone()) return fail(protocol::reason::kPlannerLost, "the planner's process is gone");
+  if (link_.gone()) return fail(reason::kPlannerLost, "the planner's process is gone");
 
   // A path the planner published on its own (re-planning on the new map) replaces the current one if usable.
   std::vector<MapPoint> points;
@@ -106,16 +106,16 @@ PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch)
           link_.publishGoal(again, episode_);
         });
     if (!path) {
-      if (!link_.alive()) return fail(protocol::reason::kPlannerLost, "the planner's process is gone");
-      return fail(protocol::reason::kPlannerTimeout,
+      if (!link_.alive()) return fail(reason::kPlannerLost, "the planner's process is gone");
+      return fail(reason::kPlannerTimeout,
                   "no path within " + std::to_string(parameters_.plan_timeout) + " s");
     }
     const std::string frame_problem = pathPoints(*path, parameters_.map_frame, &points);
-    if (!frame_problem.empty()) return fail(protocol::reason::kInvalidPath, frame_problem);
+    if (!frame_problem.empty()) return fail(reason::kInvalidPath, frame_problem);
     const Answer answer = episode_.answer(points, robot);
-    if (answer.verdict == AnswerVerdict::NoPath) return fail(protocol::reason::kNoPath, answer.detail);
+    if (answer.verdict == AnswerVerdict::NoPath) return fail(reason::kNoPath, answer.detail);
     if (answer.verdict == AnswerVerdict::InvalidPath) {
-      return fail(protocol::reason::kInvalidPath, answer.detail);
+      return fail(reason::kInvalidPath, answer.detail);
     }
     action = answer.action;
   }

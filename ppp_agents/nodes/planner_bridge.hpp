@@ -34,7 +34,7 @@ class PlannerBridge {
   /// What a step produced: a move, or a failure reason for the simulator.
   struct StepOutcome {
     std::uint8_t action = 0;
-    const char* failure = nullptr;  // a protocol::reason constant, or nullptr for a move
+    const char* failure = nullptr;  // a reason:: constant, or nullptr for a move
   };
   void onScans(const ppp_msgs::ScanBatch::ConstPtr& batch);
   void start(const ppp_msgs::EpisodeStart& start);

@@ -5,7 +5,7 @@
 #include <array>
 #include <vector>
 
-#include "ppp_agents/action.hpp"
+#include "ppp_core/action.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_core/visibility.hpp"
 

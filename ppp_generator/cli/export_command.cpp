@@ -20,7 +20,7 @@ struct ExportFlags {
 };
 
 void runExport(const ExportFlags& f) {
-  const generator::ProblemSet set = generator::readProblemSetDirectory(f.dir);
+  const ProblemSet set = generator::readProblemSetDirectory(f.dir);
   std::error_code error;
   std::filesystem::create_directories(f.output, error);
   if (error) throw IoError(f.output, "cannot create the directory: " + error.message());

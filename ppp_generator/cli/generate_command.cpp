@@ -10,7 +10,9 @@
 #include "option_flags.hpp"
 #include "stop_signals.hpp"
 #include "ppp_core/csv.hpp"
+#include "ppp_agents/agent_config.hpp"
 #include "ppp_core/episode_options.hpp"
+#include "ppp_generator/failure_fitness.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_generator/set_evolution.hpp"
 #include "progress.hpp"
@@ -54,7 +56,13 @@ bool episodeFlagsGiven(const CLI::App& command) {
   return command.count("--threads") > 0;
 }
 
-void runGenerate(const CLI::App& command, const GenerateFlags& flags, const FailureFitnessMaker& make_failure) {
+/// The failure fitness's panel comes from --agents-file, or names built-in agent types when there is none.
+std::vector<agents::AgentConfig> availableAgents(const generator::GeneratorOptions& options) {
+  return options.agents_file.empty() ? std::vector<agents::AgentConfig>{}
+                                     : agents::loadAgentConfigs(options.agents_file);
+}
+
+void runGenerate(const CLI::App& command, const GenerateFlags& flags) {
   if (flags.print_options) {
     std::cout << "# Default options of the PPP generator (ppp generate, generator_node, the sets of an experiment), as\n"
                  "# `ppp generate --print-options` prints them: flags (--max-obstacles) and node parameters (~max_obstacles,\n"
@@ -72,7 +80,7 @@ void runGenerate(const CLI::App& command, const GenerateFlags& flags, const Fail
   applyAndValidateFlags(command, episodeOptionSpecs(), flags.episode, &episode);
   const generator::Fitness fitness =
       options.fitness == generator::kFailureFitness
-          ? make_failure(options, episode, flags.threads)
+          ? generator::fitnessFor(options, availableAgents(options), episode, flags.threads)
           : generator::makeFitness(options.fitness, generator::FitnessParameters{options.weights, options.seed});
   Progress progress("matings", flags.quiet);
   const generator::EvolvedSet evolved = generator::evolveSetDirectory(
@@ -88,7 +96,7 @@ void runGenerate(const CLI::App& command, const GenerateFlags& flags, const Fail
 
 }  // namespace
 
-void addGenerateCommand(CLI::App& app, FailureFitnessMaker make_failure_fitness) {
+void addGenerateCommand(CLI::App& app) {
   auto flags = std::make_shared<GenerateFlags>();
   CLI::App* command = app.add_subcommand(
       "generate", "Evolve a set of PPPs with the genetic algorithm; write the .ppp files, set.csv and the taxonomy");
@@ -104,7 +112,7 @@ void addGenerateCommand(CLI::App& app, FailureFitnessMaker make_failure_fitness)
   command->add_flag("--print-options", flags->print_options,
                     "Print every generator option with its default, range and doc as YAML (config/generator.yaml)");
   command->add_flag("--quiet", flags->quiet, "No progress output");
-  command->callback([command, flags, make_failure_fitness] { runGenerate(*command, *flags, make_failure_fitness); });
+  command->callback([command, flags] { runGenerate(*command, *flags); });
 }
 
 }  // namespace cli

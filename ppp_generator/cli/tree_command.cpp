@@ -30,7 +30,7 @@ struct SelectFlags {
 
 void runTree(const TreeFlags& f) {
   const auto characters = generator::parseCharacterSet(f.characters);
-  const generator::ProblemSet set = generator::readProblemSetDirectory(f.dir);
+  const ProblemSet set = generator::readProblemSetDirectory(f.dir);
   const generator::Taxonomy taxonomy = generator::buildTaxonomy(set, characters);
   generator::writeTreeFiles(f.dir, set, taxonomy);
   std::cout << generator::toNewick(taxonomy.tree, set.ids) << "\n";
@@ -42,7 +42,7 @@ void runSelect(const SelectFlags& f) {
   if (f.prefer != "medoid" && f.prefer != "hardest") {
     throw InvalidArgument("--prefer", "expected medoid or hardest, got '" + f.prefer + "'");
   }
-  const generator::ProblemSet set = generator::readProblemSetDirectory(f.dir);
+  const ProblemSet set = generator::readProblemSetDirectory(f.dir);
   const generator::Taxonomy taxonomy = generator::buildTaxonomy(set, characters);
   const std::vector<double> hardness = set.hardness();
   const auto chosen =

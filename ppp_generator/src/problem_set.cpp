@@ -81,12 +81,6 @@ ProblemSet buildSet(std::vector<Problem> problems, const std::vector<std::string
 
 }  // namespace
 
-std::vector<double> ProblemSet::hardness() const {
-  std::vector<double> h;
-  for (double v : fitness_values) h.push_back(maximise ? v : -v);
-  return h;
-}
-
 ProblemSet makeProblemSet(const GeneratorOptions& options, const std::vector<Individual>& pool) {
   std::vector<int> order(pool.size());
   std::iota(order.begin(), order.end(), 0);

@@ -6,7 +6,7 @@
 
 #include "ppp_core/random_problem.hpp"
 #include "ppp_core/rng.hpp"
-#include "ppp_simulator/episode.hpp"
+#include "ppp_agents/episode_runner.hpp"
 #include "ppp_simulator/episode_animation.hpp"
 
 namespace {
@@ -23,7 +23,7 @@ void BM_Episodes(benchmark::State& state) {
   const ppp::Grid grid = ppp::decodeGrid(problem);
   ppp::agents::AgentConfig config;
   config.type = config.name = type;
-  ppp::simulator::EpisodeRunner runner(config, ppp::EpisodeOptions{});
+  ppp::agents::EpisodeRunner runner(config, ppp::EpisodeOptions{});
   auto agent = ppp::agents::makeAgent(config);
   std::uint64_t run = 0;
   std::int64_t steps = 0;

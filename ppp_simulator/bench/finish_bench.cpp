@@ -68,11 +68,11 @@ int agentPosition(const std::string& name) {
 }
 
 /// kSets sets of kProblems random solvable 20x20 PPPs.
-std::vector<sim::PreparedSet> benchSets() {
+std::vector<ppp::agents::PreparedSet> benchSets() {
   ppp::Rng rng(7);
-  std::vector<sim::PreparedSet> sets;
+  std::vector<ppp::agents::PreparedSet> sets;
   for (int s = 0; s < kSets; ++s) {
-    ppp::generator::ProblemSet set;
+    ppp::ProblemSet set;
     set.fitness = "random";
     while (static_cast<int>(set.problems.size()) < kProblems) {
       ppp::Problem p = ppp::Problem::empty(20, 20, 20);
@@ -84,34 +84,34 @@ std::vector<sim::PreparedSet> benchSets() {
       set.ids.push_back(id);
       set.problems.push_back(p);
     }
-    sets.push_back(sim::prepareSet("set" + std::to_string(s), set, ppp::EpisodeOptions{}));
+    sets.push_back(ppp::agents::prepareSet("set" + std::to_string(s), set, ppp::EpisodeOptions{}));
   }
   return sets;
 }
 
 /// results.csv as two workers leave it: each (set, PPP, agent) unit's rows in one block, the units of a pair
 /// finishing in either order; outcomes drawn per unit with a pass probability of its own.
-std::string unorderedResults(const sim::ExperimentConfig& config, const std::vector<sim::PreparedSet>& sets) {
+std::string unorderedResults(const sim::ExperimentConfig& config, const std::vector<ppp::agents::PreparedSet>& sets) {
   const std::string path = (fs::temp_directory_path() / "ppp_finish_bench_rows.csv").string();
   fs::remove(path);
   {
     sim::ResultsFile file(path);
     ppp::Rng rng(3);
-    std::vector<sim::EpisodeResult> pending;
+    std::vector<ppp::agents::EpisodeResult> pending;
     for (int s = 0; s < kSets; ++s) {
       for (int p = 0; p < kProblems; ++p) {
         for (const auto& agent : config.agents) {
           const double pass_probability = static_cast<double>(rng.below(101)) / 100.0;
-          std::vector<sim::EpisodeResult> rows;
+          std::vector<ppp::agents::EpisodeResult> rows;
           for (int run = 0; run < kRuns; ++run) {
-            sim::EpisodeOutcome outcome;
+            ppp::EpisodeOutcome outcome;
             outcome.passed = static_cast<double>(rng.below(1000)) < 1000.0 * pass_probability;
             outcome.steps = outcome.passed ? 20 + static_cast<int>(rng.below(200)) : 300;
             outcome.bumps = static_cast<int>(rng.below(40)) % (outcome.steps + 1);  // never more than the steps
             outcome.path_length = outcome.steps - outcome.bumps;
-            outcome.reason = outcome.passed ? sim::reason::kGoalReached : sim::reason::kBudgetExhausted;
+            outcome.reason = outcome.passed ? ppp::reason::kGoalReached : ppp::reason::kBudgetExhausted;
             const std::uint64_t seed = sim::runSeed(config.seed, sets[s].name, sets[s].set.ids[p], agent.name, run);
-            rows.push_back(sim::episodeResult(sets[s], p, agent.name, run, seed, outcome));
+            rows.push_back(ppp::agents::episodeResult(sets[s], p, agent.name, run, seed, outcome));
           }
           if (rng.below(2) == 0) {
             file.append(rows);
@@ -131,20 +131,20 @@ std::string unorderedResults(const sim::ExperimentConfig& config, const std::vec
 
 /// The same rows in canonical order.
 std::string orderedResults(const std::string& unordered) {
-  std::vector<sim::EpisodeResult> rows = sim::parseResultsCsv(unordered, "results.csv");
-  std::stable_sort(rows.begin(), rows.end(), [](const sim::EpisodeResult& a, const sim::EpisodeResult& b) {
+  std::vector<ppp::agents::EpisodeResult> rows = sim::parseResultsCsv(unordered, "results.csv");
+  std::stable_sort(rows.begin(), rows.end(), [](const ppp::agents::EpisodeResult& a, const ppp::agents::EpisodeResult& b) {
     const auto set = [](const std::string& name) { return std::stoi(name.substr(3)); };
     return std::make_tuple(set(a.set), a.problem, agentPosition(a.agent), a.run) <
            std::make_tuple(set(b.set), b.problem, agentPosition(b.agent), b.run);
   });
   std::string text = "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason\n";
-  for (const sim::EpisodeResult& r : rows) sim::appendCsvRow(r, &text);
+  for (const ppp::agents::EpisodeResult& r : rows) ppp::agents::appendCsvRow(r, &text);
   return text;
 }
 
 struct Fixture {
   sim::ExperimentConfig config = benchConfig();
-  std::vector<sim::PreparedSet> sets = benchSets();
+  std::vector<ppp::agents::PreparedSet> sets = benchSets();
   std::string unordered = unorderedResults(config, sets);
   std::string ordered = orderedResults(unordered);
 };
@@ -182,7 +182,7 @@ BENCHMARK(BM_ParseResults)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTim
 
 void BM_Report(benchmark::State& state) {
   const Fixture& f = fixture();
-  const std::vector<sim::EpisodeResult> rows = sim::parseResultsCsv(f.ordered, "results.csv");
+  const std::vector<ppp::agents::EpisodeResult> rows = sim::parseResultsCsv(f.ordered, "results.csv");
   const fs::path dir = fs::temp_directory_path() / "ppp_report_bench";
   for (auto _ : state) sim::writeExperimentReport(dir.string(), f.config, "bench", f.sets, rows);
   fs::remove_all(dir);

@@ -7,11 +7,11 @@
 #include "ppp_core/reachability.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_generator/set_evolution.hpp"
-#include "ppp_simulator/failure_fitness.hpp"
+#include "ppp_generator/failure_fitness.hpp"
 
 namespace {
 
-using ppp::simulator::FailurePanel;
+using ppp::generator::FailurePanel;
 
 /// The default experiment's hunting panel: wall_follower_left, explorer, bumper, 20 runs each.
 FailurePanel defaultPanel(int threads) {
@@ -47,7 +47,7 @@ void BM_FailureBatch(benchmark::State& state) {
     problem_ptrs.push_back(&problems[i]);
     grid_ptrs.push_back(&grids[i]);
   }
-  for (auto _ : state) benchmark::DoNotOptimize(ppp::simulator::estimateFailures(panel, problem_ptrs, grid_ptrs));
+  for (auto _ : state) benchmark::DoNotOptimize(ppp::generator::estimateFailures(panel, problem_ptrs, grid_ptrs));
   const double episodes = 16.0 * 3 * 20;
   state.counters["PPPs/s"] = benchmark::Counter(16.0 * state.iterations(), benchmark::Counter::kIsRate);
   state.counters["episodes/s"] = benchmark::Counter(episodes * state.iterations(), benchmark::Counter::kIsRate);
@@ -64,7 +64,7 @@ void BM_Hunt(benchmark::State& state) {
   options.archive = state.range(1) == 0 ? ppp::generator::kNoArchive : ppp::generator::kMapElitesArchive;
   for (auto _ : state) {
     benchmark::DoNotOptimize(ppp::generator::evolveSet(
-        options, ppp::simulator::fitnessFor(options, {}, ppp::EpisodeOptions{}, 0)));
+        options, ppp::generator::fitnessFor(options, {}, ppp::EpisodeOptions{}, 0)));
   }
   state.SetLabel(options.archive);
   state.counters["evaluations/s"] =

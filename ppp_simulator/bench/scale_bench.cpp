@@ -16,12 +16,11 @@
 #include "ppp_core/rng.hpp"
 #include "ppp_core/window_atlas.hpp"
 #include "ppp_generator/genetic_algorithm.hpp"
-#include "ppp_simulator/episode.hpp"
-#include "ppp_simulator/failure_fitness.hpp"
+#include "ppp_agents/episode_runner.hpp"
+#include "ppp_generator/failure_fitness.hpp"
 
 namespace {
 
-namespace sim = ppp::simulator;
 
 /// The default experiment's ten agent configurations, indexed by the first argument of BM_Step.
 ppp::agents::AgentConfig agentConfig(int index) {
@@ -57,7 +56,7 @@ void BM_Step(benchmark::State& state) {
   const int range = ppp::EpisodeOptions{}.sensor_range;
   std::optional<ppp::WindowAtlas> windows;
   if (ppp::WindowAtlas::bytes(grid, range) <= ppp::kMaxWindowAtlasBytes) windows.emplace(grid, range);
-  sim::EpisodeRunner runner(config, ppp::EpisodeOptions{});
+  ppp::agents::EpisodeRunner runner(config, ppp::EpisodeOptions{});
   auto agent = ppp::agents::makeAgent(config);
   std::uint64_t run = 0;
   std::int64_t steps = 0;
@@ -95,7 +94,7 @@ void BM_Mating(benchmark::State& state) {
   }
   const auto timed_run = [&](int count) {
     options.matings = count;
-    ppp::generator::GeneticAlgorithm ga(options, sim::fitnessFor(options, {}, ppp::EpisodeOptions{}, 1));
+    ppp::generator::GeneticAlgorithm ga(options, ppp::generator::fitnessFor(options, {}, ppp::EpisodeOptions{}, 1));
     const auto start = std::chrono::steady_clock::now();
     benchmark::DoNotOptimize(ga.run());
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

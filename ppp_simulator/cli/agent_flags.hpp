@@ -7,7 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "ppp_agents/agent_config.hpp"
-#include "ppp_simulator/episode.hpp"
+#include "ppp_agents/episode_runner.hpp"
 
 namespace ppp {
 namespace cli {

@@ -29,7 +29,7 @@ struct CompareFlags {
 };
 
 /// Set and agent names in order of first appearance.
-void namesInOrder(const std::vector<simulator::EpisodeResult>& rows, std::vector<std::string>* sets,
+void namesInOrder(const std::vector<agents::EpisodeResult>& rows, std::vector<std::string>* sets,
                   std::vector<std::string>* agents) {
   for (const auto& r : rows) {
     if (std::find(sets->begin(), sets->end(), r.set) == sets->end()) sets->push_back(r.set);
@@ -40,7 +40,7 @@ void namesInOrder(const std::vector<simulator::EpisodeResult>& rows, std::vector
 void runCompare(const CompareFlags& f) {
   namespace fs = std::filesystem;
   const bool same = fs::weakly_canonical(f.dir_a) == fs::weakly_canonical(f.dir_b);
-  std::vector<simulator::EpisodeResult> rows = simulator::readResultsFile(f.dir_a + "/results.csv");
+  std::vector<agents::EpisodeResult> rows = simulator::readResultsFile(f.dir_a + "/results.csv");
   std::vector<std::string> sets_a, sets_b, agents;
   namesInOrder(rows, &sets_a, &agents);
   if (sets_a.empty()) throw InvalidArgument(f.dir_a, "results.csv holds no runs");

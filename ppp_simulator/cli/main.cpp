@@ -3,26 +3,11 @@
 #include "commands.hpp"
 #include "core_commands.hpp"
 #include "generator_commands.hpp"
-#include "ppp_agents/agent_config.hpp"
-#include "ppp_simulator/failure_fitness.hpp"
-
-namespace {
-
-/// The failure fitness of `ppp generate`: the panel from --agents-file (or built-in types) played in process.
-ppp::generator::Fitness failureFitness(const ppp::generator::GeneratorOptions& options,
-                                       const ppp::EpisodeOptions& episode, int threads) {
-  const std::vector<ppp::agents::AgentConfig> available =
-      options.agents_file.empty() ? std::vector<ppp::agents::AgentConfig>{}
-                                  : ppp::agents::loadAgentConfigs(options.agents_file);
-  return ppp::simulator::fitnessFor(options, available, episode, threads);
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"ppp: evolve, evaluate, convert and simulate path-planning problems (PPPs)"};
   ppp::cli::addCoreCommands(app);
-  ppp::cli::addGeneratorCommands(app, failureFitness);
+  ppp::cli::addGeneratorCommands(app);
   ppp::cli::addSimulateCommand(app);
   ppp::cli::addReplayCommand(app);
   ppp::cli::addScenariosCommand(app);

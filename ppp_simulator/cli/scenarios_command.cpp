@@ -40,14 +40,14 @@ void runScenariosCommand(const ScenariosFlags& f) {
     const MovingAiScenario& s = r.scenario;
     if (r.outcome.passed) {
       ++passed;
-      path_total += simulator::pathLength(r.outcome);
+      path_total += pathLength(r.outcome);
       optimal_total += s.optimal_length;
     }
     list.push_back({{"bucket", s.bucket},
                     {"start", cellJson(s.start)},
                     {"goal", cellJson(s.goal)},
                     {"optimal_length", s.optimal_length},
-                    {"path_length", simulator::pathLength(r.outcome)},
+                    {"path_length", pathLength(r.outcome)},
                     {"passed", r.outcome.passed},
                     {"steps", r.outcome.steps},
                     {"seed", r.seed}});

@@ -16,7 +16,7 @@
 #include "ppp_core/problem_io.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_core/text_file.hpp"
-#include "ppp_simulator/episode.hpp"
+#include "ppp_agents/episode_runner.hpp"
 #include "ppp_simulator/episode_animation.hpp"
 
 namespace ppp {
@@ -55,7 +55,7 @@ Problem loadProblem(const std::string& source) {
 void runSimulate(const SimulateFlags& f) {
   if (f.runs <= 0) throw InvalidArgument("--runs", "expected a number of runs >= 1, got " + std::to_string(f.runs));
   const agents::AgentConfig config = f.agent.agent();
-  simulator::EpisodeRunner runner(config, f.agent.episode());
+  agents::EpisodeRunner runner(config, f.agent.episode());
   const Problem problem = loadProblem(f.problem);
   const Grid grid = decodeGrid(problem);
   auto agent = agents::makeAgent(config);
@@ -94,7 +94,7 @@ void runReplay(const ReplayFlags& f) {
   const EpisodeOptions options = f.agent.episode();
   const Problem problem = loadProblem(f.problem);
   const Grid grid = decodeGrid(problem);
-  simulator::EpisodeOutcome outcome;
+  EpisodeOutcome outcome;
   std::string drawn;
   if (animated) {
     const simulator::EpisodeAnimation animation = simulator::animateEpisode(problem, grid, config, options, f.seed, f.animation);
@@ -103,7 +103,7 @@ void runReplay(const ReplayFlags& f) {
     drawn = "animated in " + f.output + " (" + std::to_string(animation.frames) + " frames" +
             (animation.stride > 1 ? ", every " + std::to_string(animation.stride) + " steps" : std::string()) + ")";
   } else {
-    outcome = simulator::recordEpisode(problem, grid, config, options, f.seed);
+    outcome = agents::recordEpisode(problem, grid, config, options, f.seed);
     writeProblemPng(problem, outcome.path, f.output);
     drawn = "path drawn in " + f.output;
   }

@@ -18,7 +18,7 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/fuzz_finding.hpp"
 #include "ppp_generator/problem_set.hpp"
-#include "ppp_simulator/agent_lane.hpp"
+#include "ppp_agents/agent_lane.hpp"
 #include "ros_wire.hpp"
 
 namespace {
@@ -28,8 +28,8 @@ namespace protocol = ppp::protocol;
 namespace sim = ppp::simulator;
 
 /// The lane's PPPs: two small hand-made ones, prepared once.
-const std::vector<sim::PreparedSet>& laneSets() {
-  static const std::vector<sim::PreparedSet> sets = [] {
+const std::vector<ppp::agents::PreparedSet>& laneSets() {
+  static const std::vector<ppp::agents::PreparedSet> sets = [] {
     std::vector<ppp::Problem> problems;
     for (int i = 0; i < 2; ++i) {
       ppp::Problem p = ppp::Problem::empty(6, 5, 2);
@@ -39,15 +39,15 @@ const std::vector<sim::PreparedSet>& laneSets() {
       ppp::setMetadata(&p.metadata, "fitness_value", "1");
       problems.push_back(p);
     }
-    return std::vector<sim::PreparedSet>{
-        sim::prepareSet("fuzz", ppp::generator::problemSetFromProblems(problems, {}, "fuzz"), ppp::EpisodeOptions{})};
+    return std::vector<ppp::agents::PreparedSet>{
+        ppp::agents::prepareSet("fuzz", ppp::generator::problemSetFromProblems(problems, {}, "fuzz"), ppp::EpisodeOptions{})};
   }();
   return sets;
 }
 
 /// A fresh lane of `type`'s runs: 2 per PPP, a budget of 12 moves, batches of up to 3 episodes.
-sim::AgentLane lane(const std::string& type) {
-  return sim::AgentLane({type, type}, ppp::EpisodeOptions{12, 2}, laneSets(), 1, 2, {}, 3);
+ppp::agents::AgentLane lane(const std::string& type) {
+  return ppp::simulator::experimentLane({type, type}, ppp::EpisodeOptions{12, 2}, laneSets(), 1, 2, {}, 3);
 }
 
 /// Walks one MoveBatch (ppp_msgs/msg/MoveBatch.msg); false when it does not fit in the bytes left.
@@ -66,16 +66,16 @@ bool walkMoveBatch(ppp::fuzz::WireWalker* w) {
 
 /// Whether `reason` is one a run may end with when the moves come from an agent node.
 bool knownReason(const std::string& reason) {
-  namespace r = protocol::reason;
+  namespace r = reason;
   return reason == r::kGoalReached || reason == r::kBudgetExhausted || reason == r::kTimeout ||
-         reason == r::kInvalidAction || protocol::reason::agentReportedReason(reason) != nullptr;
+         reason == r::kInvalidAction || reason::agentReportedReason(reason) != nullptr;
 }
 
 /// decodeMoves answers every move of a well-formed message and none of a malformed one.
 void checkDecoded(const ppp_msgs::MoveBatch& message, const protocol::DecodedMoves& decoded) {
   const std::size_t n = message.episodes.size();
   if (message.steps.size() != n || message.actions.size() != n) {
-    if (!decoded.moves.empty() || std::strcmp(decoded.missing_reason, protocol::reason::kInvalidAction) != 0) {
+    if (!decoded.moves.empty() || std::strcmp(decoded.missing_reason, reason::kInvalidAction) != 0) {
       finding("move_batch_fuzz", "a malformed MoveBatch answered moves", decoded.fault);
     }
     return;
@@ -93,7 +93,7 @@ void checkDecoded(const ppp_msgs::MoveBatch& message, const protocol::DecodedMov
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  sim::AgentLane played = lane("explorer");
+  ppp::agents::AgentLane played = lane("explorer");
   std::set<std::pair<std::string, int>> ended;  // (problem, run)
   std::vector<protocol::ScanRequest> scans;
   for (std::size_t at = 0; at < size && !played.finished();) {
@@ -106,14 +106,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const protocol::DecodedMoves decoded = protocol::decodeMoves(message);
     checkDecoded(message, decoded);
     const long before = played.remaining();
-    const std::vector<sim::EpisodeResult> results = played.answer(decoded.moves, decoded.missing_reason);
+    const std::vector<ppp::agents::EpisodeResult> results = played.answer(decoded.moves, decoded.missing_reason);
     if (played.remaining() != before - static_cast<long>(results.size())) {
       finding("move_batch_fuzz", "the lane's remaining runs do not add up", std::to_string(results.size()));
     }
-    for (const sim::EpisodeResult& r : results) {
+    for (const ppp::agents::EpisodeResult& r : results) {
       if (!ended.emplace(r.problem, r.run).second) finding("move_batch_fuzz", "a run ended twice", r.problem);
       if (!knownReason(r.reason)) finding("move_batch_fuzz", "a run ended for an unknown reason", r.reason);
-      if (r.passed != (r.reason == protocol::reason::kGoalReached)) finding("move_batch_fuzz", "pass", r.reason);
+      if (r.passed != (r.reason == reason::kGoalReached)) finding("move_batch_fuzz", "pass", r.reason);
     }
   }
   return 0;

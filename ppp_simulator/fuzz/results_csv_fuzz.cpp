@@ -15,17 +15,17 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using ppp::fuzz::finding;
   namespace sim = ppp::simulator;
-  std::vector<sim::EpisodeResult> rows;
+  std::vector<ppp::agents::EpisodeResult> rows;
   try {
     rows = sim::parseResultsCsv(std::string(reinterpret_cast<const char*>(data), size), "results.csv");
   } catch (const ppp::Error&) {
     return 0;
   }
-  for (const sim::EpisodeResult& row : rows) {
-    const std::vector<std::string> fields = sim::toCsvFields(row);
+  for (const ppp::agents::EpisodeResult& row : rows) {
+    const std::vector<std::string> fields = ppp::agents::toCsvFields(row);
     const std::string line = ppp::csvLine(fields);
     try {
-      if (sim::toCsvFields(sim::fromCsvFields(sim::splitCsvLine(line, "again.csv", 2), "again.csv", 2)) != fields) {
+      if (ppp::agents::toCsvFields(ppp::agents::fromCsvFields(ppp::agents::splitCsvLine(line, "again.csv", 2), "again.csv", 2)) != fields) {
         finding("results_csv_fuzz", "a row changed when written and read back", line);
       }
     } catch (const ppp::Error& e) {

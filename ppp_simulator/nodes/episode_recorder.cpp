@@ -48,13 +48,13 @@ visualization_msgs::Marker cellMarker(const MapFrame& frame, Cell cell, int id, 
 }  // namespace
 
 EpisodeRecorder::EpisodeRecorder(ros::NodeHandle& nh, const SimulatorParameters& parameters,
-                                 const std::vector<PreparedSet>& sets, const std::vector<std::string>& agent_names,
+                                 const std::vector<agents::PreparedSet>& sets, const std::vector<std::string>& agent_names,
                                  int budget)
     : parameters_(parameters), sets_(sets), budget_(budget) {
   map_publisher_ = nh.advertise<nav_msgs::OccupancyGrid>(ppp_msgs::topics::kRecordedMap, 1, true);
   markers_publisher_ = nh.advertise<visualization_msgs::MarkerArray>(ppp_msgs::topics::kMarkers, 1, true);
   results_publisher_ = nh.advertise<ppp_msgs::EpisodeResults>(ppp_msgs::topics::kResults, 100);
-  for (const PreparedSet& set : sets) {
+  for (const agents::PreparedSet& set : sets) {
     set_publishers_[set.name] = nh.advertise<ppp_msgs::ProblemSet>(ppp_msgs::topics::kSetsPrefix + set.name, 1, true);
   }
   for (const std::string& agent : agent_names) {
@@ -93,7 +93,7 @@ void EpisodeRecorder::write(const std::string& topic, const ros::Time& time, con
   bag_.write(topic, time, message, header);
 }
 
-bool EpisodeRecorder::sampled(const ScanRequest& scan) const {
+bool EpisodeRecorder::sampled(const protocol::ScanRequest& scan) const {
   return scan.run < parameters_.record_runs && scan.problem < parameters_.record_problems;
 }
 
@@ -110,9 +110,9 @@ void EpisodeRecorder::recordSets(const std::vector<ppp_msgs::ProblemSet>& sets) 
   }
 }
 
-void EpisodeRecorder::recordScans(const std::string& agent, const std::vector<ScanRequest>& scans) {
+void EpisodeRecorder::recordScans(const std::string& agent, const std::vector<protocol::ScanRequest>& scans) {
   std::lock_guard<std::mutex> lock(mutex_);
-  for (const ScanRequest& s : scans) {
+  for (const protocol::ScanRequest& s : scans) {
     if (!sampled(s)) continue;
     // One recorded episode per agent at a time; sampled episodes starting meanwhile are not drawn.
     Recording& recording = recordings_[agent];
@@ -123,7 +123,7 @@ void EpisodeRecorder::recordScans(const std::string& agent, const std::vector<Sc
       continue;
     }
     const int slot = recording.slot;
-    const PreparedSet& set = sets_[s.set];
+    const agents::PreparedSet& set = sets_[s.set];
     const Problem& problem = set.set.problems[s.problem];
     const MapFrame frame{problem.width, problem.height, parameters_.resolution};
     const ros::Time stamp = slotTime(slot, s.step);
@@ -174,9 +174,9 @@ void EpisodeRecorder::recordScans(const std::string& agent, const std::vector<Sc
   }
 }
 
-void EpisodeRecorder::recordResults(const std::vector<EpisodeResult>& results) {
+void EpisodeRecorder::recordResults(const std::vector<agents::EpisodeResult>& results) {
   std::lock_guard<std::mutex> lock(mutex_);
-  for (const EpisodeResult& r : results) {
+  for (const agents::EpisodeResult& r : results) {
     // The recorded episode of this agent ended: write its whole path and free the agent for the next one.
     const auto recording = recordings_.find(r.agent);
     if (recording != recordings_.end() && !recording->second.done && recording->second.set == r.set &&

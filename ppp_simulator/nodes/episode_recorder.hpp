@@ -12,7 +12,7 @@
 
 #include "ppp_msgs/EpisodeResults.h"
 #include "ppp_msgs/ProblemSet.h"
-#include "ppp_simulator/agent_lane.hpp"
+#include "ppp_agents/agent_lane.hpp"
 #include "simulator_parameters.hpp"
 
 namespace ppp {
@@ -29,14 +29,14 @@ namespace simulator {
 class EpisodeRecorder {
  public:
   /// Opens the bag (when recording) and advertises the topics. @throws IoError when the bag cannot be opened.
-  EpisodeRecorder(ros::NodeHandle& nh, const SimulatorParameters& parameters, const std::vector<PreparedSet>& sets,
+  EpisodeRecorder(ros::NodeHandle& nh, const SimulatorParameters& parameters, const std::vector<agents::PreparedSet>& sets,
                   const std::vector<std::string>& agent_names, int budget);
   /// Publishes and records the PPP sets (latched /ppp/sets/<name>).
   void recordSets(const std::vector<ppp_msgs::ProblemSet>& sets);
   /// Publishes and records the sampled episodes among a batch of scans of `agent`.
-  void recordScans(const std::string& agent, const std::vector<ScanRequest>& scans);
+  void recordScans(const std::string& agent, const std::vector<protocol::ScanRequest>& scans);
   /// Publishes and records finished episodes (grouped with those of the last moments).
-  void recordResults(const std::vector<EpisodeResult>& results);
+  void recordResults(const std::vector<agents::EpisodeResult>& results);
   /// Publishes and records the results still grouped, then closes the bag.
   void close();
 
@@ -50,14 +50,14 @@ class EpisodeRecorder {
     int slot = 0;
     bool done = true;
   };
-  bool sampled(const ScanRequest& scan) const;
+  bool sampled(const protocol::ScanRequest& scan) const;
   ros::Time slotTime(int slot, int step) const;
   void flushResults();
   template <typename M>
   void write(const std::string& topic, const ros::Time& time, const M& message, bool latched = false);
 
   SimulatorParameters parameters_;
-  const std::vector<PreparedSet>& sets_;
+  const std::vector<agents::PreparedSet>& sets_;
   std::mutex mutex_;
   rosbag::Bag bag_;
   bool bag_open_ = false;

@@ -18,10 +18,10 @@ HuntServer::~HuntServer() = default;
 bool HuntServer::evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs::EvaluateProblems::Response& response) {
   std::lock_guard<std::mutex> serving(serving_);  // one request at a time: the agents serve one lane each
   try {
-    const std::vector<agents::AgentConfig> panel = resolvePanel(request.agents, config_.agents, true);
+    const std::vector<agents::AgentConfig> panel = generator::resolvePanel(request.agents, config_.agents, true);
     std::vector<Problem> problems;
     for (const ppp_msgs::Problem& m : request.problems) problems.push_back(ppp_msgs::fromMessage(m));
-    HuntEvaluation evaluation(problems, panel, config_.episode, static_cast<int>(request.runs), request.seed,
+    generator::HuntEvaluation evaluation(problems, panel, config_.episode, static_cast<int>(request.runs), request.seed,
                               parameters_.batch_size);
     const ros::WallTime started = ros::WallTime::now();
     std::vector<LaneRunner*> runners;
@@ -30,7 +30,7 @@ bool HuntServer::evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs
     std::vector<std::exception_ptr> failures(panel.size());
     std::vector<std::thread> threads;
     for (std::size_t a = 0; a < panel.size(); ++a) {
-      AgentLane* lane = evaluation.lanes()[a].get();
+      agents::AgentLane* lane = evaluation.lanes()[a].get();
       threads.emplace_back([runner = runners[a], lane, failure = &failures[a]] {
         try {
           runner->run(lane);
@@ -47,7 +47,7 @@ bool HuntServer::evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs
     for (const auto& lane : evaluation.lanes()) {
       if (!lane->finished()) throw IoError("~evaluate", "shutting down before every run was played");
     }
-    for (const PanelEvaluation& e : evaluation.evaluations()) response.evaluations.push_back(toMessage(e));
+    for (const generator::PanelEvaluation& e : evaluation.evaluations()) response.evaluations.push_back(toMessage(e));
     const double seconds = (ros::WallTime::now() - started).toSec();
     episodes_ += static_cast<long>(problems.size() * panel.size()) * request.runs;
     seconds_ += seconds;
@@ -67,7 +67,7 @@ bool HuntServer::evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs
   return true;
 }
 
-ppp_msgs::ProblemEvaluation HuntServer::toMessage(const PanelEvaluation& e) {
+ppp_msgs::ProblemEvaluation HuntServer::toMessage(const generator::PanelEvaluation& e) {
   ppp_msgs::ProblemEvaluation m;
   m.failure_rate = e.estimate.failure_rate;
   m.budget_used = e.estimate.budget_used;
@@ -84,7 +84,7 @@ LaneRunner& HuntServer::runnerFor(const agents::AgentConfig& agent) {
   auto found = runners_.find(agent.name);
   if (found != runners_.end()) return *found->second;
   auto runner = std::make_unique<LaneRunner>(
-      nh_, parameters_, agent, [this](const std::vector<EpisodeResult>& ended) { target_->record(ended); },
+      nh_, parameters_, agent, [this](const std::vector<agents::EpisodeResult>& ended) { target_->record(ended); },
       LaneRunner::ScanObserver{}, false);
   return *runners_.emplace(agent.name, std::move(runner)).first->second;
 }

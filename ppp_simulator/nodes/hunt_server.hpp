@@ -10,7 +10,7 @@
 #include "lane_runner.hpp"
 #include "ppp_msgs/EvaluateProblems.h"
 #include "ppp_simulator/experiment_config.hpp"
-#include "ppp_simulator/hunt_evaluation.hpp"
+#include "ppp_generator/hunt_evaluation.hpp"
 #include "simulator_parameters.hpp"
 
 namespace ppp {
@@ -32,7 +32,7 @@ class HuntServer {
   bool evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs::EvaluateProblems::Response& response);
 
  private:
-  static ppp_msgs::ProblemEvaluation toMessage(const PanelEvaluation& e);
+  static ppp_msgs::ProblemEvaluation toMessage(const generator::PanelEvaluation& e);
   LaneRunner& runnerFor(const agents::AgentConfig& agent);
 
   ros::NodeHandle& nh_;
@@ -40,7 +40,7 @@ class HuntServer {
   ExperimentConfig config_;
   std::mutex serving_;
   std::map<std::string, std::unique_ptr<LaneRunner>> runners_;
-  HuntEvaluation* target_ = nullptr;  // the request in flight, where the runners' results go
+  generator::HuntEvaluation* target_ = nullptr;  // the request in flight, where the runners' results go
   long requests_ = 0;
   long episodes_ = 0;
   double seconds_ = 0;

@@ -32,7 +32,7 @@ LaneRunner::LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameter
       [this](const ppp_msgs::MoveBatch::ConstPtr& m) { onMoves(m); }, &replies_);
 }
 
-void LaneRunner::run(AgentLane* lane) {
+void LaneRunner::run(agents::AgentLane* lane) {
   const std::string& name = agent_.name;
   if (!connected_ && !waitForAgent()) {
     ROS_ERROR("agent '%s' never connected within %.0f s: its %ld runs fail as agent_lost", name.c_str(),
@@ -137,7 +137,7 @@ void LaneRunner::onMoves(const ppp_msgs::MoveBatch::ConstPtr& message) {
   if (lane_->finished() || failure_) lane_done_.notify_all();
 }
 
-void LaneRunner::report(const std::vector<EpisodeResult>& results) {
+void LaneRunner::report(const std::vector<agents::EpisodeResult>& results) {
   if (!results.empty()) sink_(results);
 }
 

@@ -12,7 +12,7 @@
 #include "ppp_msgs/MoveBatch.h"
 #include "ppp_msgs/ScanBatch.h"
 #include "ppp_msgs/inline_callback_queue.h"
-#include "ppp_simulator/agent_lane.hpp"
+#include "ppp_agents/agent_lane.hpp"
 #include "simulator_parameters.hpp"
 
 namespace ppp {
@@ -28,9 +28,9 @@ namespace simulator {
 class LaneRunner {
  public:
   /// Where finished episodes go.
-  using ResultSink = std::function<void(const std::vector<EpisodeResult>&)>;
+  using ResultSink = std::function<void(const std::vector<agents::EpisodeResult>&)>;
   /// What sees each batch of scans (may be empty).
-  using ScanObserver = std::function<void(const std::string& agent, const std::vector<ScanRequest>&)>;
+  using ScanObserver = std::function<void(const std::string& agent, const std::vector<protocol::ScanRequest>&)>;
 
   /// Advertises /NAME/scans and subscribes to /NAME/moves for agent configuration `agent`; `log_rates` logs
   /// each lane's episodes per second when it is done.
@@ -38,7 +38,7 @@ class LaneRunner {
              ResultSink sink, ScanObserver observer = {}, bool log_rates = true);
   /// Plays every run of `lane` (whose agent is this runner's); returns when it is finished or ROS shuts down.
   /// @throws what the result sink threw (an unwritable results file, say).
-  void run(AgentLane* lane);
+  void run(agents::AgentLane* lane);
 
  private:
   void sendBatch();
@@ -46,7 +46,7 @@ class LaneRunner {
   bool waitForAgent();
   bool agentAlive() const;
   void onMoves(const ppp_msgs::MoveBatch::ConstPtr& message);
-  void report(const std::vector<EpisodeResult>& results);
+  void report(const std::vector<agents::EpisodeResult>& results);
 
   SimulatorParameters parameters_;
   agents::AgentConfig agent_;
@@ -58,12 +58,12 @@ class LaneRunner {
   bool suspect_ = false;  // the agent was lost in an earlier lane: check before playing the next
   std::mutex mutex_;      // guards everything below, shared by run() and the network thread
   std::condition_variable lane_done_;  // the lane finished or the sink failed
-  AgentLane* lane_ = nullptr;          // the lane being played; null between lanes
+  agents::AgentLane* lane_ = nullptr;          // the lane being played; null between lanes
   std::exception_ptr failure_;         // what the sink threw in the network thread
   std::uint32_t batch_ = 0;            // batches sent so far, over every lane
   std::uint32_t expected_batch_ = 0;   // the batch awaiting its reply; 0 when none
   ros::WallTime deadline_;             // when the awaited batch counts as unanswered
-  std::vector<ScanRequest> scans_buffer_;  // reused by every batch, so a batch allocates (almost) nothing
+  std::vector<protocol::ScanRequest> scans_buffer_;  // reused by every batch, so a batch allocates (almost) nothing
   ppp_msgs::ScanBatch message_;            // likewise
   ppp_msgs::InlineCallbackQueue replies_;  // runs onMoves in the network thread
   ros::Publisher scans_;

@@ -18,7 +18,7 @@ namespace simulator {
 namespace {
 
 /// The set a generator node published for `spec`, ready to play. @throws ParseError naming the topic.
-PreparedSet prepareReceived(const SetSpec& spec, const ppp_msgs::ProblemSet& message, const ExperimentConfig& config,
+agents::PreparedSet prepareReceived(const SetSpec& spec, const ppp_msgs::ProblemSet& message, const ExperimentConfig& config,
                             const std::string& output_dir) {
   const std::string topic = setTopic(spec.name);
   if (message.name != spec.name) {
@@ -26,7 +26,7 @@ PreparedSet prepareReceived(const SetSpec& spec, const ppp_msgs::ProblemSet& mes
   }
   std::vector<Problem> problems;
   for (const ppp_msgs::Problem& m : message.problems) problems.push_back(ppp_msgs::fromMessage(m));
-  PreparedSet set = prepareSet(
+  agents::PreparedSet set = agents::prepareSet(
       spec.name, generator::problemSetFromProblems(std::move(problems), spec.generator->weights, topic),
       config.episode);
   set.directory = output_dir + "/sets/" + spec.name;  // where the generator node wrote its trees
@@ -93,7 +93,7 @@ ReceivedSets receiveSets(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const
       result.messages.push_back(*received[spec.name]);
       result.sets.push_back(prepareReceived(spec, result.messages.back(), config, parameters.output_dir));
     } else {
-      result.sets.push_back(prepareSet(spec.name, generator::readProblemSetDirectory(spec.directory),
+      result.sets.push_back(agents::prepareSet(spec.name, generator::readProblemSetDirectory(spec.directory),
                                        config.episode));
       result.sets.back().directory = spec.directory;
       result.messages.push_back(ppp_msgs::toSetMessage(spec.name, result.sets.back().set.problems,

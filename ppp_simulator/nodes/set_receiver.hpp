@@ -14,7 +14,7 @@ namespace simulator {
 
 /// An experiment's sets ready to play, with the messages recorded for them.
 struct ReceivedSets {
-  std::vector<PreparedSet> sets;                  ///< In the config's order.
+  std::vector<agents::PreparedSet> sets;                  ///< In the config's order.
   std::vector<ppp_msgs::ProblemSet> messages;     ///< One per set: what its generator node published.
 };
 

@@ -24,7 +24,7 @@
 #include "ppp_msgs/ScanBatch.h"
 #include "ppp_msgs/conversions.h"
 #include "ppp_msgs/node_liveness.h"
-#include "ppp_simulator/agent_lane.hpp"
+#include "ppp_agents/agent_lane.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
 #include "set_receiver.hpp"
 #include "simulator_parameters.hpp"
@@ -49,11 +49,11 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
     } catch (const Interrupted&) {
       return 130;  // shut down mid-generation; the set being evolved was not written
     }
-    for (const PreparedSet& set : received.sets) {
+    for (const agents::PreparedSet& set : received.sets) {
       received.messages.push_back(ppp_msgs::toSetMessage(set.name, set.set.problems, set.set.ids, parameters.resolution));
     }
   }
-  const std::vector<PreparedSet>& sets = received.sets;
+  const std::vector<agents::PreparedSet>& sets = received.sets;
   std::unique_ptr<ResultsFile> opened;
   try {
     opened = std::make_unique<ResultsFile>(resultsPath(parameters.output_dir), [] { return !ros::ok(); });
@@ -66,21 +66,20 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
   EpisodeRecorder recorder(nh, parameters, sets, agent_names, config.episode.budget);
   recorder.recordSets(received.messages);
 
-  std::vector<std::unique_ptr<AgentLane>> lanes;
+  std::vector<std::unique_ptr<agents::AgentLane>> lanes;
   std::vector<std::unique_ptr<LaneRunner>> runners;
   long remaining = 0;
   for (const auto& agent : config.agents) {
-    lanes.push_back(std::make_unique<AgentLane>(agent, config.episode, sets, config.seed, config.runsFor(agent),
-                                                results.done(),
-                                                parameters.batch_size));
+    lanes.push_back(std::make_unique<agents::AgentLane>(experimentLane(
+        agent, config.episode, sets, config.seed, config.runsFor(agent), results.done(), parameters.batch_size)));
     remaining += lanes.back()->remaining();
     runners.push_back(std::make_unique<LaneRunner>(
         nh, parameters, agent,
-        [&results, &recorder](const std::vector<EpisodeResult>& ended) {
+        [&results, &recorder](const std::vector<agents::EpisodeResult>& ended) {
           results.append(ended);
           recorder.recordResults(ended);
         },
-        [&recorder](const std::string& name, const std::vector<ScanRequest>& scans) {
+        [&recorder](const std::string& name, const std::vector<protocol::ScanRequest>& scans) {
           recorder.recordScans(name, scans);
         }));
   }

@@ -46,10 +46,10 @@ class NameIndex {
 
 /// Each row's problem id as its rank in text order among every id of the sets and of the rows.
 /// @throws Interrupted.
-std::vector<int> problemRanks(const std::vector<EpisodeResult>& rows, const std::vector<PreparedSet>& sets,
+std::vector<int> problemRanks(const std::vector<agents::EpisodeResult>& rows, const std::vector<agents::PreparedSet>& sets,
                               const StopCheck& stop) {
   NameIndex distinct;
-  for (const PreparedSet& set : sets) {
+  for (const agents::PreparedSet& set : sets) {
     for (const std::string& id : set.set.ids) distinct.findOrAdd(id);
   }
   std::vector<int> problem_of_row(rows.size());
@@ -70,8 +70,8 @@ std::vector<int> problemRanks(const std::vector<EpisodeResult>& rows, const std:
 
 }  // namespace
 
-bool putInCanonicalOrder(std::vector<EpisodeResult>* rows, const ExperimentConfig& config,
-                         const std::vector<PreparedSet>& sets, const std::string& path, const StopCheck& stop) {
+bool putInCanonicalOrder(std::vector<agents::EpisodeResult>* rows, const ExperimentConfig& config,
+                         const std::vector<agents::PreparedSet>& sets, const std::string& path, const StopCheck& stop) {
   NameIndex set_order, agent_order;
   for (std::size_t i = 0; i < sets.size(); ++i) set_order.add(sets[i].name, static_cast<int>(i));
   for (std::size_t i = 0; i < config.agents.size(); ++i) agent_order.add(config.agents[i].name, static_cast<int>(i));
@@ -80,7 +80,7 @@ bool putInCanonicalOrder(std::vector<EpisodeResult>* rows, const ExperimentConfi
   std::vector<std::pair<std::array<int, 4>, std::size_t>> keys(rows->size());
   for (std::size_t i = 0; i < rows->size(); ++i) {
     if (i % kRowsPerStopCheck == 0) stopIfAsked(stop);
-    const EpisodeResult& row = (*rows)[i];
+    const agents::EpisodeResult& row = (*rows)[i];
     const int set = set_order.find(row.set);
     const int agent = agent_order.find(row.agent);
     if (set < 0 || agent < 0) {
@@ -94,7 +94,7 @@ bool putInCanonicalOrder(std::vector<EpisodeResult>* rows, const ExperimentConfi
   const auto not_rising = [](const auto& a, const auto& b) { return !(a.first < b.first); };
   if (std::adjacent_find(keys.begin(), keys.end(), not_rising) == keys.end()) return false;
   std::sort(keys.begin(), keys.end());
-  std::vector<EpisodeResult> sorted;
+  std::vector<agents::EpisodeResult> sorted;
   sorted.reserve(rows->size());
   for (const auto& key : keys) sorted.push_back(std::move((*rows)[key.second]));
   *rows = std::move(sorted);

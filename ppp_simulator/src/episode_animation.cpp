@@ -45,7 +45,7 @@ void checkMilliseconds(int ms, const char* name) {
 /// A blocked move: the agent's cell and the action that bumped.
 struct Bump {
   Cell cell;
-  agents::Action action;
+  Action action;
 };
 
 /// What one frame shows.
@@ -75,7 +75,7 @@ class DistinctList {
 };
 
 /// The number of a move or bump from `cell` with `action` among a map's cells x 9 actions.
-std::size_t moveKey(const Problem& problem, Cell cell, agents::Action action) {
+std::size_t moveKey(const Problem& problem, Cell cell, Action action) {
   return (static_cast<std::size_t>(cell.y) * problem.width + cell.x) * 9 + static_cast<std::size_t>(action);
 }
 
@@ -128,7 +128,7 @@ class FramePainter {
     const int bar = std::max(2, cp / 5);
     for (const Bump& b : *s.bumps) {
       const Pixel o = cellOrigin(b.cell, picture_);
-      const Cell d = agents::offset(b.action);
+      const Cell d = offset(b.action);
       // A bar along the side the move was blocked at (a corner square for a diagonal).
       const int x0 = d.x > 0 ? o.x + cp - bar : o.x + 1, x1 = d.x < 0 ? o.x + 1 + bar : o.x + cp;
       const int y0 = d.y > 0 ? o.y + cp - bar : o.y + 1, y1 = d.y < 0 ? o.y + 1 + bar : o.y + cp;
@@ -178,14 +178,14 @@ EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const 
                                 const AnimationOptions& animation, const StopCheck& stop) {
   animation.validate();
   const FramePainter painter(problem, grid, cellPixels(problem, animation));
-  EpisodeRunner runner(config, options);
+  agents::EpisodeRunner runner(config, options);
   std::unique_ptr<agents::Agent> agent = agents::makeAgent(config);
   EpisodeAnimation result;
   // A first run counts the steps, so the frames can be spread over the episode before any is drawn.
   const int steps = runner.run(problem, grid, *agent, run_seed).steps;
   result.stride = std::max(1, (steps + animation.max_frames - 2) / (animation.max_frames - 1));
 
-  const agents::EpisodeInfo info = episodeInfo(problem, grid, config, run_seed, options.connectivity);
+  const agents::EpisodeInfo info = agents::episodeInfo(problem, grid, config, run_seed, options.connectivity);
   agent->reset(info);
   Episode episode(problem, grid, runner.sensor(), run_seed, options.budget, options.connectivity, true);
   std::unique_ptr<agents::AgentMemory> memory;
@@ -208,7 +208,7 @@ EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const 
       gif.addFrame(painter.paint(state), (last ? animation.last_frame_ms : animation.frame_ms) / 10);
     }
     if (last) break;
-    const agents::Action action = agent->act(scan);
+    const Action action = agent->act(scan);
     const int bumps_before = episode.outcome().bumps;
     episode.apply(action);
     const Cell now = episode.outcome().path.back();

@@ -11,7 +11,7 @@
 #include "ppp_core/text_format.hpp"
 #include "ppp_core/yaml_reader.hpp"
 #include "ppp_generator/problem_set.hpp"
-#include "ppp_simulator/failure_fitness.hpp"
+#include "ppp_generator/failure_fitness.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -78,7 +78,7 @@ void ExperimentConfig::validate() const {
         if (!s.generator->agents_file.empty()) {
           throw InvalidArgument("agents_file", "in an experiment the panel's names come from its agents");
         }
-        resolvePanel(s.generator->agents, agents, true);  // planners hunt through ROS; ppp experiment refuses them
+        generator::resolvePanel(s.generator->agents, agents, true);  // planners hunt through ROS; ppp experiment refuses them
       }
     } catch (const InvalidArgument& e) {
       const std::string field = "sets[" + std::to_string(i) + "].generator." + e.name();
@@ -132,7 +132,7 @@ const std::vector<OptionSpec<ExperimentConfig>>& experimentOptionSpecs() {
       list.push_back(spec);
     }
     list.push_back(declareOption("threads", "worker threads (0: every core)", +[](X& x) -> int& { return x.threads; },
-                                 Bounds{0, kMaxThreads})
+                                 Bounds{0, generator::kMaxThreads})
                        .notAffectingResults());
     list.push_back(declareOption("hardest", "pictures of the hardest PPPs in the report",
                                  +[](X& x) -> int& { return x.hardest; }, Bounds{0, kMaxHardest})

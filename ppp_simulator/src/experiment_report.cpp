@@ -8,7 +8,7 @@
 #include "ppp_agents/agent_registry.hpp"
 #include "ppp_core/csv.hpp"
 #include "ppp_core/text_file.hpp"
-#include "ppp_simulator/episode.hpp"
+#include "ppp_agents/episode_runner.hpp"
 #include "ppp_simulator/episode_animation.hpp"
 #include "ppp_simulator/pass_rates.hpp"
 
@@ -21,13 +21,13 @@ namespace {
 constexpr int kReportAnimationFrames = 301;
 
 /// The first failing run of `agent` on PPP `problem` of `set`, replayed for its path and animated.
-FailureExample failingRun(const ExperimentConfig& config, const PreparedSet& set, int problem,
+FailureExample failingRun(const ExperimentConfig& config, const agents::PreparedSet& set, int problem,
                           const agents::AgentConfig& agent_config, const std::vector<ResultGroup>& groups,
                           const StopCheck& stop) {
   stopIfAsked(stop);
-  const EpisodeResult* first_fail = nullptr;
+  const agents::EpisodeResult* first_fail = nullptr;
   for (const ResultGroup& g : groups) {
-    const EpisodeResult* f = g.first_fail;
+    const agents::EpisodeResult* f = g.first_fail;
     if (f != nullptr && f->agent == agent_config.name && f->problem == set.set.ids[problem] && f->set == set.name &&
         (first_fail == nullptr || f->run < first_fail->run)) {
       first_fail = f;
@@ -40,7 +40,7 @@ FailureExample failingRun(const ExperimentConfig& config, const PreparedSet& set
   if (std::max(ppp.width, ppp.height) <= kReportAnimationMaxSide) {
     run = animateEpisode(ppp, set.grids[problem], agent_config, config.episode, first_fail->seed, animation, stop);
   } else {
-    run.outcome = recordEpisode(ppp, set.grids[problem], agent_config, config.episode, first_fail->seed);
+    run.outcome = agents::recordEpisode(ppp, set.grids[problem], agent_config, config.episode, first_fail->seed);
   }
   const EpisodeOutcome& outcome = run.outcome;
   FailureExample example;
@@ -61,7 +61,7 @@ FailureExample failingRun(const ExperimentConfig& config, const PreparedSet& set
 
 }  // namespace
 
-std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
+std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets,
                                             const std::vector<ResultGroup>& groups, int count,
                                             const StopCheck& stop) {
   std::map<std::string, const agents::AgentConfig*> agent_by_name;
@@ -70,7 +70,7 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
   std::map<std::tuple<std::string, std::string, std::string>, std::pair<int, int>> counts;
   for (const ResultGroup& g : groups) {
     // The control always passes; a planner's path cannot be replayed in-process for the picture.
-    const EpisodeResult& r = *g.row;
+    const agents::EpisodeResult& r = *g.row;
     const agents::AgentConfig& agent = *agent_by_name.at(r.agent);
     if (agents::agentType(agent.type).is_control || agents::isPlanner(agent)) continue;
     auto& c = counts[{r.set, r.problem, r.agent}];
@@ -121,7 +121,7 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
   return failures;
 }
 
-std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
+std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets,
                                           const std::vector<ResultGroup>& groups, const StopCheck& stop) {
   std::map<std::string, int> set_index;
   std::vector<std::map<std::string, int>> problem_index(sets.size());
@@ -132,7 +132,7 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
   // (agent, set, problem) -> (passes, runs), in one pass over the groups.
   std::map<std::string, std::map<std::pair<int, int>, std::pair<int, int>>> counts;
   for (const ResultGroup& g : groups) {
-    const EpisodeResult& r = *g.row;
+    const agents::EpisodeResult& r = *g.row;
     const int s = set_index.at(r.set);
     auto& c = counts[r.agent][{s, problem_index[s].at(r.problem)}];
     c.first += g.passes;
@@ -154,10 +154,10 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
 }
 
 void writeExperimentReport(const std::string& dir, const ExperimentConfig& config, const std::string& config_text,
-                           const std::vector<PreparedSet>& sets, const std::vector<EpisodeResult>& rows,
+                           const std::vector<agents::PreparedSet>& sets, const std::vector<agents::EpisodeResult>& rows,
                            const StopCheck& stop) {
   std::vector<std::string> set_names, agent_names;
-  for (const PreparedSet& s : sets) set_names.push_back(s.name);
+  for (const agents::PreparedSet& s : sets) set_names.push_back(s.name);
   // Agents with no rows (planners in an in-process run) are left out of the tables.
   const std::vector<ResultGroup> groups = groupResults(rows);
   std::set<std::string> agents_run;
@@ -189,7 +189,7 @@ void writeExperimentReport(const std::string& dir, const ExperimentConfig& confi
   stopIfAsked(stop);
   input.worst = worstFailures(config, sets, groups, stop);
   stopIfAsked(stop);
-  for (const PreparedSet& set : sets) {
+  for (const agents::PreparedSet& set : sets) {
     SetInfo info{set.name, set.set.diversity, ""};
     const std::filesystem::path archive = std::filesystem::path(set.directory) / "archive.svg";
     if (!set.directory.empty() && std::filesystem::exists(archive)) {

@@ -14,11 +14,11 @@
 #include "ppp_core/text_file.hpp"
 #include "ppp_core/yaml_reader.hpp"
 #include "ppp_simulator/canonical_order.hpp"
-#include "ppp_simulator/episode.hpp"
+#include "ppp_agents/episode_runner.hpp"
 #include "ppp_simulator/experiment_report.hpp"
 #include "ppp_simulator/results_file.hpp"
 #include "ppp_generator/set_evolution.hpp"
-#include "ppp_simulator/failure_fitness.hpp"
+#include "ppp_generator/failure_fitness.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -50,21 +50,18 @@ std::uint64_t runSeed(std::uint64_t experiment_seed, const std::string& set, con
                     {nameHash(set), nameHash(problem), nameHash(agent), static_cast<std::uint64_t>(run)});
 }
 
-EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::string& agent, int run,
-                            std::uint64_t seed, const EpisodeOutcome& outcome) {
-  EpisodeResult r;
-  r.set = set.name;
-  r.problem = set.set.ids[problem];
-  r.agent = agent;
-  r.run = run;
-  r.seed = seed;
-  r.passed = outcome.passed;
-  r.steps = outcome.steps;
-  r.bumps = outcome.bumps;
-  r.path_length = pathLength(outcome);
-  r.optimal_length = set.optimal[problem];
-  r.reason = outcome.reason;
-  return r;
+agents::AgentLane experimentLane(const agents::AgentConfig& config, const EpisodeOptions& options,
+                                 const std::vector<agents::PreparedSet>& sets, std::uint64_t experiment_seed, int runs,
+                                 const std::set<RunKey>& done, int batch_size) {
+  return agents::AgentLane(
+      config, options, sets,
+      [&sets, experiment_seed, name = config.name](int set, int problem, int run) {
+        return runSeed(experiment_seed, sets[set].name, sets[set].set.ids[problem], name, run);
+      },
+      runs, batch_size,
+      [&sets, &done, name = config.name](int set, int problem, int run) {
+        return done.count(RunKey{sets[set].name, sets[set].set.ids[problem], name, run}) > 0;
+      });
 }
 
 void checkExperimentDirectory(const ExperimentConfig& config, const std::string& dir) {
@@ -102,29 +99,9 @@ void checkExperimentDirectory(const ExperimentConfig& config, const std::string&
                          difference + "); its rows would be mixed with this one's, so use another output directory");
 }
 
-PreparedSet prepareSet(const std::string& name, generator::ProblemSet set, const EpisodeOptions& episode) {
-  const int sensor_range = episode.sensor_range;
-  PreparedSet p;
-  p.name = name;
-  p.set = std::move(set);
-  DpaSolver dpa;
-  for (const Problem& problem : p.set.problems) {
-    p.grids.push_back(decodeGrid(problem));
-    const DpaResult& result = dpa.solve(p.grids.back(), problem.start, problem.goal);
-    if (!result.reachable) throw InvalidArgument("sets", "set '" + name + "' holds an unsolvable PPP");
-    p.optimal.push_back(episode.connectivity == 8
-                            ? shortestOctileRoute(p.grids.back(), problem.start, problem.goal).length
-                            : static_cast<double>(result.advances));
-    p.windows.push_back(WindowAtlas::bytes(p.grids.back(), sensor_range) <= kMaxWindowAtlasBytes
-                            ? std::optional<WindowAtlas>(std::in_place, p.grids.back(), sensor_range)
-                            : std::nullopt);
-  }
-  return p;
-}
-
-std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::string& dir,
+std::vector<agents::PreparedSet> prepareSets(const ExperimentConfig& config, const std::string& dir,
                                      const std::function<void(const std::string&)>& log, const StopCheck& stop) {
-  std::vector<PreparedSet> prepared;
+  std::vector<agents::PreparedSet> prepared;
   for (const SetSpec& spec : config.sets) {
     std::string set_dir = spec.directory;
     if (spec.generator) {
@@ -134,7 +111,7 @@ std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::
                      std::to_string(spec.generator->matings) + " matings)");
         generator::Fitness fitness;
         try {
-          fitness = fitnessFor(*spec.generator, config.agents, config.episode, config.threads);
+          fitness = generator::fitnessFor(*spec.generator, config.agents, config.episode, config.threads);
         } catch (const InvalidArgument& e) {
           throw InvalidArgument("sets", "set '" + spec.name + "': " + e.what());
         }
@@ -142,7 +119,7 @@ std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::
         say(log, "set '" + spec.name + "': " + evolved.summary);
       }
     }
-    PreparedSet p = prepareSet(spec.name, generator::readProblemSetDirectory(set_dir), config.episode);
+    agents::PreparedSet p = agents::prepareSet(spec.name, generator::readProblemSetDirectory(set_dir), config.episode);
     p.directory = set_dir;
     prepared.push_back(std::move(p));
   }
@@ -156,7 +133,7 @@ void openExperimentDirectory(const ExperimentConfig& config, const std::string& 
   writeFileAtomically((fs::path(dir) / kFingerprintFile).string(), experimentFingerprint(config));
 }
 
-std::vector<PreparedSet> beginExperiment(const ExperimentConfig& config, const std::string& dir,
+std::vector<agents::PreparedSet> beginExperiment(const ExperimentConfig& config, const std::string& dir,
                                          const std::function<void(const std::string&)>& log, const StopCheck& stop) {
   openExperimentDirectory(config, dir);
   return prepareSets(config, dir, log, stop);
@@ -165,11 +142,11 @@ std::vector<PreparedSet> beginExperiment(const ExperimentConfig& config, const s
 std::string resultsPath(const std::string& dir) { return (fs::path(dir) / kResultsFile).string(); }
 
 void finishExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
-                      const std::vector<PreparedSet>& sets, ResultsFile* results, const StopCheck& stop,
+                      const std::vector<agents::PreparedSet>& sets, ResultsFile* results, const StopCheck& stop,
                       const std::function<void(const std::string&)>& log) {
   stopIfAsked(stop);
   say(log, "finishing: results.csv in run order");
-  std::vector<EpisodeResult> rows = readResultsFile(resultsPath(dir), stop);
+  std::vector<agents::EpisodeResult> rows = readResultsFile(resultsPath(dir), stop);
   const std::size_t read = rows.size();
   rows = standingRows(std::move(rows));
   const bool moved = putInCanonicalOrder(&rows, config, sets, resultsPath(dir), stop);
@@ -184,7 +161,7 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
                                const std::function<void(long, long)>& progress, const StopCheck& stop,
                                const std::function<void(const std::string&)>& log) {
   ExperimentReport report;
-  std::vector<PreparedSet> sets;
+  std::vector<agents::PreparedSet> sets;
   std::unique_ptr<ResultsFile> opened;
   try {
     sets = beginExperiment(config, dir, log, stop);
@@ -238,7 +215,7 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
   OrderedAppender appender(&results);
   auto worker = [&]() {
     try {
-      std::map<int, std::pair<std::unique_ptr<agents::Agent>, std::unique_ptr<EpisodeRunner>>> agents;
+      std::map<int, std::pair<std::unique_ptr<agents::Agent>, std::unique_ptr<agents::EpisodeRunner>>> agents;
       for (;;) {
         if ((stop && stop()) || failed.load()) return;
         const std::size_t u = next_unit.fetch_add(1);
@@ -247,18 +224,18 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
         auto& slot = agents[unit.agent];
         if (!slot.first) {
           slot.first = agents::makeAgent(config.agents[unit.agent]);
-          slot.second = std::make_unique<EpisodeRunner>(config.agents[unit.agent], config.episode);
+          slot.second = std::make_unique<agents::EpisodeRunner>(config.agents[unit.agent], config.episode);
         }
-        const PreparedSet& set = sets[unit.set];
-        std::vector<EpisodeResult> rows;
+        const agents::PreparedSet& set = sets[unit.set];
+        std::vector<agents::EpisodeResult> rows;
         rows.reserve(unit.runs.size());
         const std::string& agent = config.agents[unit.agent].name;
         for (int run : unit.runs) {
           const std::uint64_t seed = runSeed(config.seed, set.name, set.set.ids[unit.problem], agent, run);
           const EpisodeOutcome outcome =
               slot.second->run(set.set.problems[unit.problem], set.grids[unit.problem], *slot.first, seed, false,
-                               windowsOf(set, unit.problem));
-          rows.push_back(episodeResult(set, unit.problem, agent, run, seed, outcome));
+                               agents::windowsOf(set, unit.problem));
+          rows.push_back(agents::episodeResult(set, unit.problem, agent, run, seed, outcome));
         }
         const long count = static_cast<long>(rows.size());
         appender.add(u, std::move(rows));

@@ -106,10 +106,10 @@ bool naturalLess(const std::string& a, const std::string& b) {
   return natural != 0 ? natural < 0 : a < b;  // "p01" and "p1" are distinct ids: fall back to bytes
 }
 
-std::vector<ResultGroup> groupResults(const std::vector<EpisodeResult>& results) {
+std::vector<ResultGroup> groupResults(const std::vector<agents::EpisodeResult>& results) {
   std::vector<ResultGroup> groups;
   for (std::size_t i = 0; i < results.size(); ++i) {
-    const EpisodeResult& r = results[i];
+    const agents::EpisodeResult& r = results[i];
     if (groups.empty() || groups.back().row->agent != r.agent || groups.back().row->problem != r.problem ||
         groups.back().row->set != r.set) {
       groups.push_back(ResultGroup{&r, i});
@@ -123,7 +123,7 @@ std::vector<ResultGroup> groupResults(const std::vector<EpisodeResult>& results)
   return groups;
 }
 
-PassRateTable computePassRates(const std::vector<EpisodeResult>& results, const std::vector<std::string>& set_order,
+PassRateTable computePassRates(const std::vector<agents::EpisodeResult>& results, const std::vector<std::string>& set_order,
                                const std::vector<std::string>& agent_order) {
   return computeGroupedPassRates(groupResults(results), set_order, agent_order);
 }
@@ -135,7 +135,7 @@ PassRateTable computeGroupedPassRates(const std::vector<ResultGroup>& groups, co
 
   std::map<ProblemKey, Tally, ProblemKeyLess> tallies;
   for (const ResultGroup& group : groups) {
-    const EpisodeResult& result = *group.row;
+    const agents::EpisodeResult& result = *group.row;
     const std::string where = "result " + std::to_string(group.index);
     const auto set = set_index.find(result.set);
     if (set == set_index.end()) {

@@ -18,7 +18,7 @@
 #include "ppp_core/text_file.hpp"
 #include "ppp_core/text_format.hpp"
 #include "ppp_generator/tree_html.hpp"
-#include "ppp_simulator/episode_result.hpp"
+#include "ppp_agents/episode_result.hpp"
 #include "ppp_simulator/statistics.hpp"
 #include "ppp_simulator/svg_plot.hpp"
 

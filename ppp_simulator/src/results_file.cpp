@@ -15,13 +15,13 @@ namespace {
 
 constexpr std::size_t kMaxResultsBytes = std::size_t{8} << 30;
 
-std::string headerLine() { return csvLine(resultCsvHeader()); }
+std::string headerLine() { return csvLine(agents::resultCsvHeader()); }
 
 constexpr int kLinesPerStopCheck = 1 << 14;  // lines read or written between two questions to the StopCheck
 
 /// Parses complete lines, asking `stop` every kLinesPerStopCheck lines; returns the byte length of the text
 /// that holds them (a partial tail is excluded).
-std::size_t parseRows(const std::string& text, const std::string& path, std::vector<EpisodeResult>* rows,
+std::size_t parseRows(const std::string& text, const std::string& path, std::vector<agents::EpisodeResult>* rows,
                       const StopCheck& stop = {}) {
   std::size_t pos = 0;
   int line = 0;
@@ -36,7 +36,7 @@ std::size_t parseRows(const std::string& text, const std::string& path, std::vec
         throw ParseError(path, 1, "header", "not a PPP Lab results file; expected '" + headerLine() + "'");
       }
     } else if (!content.empty()) {
-      rows->push_back(parseCsvRow(content, path, line));
+      rows->push_back(agents::parseCsvRow(content, path, line));
     }
     pos = end + 1;
   }
@@ -45,28 +45,28 @@ std::size_t parseRows(const std::string& text, const std::string& path, std::vec
 
 }  // namespace
 
-RunKey runKey(const EpisodeResult& row) { return RunKey{row.set, row.problem, row.agent, row.run}; }
+RunKey runKey(const agents::EpisodeResult& row) { return RunKey{row.set, row.problem, row.agent, row.run}; }
 
-bool isLostRun(const EpisodeResult& row) { return row.reason == reason::kTimeout || row.reason == reason::kAgentLost; }
+bool isLostRun(const agents::EpisodeResult& row) { return row.reason == reason::kTimeout || row.reason == reason::kAgentLost; }
 
-std::vector<EpisodeResult> standingRows(std::vector<EpisodeResult> rows) {
+std::vector<agents::EpisodeResult> standingRows(std::vector<agents::EpisodeResult> rows) {
   if (std::none_of(rows.begin(), rows.end(), isLostRun)) return rows;  // no run was played twice
   std::set<RunKey> seen;
   std::vector<bool> stands(rows.size());
   for (std::size_t i = rows.size(); i-- > 0;) stands[i] = seen.insert(runKey(rows[i])).second;
-  std::vector<EpisodeResult> standing;
+  std::vector<agents::EpisodeResult> standing;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (stands[i]) standing.push_back(std::move(rows[i]));
   }
   return standing;
 }
 
-std::vector<EpisodeResult> readResultsFile(const std::string& path, const StopCheck& stop) {
+std::vector<agents::EpisodeResult> readResultsFile(const std::string& path, const StopCheck& stop) {
   return parseResultsCsv(readTextFile(path, kMaxResultsBytes, stop), path, stop);
 }
 
-std::vector<EpisodeResult> parseResultsCsv(const std::string& text, const std::string& path, const StopCheck& stop) {
-  std::vector<EpisodeResult> rows;
+std::vector<agents::EpisodeResult> parseResultsCsv(const std::string& text, const std::string& path, const StopCheck& stop) {
+  std::vector<agents::EpisodeResult> rows;
   rows.reserve(text.size() / 80);  // rows are about 90 bytes long
   parseRows(text, path, &rows, stop);
   return rows;
@@ -79,7 +79,7 @@ ResultsFile::ResultsFile(const std::string& path, const StopCheck& stop) : path_
     const std::size_t complete = parseRows(text, path, &existing_, stop);
     for (std::size_t i = 0; i < existing_.size(); ++i) {  // a run's last row decides, as in standingRows
       if (i % kLinesPerStopCheck == 0) stopIfAsked(stop);
-      const EpisodeResult& r = existing_[i];
+      const agents::EpisodeResult& r = existing_[i];
       const RunKey key = runKey(r);
       (isLostRun(r) ? lost_ : done_).insert(key);
       (isLostRun(r) ? done_ : lost_).erase(key);
@@ -90,26 +90,26 @@ ResultsFile::ResultsFile(const std::string& path, const StopCheck& stop) : path_
   if (existing_.empty() && out_->size() == 0) out_->append(headerLine() + '\n');
 }
 
-void ResultsFile::append(const std::vector<EpisodeResult>& rows) {
+void ResultsFile::append(const std::vector<agents::EpisodeResult>& rows) {
   std::string block;
-  for (const EpisodeResult& r : rows) appendCsvRow(r, &block);
+  for (const agents::EpisodeResult& r : rows) agents::appendCsvRow(r, &block);
   std::lock_guard<std::mutex> lock(mutex_);
   out_->append(block);
 }
 
-void ResultsFile::rewrite(const std::vector<EpisodeResult>& rows, const StopCheck& stop) {
+void ResultsFile::rewrite(const std::vector<agents::EpisodeResult>& rows, const StopCheck& stop) {
   std::lock_guard<std::mutex> lock(mutex_);
   std::string text = headerLine() + '\n';
   text.reserve(rows.size() * 96);  // about a row's length: one allocation instead of a doubling series
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (i % kLinesPerStopCheck == 0) stopIfAsked(stop);
-    appendCsvRow(rows[i], &text);
+    agents::appendCsvRow(rows[i], &text);
   }
   writeFileAtomically(path_, text);
   out_ = std::make_unique<AppendFile>(path_, false);
 }
 
-void OrderedAppender::add(std::size_t number, std::vector<EpisodeResult> rows) {
+void OrderedAppender::add(std::size_t number, std::vector<agents::EpisodeResult> rows) {
   std::lock_guard<std::mutex> lock(mutex_);
   waiting_.emplace(number, std::move(rows));
   while (!waiting_.empty() && waiting_.begin()->first == next_) {

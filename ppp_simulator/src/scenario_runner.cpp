@@ -19,7 +19,7 @@ struct LoadedMap {
   Grid grid;
   Problem problem;
   int budget;
-  std::unique_ptr<EpisodeRunner> runner;
+  std::unique_ptr<agents::EpisodeRunner> runner;
 };
 
 }  // namespace
@@ -45,7 +45,7 @@ std::vector<ScenarioResult> runScenarios(const std::string& scen_path, const Sce
       Grid grid = decodeGrid(problem);  // the map as drawn: the default start and goal are free cells
       EpisodeOptions episode = options.episode;
       if (!options.budget_given) episode.budget = scenarioBudget(grid);
-      auto runner = std::make_unique<EpisodeRunner>(options.agent, episode);
+      auto runner = std::make_unique<agents::EpisodeRunner>(options.agent, episode);
       found = maps.emplace(named->second, LoadedMap{std::move(grid), std::move(problem), episode.budget,
                                                     std::move(runner)}).first;
     }

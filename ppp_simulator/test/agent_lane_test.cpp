@@ -1,4 +1,4 @@
-#include "ppp_simulator/agent_lane.hpp"
+#include "ppp_simulator/experiment_runner.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,8 +16,8 @@ namespace {
 namespace fs = std::filesystem;
 
 /// Two small evolved sets, prepared once for every test.
-const std::vector<PreparedSet>& smallSets() {
-  static const std::vector<PreparedSet> sets = [] {
+const std::vector<agents::PreparedSet>& smallSets() {
+  static const std::vector<agents::PreparedSet> sets = [] {
     ExperimentConfig config;
     config.sets = smallSetSpecs(50, 12);
     const std::string dir = (fs::temp_directory_path() / "agent_lane_test_sets").string();
@@ -33,10 +33,10 @@ agents::AgentConfig config(const std::string& type, int memory = 0, double noise
 
 /// Plays a lane to the end through the real protocol: each batch is encoded as the simulator node sends it,
 /// answered by the agent node's BatchResponder and the answer decoded as the simulator node reads it.
-std::vector<EpisodeResult> playLane(AgentLane& lane) {
+std::vector<agents::EpisodeResult> playLane(agents::AgentLane& lane) {
   protocol::BatchResponder responder(lane.config());
-  std::vector<EpisodeResult> results;
-  std::vector<ScanRequest> scans;
+  std::vector<agents::EpisodeResult> results;
+  std::vector<protocol::ScanRequest> scans;
   ppp_msgs::ScanBatch message;
   for (std::uint32_t batch = 1; !lane.finished(); ++batch) {
     lane.scans(&scans);
@@ -45,22 +45,22 @@ std::vector<EpisodeResult> playLane(AgentLane& lane) {
     EXPECT_EQ(message.cells.empty(), !agents::readsScanWindow(lane.config()) || scans.empty());
     const protocol::DecodedMoves moves = protocol::decodeMoves(responder.answer(message));
     EXPECT_EQ(moves.fault, "");
-    for (EpisodeResult& r : lane.answer(moves.moves, moves.missing_reason)) results.push_back(std::move(r));
+    for (agents::EpisodeResult& r : lane.answer(moves.moves, moves.missing_reason)) results.push_back(std::move(r));
   }
   EXPECT_EQ(responder.rejections().size(), 0u);
   return results;
 }
 
 /// The in-process runner's results for the same runs.
-std::vector<EpisodeResult> inProcess(const agents::AgentConfig& c, int runs,
+std::vector<agents::EpisodeResult> inProcess(const agents::AgentConfig& c, int runs,
                                      const EpisodeOptions& options = EpisodeOptions{}) {
-  std::vector<EpisodeResult> results;
-  EpisodeRunner runner(c, options);
+  std::vector<agents::EpisodeResult> results;
+  agents::EpisodeRunner runner(c, options);
   auto agent = agents::makeAgent(c);
-  for (const PreparedSet& set : smallSets()) {
+  for (const agents::PreparedSet& set : smallSets()) {
     for (std::size_t p = 0; p < set.set.problems.size(); ++p) {
       for (int run = 0; run < runs; ++run) {
-        EpisodeResult r;
+        agents::EpisodeResult r;
         r.set = set.name;
         r.problem = set.set.ids[p];
         r.agent = c.name;
@@ -80,8 +80,8 @@ std::vector<EpisodeResult> inProcess(const agents::AgentConfig& c, int runs,
   return results;
 }
 
-void sortRows(std::vector<EpisodeResult>* rows) {
-  std::sort(rows->begin(), rows->end(), [](const EpisodeResult& a, const EpisodeResult& b) {
+void sortRows(std::vector<agents::EpisodeResult>* rows) {
+  std::sort(rows->begin(), rows->end(), [](const agents::EpisodeResult& a, const agents::EpisodeResult& b) {
     return std::tie(a.set, a.problem, a.run) < std::tie(b.set, b.problem, b.run);
   });
 }
@@ -93,12 +93,12 @@ TEST(AgentLaneTest, BatchedPlayEqualsTheInProcessRunnerForEveryAgentAndBatchSize
     auto expected = inProcess(c, 6);
     sortRows(&expected);
     for (int batch : {1, 7, 100}) {
-      AgentLane lane(c, EpisodeOptions{}, smallSets(), 5, 6, {}, batch);
+      agents::AgentLane lane = experimentLane(c, EpisodeOptions{}, smallSets(), 5, 6, {}, batch);
       auto got = playLane(lane);
       sortRows(&got);
       ASSERT_EQ(got.size(), expected.size());
       for (std::size_t i = 0; i < got.size(); ++i) {
-        EXPECT_EQ(toCsvFields(got[i]), toCsvFields(expected[i])) << c.name << " batch " << batch << " row " << i;
+        EXPECT_EQ(agents::toCsvFields(got[i]), agents::toCsvFields(expected[i])) << c.name << " batch " << batch << " row " << i;
       }
     }
   }
@@ -110,23 +110,23 @@ TEST(AgentLaneTest, BatchedPlayEqualsTheInProcessRunnerUnderConnectivityEight) {
   for (const agents::AgentConfig& c : {config("astar"), config("random")}) {
     auto expected = inProcess(c, 4, octile);
     sortRows(&expected);
-    AgentLane lane(c, octile, smallSets(), 5, 4, {}, 9);
+    agents::AgentLane lane = experimentLane(c, octile, smallSets(), 5, 4, {}, 9);
     auto got = playLane(lane);
     sortRows(&got);
     ASSERT_EQ(got.size(), expected.size());
     for (std::size_t i = 0; i < got.size(); ++i) {
-      EXPECT_EQ(toCsvFields(got[i]), toCsvFields(expected[i])) << c.name << " row " << i;
+      EXPECT_EQ(agents::toCsvFields(got[i]), agents::toCsvFields(expected[i])) << c.name << " row " << i;
     }
   }
   // Sets prepared for connectivity 8 carry octile optimal lengths, which astar's lane meets exactly.
-  std::vector<PreparedSet> octile_sets;
-  for (const PreparedSet& set : smallSets()) octile_sets.push_back(prepareSet(set.name, set.set, octile));
-  AgentLane lane(config("astar"), octile, octile_sets, 5, 1, {}, 9);
+  std::vector<agents::PreparedSet> octile_sets;
+  for (const agents::PreparedSet& set : smallSets()) octile_sets.push_back(agents::prepareSet(set.name, set.set, octile));
+  agents::AgentLane lane = experimentLane(config("astar"), octile, octile_sets, 5, 1, {}, 9);
   int shorter = 0;
-  for (const EpisodeResult& r : playLane(lane)) {
+  for (const agents::EpisodeResult& r : playLane(lane)) {
     EXPECT_TRUE(r.passed);
     EXPECT_NEAR(r.path_length, r.optimal_length, 1e-9) << r.set << " " << r.problem;
-    const PreparedSet& four = smallSets()[r.set == smallSets()[0].name ? 0 : 1];
+    const agents::PreparedSet& four = smallSets()[r.set == smallSets()[0].name ? 0 : 1];
     const auto p = std::find(four.set.ids.begin(), four.set.ids.end(), r.problem) - four.set.ids.begin();
     shorter += r.optimal_length < four.optimal[static_cast<std::size_t>(p)] ? 1 : 0;
   }
@@ -134,12 +134,12 @@ TEST(AgentLaneTest, BatchedPlayEqualsTheInProcessRunnerUnderConnectivityEight) {
 }
 
 TEST(AgentLaneTest, FaultsFailOnlyTheirEpisodes) {
-  AgentLane lane(config("random"), EpisodeOptions{}, smallSets(), 5, 2, {}, 4);
-  std::vector<ScanRequest> scans;
+  agents::AgentLane lane = experimentLane(config("random"), EpisodeOptions{}, smallSets(), 5, 2, {}, 4);
+  std::vector<protocol::ScanRequest> scans;
   lane.scans(&scans);
   ASSERT_EQ(scans.size(), 4u);
   // Episode 0 answered well, 1 for the wrong step, 2 with an unknown action, 3 not at all.
-  const std::vector<MoveReply> moves{{scans[0].episode, 0, 0}, {scans[1].episode, 5, 0}, {scans[2].episode, 0, 9},
+  const std::vector<protocol::MoveReply> moves{{scans[0].episode, 0, 0}, {scans[1].episode, 5, 0}, {scans[2].episode, 0, 9},
                                      {999, 0, 1}};
   const auto ended = lane.answer(moves, reason::kTimeout);
   ASSERT_EQ(ended.size(), 3u);
@@ -154,8 +154,8 @@ TEST(AgentLaneTest, FaultsFailOnlyTheirEpisodes) {
 }
 
 TEST(AgentLaneTest, ASilentAgentIsGivenUpAfterSomeUnansweredBatches) {
-  AgentLane lane(config("random"), EpisodeOptions{}, smallSets(), 5, 2, {}, 4);
-  std::vector<ScanRequest> scans;
+  agents::AgentLane lane = experimentLane(config("random"), EpisodeOptions{}, smallSets(), 5, 2, {}, 4);
+  std::vector<protocol::ScanRequest> scans;
   lane.scans(&scans);
   EXPECT_EQ(lane.unanswered(reason::kTimeout, 2).size(), 4u);  // only the batch's episodes
   EXPECT_FALSE(lane.finished());
@@ -168,9 +168,9 @@ TEST(AgentLaneTest, ASilentAgentIsGivenUpAfterSomeUnansweredBatches) {
 
 TEST(AgentLaneTest, DoneRunsAreSkippedAndBadBatchSizeRefused) {
   std::set<RunKey> done{{"turns", smallSets()[0].set.ids[0], "random_0", 0}};
-  AgentLane lane(config("random"), EpisodeOptions{}, smallSets(), 5, 2, done, 3);
+  agents::AgentLane lane = experimentLane(config("random"), EpisodeOptions{}, smallSets(), 5, 2, done, 3);
   EXPECT_EQ(lane.remaining(), 2 * 4 * 2 - 1);
-  EXPECT_THROW(AgentLane(config("random"), EpisodeOptions{}, smallSets(), 5, 2, {}, 0), InvalidArgument);
+  EXPECT_THROW(experimentLane(config("random"), EpisodeOptions{}, smallSets(), 5, 2, {}, 0), InvalidArgument);
 }
 
 }  // namespace

@@ -61,7 +61,7 @@ TEST(EpisodeAnimationTest, OneFramePerStepPlusTheStartWithTheAgentMovingACellAtA
   const Grid grid = decodeGrid(problem);
   for (const std::string type : {"bumper", "wall_follower_left", "explorer"}) {
     const EpisodeAnimation a = animateEpisode(problem, grid, agentConfig(type), EpisodeOptions{}, 3);
-    EpisodeRunner runner(agentConfig(type), EpisodeOptions{});
+    agents::EpisodeRunner runner(agentConfig(type), EpisodeOptions{});
     auto agent = agents::makeAgent(agentConfig(type));
     const EpisodeOutcome run = runner.run(problem, grid, *agent, 3, true);
     EXPECT_EQ(a.outcome.steps, run.steps) << type;  // the same episode as a run with that seed
@@ -96,9 +96,9 @@ TEST(EpisodeAnimationTest, TheSameSeedGivesTheSameBytes) {
 std::vector<Cell> positionsAfterEachStep(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
                                          std::uint64_t seed) {
   const EpisodeOptions options;
-  EpisodeRunner runner(config, options);
+  agents::EpisodeRunner runner(config, options);
   auto agent = agents::makeAgent(config);
-  agent->reset(episodeInfo(problem, grid, config, seed, options.connectivity));
+  agent->reset(agents::episodeInfo(problem, grid, config, seed, options.connectivity));
   Episode episode(problem, grid, runner.sensor(), seed, options.budget, options.connectivity, true);
   std::vector<Cell> positions = {problem.start};
   while (!episode.done()) {

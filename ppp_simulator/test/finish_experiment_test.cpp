@@ -28,7 +28,7 @@ class FinishExperimentTest : public ::testing::Test {
     sets_ = prepareSets(config_, dir_);
     // Every run, in canonical order, worked out by the nested loops.
     Rng rng(5);
-    for (const PreparedSet& set : sets_) {
+    for (const agents::PreparedSet& set : sets_) {
       for (std::size_t p = 0; p < set.set.ids.size(); ++p) {
         for (const agents::AgentConfig& agent : config_.agents) {
           for (int run = 0; run < config_.runs; ++run) {
@@ -37,7 +37,7 @@ class FinishExperimentTest : public ::testing::Test {
             outcome.steps = outcome.passed ? 5 : 300;
             outcome.reason = outcome.passed ? reason::kGoalReached : reason::kBudgetExhausted;
             const std::uint64_t seed = runSeed(config_.seed, set.name, set.set.ids[p], agent.name, run);
-            canonical_.push_back(episodeResult(set, static_cast<int>(p), agent.name, run, seed, outcome));
+            canonical_.push_back(agents::episodeResult(set, static_cast<int>(p), agent.name, run, seed, outcome));
           }
         }
       }
@@ -46,7 +46,7 @@ class FinishExperimentTest : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
 
   /// results.csv after finishing an experiment whose file holds `rows` in this order.
-  std::string finishedText(const std::vector<EpisodeResult>& rows) {
+  std::string finishedText(const std::vector<agents::EpisodeResult>& rows) {
     fs::remove(resultsPath(dir_));
     ResultsFile results(resultsPath(dir_));
     results.append(rows);
@@ -54,16 +54,16 @@ class FinishExperimentTest : public ::testing::Test {
     return readTextFile(resultsPath(dir_), 1u << 24);
   }
   /// The text of results.csv holding `rows`.
-  static std::string textOf(const std::vector<EpisodeResult>& rows) {
+  static std::string textOf(const std::vector<agents::EpisodeResult>& rows) {
     std::string text = "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason\n";
-    for (const EpisodeResult& r : rows) appendCsvRow(r, &text);
+    for (const agents::EpisodeResult& r : rows) agents::appendCsvRow(r, &text);
     return text;
   }
 
   std::string dir_ = (fs::temp_directory_path() / "finish_experiment_test").string();
   ExperimentConfig config_;
-  std::vector<PreparedSet> sets_;
-  std::vector<EpisodeResult> canonical_;
+  std::vector<agents::PreparedSet> sets_;
+  std::vector<agents::EpisodeResult> canonical_;
 };
 
 TEST_F(FinishExperimentTest, RowsInCanonicalOrderStayAsTheyAre) {
@@ -73,28 +73,28 @@ TEST_F(FinishExperimentTest, RowsInCanonicalOrderStayAsTheyAre) {
 
 TEST_F(FinishExperimentTest, BlocksOfRunsInAnyOrderAreOrdered) {
   // Blocks of one (set, PPP, agent) each, as workers append them, in reverse and in a shuffled order.
-  std::vector<std::vector<EpisodeResult>> blocks;
+  std::vector<std::vector<agents::EpisodeResult>> blocks;
   for (std::size_t i = 0; i < canonical_.size(); i += 4) blocks.emplace_back(&canonical_[i], &canonical_[i] + 4);
-  std::vector<EpisodeResult> reversed;
+  std::vector<agents::EpisodeResult> reversed;
   for (auto b = blocks.rbegin(); b != blocks.rend(); ++b) reversed.insert(reversed.end(), b->begin(), b->end());
   EXPECT_EQ(finishedText(reversed), textOf(canonical_));
   Rng rng(9);
   for (std::size_t i = blocks.size(); i > 1; --i) std::swap(blocks[i - 1], blocks[rng.below(i)]);
-  std::vector<EpisodeResult> shuffled;
+  std::vector<agents::EpisodeResult> shuffled;
   for (const auto& b : blocks) shuffled.insert(shuffled.end(), b.begin(), b.end());
   EXPECT_EQ(finishedText(shuffled), textOf(canonical_));
 }
 
 TEST_F(FinishExperimentTest, OverlappingStretchesAndSingleRowsAreOrdered) {
   // Even runs first, then odd ones: every stretch of rising keys overlaps the others.
-  std::vector<EpisodeResult> interleaved;
+  std::vector<agents::EpisodeResult> interleaved;
   for (int parity : {0, 1}) {
-    for (const EpisodeResult& r : canonical_) {
+    for (const agents::EpisodeResult& r : canonical_) {
       if (r.run % 2 == parity) interleaved.push_back(r);
     }
   }
   EXPECT_EQ(finishedText(interleaved), textOf(canonical_));
-  std::vector<EpisodeResult> shuffled = canonical_;
+  std::vector<agents::EpisodeResult> shuffled = canonical_;
   Rng rng(4);
   for (std::size_t i = shuffled.size(); i > 1; --i) std::swap(shuffled[i - 1], shuffled[rng.below(i)]);
   EXPECT_EQ(finishedText(shuffled), textOf(canonical_));
@@ -102,11 +102,11 @@ TEST_F(FinishExperimentTest, OverlappingStretchesAndSingleRowsAreOrdered) {
 
 TEST_F(FinishExperimentTest, ALostRunPlayedAgainIsReplacedByItsReplay) {
   // Run 1 of the first block was lost to the agent link, then played again at the end (a resume).
-  std::vector<EpisodeResult> rows = canonical_;
-  EpisodeResult lost = rows[1];
+  std::vector<agents::EpisodeResult> rows = canonical_;
+  agents::EpisodeResult lost = rows[1];
   lost.passed = false;
   lost.reason = reason::kAgentLost;
-  const EpisodeResult replay = rows[1];
+  const agents::EpisodeResult replay = rows[1];
   rows[1] = lost;
   rows.push_back(replay);
   EXPECT_EQ(finishedText(rows), textOf(canonical_));

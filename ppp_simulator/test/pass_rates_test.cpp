@@ -13,9 +13,9 @@
 namespace ppp::simulator {
 namespace {
 
-EpisodeResult run(const std::string& set, const std::string& problem, const std::string& agent, bool passed,
+agents::EpisodeResult run(const std::string& set, const std::string& problem, const std::string& agent, bool passed,
                   int steps) {
-  EpisodeResult r;
+  agents::EpisodeResult r;
   r.set = set;
   r.problem = problem;
   r.agent = agent;
@@ -32,7 +32,7 @@ EpisodeResult run(const std::string& set, const std::string& problem, const std:
 //   easy/p10: random 0 of 1, astar 2 of 2
 //   set rates (mean of per-PPP rates): hard/random 0.666667 (1 PPP), hard/astar 1 (2 PPPs),
 //   easy/random (0.25 + 0)/2 = 0.125 — not the pooled 1/5 = 0.2 — and easy/astar 1.
-std::vector<EpisodeResult> handMadeResults() {
+std::vector<agents::EpisodeResult> handMadeResults() {
   return {
       run("easy", "p10", "astar", true, 12), run("hard", "h1", "random", true, 40),
       run("easy", "p2", "random", false, 300), run("easy", "p2", "astar", true, 8),

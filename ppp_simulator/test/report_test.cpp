@@ -37,10 +37,10 @@ class ReportTest : public ::testing::Test {
 };
 
 /// `passes` of 4 runs of `agent` on one PPP.
-void addRuns(std::vector<EpisodeResult>* results, const std::string& set, const std::string& problem,
+void addRuns(std::vector<agents::EpisodeResult>* results, const std::string& set, const std::string& problem,
              const std::string& agent, int passes) {
   for (int run = 0; run < 4; ++run) {
-    EpisodeResult r;
+    agents::EpisodeResult r;
     r.set = set;
     r.problem = problem;
     r.agent = agent;
@@ -64,7 +64,7 @@ Problem walledProblem() {
 //   alpha: astar (4 + 4)/8 → 100.00%, explorer (3/4 + 2/4)/2 → 62.50%, random (1/4 + 0)/2 → 12.50%
 //   beta:  astar 100.00%,             explorer (2/4 + 1/4)/2 → 37.50%, random 0.00%
 ReportInput handMadeInput() {
-  std::vector<EpisodeResult> results;
+  std::vector<agents::EpisodeResult> results;
   addRuns(&results, "alpha", "p1", "astar", 4);
   addRuns(&results, "alpha", "p2", "astar", 4);
   addRuns(&results, "alpha", "p1", "explorer", 3);

@@ -16,8 +16,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-EpisodeResult row(int run, bool passed) {
-  EpisodeResult r;
+agents::EpisodeResult row(int run, bool passed) {
+  agents::EpisodeResult r;
   r.set = "turns";
   r.problem = "ppp_000";
   r.agent = "random";
@@ -62,7 +62,7 @@ TEST_F(ResultsFileTest, AHalfWrittenLastLineIsCutOff) {
 }
 
 TEST_F(ResultsFileTest, AStopWhileReadingLeavesTheFileAsItWas) {
-  std::vector<EpisodeResult> rows;
+  std::vector<agents::EpisodeResult> rows;
   for (int run = 0; run < 40000; ++run) rows.push_back(row(run, run % 3 == 0));
   { ResultsFile(path_).append(rows); }
   std::ofstream(path_, std::ios::app) << "turns,ppp_000,random,40000,10";  // a half-written tail
@@ -110,7 +110,7 @@ TEST(ResultsCsvText, RowsOfTextWithErrorsNamingTheGivenPath) {
 TEST(ResultsCsvText, LengthsAreWholeNumbersOrEightDecimals) {
   // 4-connected lengths are written as the whole numbers they always were; a diagonal's sqrt(2) with eight
   // decimals, which reads back to the same text (a resume rewrites nothing).
-  EpisodeResult r;
+  agents::EpisodeResult r;
   r.set = "s";
   r.problem = "p";
   r.agent = "astar";
@@ -118,29 +118,29 @@ TEST(ResultsCsvText, LengthsAreWholeNumbersOrEightDecimals) {
   r.path_length = 12;
   r.optimal_length = -1;
   std::string line;
-  appendCsvRow(r, &line);
+  agents::appendCsvRow(r, &line);
   EXPECT_EQ(line, "s,p,astar,0,0,0,0,0,12,-1,goal_reached\n");
   r.path_length = 3 + 2 * std::sqrt(2.0);
   r.optimal_length = 5.65685424949238;
   line.clear();
-  appendCsvRow(r, &line);
+  agents::appendCsvRow(r, &line);
   EXPECT_EQ(line, "s,p,astar,0,0,0,0,0,5.82842712,5.65685425,goal_reached\n");
-  const EpisodeResult back = parseCsvRow(line.substr(0, line.size() - 1), "x.csv", 2);
+  const agents::EpisodeResult back = agents::parseCsvRow(line.substr(0, line.size() - 1), "x.csv", 2);
   EXPECT_NEAR(back.path_length, 5.82842712, 1e-12);
   // A length that rounds to a whole number at eight decimals is written as that number (the text of a row read
   // back and written again does not change).
   r.path_length = 7 + 1.5e-9;
   r.optimal_length = 2.999999996;
-  EXPECT_EQ(csvLine(toCsvFields(r)), "s,p,astar,0,0,0,0,0,7,3,goal_reached");
-  EXPECT_THROW(parseCsvRow("s,p,astar,0,0,0,0,0,7,-0.5,goal_reached", "x.csv", 2), ParseError);  // only -1 is negative
+  EXPECT_EQ(csvLine(agents::toCsvFields(r)), "s,p,astar,0,0,0,0,0,7,3,goal_reached");
+  EXPECT_THROW(agents::parseCsvRow("s,p,astar,0,0,0,0,0,7,-0.5,goal_reached", "x.csv", 2), ParseError);  // only -1 is negative
   std::string again;
-  appendCsvRow(back, &again);
+  agents::appendCsvRow(back, &again);
   EXPECT_EQ(again, line);
   for (const std::string bad : {"s,p,a,0,0,0,0,0,long,1,r", "s,p,a,0,0,0,0,0,1,nan,r", "s,p,a,0,0,0,0,0,-2,1,r"}) {
-    EXPECT_THROW(parseCsvRow(bad, "x.csv", 3), ParseError) << bad;
+    EXPECT_THROW(agents::parseCsvRow(bad, "x.csv", 3), ParseError) << bad;
   }
   try {
-    parseCsvRow("s,p,a,0,0,0,0,0,1e99,1,r", "x.csv", 3);
+    agents::parseCsvRow("s,p,a,0,0,0,0,0,1e99,1,r", "x.csv", 3);
     ADD_FAILURE() << "1e99 accepted";
   } catch (const ParseError& e) {
     EXPECT_EQ(std::string(e.what()), "x.csv:3: path_length: expected a length, got '1e99'");
@@ -156,8 +156,8 @@ TEST_F(ResultsFileTest, RewriteKeepsTheGivenOrder) {
   EXPECT_EQ(rows[1].run, 1);
 }
 
-EpisodeResult lost(int run, const char* why) {
-  EpisodeResult r = row(run, false);
+agents::EpisodeResult lost(int run, const char* why) {
+  agents::EpisodeResult r = row(run, false);
   r.reason = why;
   return r;
 }
@@ -176,7 +176,7 @@ TEST_F(ResultsFileTest, LostRunsAreNotDoneAndTheirReplaySupersedesThem) {
   ResultsFile file(path_);
   EXPECT_EQ(file.lostRuns(), 1u);
   EXPECT_EQ(file.done().count(RunKey{"turns", "ppp_000", "random", 2}), 1u);
-  const std::vector<EpisodeResult> standing = standingRows(readResultsFile(path_));
+  const std::vector<agents::EpisodeResult> standing = standingRows(readResultsFile(path_));
   ASSERT_EQ(standing.size(), 4u);
   EXPECT_EQ(standing[0].run, 0);
   EXPECT_EQ(standing[1].run, 3);
@@ -188,7 +188,7 @@ TEST_F(ResultsFileTest, LostRunsAreNotDoneAndTheirReplaySupersedesThem) {
 
 TEST_F(ResultsFileTest, RowsWithoutLostRunsAllStand) {
   // Without lost runs nothing is played twice: even rows of one run (which a resume never writes) are kept.
-  const std::vector<EpisodeResult> rows = {row(0, true), row(0, false), lost(1, "budget_exhausted")};
+  const std::vector<agents::EpisodeResult> rows = {row(0, true), row(0, false), lost(1, "budget_exhausted")};
   EXPECT_EQ(standingRows(rows).size(), 3u);
   EXPECT_FALSE(isLostRun(rows[2]));
   EXPECT_TRUE(isLostRun(lost(1, "timeout")));
@@ -198,7 +198,7 @@ TEST_F(ResultsFileTest, RowsWithoutLostRunsAllStand) {
 /// The runs of the rows in results.csv, in file order.
 std::vector<int> runsInFile(const std::string& path) {
   std::vector<int> runs;
-  for (const EpisodeResult& r : readResultsFile(path)) runs.push_back(r.run);
+  for (const agents::EpisodeResult& r : readResultsFile(path)) runs.push_back(r.run);
   return runs;
 }
 
@@ -220,9 +220,9 @@ TEST_F(ResultsFileTest, OrderedAppenderWritesBlocksInNumberOrder) {
 
 TEST(ResultsCsvText, RowsWrittenAndParsedInOnePassMatchTheFieldByFieldWay) {
   // Names with the characters CSV quotes, and the extremes of every number.
-  std::vector<EpisodeResult> rows;
+  std::vector<agents::EpisodeResult> rows;
   for (const char* name : {"turns", "a,b", "say \"hi\"", "line\rbreak", "", "explorer_memory_5x5"}) {
-    EpisodeResult r;
+    agents::EpisodeResult r;
     r.set = name;
     r.problem = std::string("p_") + name;
     r.agent = name;
@@ -236,26 +236,26 @@ TEST(ResultsCsvText, RowsWrittenAndParsedInOnePassMatchTheFieldByFieldWay) {
     r.reason = name;
     rows.push_back(r);
   }
-  for (const EpisodeResult& r : rows) {
+  for (const agents::EpisodeResult& r : rows) {
     std::string line;
-    appendCsvRow(r, &line);
-    EXPECT_EQ(line, csvLine(toCsvFields(r)) + "\n");
+    agents::appendCsvRow(r, &line);
+    EXPECT_EQ(line, csvLine(agents::toCsvFields(r)) + "\n");
     const std::string content = line.substr(0, line.size() - 1);
-    const EpisodeResult back = parseCsvRow(content, "x.csv", 2);
-    EXPECT_EQ(toCsvFields(back), toCsvFields(r));
-    EXPECT_EQ(toCsvFields(back), toCsvFields(fromCsvFields(splitCsvLine(content, "x.csv", 2), "x.csv", 2)));
+    const agents::EpisodeResult back = agents::parseCsvRow(content, "x.csv", 2);
+    EXPECT_EQ(agents::toCsvFields(back), agents::toCsvFields(r));
+    EXPECT_EQ(agents::toCsvFields(back), agents::toCsvFields(agents::fromCsvFields(agents::splitCsvLine(content, "x.csv", 2), "x.csv", 2)));
   }
   // The same errors as the field-by-field parse, quoted or not.
   for (const std::string bad : {"turns,p,a,1,2,1,3,4,5", "turns,p,a,1,2,1,3,4,5,6,r,extra", "turns,p,a,1,2,yes,3,4,5,6,r",
                                 "\"turns\",p,a,x,2,1,3,4,5,6,r", "turns,p,a,1,-2,1,3,4,5,6,r", "t,p,a,1,2,1,3,4,5,6,\"r"}) {
     std::string fast, slow;
     try {
-      parseCsvRow(bad, "x.csv", 7);
+      agents::parseCsvRow(bad, "x.csv", 7);
     } catch (const ParseError& e) {
       fast = e.what();
     }
     try {
-      fromCsvFields(splitCsvLine(bad, "x.csv", 7), "x.csv", 7);
+      agents::fromCsvFields(agents::splitCsvLine(bad, "x.csv", 7), "x.csv", 7);
     } catch (const ParseError& e) {
       slow = e.what();
     }

@@ -154,8 +154,8 @@ TEST(MannWhitneyU, EmptyOrNonFiniteSampleIsRejectedByName) {
   }
 }
 
-EpisodeResult result(const std::string& set, const std::string& problem, const std::string& agent, bool passed) {
-  EpisodeResult r;
+agents::EpisodeResult result(const std::string& set, const std::string& problem, const std::string& agent, bool passed) {
+  agents::EpisodeResult r;
   r.set = set;
   r.problem = problem;
   r.agent = agent;
@@ -165,7 +165,7 @@ EpisodeResult result(const std::string& set, const std::string& problem, const s
 
 TEST(CompareSets, TestsEachAgentsPerPppRatesBetweenTheSets) {
   // One run per PPP, so per-PPP rates are 0 or 1. "good" passes all of A and none of B; "odd" has no B results.
-  std::vector<EpisodeResult> results;
+  std::vector<agents::EpisodeResult> results;
   for (const char* p : {"p1", "p2", "p3"}) {
     results.push_back(result("A", p, "good", true));
     results.push_back(result("A", p, "odd", false));

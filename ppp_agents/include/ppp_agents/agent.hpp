@@ -4,7 +4,7 @@
 #include <memory>
 #include <string>
 
-#include "ppp_agents/action.hpp"
+#include "ppp_core/action.hpp"
 #include "ppp_core/grid.hpp"
 #include "ppp_core/sensor.hpp"
 

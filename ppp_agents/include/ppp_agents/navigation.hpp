@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "ppp_agents/action.hpp"
+#include "ppp_core/action.hpp"
 #include "ppp_agents/agent_memory.hpp"
 #include "ppp_core/grid.hpp"
 #include "ppp_core/sensor.hpp"

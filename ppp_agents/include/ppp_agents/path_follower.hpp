@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "ppp_agents/action.hpp"
+#include "ppp_core/action.hpp"
 #include "ppp_core/grid.hpp"
 #include "ppp_core/map_frame.hpp"
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "ppp_agents/action.hpp"
+#include "ppp_core/action.hpp"
 #include "ppp_agents/agent.hpp"
 #include "ppp_agents/agent_memory.hpp"
 #include "ppp_agents/path_follower.hpp"

@@ -6,13 +6,6 @@
 namespace ppp {
 namespace protocol {
 
-const char* reason::agentReportedReason(const std::string& text) {
-  for (const char* r : {kNoPath, kInvalidPath, kPlannerTimeout, kPlannerLost}) {
-    if (text == r) return r;
-  }
-  return nullptr;
-}
-
 std::vector<std::int8_t> priorMapCells(const Grid& grid) {
   std::vector<std::int8_t> cells;
   cells.reserve(grid.cells().size());

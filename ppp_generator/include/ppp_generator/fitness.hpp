@@ -60,8 +60,8 @@ std::string fitnessNames();
 /// The registry as an option's choices: each fitness's name and description.
 std::vector<OptionChoice> fitnessChoices();
 
-/// The fitness that is the failure rate of a panel of agents (SPEC 6b); built by the episode engine's
-/// makeFailureFitness (ppp_simulator), or through ROS by the simulator node, not by makeFitness.
+/// The fitness that is the failure rate of a panel of agents (SPEC 6b); built by makeFailureFitness
+/// (failure_fitness.hpp) in process, or through ROS by the simulator node, not by makeFitness.
 constexpr const char* kFailureFitness = "failure";
 
 /// PPPs a failure fitness scores per batch (and matings per round of a hunt), in process and through ROS.

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "ppp_core/stop.hpp"
-#include "ppp_simulator/episode_result.hpp"
+#include "ppp_agents/episode_result.hpp"
 #include "ppp_simulator/experiment_config.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
 
@@ -15,8 +15,8 @@ namespace simulator {
 /// finished results.csv does not depend on threads, batches or interruptions; returns whether any row moved
 /// (rows already in that order, as ppp experiment appends them, are left alone). `path` is named in errors.
 /// @throws ParseError (a row of a set or agent not in the experiment), Interrupted.
-bool putInCanonicalOrder(std::vector<EpisodeResult>* rows, const ExperimentConfig& config,
-                         const std::vector<PreparedSet>& sets, const std::string& path, const StopCheck& stop = {});
+bool putInCanonicalOrder(std::vector<agents::EpisodeResult>* rows, const ExperimentConfig& config,
+                         const std::vector<agents::PreparedSet>& sets, const std::string& path, const StopCheck& stop = {});
 
 }  // namespace simulator
 }  // namespace ppp

@@ -8,7 +8,7 @@
 #include "ppp_core/picture.hpp"
 #include "ppp_core/problem.hpp"
 #include "ppp_core/stop.hpp"
-#include "ppp_simulator/episode.hpp"
+#include "ppp_agents/episode_runner.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -42,7 +42,7 @@ constexpr Rgb kUnsensedColour{214, 214, 222};  ///< Free cells the agent does no
 
 /// An animated episode: how it went and its GIF.
 struct EpisodeAnimation {
-  EpisodeOutcome outcome;  ///< The episode, as EpisodeRunner::run gives it with its path.
+  EpisodeOutcome outcome;  ///< The episode, as agents::EpisodeRunner::run gives it with its path.
   std::string gif;         ///< The GIF file's bytes.
   int frames = 0;          ///< Frames in the GIF: floor(steps / stride) + 1, and one more for the last step
                            ///< when stride does not divide steps (steps + 1 when stride is 1); at most max_frames.

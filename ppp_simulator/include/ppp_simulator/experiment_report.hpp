@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "ppp_simulator/episode_result.hpp"
+#include "ppp_agents/episode_result.hpp"
 #include "ppp_simulator/experiment_config.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
 #include "ppp_simulator/pass_rates.hpp"
@@ -23,21 +23,21 @@ constexpr int kReportAnimationFrames = 301;
 /// PPPs), replayed to recover its path and animated (maps up to kReportAnimationMaxSide); `groups` are the
 /// experiment's results grouped (groupResults()). @throws Interrupted when `stop`, asked before each failure
 /// and each frame, says stop.
-std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
+std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets,
                                             const std::vector<ResultGroup>& groups, int count,
                                             const StopCheck& stop = {});
 
 /// Per agent (but the astar control, the random baseline and planners), the first failing run on its worst PPP
 /// (lowest pass rate over every set; the first of equals), replayed for its path and animated as above; agents
 /// that never fail are left out. @throws Interrupted as hardestFailures().
-std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const std::vector<PreparedSet>& sets,
+std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets,
                                           const std::vector<ResultGroup>& groups, const StopCheck& stop = {});
 
 /// Writes summary.csv and report.{md,html} (with plots and pictures) of a finished experiment into `dir`;
 /// `stop` is asked between the pieces (the pass rates, the failures replayed, each picture and file).
 /// @throws IoError, Interrupted (every file written by then is whole: a rerun writes them all again).
 void writeExperimentReport(const std::string& dir, const ExperimentConfig& config, const std::string& config_text,
-                           const std::vector<PreparedSet>& sets, const std::vector<EpisodeResult>& rows,
+                           const std::vector<agents::PreparedSet>& sets, const std::vector<agents::EpisodeResult>& rows,
                            const StopCheck& stop = {});
 
 }  // namespace simulator

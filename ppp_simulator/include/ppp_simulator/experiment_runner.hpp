@@ -4,54 +4,37 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "ppp_core/window_atlas.hpp"
+#include "ppp_agents/agent_lane.hpp"
+#include "ppp_agents/prepared_set.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_core/stop.hpp"
-#include "ppp_simulator/episode.hpp"
-#include "ppp_simulator/episode_result.hpp"
+#include "ppp_agents/episode_runner.hpp"
+#include "ppp_agents/episode_result.hpp"
 #include "ppp_simulator/experiment_config.hpp"
 #include "ppp_simulator/results_file.hpp"
 
 namespace ppp {
 namespace simulator {
 
-/// A PPP set ready to run: its PPPs, decoded grids and optimal lengths.
-struct PreparedSet {
-  std::string name;              ///< Set name.
-  std::string directory;         ///< The set's directory (PPP files, set.csv, trees, any archive).
-  generator::ProblemSet set;     ///< The PPPs and their evaluations.
-  std::vector<Grid> grids;       ///< Decoded grid of each PPP.
-  std::vector<double> optimal;   ///< Optimal length of each PPP: fewest moves (connectivity 4), octile length (8).
-  /// Each PPP's WindowAtlas at the experiment's sensor range, when it fits kMaxWindowAtlasBytes.
-  std::vector<std::optional<WindowAtlas>> windows;
-};
-
-/// PPP `problem`'s WindowAtlas in `set`, or nullptr when it has none.
-inline const WindowAtlas* windowsOf(const PreparedSet& set, int problem) {
-  const std::optional<WindowAtlas>& windows = set.windows[problem];
-  return windows ? &*windows : nullptr;
-}
-
 /// The seed of one run, derived from the experiment seed and the run's names (not positions), so adding
 /// an agent or a set leaves every other run's seed unchanged.
 std::uint64_t runSeed(std::uint64_t experiment_seed, const std::string& set, const std::string& problem,
                       const std::string& agent, int run);
 
-/// The results.csv row of one run of `agent` on PPP `problem` of `set`.
-EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::string& agent, int run,
-                            std::uint64_t seed, const EpisodeOutcome& outcome);
-
-/// A set ready to play under `episode`'s rules: its grids, optimal lengths (the fewest moves, or the octile
-/// length under connectivity 8) and window atlases at the sensor range.
-/// @throws InvalidArgument naming "sets" for an unsolvable PPP.
-PreparedSet prepareSet(const std::string& name, generator::ProblemSet set, const EpisodeOptions& episode);
+/// The lane of every run of `config` on every PPP of `sets` not in `done`, seeded by runSeed() with
+/// `experiment_seed`. @throws InvalidArgument.
+agents::AgentLane experimentLane(const agents::AgentConfig& config, const EpisodeOptions& options,
+                                 const std::vector<agents::PreparedSet>& sets, std::uint64_t experiment_seed, int runs,
+                                 const std::set<RunKey>& done, int batch_size);
 
 /// Generates (or reads) every set of the experiment into `dir`/sets/<name>/, reusing sets already there; a set
 /// being generated when `stop` says stop is not written. @throws IoError, ParseError, InvalidArgument, Interrupted.
-std::vector<PreparedSet> prepareSets(const ExperimentConfig& config, const std::string& dir,
+std::vector<agents::PreparedSet> prepareSets(const ExperimentConfig& config, const std::string& dir,
                                      const std::function<void(const std::string&)>& log = {},
                                      const StopCheck& stop = {});
 
@@ -62,7 +45,7 @@ void openExperimentDirectory(const ExperimentConfig& config, const std::string& 
 /// openExperimentDirectory(), then prepareSets() (the first half of an
 /// experiment, shared by runExperiment() and the ROS simulator node).
 /// @throws IoError, ParseError, InvalidArgument, Interrupted.
-std::vector<PreparedSet> beginExperiment(const ExperimentConfig& config, const std::string& dir,
+std::vector<agents::PreparedSet> beginExperiment(const ExperimentConfig& config, const std::string& dir,
                                          const std::function<void(const std::string&)>& log = {},
                                          const StopCheck& stop = {});
 
@@ -73,7 +56,7 @@ std::string resultsPath(const std::string& dir);
 /// `stop` is asked while reading and between the steps, each of which replaces its files whole; `log` hears
 /// each step begin. @throws IoError, ParseError, Interrupted.
 void finishExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
-                      const std::vector<PreparedSet>& sets, ResultsFile* results, const StopCheck& stop = {},
+                      const std::vector<agents::PreparedSet>& sets, ResultsFile* results, const StopCheck& stop = {},
                       const std::function<void(const std::string&)>& log = {});
 
 /// What runExperiment() did.

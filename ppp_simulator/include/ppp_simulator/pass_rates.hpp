@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "ppp_simulator/episode_result.hpp"
+#include "ppp_agents/episode_result.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -46,17 +46,17 @@ struct PassRateTable {
 
 /// Consecutive results of one (set, PPP, agent): how many ran and passed, their steps, the first failing run.
 struct ResultGroup {
-  const EpisodeResult* row = nullptr;         ///< The group's first result (its set, problem and agent).
+  const agents::EpisodeResult* row = nullptr;         ///< The group's first result (its set, problem and agent).
   std::size_t index = 0;                      ///< Its position in the results.
   int runs = 0;                               ///< Results in the group.
   int passes = 0;                             ///< Of them, passed.
   double steps = 0;                           ///< Their steps, summed.
-  const EpisodeResult* first_fail = nullptr;  ///< The failed result with the lowest run number, or nullptr.
+  const agents::EpisodeResult* first_fail = nullptr;  ///< The failed result with the lowest run number, or nullptr.
 };
 
 /// Groups consecutive results with the same set, problem and agent in one pass (results in canonical order give
 /// one group per key; results of one key apart from each other give several groups).
-std::vector<ResultGroup> groupResults(const std::vector<EpisodeResult>& results);
+std::vector<ResultGroup> groupResults(const std::vector<agents::EpisodeResult>& results);
 
 /// Orders PPP ids naturally: runs of digits compare as numbers ("p2" < "p10"), the rest byte by byte.
 bool naturalLess(const std::string& a, const std::string& b);
@@ -65,7 +65,7 @@ bool naturalLess(const std::string& a, const std::string& b);
 /// report order and must name every set and agent that occurs in `results`, each once.
 /// @throws InvalidArgument naming "set_order" or "agent_order" for an empty or duplicate name, and
 /// "results" for a result whose set or agent is not in the orders or whose problem id is empty.
-PassRateTable computePassRates(const std::vector<EpisodeResult>& results, const std::vector<std::string>& set_order,
+PassRateTable computePassRates(const std::vector<agents::EpisodeResult>& results, const std::vector<std::string>& set_order,
                                const std::vector<std::string>& agent_order);
 
 /// computePassRates() of the results `groups` were made from.

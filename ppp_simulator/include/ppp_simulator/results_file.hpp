@@ -10,7 +10,7 @@
 
 #include "ppp_core/append_file.hpp"
 #include "ppp_core/stop.hpp"
-#include "ppp_simulator/episode_result.hpp"
+#include "ppp_agents/episode_result.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -19,15 +19,15 @@ namespace simulator {
 using RunKey = std::tuple<std::string, std::string, std::string, int>;
 
 /// The identity of a row's run.
-RunKey runKey(const EpisodeResult& row);
+RunKey runKey(const agents::EpisodeResult& row);
 
 /// Whether a row records a run lost to the simulator <-> agent link rather than played out: the agent process did
 /// not answer in time (timeout) or went away (agent_lost), as when a node crashes or a network link is cut. Such a
 /// row says nothing about the agent, so a resume plays the run again and its new row supersedes this one.
-bool isLostRun(const EpisodeResult& row);
+bool isLostRun(const agents::EpisodeResult& row);
 
 /// The rows of `rows` that stand, in their order: of several rows of one run (a lost run played again), the last.
-std::vector<EpisodeResult> standingRows(std::vector<EpisodeResult> rows);
+std::vector<agents::EpisodeResult> standingRows(std::vector<agents::EpisodeResult> rows);
 
 /// results.csv of an experiment, appended to as runs finish (each batch written whole, or not at all when the
 /// disk is full), so that nothing written is lost when the process dies; reopening it resumes: the rows already
@@ -39,21 +39,21 @@ class ResultsFile {
   /// @throws IoError, ParseError (a header or row that is not ours), Interrupted.
   explicit ResultsFile(const std::string& path, const StopCheck& stop = {});
   /// The rows present when the file was opened.
-  const std::vector<EpisodeResult>& existing() const { return existing_; }
+  const std::vector<agents::EpisodeResult>& existing() const { return existing_; }
   /// Keys of the runs present when the file was opened, lost runs excepted.
   const std::set<RunKey>& done() const { return done_; }
   /// How many runs present when the file was opened were lost (and are not done).
   std::size_t lostRuns() const { return lost_.size(); }
   /// Appends rows in one write; safe to call from several threads. @throws IoError naming the file and the
   /// system's reason (the file is then as before the call).
-  void append(const std::vector<EpisodeResult>& rows);
+  void append(const std::vector<agents::EpisodeResult>& rows);
   /// Rewrites the file atomically with `rows` in the given order, asking `stop` as it goes (the file is then
   /// as before). @throws IoError, Interrupted.
-  void rewrite(const std::vector<EpisodeResult>& rows, const StopCheck& stop = {});
+  void rewrite(const std::vector<agents::EpisodeResult>& rows, const StopCheck& stop = {});
 
  private:
   std::string path_;
-  std::vector<EpisodeResult> existing_;
+  std::vector<agents::EpisodeResult> existing_;
   std::set<RunKey> done_;
   std::set<RunKey> lost_;
   std::mutex mutex_;
@@ -61,11 +61,11 @@ class ResultsFile {
 };
 
 /// Reads every row of a results.csv, asking `stop` as it goes. @throws IoError, ParseError, Interrupted.
-std::vector<EpisodeResult> readResultsFile(const std::string& path, const StopCheck& stop = {});
+std::vector<agents::EpisodeResult> readResultsFile(const std::string& path, const StopCheck& stop = {});
 
 /// readResultsFile() on text: the rows of results.csv text read from `path` (named in errors); a half-written
 /// last line is left out. @throws ParseError, Interrupted.
-std::vector<EpisodeResult> parseResultsCsv(const std::string& text, const std::string& path,
+std::vector<agents::EpisodeResult> parseResultsCsv(const std::string& text, const std::string& path,
                                            const StopCheck& stop = {});
 
 /// Appends numbered blocks of rows (0, 1, 2, ...) to a ResultsFile in number order, whatever order they are
@@ -77,7 +77,7 @@ class OrderedAppender {
   explicit OrderedAppender(ResultsFile* file) : file_(file) {}
   /// Block `number` is finished: it is written, with every waiting block after it, once no lower number is
   /// missing. @throws IoError (see ResultsFile::append).
-  void add(std::size_t number, std::vector<EpisodeResult> rows);
+  void add(std::size_t number, std::vector<agents::EpisodeResult> rows);
   /// Writes every waiting block now, in number order (when the work stops before every block is finished).
   /// @throws IoError.
   void flush();
@@ -86,7 +86,7 @@ class OrderedAppender {
   ResultsFile* file_;
   std::mutex mutex_;
   std::size_t next_ = 0;                                      // the lowest number not written yet
-  std::map<std::size_t, std::vector<EpisodeResult>> waiting_;  // finished blocks above it
+  std::map<std::size_t, std::vector<agents::EpisodeResult>> waiting_;  // finished blocks above it
 };
 
 }  // namespace simulator

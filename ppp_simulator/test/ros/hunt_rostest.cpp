@@ -17,7 +17,7 @@
 #include "ppp_msgs/EvaluateProblems.h"
 #include "ppp_msgs/conversions.h"
 #include "ppp_simulator/experiment_config.hpp"
-#include "ppp_simulator/failure_fitness.hpp"
+#include "ppp_generator/failure_fitness.hpp"
 #include "ros_test_support.hpp"
 
 namespace ppp {
@@ -75,14 +75,14 @@ TEST_F(HuntTest, BuiltInAgentsAreJudgedAsInProcess) {
   ASSERT_EQ(call.response.evaluations.size(), 2u);
   // The same runs in process.
   const ExperimentConfig config = loadExperimentConfig(kConfig);
-  FailurePanel panel;
-  panel.agents = resolvePanel({"wall_follower_left", "bumper"}, config.agents);
+  generator::FailurePanel panel;
+  panel.agents = generator::resolvePanel({"wall_follower_left", "bumper"}, config.agents);
   panel.runs_per_eval = 6;
   panel.seed = 7;
   const std::vector<Problem> problems = twoProblems();
   std::vector<Grid> grids;
   for (const Problem& p : problems) grids.push_back(decodeGrid(p));
-  const auto expected = estimateFailures(panel, {&problems[0], &problems[1]}, {&grids[0], &grids[1]});
+  const auto expected = generator::estimateFailures(panel, {&problems[0], &problems[1]}, {&grids[0], &grids[1]});
   for (std::size_t i = 0; i < 2; ++i) {
     EXPECT_EQ(call.response.evaluations[i].failure_rate, expected[i].failure_rate) << i;
     EXPECT_EQ(call.response.evaluations[i].budget_used, expected[i].budget_used) << i;
@@ -157,7 +157,7 @@ TEST_F(HuntTest, AHuntThroughRosWritesTheSetAnInProcessHuntWrites) {
   options.seed = 5;
   const ExperimentConfig config = loadExperimentConfig(kConfig);
   const std::string in_process = scratch("in_process_hunt");
-  generator::evolveSetDirectory(in_process, options, fitnessFor(options, config.agents, config.episode, 1));
+  generator::evolveSetDirectory(in_process, options, generator::fitnessFor(options, config.agents, config.episode, 1));
   EXPECT_EQ(filesOf(out), filesOf(in_process));
 }
 
@@ -168,7 +168,7 @@ TEST_F(HuntTest, AHuntAgainstASilentPlannerEndsWithEveryPppFailed) {
                  "_agents:=silent_planner _population:=3 _matings:=1 _runs_per_eval:=1 _output_dir:=" + out, &log),
             0)
       << log;
-  const generator::ProblemSet set = generator::readProblemSetDirectory(out);
+  const ProblemSet set = generator::readProblemSetDirectory(out);
   ASSERT_EQ(set.problems.size(), 3u);
   for (double value : set.fitness_values) EXPECT_EQ(value, 1.0);
   EXPECT_NE(log.find("failed as planner_timeout"), std::string::npos) << log;

@@ -23,21 +23,21 @@ using test::scratch;
 const std::string kTestDir = PPP_ROS_TEST_DIR;
 
 /// Runs simulator_node on `config`; returns the rows of results.csv (the test fails when the node does).
-std::vector<EpisodeResult> runExperiment(const std::string& name, const std::string& config, std::string* out) {
+std::vector<agents::EpisodeResult> runExperiment(const std::string& name, const std::string& config, std::string* out) {
   *out = scratch(name);
   Child simulator(std::string(SIMULATOR_NODE) + " __name:=sim_" + name + " _config:=" + kTestDir + "/" + config +
                       " _output_dir:=" + *out + " _record:=false _connect_timeout:=60",
                   *out + ".log");
   const int status = simulator.wait();
   EXPECT_EQ(status, 0) << simulator.output();
-  return status == 0 ? readResultsFile(*out + "/results.csv") : std::vector<EpisodeResult>{};
+  return status == 0 ? readResultsFile(*out + "/results.csv") : std::vector<agents::EpisodeResult>{};
 }
 
 /// reason[agent][problem] -> count.
 std::map<std::string, std::map<std::string, std::map<std::string, int>>> reasons(
-    const std::vector<EpisodeResult>& rows) {
+    const std::vector<agents::EpisodeResult>& rows) {
   std::map<std::string, std::map<std::string, std::map<std::string, int>>> out;
-  for (const EpisodeResult& r : rows) ++out[r.agent][r.problem][r.reason];
+  for (const agents::EpisodeResult& r : rows) ++out[r.agent][r.problem][r.reason];
   return out;
 }
 
@@ -56,7 +56,7 @@ TEST(PlannerExperimentTest, ExamplePlannersPassAndFaultyPlannersFailWithTheirRea
   EXPECT_EQ(r["straight_planner"]["open"]["goal_reached"], 1);
   EXPECT_EQ(r["straight_planner"]["wall"]["invalid_path"], 1);
   EXPECT_EQ(r["straight_planner"]["hidden"]["invalid_path"], 1);
-  for (const EpisodeResult& row : rows) {
+  for (const agents::EpisodeResult& row : rows) {
     if (row.agent == "ompl") EXPECT_EQ(row.bumps, 0) << row.problem;
   }
   // The planners' results are in the report beside any other agent's.

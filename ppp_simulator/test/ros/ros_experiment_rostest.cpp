@@ -125,7 +125,7 @@ TEST(RosExperimentTest, EvolvedSetsComeFromTheGeneratorNodesMessages) {
   ros::NodeHandle nh;
   std::vector<ros::Publisher> publishers;
   for (const std::string name : {"turns", "difficulty"}) {
-    const generator::ProblemSet set = generator::readProblemSetDirectory(referenceRun() + "/sets/" + name);
+    const ProblemSet set = generator::readProblemSetDirectory(referenceRun() + "/sets/" + name);
     ppp_msgs::ProblemSet message;
     message.name = name;
     for (std::size_t i = 0; i < set.problems.size(); ++i) {

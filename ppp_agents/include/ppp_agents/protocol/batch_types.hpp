@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ppp_agents/agent.hpp"
+#include "ppp_core/episode_reason.hpp"
 #include "ppp_core/grid.hpp"
 
 namespace ppp {
@@ -15,22 +16,6 @@ namespace protocol {
 // The simulator <-> agent batch protocol (ppp_msgs/ScanBatch, ppp_msgs/MoveBatch) as plain types: the simulator's
 // lanes produce ScanRequests and take MoveReplys; batch_codec.hpp turns them into messages and back. ROS-free.
 // Cells are in the core grid convention (x right, y down).
-
-/// Why an episode ended: results.csv's `reason`, ppp_msgs/EpisodeResults and ppp_msgs/EpisodeFailure.
-namespace reason {
-constexpr const char* kGoalReached = "goal_reached";          ///< Pass: the agent stands on the goal.
-constexpr const char* kBudgetExhausted = "budget_exhausted";  ///< Fail: the move budget is spent.
-constexpr const char* kTimeout = "timeout";                   ///< Fail (ROS): the agent did not answer in time.
-constexpr const char* kAgentLost = "agent_lost";              ///< Fail (ROS): the agent process went away.
-constexpr const char* kInvalidAction = "invalid_action";      ///< Fail (ROS): the agent sent something unusable.
-constexpr const char* kNoPath = "no_path";                    ///< Fail (planner): it published an empty path.
-constexpr const char* kInvalidPath = "invalid_path";          ///< Fail (planner): its path was unusable.
-constexpr const char* kPlannerTimeout = "planner_timeout";    ///< Fail (planner): no path in time.
-constexpr const char* kPlannerLost = "planner_lost";          ///< Fail (planner): its process went away.
-/// The reason constant equal to `text` among those an agent may report itself (the four planner ones), or
-/// nullptr.
-const char* agentReportedReason(const std::string& text);
-}  // namespace reason
 
 /// What an agent is told when an episode starts (sent with its first scan).
 struct EpisodeStart {
@@ -62,7 +47,7 @@ struct ScanRequest {
 struct MoveReply {
   std::uint32_t episode = 0;      ///< The episode answered.
   std::uint32_t step = 0;         ///< The step answered.
-  int action = 0;                 ///< An agents::Action number (anything else is invalid).
+  int action = 0;                 ///< An Action number (anything else is invalid).
   const char* failure = nullptr;  ///< The agent gives the episode up for this reason (a reason:: constant).
 };
 

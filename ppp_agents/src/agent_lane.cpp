@@ -1,43 +1,30 @@
-#include "ppp_simulator/agent_lane.hpp"
+#include "ppp_agents/agent_lane.hpp"
 
 #include <string>
 #include <unordered_map>
 
+#include "ppp_agents/episode_runner.hpp"
 #include "ppp_core/error.hpp"
 
 namespace ppp {
-namespace simulator {
+namespace agents {
 
-AgentLane::AgentLane(const agents::AgentConfig& config, const EpisodeOptions& options,
-                     const std::vector<PreparedSet>& sets, std::uint64_t experiment_seed, int runs,
-                     const std::set<RunKey>& done, int batch_size)
-    : AgentLane(config, options, sets,
-                [&sets, experiment_seed, name = config.name](int set, int problem, int run) {
-                  return runSeed(experiment_seed, sets[set].name, sets[set].set.ids[problem], name, run);
-                },
-                0, batch_size) {
-  for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
-    for (int p = 0; p < static_cast<int>(sets[s].set.ids.size()); ++p) {
-      for (int run = 0; run < runs; ++run) {
-        if (done.count(RunKey{sets[s].name, sets[s].set.ids[p], config.name, run}) == 0) queue_.push_back({s, p, run});
-      }
-    }
-  }
-}
-
-AgentLane::AgentLane(const agents::AgentConfig& config, const EpisodeOptions& options,
-                     const std::vector<PreparedSet>& sets, SeedFunction seed_of, int runs, int batch_size)
+AgentLane::AgentLane(const AgentConfig& config, const EpisodeOptions& options,
+                     const std::vector<PreparedSet>& sets, SeedFunction seed_of, int runs, int batch_size,
+                     const SkipFunction& skip)
     : config_((config.validate(), config)),
       options_((options.validate(), options)),
       sets_(sets),
       seed_of_(std::move(seed_of)),
-      batch_size_(agents::isPlanner(config) ? 1 : batch_size),
-      reads_window_(agents::readsScanWindow(config)),
+      batch_size_(isPlanner(config) ? 1 : batch_size),
+      reads_window_(readsScanWindow(config)),
       sensor_(SensorOptions{options.sensor_range, config.sensor_noise}) {
   if (batch_size < 1) throw InvalidArgument("batch_size", "expected at least 1, got " + std::to_string(batch_size));
   for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
     for (int p = 0; p < static_cast<int>(sets[s].set.ids.size()); ++p) {
-      for (int run = 0; run < runs; ++run) queue_.push_back({s, p, run});
+      for (int run = 0; run < runs; ++run) {
+        if (!skip || !skip(s, p, run)) queue_.push_back({s, p, run});
+      }
     }
   }
 }
@@ -77,7 +64,7 @@ void AgentLane::scans(std::vector<ScanRequest>* requests) {
     if (!a.started) {
       const PreparedSet& set = sets_[a.work.set];
       const Grid& grid = set.grids[a.work.problem];
-      const agents::EpisodeInfo info = episodeInfo(set.set.problems[a.work.problem], grid, config_, a.seed, options_.connectivity);
+      const EpisodeInfo info = episodeInfo(set.set.problems[a.work.problem], grid, config_, a.seed, options_.connectivity);
       EpisodeStart start{info.width, info.height, info.start, info.goal, info.seed, {}, info.connectivity};
       if (info.prior_map != nullptr) start.prior_map = protocol::priorMapCells(grid);
       r.start = std::move(start);
@@ -119,10 +106,10 @@ std::vector<EpisodeResult> AgentLane::answer(const std::vector<MoveReply>& moves
       a.episode.fail(missing_reason);
     } else if (move->failure != nullptr) {
       a.episode.fail(move->failure);
-    } else if (static_cast<int>(move->step) != a.episode.step() || !agents::isAction(move->action, options_.connectivity)) {
+    } else if (static_cast<int>(move->step) != a.episode.step() || !isAction(move->action, options_.connectivity)) {
       a.episode.fail(reason::kInvalidAction);
     } else {
-      a.episode.apply(static_cast<agents::Action>(move->action));
+      a.episode.apply(static_cast<Action>(move->action));
     }
     if (a.episode.done()) {
       finished.push_back(result(a.work, a.seed, a.episode.outcome()));
@@ -151,5 +138,5 @@ std::vector<EpisodeResult> AgentLane::failAll(const char* why) {
   return failed;
 }
 
-}  // namespace simulator
+}  // namespace agents
 }  // namespace ppp

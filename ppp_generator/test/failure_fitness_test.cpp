@@ -1,6 +1,6 @@
 // The failure fitness: exact figures on a hand-made map, determinism, panels and whole hunts.
 
-#include "ppp_simulator/failure_fitness.hpp"
+#include "ppp_generator/failure_fitness.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,7 +18,7 @@
 #include "ppp_generator/set_evolution.hpp"
 
 namespace ppp {
-namespace simulator {
+namespace generator {
 namespace {
 
 namespace fs = std::filesystem;
@@ -57,11 +57,11 @@ TEST(FailureFitnessTest, HandWorkedFiguresOnTheIsland) {
   ASSERT_EQ(estimates.size(), 1u);
   EXPECT_DOUBLE_EQ(estimates[0].failure_rate, 0.5);
   EXPECT_NEAR(estimates[0].budget_used, (1.0 + 38.0 / 300.0) / 2.0, 1e-12);
-  const generator::Fitness fitness = makeFailureFitness(panel);
+  const Fitness fitness = makeFailureFitness(panel);
   const auto scores = fitness.batch({&problem}, {&grid});
   EXPECT_DOUBLE_EQ(scores[0].value, 0.5);
   EXPECT_NEAR(scores[0].score, 0.5 + 0.001 * (1.0 + 38.0 / 300.0) / 2.0, 1e-12);
-  EXPECT_EQ(fitness.batch_size, generator::kFailureBatchSize);
+  EXPECT_EQ(fitness.batch_size, kFailureBatchSize);
 }
 
 TEST(FailureFitnessTest, APppIsJudgedTheSameWhateverItsBatchPositionOrThreads) {
@@ -148,8 +148,8 @@ TEST(FailureFitnessTest, AHuntIsByteIdenticalForASeedAndFindsFailures) {
   const fs::path root = fs::temp_directory_path() / "failure_fitness_test";
   fs::remove_all(root);
   for (const std::string& archive : {generator::kNoArchive, generator::kMapElitesArchive}) {
-    generator::GeneratorOptions o;
-    o.fitness = generator::kFailureFitness;
+    GeneratorOptions o;
+    o.fitness = kFailureFitness;
     o.agents = {"wall_follower_left", "bumper"};
     o.runs_per_eval = 4;
     o.population = 16;
@@ -172,5 +172,5 @@ TEST(FailureFitnessTest, AHuntIsByteIdenticalForASeedAndFindsFailures) {
 }
 
 }  // namespace
-}  // namespace simulator
+}  // namespace generator
 }  // namespace ppp

@@ -8,14 +8,15 @@
 #include <vector>
 
 #include "ppp_agents/agent_config.hpp"
+#include "ppp_agents/episode_result.hpp"
+#include "ppp_agents/prepared_set.hpp"
 #include "ppp_agents/protocol/batch_types.hpp"
-#include "ppp_simulator/episode.hpp"
-#include "ppp_simulator/episode_result.hpp"
-#include "ppp_simulator/experiment_runner.hpp"
-#include "ppp_simulator/results_file.hpp"
+#include "ppp_core/episode.hpp"
+#include "ppp_core/episode_options.hpp"
+#include "ppp_core/sensor.hpp"
 
 namespace ppp {
-namespace simulator {
+namespace agents {
 
 // The lane speaks the batch protocol's plain types (ppp_agents/protocol/batch_types.hpp).
 using protocol::EpisodeStart;
@@ -30,14 +31,12 @@ class AgentLane {
  public:
   /// The seed of run `run` of the lane's agent on PPP `problem` of set `set` (indices into the lane's sets).
   using SeedFunction = std::function<std::uint64_t(int set, int problem, int run)>;
-  /// Queues every run of `config` on every PPP of `sets` not in `done`; run seeds from runSeed() with
-  /// `experiment_seed`. @throws InvalidArgument.
-  AgentLane(const agents::AgentConfig& config, const EpisodeOptions& options, const std::vector<PreparedSet>& sets,
-            std::uint64_t experiment_seed, int runs, const std::set<RunKey>& done, int batch_size);
-  /// Queues `runs` runs of `config` on every PPP of `sets`, seeded by `seed_of` (a hunt's evaluations).
-  /// @throws InvalidArgument.
-  AgentLane(const agents::AgentConfig& config, const EpisodeOptions& options, const std::vector<PreparedSet>& sets,
-            SeedFunction seed_of, int runs, int batch_size);
+  /// Whether run `run` on PPP `problem` of set `set` is already done and is not played (a resumed experiment).
+  using SkipFunction = std::function<bool(int set, int problem, int run)>;
+  /// Queues `runs` runs of `config` on every PPP of `sets`, seeded by `seed_of`, except those `skip` says are
+  /// done. @throws InvalidArgument.
+  AgentLane(const AgentConfig& config, const EpisodeOptions& options, const std::vector<PreparedSet>& sets,
+            SeedFunction seed_of, int runs, int batch_size, const SkipFunction& skip = {});
   /// True when no run is waiting or active.
   bool finished() const { return queue_.empty() && active_.empty(); }
   /// Runs not yet finished (active or queued).
@@ -57,7 +56,7 @@ class AgentLane {
   /// Fails every active and queued run with `reason` (the agent is gone) and returns their results.
   std::vector<EpisodeResult> failAll(const char* reason);
   /// The configuration served.
-  const agents::AgentConfig& config() const { return config_; }
+  const AgentConfig& config() const { return config_; }
 
  private:
   struct Work {
@@ -74,7 +73,7 @@ class AgentLane {
   };
   EpisodeResult result(const Work& work, std::uint64_t seed, const EpisodeOutcome& outcome) const;
 
-  agents::AgentConfig config_;
+  AgentConfig config_;
   EpisodeOptions options_;
   const std::vector<PreparedSet>& sets_;
   SeedFunction seed_of_;
@@ -87,5 +86,5 @@ class AgentLane {
   int silent_batches_ = 0;
 };
 
-}  // namespace simulator
+}  // namespace agents
 }  // namespace ppp

@@ -1,4 +1,4 @@
-#include "ppp_simulator/episode_result.hpp"
+#include "ppp_agents/episode_result.hpp"
 
 #include <array>
 #include <charconv>
@@ -8,7 +8,7 @@
 #include "ppp_core/error.hpp"
 
 namespace ppp {
-namespace simulator {
+namespace agents {
 
 namespace {
 
@@ -192,5 +192,5 @@ std::vector<std::string> splitCsvLine(const std::string& line, const std::string
   return fields;
 }
 
-}  // namespace simulator
+}  // namespace agents
 }  // namespace ppp

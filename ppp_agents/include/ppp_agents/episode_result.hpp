@@ -8,10 +8,7 @@
 #include "ppp_agents/protocol/batch_types.hpp"
 
 namespace ppp {
-namespace simulator {
-
-/// Why an episode ended: the batch protocol's reasons (ppp_agents/protocol/batch_types.hpp).
-namespace reason = protocol::reason;
+namespace agents {
 
 /// One row of results.csv: one agent's run on one PPP.
 struct EpisodeResult {
@@ -49,5 +46,5 @@ EpisodeResult parseCsvRow(std::string_view line, const std::string& source, int 
 /// Splits one CSV line into fields (RFC 4180 quoting). @throws ParseError for an unterminated quote.
 std::vector<std::string> splitCsvLine(const std::string& line, const std::string& source, int line_number);
 
-}  // namespace simulator
+}  // namespace agents
 }  // namespace ppp

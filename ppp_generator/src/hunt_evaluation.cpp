@@ -1,9 +1,9 @@
-#include "ppp_simulator/hunt_evaluation.hpp"
+#include "ppp_generator/hunt_evaluation.hpp"
 
 #include "ppp_core/error.hpp"
 
 namespace ppp {
-namespace simulator {
+namespace generator {
 
 namespace {
 
@@ -19,13 +19,13 @@ HuntEvaluation::HuntEvaluation(const std::vector<Problem>& problems, const std::
     throw InvalidArgument("runs", "expected runs in [1, " + std::to_string(generator::kMaxRunsPerEval) + "], got " +
                                       std::to_string(runs));
   }
-  generator::ProblemSet set;
+  ProblemSet set;
   for (std::size_t i = 0; i < problems.size(); ++i) {
     set.ids.push_back(candidateId(i));
     set.problems.push_back(problems[i]);
   }
   try {
-    sets_.push_back(prepareSet("candidates", std::move(set), episode));
+    sets_.push_back(agents::prepareSet("candidates", std::move(set), episode));
   } catch (const InvalidArgument& e) {
     throw InvalidArgument("problems", e.what());
   }
@@ -33,7 +33,7 @@ HuntEvaluation::HuntEvaluation(const std::vector<Problem>& problems, const std::
   for (const Grid& grid : sets_[0].grids) hashes.push_back(grid.hash());
   for (std::size_t a = 0; a < panel.size(); ++a) {
     agent_index_[panel[a].name] = static_cast<int>(a);
-    lanes_.push_back(std::make_unique<AgentLane>(
+    lanes_.push_back(std::make_unique<agents::AgentLane>(
         panel[a], episode, sets_,
         [hashes, generator_seed, name = panel[a].name](int, int problem, int run) {
           return failureRunSeed(generator_seed, hashes[static_cast<std::size_t>(problem)], name, run);
@@ -44,9 +44,9 @@ HuntEvaluation::HuntEvaluation(const std::vector<Problem>& problems, const std::
   evaluations_.assign(problems.size(), PanelEvaluation{});
 }
 
-void HuntEvaluation::record(const std::vector<EpisodeResult>& ended) {
+void HuntEvaluation::record(const std::vector<agents::EpisodeResult>& ended) {
   std::lock_guard<std::mutex> lock(mutex_);
-  for (const EpisodeResult& r : ended) {
+  for (const agents::EpisodeResult& r : ended) {
     const std::size_t p = static_cast<std::size_t>(std::stoi(r.problem.substr(1)));
     const auto a = static_cast<std::size_t>(agent_index_.at(r.agent));
     PanelEvaluation& e = evaluations_.at(p);
@@ -68,5 +68,5 @@ std::vector<PanelEvaluation> HuntEvaluation::evaluations() const {
   return result;
 }
 
-}  // namespace simulator
+}  // namespace generator
 }  // namespace ppp

@@ -1,7 +1,6 @@
-#include "ppp_agents/action.hpp"
+#include "ppp_core/action.hpp"
 
 namespace ppp {
-namespace agents {
 
 const char* actionName(Action action) {
   switch (action) {
@@ -18,5 +17,4 @@ const char* actionName(Action action) {
   return "unknown";
 }
 
-}  // namespace agents
 }  // namespace ppp

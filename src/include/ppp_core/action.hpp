@@ -5,7 +5,6 @@
 #include "ppp_core/grid.hpp"
 
 namespace ppp {
-namespace agents {
 
 /// What an agent does in one step (the same numbers as ppp_msgs/MoveBatch). North is towards row 0 (y down).
 /// The four diagonal moves exist only in the 8-connected move model (connectivity 8).
@@ -74,5 +73,4 @@ inline bool isAction(int value, int connectivity = 4) {
 /// The action's name ("stay", "north", ..., "north_west").
 const char* actionName(Action action);
 
-}  // namespace agents
 }  // namespace ppp

@@ -1,4 +1,4 @@
-#include "ppp_simulator/failure_fitness.hpp"
+#include "ppp_generator/failure_fitness.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -8,13 +8,14 @@
 #include <optional>
 #include <thread>
 
+#include "ppp_agents/episode_runner.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_core/text_format.hpp"
 #include "ppp_core/window_atlas.hpp"
 
 namespace ppp {
-namespace simulator {
+namespace generator {
 
 namespace {
 
@@ -63,7 +64,7 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
   auto worker = [&]() {
     try {
       std::vector<std::unique_ptr<agents::Agent>> agents(agent_count);
-      std::vector<std::unique_ptr<EpisodeRunner>> runners(agent_count);
+      std::vector<std::unique_ptr<agents::EpisodeRunner>> runners(agent_count);
       for (;;) {
         const std::size_t u = next.fetch_add(1);
         if (u >= units) return;
@@ -71,7 +72,7 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
         const std::size_t a = u % agent_count;
         if (!agents[a]) {
           agents[a] = agents::makeAgent(panel.agents[a]);
-          runners[a] = std::make_unique<EpisodeRunner>(panel.agents[a], panel.episode);
+          runners[a] = std::make_unique<agents::EpisodeRunner>(panel.agents[a], panel.episode);
         }
         const int range = panel.episode.sensor_range;
         std::call_once(atlas_built[p], [&] {
@@ -109,7 +110,7 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
   return estimates;
 }
 
-generator::Fitness makeFailureFitness(const FailurePanel& panel) {
+Fitness makeFailureFitness(const FailurePanel& panel) {
   checkPanel(panel.agents);
   panel.episode.validate();
   if (panel.runs_per_eval < 1 || panel.runs_per_eval > generator::kMaxRunsPerEval) {
@@ -120,25 +121,25 @@ generator::Fitness makeFailureFitness(const FailurePanel& panel) {
     throw InvalidArgument("threads", "expected 0 (every core) or a count up to " + std::to_string(kMaxThreads) +
                                          ", got " + std::to_string(panel.threads));
   }
-  generator::Fitness fitness;
-  fitness.name = generator::kFailureFitness;
+  Fitness fitness;
+  fitness.name = kFailureFitness;
   fitness.maximise = true;
-  fitness.batch_size = generator::kFailureBatchSize;
+  fitness.batch_size = kFailureBatchSize;
   fitness.batch = [panel](const std::vector<const Problem*>& problems, const std::vector<const Grid*>& grids) {
     std::vector<generator::FitnessScore> scores;
     for (const FailureEstimate& e : estimateFailures(panel, problems, grids)) {
-      scores.push_back(generator::failureScore(e.failure_rate, e.budget_used));
+      scores.push_back(failureScore(e.failure_rate, e.budget_used));
     }
     return scores;
   };
   return fitness;
 }
 
-generator::Fitness fitnessFor(const generator::GeneratorOptions& options,
+Fitness fitnessFor(const GeneratorOptions& options,
                               const std::vector<agents::AgentConfig>& available, const EpisodeOptions& episode,
                               int threads) {
-  if (options.fitness != generator::kFailureFitness) {
-    return generator::makeFitness(options.fitness, generator::FitnessParameters{options.weights, options.seed});
+  if (options.fitness != kFailureFitness) {
+    return makeFitness(options.fitness, FitnessParameters{options.weights, options.seed});
   }
   FailurePanel panel;
   panel.agents = resolvePanel(options.agents, available);
@@ -187,5 +188,5 @@ std::vector<agents::AgentConfig> resolvePanel(const std::vector<std::string>& na
   return panel;
 }
 
-}  // namespace simulator
+}  // namespace generator
 }  // namespace ppp

@@ -8,13 +8,13 @@
 #include <vector>
 
 #include "ppp_agents/agent_config.hpp"
-#include "ppp_simulator/agent_lane.hpp"
-#include "ppp_simulator/episode_result.hpp"
-#include "ppp_simulator/experiment_runner.hpp"
-#include "ppp_simulator/failure_fitness.hpp"
+#include "ppp_agents/agent_lane.hpp"
+#include "ppp_agents/episode_result.hpp"
+#include "ppp_agents/prepared_set.hpp"
+#include "ppp_generator/failure_fitness.hpp"
 
 namespace ppp {
-namespace simulator {
+namespace generator {
 
 /// What a panel's runs on one PPP of a hunt came to, with why runs failed.
 struct PanelEvaluation {
@@ -35,22 +35,22 @@ class HuntEvaluation {
   HuntEvaluation(const std::vector<Problem>& problems, const std::vector<agents::AgentConfig>& panel,
                  const EpisodeOptions& episode, int runs, std::uint64_t generator_seed, int batch_size);
   /// The lanes, one per panel agent in panel order.
-  std::vector<std::unique_ptr<AgentLane>>& lanes() { return lanes_; }
+  std::vector<std::unique_ptr<agents::AgentLane>>& lanes() { return lanes_; }
   /// Takes finished episodes of any lane.
-  void record(const std::vector<EpisodeResult>& ended);
+  void record(const std::vector<agents::EpisodeResult>& ended);
   /// Per candidate, in request order: what the recorded runs came to.
   std::vector<PanelEvaluation> evaluations() const;
 
  private:
   EpisodeOptions episode_;
   int runs_;
-  std::vector<PreparedSet> sets_;  // one set of the candidates; the lanes refer to it
-  std::vector<std::unique_ptr<AgentLane>> lanes_;
+  std::vector<agents::PreparedSet> sets_;  // one set of the candidates; the lanes refer to it
+  std::vector<std::unique_ptr<agents::AgentLane>> lanes_;
   mutable std::mutex mutex_;
   std::vector<PanelTally> tallies_;
   std::vector<PanelEvaluation> evaluations_;
   std::map<std::string, int> agent_index_;
 };
 
-}  // namespace simulator
+}  // namespace generator
 }  // namespace ppp

@@ -1,4 +1,4 @@
-#include "ppp_simulator/episode.hpp"
+#include "ppp_agents/episode_runner.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,10 +8,10 @@
 #include "ppp_core/random_problem.hpp"
 #include "ppp_core/reachability.hpp"
 #include "ppp_core/rng.hpp"
-#include "ppp_simulator/episode_result.hpp"
+#include "ppp_core/episode_reason.hpp"
 
 namespace ppp {
-namespace simulator {
+namespace agents {
 namespace {
 
 agents::AgentConfig config(const std::string& type) {
@@ -203,16 +203,16 @@ TEST(EpisodeTest, DiagonalMovesUnderConnectivityEight) {
   const Grid grid = decodeGrid(problem);
   const SensorModel sensor(SensorOptions{2, 0.0});
   Episode episode(problem, grid, sensor, 1, 10, 8, true);
-  episode.apply(agents::Action::SouthEast);  // would pass beside (1,0) and (0,1): free, but lands on the obstacle
+  episode.apply(Action::SouthEast);  // would pass beside (1,0) and (0,1): free, but lands on the obstacle
   EXPECT_TRUE(episode.scan().bumped());
-  episode.apply(agents::Action::East);        // (1,0)
-  episode.apply(agents::Action::SouthEast);   // passes beside (2,0) (free) and (1,1) (obstacle): a cut corner
+  episode.apply(Action::East);        // (1,0)
+  episode.apply(Action::SouthEast);   // passes beside (2,0) (free) and (1,1) (obstacle): a cut corner
   EXPECT_TRUE(episode.scan().bumped());
-  episode.apply(agents::Action::East);        // (2,0)
-  episode.apply(agents::Action::South);       // (2,1)
-  episode.apply(agents::Action::SouthWest);   // passes beside (1,1): refused
+  episode.apply(Action::East);        // (2,0)
+  episode.apply(Action::South);       // (2,1)
+  episode.apply(Action::SouthWest);   // passes beside (1,1): refused
   EXPECT_TRUE(episode.scan().bumped());
-  episode.apply(agents::Action::South);       // (2,2): the goal
+  episode.apply(Action::South);       // (2,2): the goal
   const EpisodeOutcome& o = episode.outcome();
   EXPECT_TRUE(o.passed);
   EXPECT_EQ(o.steps, 7);
@@ -224,8 +224,8 @@ TEST(EpisodeTest, DiagonalMovesUnderConnectivityEight) {
   const Problem open = problemOf({"...", "...", "..."});
   const Grid open_grid = decodeGrid(open);
   Episode diagonal(open, open_grid, sensor, 1, 10, 8, true);
-  diagonal.apply(agents::Action::SouthEast);
-  diagonal.apply(agents::Action::SouthEast);
+  diagonal.apply(Action::SouthEast);
+  diagonal.apply(Action::SouthEast);
   EXPECT_TRUE(diagonal.outcome().passed);
   EXPECT_EQ(diagonal.outcome().diagonal_moves, 2);
   EXPECT_DOUBLE_EQ(pathLength(diagonal.outcome()), 2 * std::sqrt(2.0));
@@ -237,8 +237,8 @@ TEST(EpisodeTest, DiagonalUnderConnectivityFourIsAnInvalidAction) {
   const Grid grid = decodeGrid(open);
   const SensorModel sensor(SensorOptions{2, 0.0});
   Episode episode(open, grid, sensor, 1, 10, 4);
-  episode.apply(agents::Action::East);
-  episode.apply(agents::Action::SouthEast);
+  episode.apply(Action::East);
+  episode.apply(Action::SouthEast);
   EXPECT_TRUE(episode.done());
   EXPECT_FALSE(episode.outcome().passed);
   EXPECT_STREQ(episode.outcome().reason, reason::kInvalidAction);
@@ -268,5 +268,5 @@ TEST(EpisodeTest, AstarTakesOctileRoutesUnderConnectivityEight) {
 }
 
 }  // namespace
-}  // namespace simulator
+}  // namespace agents
 }  // namespace ppp

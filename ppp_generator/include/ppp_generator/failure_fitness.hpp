@@ -5,12 +5,14 @@
 #include <vector>
 
 #include "ppp_agents/agent_config.hpp"
+#include "ppp_core/episode_options.hpp"
+#include "ppp_core/grid.hpp"
+#include "ppp_core/problem.hpp"
 #include "ppp_generator/fitness.hpp"
 #include "ppp_generator/generator_options.hpp"
-#include "ppp_simulator/episode.hpp"
 
 namespace ppp {
-namespace simulator {
+namespace generator {
 
 /// Most worker threads a failure fitness or an experiment may ask for.
 constexpr int kMaxThreads = 1024;
@@ -49,16 +51,16 @@ FailureEstimate estimateOf(const PanelTally& tally, int runs, int budget);
 std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const std::vector<const Problem*>& problems,
                                               const std::vector<const Grid*>& grids);
 
-/// The failure fitness: value = the failure rate, maximised; score = generator::failureScore. Scores
-/// generator::kFailureBatchSize PPPs per call. @throws InvalidArgument naming "agents", "runs_per_eval",
+/// The failure fitness: value = the failure rate, maximised; score = failureScore. Scores
+/// kFailureBatchSize PPPs per call. @throws InvalidArgument naming "agents", "runs_per_eval",
 /// "threads" or an episode option.
 /// @throws InvalidArgument("agents", ...) for an empty panel or a planner agent.
-generator::Fitness makeFailureFitness(const FailurePanel& panel);
+Fitness makeFailureFitness(const FailurePanel& panel);
 
 /// The fitness of a set's generator options: makeFitness(options.fitness), or for `failure` the failure
 /// fitness of the panel options.agents looked up in `available` (see resolvePanel), played with `episode`'s
 /// rules on `threads` threads (0: every core). @throws InvalidArgument naming the option.
-generator::Fitness fitnessFor(const generator::GeneratorOptions& options,
+Fitness fitnessFor(const GeneratorOptions& options,
                               const std::vector<agents::AgentConfig>& available, const EpisodeOptions& episode,
                               int threads);
 
@@ -71,5 +73,5 @@ std::vector<agents::AgentConfig> resolvePanel(const std::vector<std::string>& na
                                               const std::vector<agents::AgentConfig>& available,
                                               bool allow_planners = false);
 
-}  // namespace simulator
+}  // namespace generator
 }  // namespace ppp

@@ -3,15 +3,14 @@
 #include <cstdint>
 #include <vector>
 
-#include "ppp_agents/agent.hpp"
-#include "ppp_agents/agent_config.hpp"
+#include "ppp_core/action.hpp"
+#include "ppp_core/episode_reason.hpp"
 #include "ppp_core/episode_options.hpp"
 #include "ppp_core/problem.hpp"
 #include "ppp_core/sensor.hpp"
 #include "ppp_core/window_atlas.hpp"
 
 namespace ppp {
-namespace simulator {
 
 /// How one episode went.
 struct EpisodeOutcome {
@@ -47,7 +46,7 @@ class Episode {
   /// What the agent senses now (computed on first read).
   Scan scan() const;
   /// Applies the agent's action for this step.
-  void apply(agents::Action action);
+  void apply(Action action);
   /// Ends the episode as failed for `reason` (e.g. reason::kTimeout).
   void fail(const char* reason);
   /// The outcome so far (final once done()).
@@ -70,33 +69,4 @@ class Episode {
   EpisodeOutcome outcome_;
 };
 
-/// The EpisodeInfo an agent is given at the start of a run of `problem` (prior map only for astar) under the
-/// move model with `connectivity`.
-agents::EpisodeInfo episodeInfo(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
-                                std::uint64_t run_seed, int connectivity);
-
-/// Runs episodes in process: the move model (Episode), scans by SensorModel with the agent's noise, the budget.
-/// Holds the sensor and buffers, so reuse one runner for many episodes of one agent configuration.
-class EpisodeRunner {
- public:
-  /// A runner for one agent configuration. @throws InvalidArgument for bad options.
-  EpisodeRunner(const agents::AgentConfig& config, const EpisodeOptions& options);
-  /// Runs `agent` from the start of `problem` (whose decoded grid is `grid`, and `windows` its atlas when
-  /// there is one) with the given run seed.
-  EpisodeOutcome run(const Problem& problem, const Grid& grid, agents::Agent& agent, std::uint64_t run_seed,
-                     bool record_path = false, const WindowAtlas* windows = nullptr);
-  /// The sensor of this configuration (range from the options, noise from the agent).
-  const SensorModel& sensor() const { return sensor_; }
-
- private:
-  agents::AgentConfig config_;
-  EpisodeOptions options_;
-  SensorModel sensor_;
-};
-
-/// One episode of a fresh agent of `config` with `run_seed`, its path recorded (a run of results.csv replayed).
-EpisodeOutcome recordEpisode(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
-                             const EpisodeOptions& options, std::uint64_t run_seed);
-
-}  // namespace simulator
 }  // namespace ppp

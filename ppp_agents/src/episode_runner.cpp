@@ -1,0 +1,40 @@
+#include "ppp_agents/episode_runner.hpp"
+
+namespace ppp {
+namespace agents {
+
+EpisodeInfo episodeInfo(const Problem& problem, const Grid& grid, const AgentConfig& config,
+                                std::uint64_t run_seed, int connectivity) {
+  EpisodeInfo info;
+  info.connectivity = connectivity;
+  info.width = grid.width();
+  info.height = grid.height();
+  info.start = problem.start;
+  info.goal = problem.goal;
+  info.seed = agentSeed(run_seed);
+  info.prior_map = givenPriorMap(config) ? &grid : nullptr;
+  return info;
+}
+
+EpisodeRunner::EpisodeRunner(const AgentConfig& config, const EpisodeOptions& options)
+    : config_((config.validate(), config)),
+      options_((options.validate(), options)),
+      sensor_(SensorOptions{options.sensor_range, config.sensor_noise}) {}
+
+EpisodeOutcome EpisodeRunner::run(const Problem& problem, const Grid& grid, Agent& agent,
+                                  std::uint64_t run_seed, bool record_path, const WindowAtlas* windows) {
+  agent.reset(episodeInfo(problem, grid, config_, run_seed, options_.connectivity));
+  Episode episode(problem, grid, sensor_, run_seed, options_.budget, options_.connectivity, record_path, windows);
+  while (!episode.done()) episode.apply(agent.act(episode.scan()));
+  return episode.outcome();
+}
+
+EpisodeOutcome recordEpisode(const Problem& problem, const Grid& grid, const AgentConfig& config,
+                             const EpisodeOptions& options, std::uint64_t run_seed) {
+  EpisodeRunner runner(config, options);
+  auto agent = makeAgent(config);
+  return runner.run(problem, grid, *agent, run_seed, true);
+}
+
+}  // namespace agents
+}  // namespace ppp

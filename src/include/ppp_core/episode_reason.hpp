@@ -1,0 +1,23 @@
+#pragma once
+
+#include <string>
+
+namespace ppp {
+
+/// Why an episode ended: results.csv's `reason`, ppp_msgs/EpisodeResults and ppp_msgs/EpisodeFailure.
+namespace reason {
+constexpr const char* kGoalReached = "goal_reached";          ///< Pass: the agent stands on the goal.
+constexpr const char* kBudgetExhausted = "budget_exhausted";  ///< Fail: the move budget is spent.
+constexpr const char* kTimeout = "timeout";                   ///< Fail (ROS): the agent did not answer in time.
+constexpr const char* kAgentLost = "agent_lost";              ///< Fail (ROS): the agent process went away.
+constexpr const char* kInvalidAction = "invalid_action";      ///< Fail (ROS): the agent sent something unusable.
+constexpr const char* kNoPath = "no_path";                    ///< Fail (planner): it published an empty path.
+constexpr const char* kInvalidPath = "invalid_path";          ///< Fail (planner): its path was unusable.
+constexpr const char* kPlannerTimeout = "planner_timeout";    ///< Fail (planner): no path in time.
+constexpr const char* kPlannerLost = "planner_lost";          ///< Fail (planner): its process went away.
+/// The reason constant equal to `text` among those an agent may report itself (the four planner ones), or
+/// nullptr.
+const char* agentReportedReason(const std::string& text);
+}  // namespace reason
+
+}  // namespace ppp
