@@ -1,6 +1,14 @@
-# The sources of the ROS-free ppp_simulator library (the package build and the fuzz build list them from here).
+# The sources of the ROS-free simulator libraries (the package build and the fuzz build list them from here).
+# The report: pass rates, statistics, plots, animations and the report's pages, from results rows and PPPs.
+set(PPP_REPORT_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/src/report/pass_rates.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/report/statistics.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/report/svg_plot.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/report/episode_animation.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/report/report.cpp
+)
+# The experiment: its config, sets, runs, results file and graph, and its report made with the report library.
 set(PPP_SIMULATOR_SOURCES
-  ${CMAKE_CURRENT_LIST_DIR}/src/episode_animation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/scenario_runner.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/experiment_config.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/results_file.cpp
@@ -9,8 +17,4 @@ set(PPP_SIMULATOR_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/experiment_report.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/experiment_graph.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/simulator_options.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/src/pass_rates.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/src/statistics.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/src/svg_plot.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/src/report.cpp
 )

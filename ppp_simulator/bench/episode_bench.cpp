@@ -7,7 +7,7 @@
 #include "ppp_core/random_problem.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_agents/episode_runner.hpp"
-#include "ppp_simulator/episode_animation.hpp"
+#include "ppp_simulator/report/episode_animation.hpp"
 
 namespace {
 

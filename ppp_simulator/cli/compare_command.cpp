@@ -11,9 +11,9 @@
 #include "commands.hpp"
 #include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
-#include "ppp_simulator/pass_rates.hpp"
+#include "ppp_simulator/report/pass_rates.hpp"
 #include "ppp_simulator/results_file.hpp"
-#include "ppp_simulator/statistics.hpp"
+#include "ppp_simulator/report/statistics.hpp"
 
 namespace ppp {
 namespace cli {

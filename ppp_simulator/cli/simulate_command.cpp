@@ -17,7 +17,7 @@
 #include "ppp_core/rng.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_agents/episode_runner.hpp"
-#include "ppp_simulator/episode_animation.hpp"
+#include "ppp_simulator/report/episode_animation.hpp"
 
 namespace ppp {
 namespace cli {

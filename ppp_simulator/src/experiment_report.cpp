@@ -9,8 +9,8 @@
 #include "ppp_core/csv.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_agents/episode_runner.hpp"
-#include "ppp_simulator/episode_animation.hpp"
-#include "ppp_simulator/pass_rates.hpp"
+#include "ppp_simulator/report/episode_animation.hpp"
+#include "ppp_simulator/report/pass_rates.hpp"
 
 namespace ppp {
 namespace simulator {

@@ -1,4 +1,4 @@
-#include "ppp_simulator/episode_animation.hpp"
+#include "ppp_simulator/report/episode_animation.hpp"
 
 #include <gtest/gtest.h>
 

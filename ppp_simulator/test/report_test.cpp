@@ -1,4 +1,4 @@
-#include "ppp_simulator/report.hpp"
+#include "ppp_simulator/report/report.hpp"
 
 #include <gtest/gtest.h>
 #include <png.h>

@@ -1,4 +1,4 @@
-#include "ppp_simulator/svg_plot.hpp"
+#include "ppp_simulator/report/svg_plot.hpp"
 
 #include <gtest/gtest.h>
 

@@ -6,8 +6,8 @@
 #include "ppp_agents/episode_result.hpp"
 #include "ppp_simulator/experiment_config.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
-#include "ppp_simulator/pass_rates.hpp"
-#include "ppp_simulator/report.hpp"
+#include "ppp_simulator/report/pass_rates.hpp"
+#include "ppp_simulator/report/report.hpp"
 
 namespace ppp {
 namespace simulator {

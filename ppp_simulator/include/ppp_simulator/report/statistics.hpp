@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "ppp_simulator/pass_rates.hpp"
+#include "ppp_simulator/report/pass_rates.hpp"
 
 namespace ppp {
 namespace simulator {

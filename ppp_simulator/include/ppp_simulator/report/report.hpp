@@ -8,7 +8,7 @@
 #include "ppp_core/grid.hpp"
 #include "ppp_core/problem.hpp"
 #include "ppp_core/stop.hpp"
-#include "ppp_simulator/pass_rates.hpp"
+#include "ppp_simulator/report/pass_rates.hpp"
 
 namespace ppp {
 namespace simulator {

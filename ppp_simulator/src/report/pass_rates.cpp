@@ -1,4 +1,4 @@
-#include "ppp_simulator/pass_rates.hpp"
+#include "ppp_simulator/report/pass_rates.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "ppp_simulator/statistics.hpp"
+#include "ppp_simulator/report/statistics.hpp"
 
 #include <algorithm>
 #include <cmath>

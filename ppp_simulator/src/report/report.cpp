@@ -1,4 +1,4 @@
-#include "ppp_simulator/report.hpp"
+#include "ppp_simulator/report/report.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -19,8 +19,8 @@
 #include "ppp_core/text_format.hpp"
 #include "ppp_generator/tree_html.hpp"
 #include "ppp_agents/episode_result.hpp"
-#include "ppp_simulator/statistics.hpp"
-#include "ppp_simulator/svg_plot.hpp"
+#include "ppp_simulator/report/statistics.hpp"
+#include "ppp_simulator/report/svg_plot.hpp"
 
 namespace ppp {
 namespace simulator {
