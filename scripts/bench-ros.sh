@@ -25,8 +25,8 @@ launch() {
   port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
   export ROS_MASTER_URI="http://127.0.0.1:$port"
   start=$(date +%s.%N)
-  roslaunch -p "$port" launch/experiment.launch output_dir:="$1" config:="$work/experiment.yaml" batch_size:="$3" \
-    record:="$4" > "$1.log" 2>&1
+  roslaunch -p "$port" launch/experiment.launch output_dir:="$1" config:="$work/experiment.yaml" \
+    args:="--batch-size $3 --record $4" > "$1.log" 2>&1
   end=$(date +%s.%N)
   awk "BEGIN { printf \"%.2f\", $end - $start }"
 }

@@ -10,7 +10,7 @@
 #include "ppp_agents/protocol/batch_responder.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_msgs/inline_callback_queue.h"
-#include "ppp_msgs/topic_names.h"
+#include "ppp_msgs/graph_names.h"
 
 namespace ppp {
 namespace agents {

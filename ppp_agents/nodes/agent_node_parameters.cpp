@@ -21,11 +21,11 @@ AgentConfig readAgentNodeParameters(const ros::NodeHandle& nh, const std::string
   AgentConfig config;
   config.name = default_name;
   ppp_msgs::readOptionParameters(nh, agentNodeOptionSpecs(), &config);
-  if (!nh.hasParam("type")) throw InvalidArgument("~type", "required; valid: " + typeList());
+  if (config.type.empty()) throw ppp_msgs::parameterError(InvalidArgument("type", "required; valid: " + typeList()));
   ppp_msgs::validateParameters(config);
   if (isPlanner(config)) {
-    throw InvalidArgument("~type", "planner agents run through planner_bridge_node, not agent_node; valid here: " +
-                                       typeList());
+    throw ppp_msgs::parameterError(InvalidArgument(
+        "type", "planner agents run through planner_bridge_node, not agent_node; valid here: " + typeList()));
   }
   return config;
 }

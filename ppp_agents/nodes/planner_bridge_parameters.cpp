@@ -8,8 +8,6 @@
 namespace ppp {
 namespace agents {
 
-using ppp_msgs::readParameter;
-
 BridgeParameters readBridgeParameters(const ros::NodeHandle& nh, const std::string& ns) {
   BridgeParameters p;
   p.config.type = kPlannerType;
@@ -18,21 +16,14 @@ BridgeParameters readBridgeParameters(const ros::NodeHandle& nh, const std::stri
       selectOptions(agentOptionSpecs(), {"name", "memory", "sensor_noise"});
   ppp_msgs::readOptionParameters(nh, agent_specs, &p.config);
   if (p.config.name.empty()) {
-    throw InvalidArgument("~name", "required when the bridge runs outside an agent's namespace (e.g. ns=\"ompl\")");
+    throw ppp_msgs::parameterError(
+        InvalidArgument("name", "required when the bridge runs outside an agent's namespace (e.g. ns=\"ompl\")"));
   }
-  readParameter(nh, "resolution", &p.resolution, "a number of metres per cell");
-  readParameter(nh, "plan_timeout", &p.plan_timeout, "a number of seconds");
-  readParameter(nh, "connect_timeout", &p.connect_timeout, "a number of seconds");
-  readParameter(nh, "map_frame", &p.map_frame, "a frame name");
-  p.base_frame = bareFrame(ns == "/" ? "robot/base_link" : ns + "/robot/base_link");
-  readParameter(nh, "base_frame", &p.base_frame, "a frame name");
-  ppp_msgs::requirePositive(p.resolution, "~resolution");
-  ppp_msgs::requirePositive(p.plan_timeout, "~plan_timeout");
-  ppp_msgs::requirePositive(p.connect_timeout, "~connect_timeout");
-  p.map_frame = bareFrame(p.map_frame);
-  p.base_frame = bareFrame(p.base_frame);
-  if (p.map_frame.empty()) throw InvalidArgument("~map_frame", "expected a non-empty frame name");
-  if (p.base_frame.empty()) throw InvalidArgument("~base_frame", "expected a non-empty frame name");
+  BridgeOptions& options = p;
+  ppp_msgs::readOptionParameters(nh, bridgeOptionSpecs(), &options);
+  options.map_frame = bareFrame(options.map_frame);
+  options.base_frame = bareFrame(options.base_frame.empty() ? defaultBridgeBaseFrame(ns) : options.base_frame);
+  ppp_msgs::validateParameters(options);
   ppp_msgs::validateParameters(p.config);
   return p;
 }

@@ -11,7 +11,7 @@
 #include "ppp_core/error.hpp"
 #include "ppp_msgs/conversions.h"
 #include "ppp_msgs/node_liveness.h"
-#include "ppp_msgs/topic_names.h"
+#include "ppp_msgs/graph_names.h"
 
 namespace ppp {
 namespace agents {

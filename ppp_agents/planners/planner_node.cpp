@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "ppp_core/error.hpp"
-#include "ppp_msgs/topic_names.h"
+#include "ppp_msgs/graph_names.h"
 
 namespace ppp {
 namespace planners {

@@ -7,8 +7,9 @@ add_library(ppp_planners STATIC
   planners/optimistic_astar.cpp
   planners/grid_motion_validator.cpp
   planners/ompl_grid_planner.cpp
+  planners/planner_node_options.cpp
 )
-target_include_directories(ppp_planners PUBLIC planners ${ppp_core_INCLUDE_DIRS})
+target_include_directories(ppp_planners PUBLIC planners ${ppp_core_INCLUDE_DIRS} ${CMAKE_CURRENT_SOURCE_DIR}/../ppp_msgs/include)
 target_include_directories(ppp_planners SYSTEM PUBLIC ${OMPL_INCLUDE_DIRS})
 target_link_libraries(ppp_planners PUBLIC ${ppp_core_LIBRARIES} ${OMPL_LIBRARIES})
 target_compile_options(ppp_planners PRIVATE -Wall -Wextra)

@@ -52,6 +52,22 @@ void expectSameScan(const ScanRequest& got, const ScanRequest& sent, bool window
   EXPECT_EQ(got.start->connectivity, sent.start->connectivity);
 }
 
+TEST(BatchCodecTest, TheWiresReasonConstantsAreTheCoresReasons) {
+  // The string constants of the generated headers are not constexpr: compared here, beside the static_asserts of
+  // the numeric ones in batch_codec.cpp.
+  EXPECT_EQ(ppp_msgs::EpisodeFailure::NO_PATH, reason::kNoPath);
+  EXPECT_EQ(ppp_msgs::EpisodeFailure::INVALID_PATH, reason::kInvalidPath);
+  EXPECT_EQ(ppp_msgs::EpisodeFailure::PLANNER_TIMEOUT, reason::kPlannerTimeout);
+  EXPECT_EQ(ppp_msgs::EpisodeFailure::PLANNER_LOST, reason::kPlannerLost);
+  for (const std::string& wire : {ppp_msgs::EpisodeFailure::NO_PATH, ppp_msgs::EpisodeFailure::INVALID_PATH,
+                                  ppp_msgs::EpisodeFailure::PLANNER_TIMEOUT, ppp_msgs::EpisodeFailure::PLANNER_LOST}) {
+    ASSERT_NE(reason::agentReportedReason(wire), nullptr) << wire;
+    EXPECT_EQ(reason::agentReportedReason(wire), wire);
+  }
+  EXPECT_EQ(reason::agentReportedReason(reason::kTimeout), nullptr);  // the simulator's verdicts, not an agent's
+  EXPECT_EQ(reason::agentReportedReason(reason::kGoalReached), nullptr);
+}
+
 TEST(BatchCodecTest, ScansSurviveTheRoundTripWithEveryField) {
   const std::vector<ScanRequest> sent{scan(7, 0, true, true), scan(8, 3, false, false), scan(9, 0, true, false)};
   ppp_msgs::ScanBatch message;

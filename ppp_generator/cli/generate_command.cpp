@@ -10,7 +10,6 @@
 #include "option_flags.hpp"
 #include "stop_signals.hpp"
 #include "ppp_core/csv.hpp"
-#include "ppp_agents/agent_config.hpp"
 #include "ppp_core/episode_options.hpp"
 #include "ppp_generator/failure_fitness.hpp"
 #include "ppp_generator/problem_set.hpp"
@@ -37,8 +36,10 @@ struct GenerateFlags {
 generator::GeneratorOptions resolveOptions(const CLI::App& command, const GenerateFlags& f) {
   generator::GeneratorOptions o = generator::loadGeneratorOptions(f.config);
   if (command.count("--size") > 0) {
-    if (command.count("--width") > 0 || command.count("--height") > 0) {
-      throw InvalidArgument("--size", "give either --size or --width/--height, not both");
+    for (const auto& side : selectOptions(generator::generatorOptionSpecs(), {"width", "height"})) {
+      if (command.count(flagName(side)) > 0) {
+        throw InvalidArgument("--size", "give either --size or " + flagName(side) + ", not both");
+      }
     }
     const Size size = parseSize(f.size, "--size");
     o.width = size.width;
@@ -56,12 +57,6 @@ bool episodeFlagsGiven(const CLI::App& command) {
   return command.count("--threads") > 0;
 }
 
-/// The failure fitness's panel comes from --agents-file, or names built-in agent types when there is none.
-std::vector<agents::AgentConfig> availableAgents(const generator::GeneratorOptions& options) {
-  return options.agents_file.empty() ? std::vector<agents::AgentConfig>{}
-                                     : agents::loadAgentConfigs(options.agents_file);
-}
-
 void runGenerate(const CLI::App& command, const GenerateFlags& flags) {
   if (flags.print_options) {
     std::cout << "# Default options of the PPP generator (ppp generate, generator_node, the sets of an experiment), as\n"
@@ -73,15 +68,14 @@ void runGenerate(const CLI::App& command, const GenerateFlags& flags) {
   if (flags.output.empty()) throw InvalidArgument("--output", "required: the set's directory");
   const generator::GeneratorOptions options = resolveOptions(command, flags);
   if (options.fitness != generator::kFailureFitness && episodeFlagsGiven(command)) {
-    throw InvalidArgument("--fitness", "--budget, --sensor-range, --connectivity and --threads are for the failure "
-                                       "fitness, which plays episodes; this run's fitness is " + options.fitness);
+    static const auto fitness = selectOptions(generator::generatorOptionSpecs(), {"fitness"});
+    throw InvalidArgument(flagName(fitness[0]), "--budget, --sensor-range, --connectivity and --threads are for the "
+                                                "failure fitness, which plays episodes; this run's fitness is " +
+                                                    options.fitness);
   }
   EpisodeOptions episode;
   applyAndValidateFlags(command, episodeOptionSpecs(), flags.episode, &episode);
-  const generator::Fitness fitness =
-      options.fitness == generator::kFailureFitness
-          ? generator::fitnessFor(options, availableAgents(options), episode, flags.threads)
-          : generator::makeFitness(options.fitness, generator::FitnessParameters{options.weights, options.seed});
+  const generator::Fitness fitness = generator::fitnessFor(options, episode, flags.threads);
   Progress progress("matings", flags.quiet);
   const generator::EvolvedSet evolved = generator::evolveSetDirectory(
       flags.output, options, fitness,

@@ -1,12 +1,15 @@
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <string>
 
 #include "generator_commands.hpp"
+#include "option_flags.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/ppp_file.hpp"
 #include "ppp_generator/diverse_selection.hpp"
+#include "ppp_generator/generator_options.hpp"
 #include "ppp_generator/newick.hpp"
 #include "ppp_generator/problem_set.hpp"
 
@@ -15,30 +18,47 @@ namespace cli {
 
 namespace {
 
+/// The generator's `characters` option, as tree and select take it (--characters, its choices and default).
+const std::vector<OptionSpec<generator::GeneratorOptions>>& characterSpecs() {
+  static const std::vector<OptionSpec<generator::GeneratorOptions>> specs =
+      selectOptions(generator::generatorOptionSpecs(), {"characters"});
+  return specs;
+}
+
+/// The character set given with --characters (the option's default when not given). @throws InvalidArgument.
+std::string characterFlag(const CLI::App& command, const std::map<std::string, std::string>& given) {
+  generator::GeneratorOptions options;
+  applyOptionFlags(command, characterSpecs(), given, &options);
+  return options.characters;
+}
+
 struct TreeFlags {
+  CLI::App* command = nullptr;
   std::string dir;
-  std::string characters = "extended";
+  std::map<std::string, std::string> options;  ///< --characters, when given.
 };
 
 struct SelectFlags {
+  CLI::App* command = nullptr;
   std::string dir;
   int k = 0;
   std::string prefer = "medoid";
-  std::string characters = "extended";
+  std::map<std::string, std::string> options;  ///< --characters, when given.
   std::string copy_to;
 };
 
 void runTree(const TreeFlags& f) {
-  const auto characters = generator::parseCharacterSet(f.characters);
+  const std::string names = characterFlag(*f.command, f.options);
+  const auto characters = generator::parseCharacterSet(names);
   const ProblemSet set = generator::readProblemSetDirectory(f.dir);
   const generator::Taxonomy taxonomy = generator::buildTaxonomy(set, characters);
   generator::writeTreeFiles(f.dir, set, taxonomy);
   std::cout << generator::toNewick(taxonomy.tree, set.ids) << "\n";
-  std::cerr << "wrote tree.nwk, tree.json and tree.html (" << f.characters << " characters) to " << f.dir << "\n";
+  std::cerr << "wrote tree.nwk, tree.json and tree.html (" << names << " characters) to " << f.dir << "\n";
 }
 
 void runSelect(const SelectFlags& f) {
-  const auto characters = generator::parseCharacterSet(f.characters);
+  const auto characters = generator::parseCharacterSet(characterFlag(*f.command, f.options));
   if (f.prefer != "medoid" && f.prefer != "hardest") {
     throw InvalidArgument("--prefer", "expected medoid or hardest, got '" + f.prefer + "'");
   }
@@ -63,7 +83,9 @@ void addTreeCommand(CLI::App& app) {
   CLI::App* command =
       app.add_subcommand("tree", "Rebuild a set's UPGMA taxonomy (tree.nwk, tree.json, tree.html) over a character set");
   command->add_option("dir", flags->dir, "Set directory written by ppp generate")->required();
-  command->add_option("--characters", flags->characters, "wei, extended or barn")->capture_default_str();
+  static const generator::GeneratorOptions defaults;
+  addOptionFlags(command, characterSpecs(), &defaults, &flags->options);
+  flags->command = command;
   command->callback([flags] { runTree(*flags); });
 }
 
@@ -75,7 +97,9 @@ void addSelectCommand(CLI::App& app) {
   command->add_option("-k", flags->k, "Number of PPPs to pick")->required();
   command->add_option("--prefer", flags->prefer, "Representative: medoid (most central) or hardest (best fitness)")
       ->capture_default_str();
-  command->add_option("--characters", flags->characters, "wei, extended or barn")->capture_default_str();
+  static const generator::GeneratorOptions defaults;
+  addOptionFlags(command, characterSpecs(), &defaults, &flags->options);
+  flags->command = command;
   command->add_option("--copy-to", flags->copy_to, "Also copy the picked .ppp files into this directory");
   command->callback([flags] { runSelect(*flags); });
 }

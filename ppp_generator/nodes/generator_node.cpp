@@ -5,7 +5,8 @@
 //   parameters see config/generator.yaml (same names) plus ~output_dir, ~publish_index, ~resolution,
 //              ~options (the generator options as YAML text), ~set_name, ~resume (publish the set already
 //              in ~output_dir), ~generate_on_start, ~exit_when_done, and for fitness failure ~evaluator (the simulator node's
-//              ppp_msgs/EvaluateProblems service that plays the panel) and ~evaluator_timeout
+//              ppp_msgs/EvaluateProblems service that plays the panel; empty: the node plays built-in agents
+//              itself, under ~budget, ~sensor_range and ~connectivity) and ~evaluator_timeout
 #include <ros/ros.h>
 
 #include <iostream>
@@ -15,12 +16,13 @@
 #include "generator_parameters.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/stop.hpp"
+#include "ppp_generator/failure_fitness.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_generator/set_evolution.hpp"
 #include "ppp_msgs/Generate.h"
 #include "ppp_msgs/ProblemSet.h"
 #include "ppp_msgs/conversions.h"
-#include "ppp_msgs/topic_names.h"
+#include "ppp_msgs/graph_names.h"
 #include "remote_failure_fitness.hpp"
 
 namespace ppp {
@@ -80,10 +82,11 @@ class GeneratorNode {
   ProblemSet evolve(const GeneratorOptions& options) {
     ROS_INFO("generating %d PPPs (%s fitness, %ld matings, seed %lu)", options.population, options.fitness.c_str(),
              options.matings, static_cast<unsigned long>(options.seed));
+    // A hunt plays its panel through the simulator's evaluation service, or in process without one.
     const Fitness fitness =
-        options.fitness == kFailureFitness
+        options.fitness == kFailureFitness && !parameters_.evaluator.empty()
             ? makeRemoteFailureFitness(nh_, options, parameters_.evaluator, parameters_.evaluator_timeout)
-            : makeFitness(options.fitness, FitnessParameters{options.weights, options.seed});
+            : fitnessFor(options, parameters_.episode, 0);
     EvolvedSet evolved = evolveSet(
         options, fitness,
         [](long done, long total, double best) { ROS_INFO("%ld/%ld matings, best fitness %g", done, total, best); },

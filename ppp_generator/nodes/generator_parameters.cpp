@@ -19,12 +19,17 @@ NodeParameters readNodeParameters(const ros::NodeHandle& nh) {
   ppp_msgs::readOptionParameters(nh, generatorOptionSpecs(), &o);
   ppp_msgs::validateParameters(o);
   if (p.publish_index < 0 || p.publish_index >= o.population) {
-    throw InvalidArgument("~publish_index", "expected an index in [0, population = " + std::to_string(o.population) +
-                                                "), got " + std::to_string(p.publish_index));
+    throw ppp_msgs::parameterError(InvalidArgument(
+        "publish_index", "expected an index in [0, population = " + std::to_string(o.population) + "), got " +
+                             std::to_string(p.publish_index)));
   }
-  if (o.fitness == kFailureFitness && !o.agents_file.empty()) {
-    throw InvalidArgument("~agents_file", "a hunt through ROS names the simulator's agents (its ~config); leave it empty");
+  if (o.fitness == kFailureFitness && !p.evaluator.empty() && !o.agents_file.empty()) {
+    throw ppp_msgs::parameterError(InvalidArgument(
+        "agents_file", "a hunt through ROS names the simulator's agents (its config); leave it empty, or hunt "
+                       "in process with an empty evaluator"));
   }
+  ppp_msgs::readOptionParameters(nh, episodeOptionSpecs(), &p.episode);
+  ppp_msgs::validateParameters(p.episode);
   return p;
 }
 

@@ -4,6 +4,7 @@
 
 #include <ros/node_handle.h>
 
+#include "ppp_core/episode_options.hpp"
 #include "ppp_generator/generator_options.hpp"
 #include "ppp_generator/generator_node_options.hpp"
 
@@ -13,6 +14,7 @@ namespace generator {
 /// What the generator node reads from its private (`~`) parameters: its own (declared) and the generator options.
 struct NodeParameters : GeneratorNodeOptions {
   GeneratorOptions options;  ///< The generator's options (defaults: config/generator.yaml's).
+  EpisodeOptions episode;    ///< The rules of a failure fitness's episodes when it hunts in process (~evaluator '').
 };
 
 /// Reads and validates the `~` parameters: the generator options from `~options` (YAML text as in

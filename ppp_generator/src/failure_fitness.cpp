@@ -135,9 +135,8 @@ Fitness makeFailureFitness(const FailurePanel& panel) {
   return fitness;
 }
 
-Fitness fitnessFor(const GeneratorOptions& options,
-                              const std::vector<agents::AgentConfig>& available, const EpisodeOptions& episode,
-                              int threads) {
+Fitness fitnessFor(const GeneratorOptions& options, const std::vector<agents::AgentConfig>& available,
+                   const EpisodeOptions& episode, int threads) {
   if (options.fitness != kFailureFitness) {
     return makeFitness(options.fitness, FitnessParameters{options.weights, options.seed});
   }
@@ -148,6 +147,12 @@ Fitness fitnessFor(const GeneratorOptions& options,
   panel.seed = options.seed;
   panel.threads = threads;
   return makeFailureFitness(panel);
+}
+
+Fitness fitnessFor(const GeneratorOptions& options, const EpisodeOptions& episode, int threads) {
+  const std::vector<agents::AgentConfig> available =
+      options.agents_file.empty() ? std::vector<agents::AgentConfig>{} : agents::loadAgentConfigs(options.agents_file);
+  return fitnessFor(options, available, episode, threads);
 }
 
 std::vector<agents::AgentConfig> resolvePanel(const std::vector<std::string>& names,

@@ -28,7 +28,7 @@ const std::vector<OptionSpec<GeneratorNodeOptions>>& generatorNodeOptionSpecs() 
                       +[](N& n) -> bool& { return n.generate_on_start; }),
         declareOption("exit_when_done", "exit once the start-up set is published",
                       +[](N& n) -> bool& { return n.exit_when_done; }),
-        declareOption("evaluator", "failure fitness: the simulator's EvaluateProblems service",
+        declareOption("evaluator", "failure fitness: the simulator's EvaluateProblems service ('': play the panel in process)",
                       +[](N& n) -> std::string& { return n.evaluator; }),
         declareOption("evaluator_timeout", "seconds to wait for the evaluator to appear",
                       +[](N& n) -> double& { return n.evaluator_timeout; }, Bounds{0.001, 86400}),

@@ -120,6 +120,26 @@ int runWithParameter(const std::string& assignment, int index, std::string* outp
                     output);
 }
 
+TEST(GeneratorNodeTest, AHuntWithoutEvaluatorPlaysItsPanelInProcessAsPppGenerateDoes) {
+  const std::string dir = (std::filesystem::temp_directory_path() / "ppp_generator_node_hunt").string();
+  std::filesystem::remove_all(dir);
+  std::filesystem::remove_all(dir + "_cli");
+  ros::param::set("/in_process_hunter/evaluator", std::string());  // no simulator: the node plays the panel
+  std::string output;
+  const int status = runCommand(std::string(GENERATOR_NODE) +
+                                    " __name:=in_process_hunter _fitness:=failure _agents:=bumper,wall_follower_left"
+                                    " _population:=6 _matings:=32 _runs_per_eval:=3 _budget:=60 _seed:=7"
+                                    " _exit_when_done:=true _output_dir:=" + dir + " 2>&1",
+                                &output);
+  ASSERT_EQ(status, 0) << output;
+  const std::string command = std::string(PPP_CLI) +
+                              " generate --quiet --fitness failure --agents bumper,wall_follower_left --population 6"
+                              " --matings 32 --runs-per-eval 3 --budget 60 --seed 7 -o " + dir + "_cli";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  const std::string diff = "diff -r " + dir + " " + dir + "_cli";
+  EXPECT_EQ(std::system(diff.c_str()), 0) << "the node's in-process hunt and ppp generate wrote different sets";
+}
+
 TEST(GeneratorNodeTest, BadParametersStopTheNodeNamingThem) {
   const std::pair<const char*, const char*> cases[] = {
       {"_population:=1", "~population: expected an integer in [2, 100000], got 1"},

@@ -25,6 +25,7 @@ struct LaunchFileFlags {
   std::map<std::string, std::string> simulator_flags;
   std::vector<std::string> planners;
   bool large = false;
+  bool json = false;
 };
 
 /// Applies "NAME=PACKAGE/EXECUTABLE" (or "NAME=": the user starts it) to planner agent NAME of `config`.
@@ -48,7 +49,8 @@ void runLaunchFile(LaunchFileFlags flags) {
   flags.graph.output_dir = fs::absolute(flags.output).lexically_normal().string();
   if (flags.graph.hunt.empty()) simulator::checkExperimentDirectory(config, flags.graph.output_dir);
   if (!flags.graph.hunt.empty()) generator::checkOutputDirectory(flags.graph.output_dir);
-  std::cout << simulator::experimentLaunchXml(config, flags.graph);
+  const ppp_msgs::LaunchGraph graph = simulator::experimentGraph(config, flags.graph);
+  std::cout << (flags.json ? ppp_msgs::launchJson(graph) : ppp_msgs::launchXml(graph));
 }
 
 }  // namespace
@@ -71,6 +73,8 @@ void addLaunchFileCommand(CLI::App& app) {
                       "Script remote machines run nodes through (the workspace's devel/env.sh, same path there)");
   command->add_flag("--large", flags->large,
                     "Allow an experiment above the size limits (1e8 episodes or matings, 10 GB of results)");
+  command->add_flag("--json", flags->json,
+                    "Print the graph as JSON (machines with their agents, the required node, every node, the XML)");
   command->callback([flags] { runLaunchFile(*flags); });
 }
 

@@ -3,6 +3,8 @@
 #include <string>
 
 #include "commands.hpp"
+#include "planner_node_options.hpp"
+#include "ppp_agents/planner_bridge_options.hpp"
 #include "ppp_core/option_docs.hpp"
 #include "ppp_generator/generator_node_options.hpp"
 #include "ppp_generator/generator_options.hpp"
@@ -59,12 +61,21 @@ std::string optionsReference() {
       << "text, and as single parameters of their names).\n\n"
       << optionsMarkdownTable(generator::generatorNodeOptionSpecs(), generator::GeneratorNodeOptions{}, &parameter)
       << "\n## Simulator node\n\n"
-      << "`simulator_node` `~` parameters, each also a `ppp launch-file` flag; `launch/experiment.launch` passes its\n"
-      << "arguments `batch_size`, `step_timeout` and `record` on.\n\n"
+      << "`simulator_node` `~` parameters, each also a `ppp launch-file` flag (`launch/experiment.launch` and\n"
+      << "`hunt.launch` pass the flags of their `args` on).\n\n"
       << optionsMarkdownTable(simulator::simulatorOptionSpecs(), simulator::SimulatorOptions{}, &parameter)
       << "\nWhat the node runs, set by the graph `ppp launch-file` writes (`~mode`, `~config`, `~output_dir`,\n"
       << "`~generator_nodes`):\n\n"
-      << optionsMarkdownTable(simulator::simulatorTaskSpecs(), simulator::SimulatorTask{}, &parameter);
+      << optionsMarkdownTable(simulator::simulatorTaskSpecs(), simulator::SimulatorTask{}, &parameter)
+      << "\n## Planner bridge node\n\n"
+      << "`planner_bridge_node` `~` parameters besides its agent's `~name`, `~memory` and `~sensor_noise`\n"
+      << "(docs/planner-interface.md).\n\n"
+      << optionsMarkdownTable(agents::bridgeOptionSpecs(), agents::BridgeOptions{}, &parameter)
+      << "\n## Example planner nodes\n\n"
+      << "`~` parameters of `optimistic_planner_node` and `ompl_planner_node` (the frames they plan in):\n\n"
+      << optionsMarkdownTable(planners::plannerFrameSpecs(), planners::PlannerFrames{}, &parameter)
+      << "\nand of `ompl_planner_node` alone:\n\n"
+      << optionsMarkdownTable(planners::omplNodeOptionSpecs(), planners::OmplNodeParameters{}, &parameter);
   return out.str();
 }
 

@@ -28,7 +28,8 @@ void runScenariosCommand(const ScenariosFlags& f) {
   simulator::ScenarioRunOptions options;
   options.agent = f.agent.agent();
   options.episode = f.agent.episode();
-  options.budget_given = f.agent.given("--budget");
+  static const auto budget = selectOptions(episodeOptionSpecs(), {"budget"});
+  options.budget_given = f.agent.given(flagName(budget[0]));
   options.seed = f.seed;
   options.map_dir = f.map_dir;
   const std::vector<simulator::ScenarioResult> results = simulator::runScenarios(f.scen, options);

@@ -1,5 +1,5 @@
 #include "episode_recorder.hpp"
-#include "ppp_msgs/topic_names.h"
+#include "ppp_msgs/graph_names.h"
 
 #include <algorithm>
 #include <filesystem>

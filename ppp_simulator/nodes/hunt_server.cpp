@@ -5,7 +5,7 @@
 
 #include "ppp_core/error.hpp"
 #include "ppp_msgs/conversions.h"
-#include "ppp_msgs/topic_names.h"
+#include "ppp_msgs/graph_names.h"
 
 namespace ppp {
 namespace simulator {

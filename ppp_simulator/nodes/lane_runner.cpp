@@ -5,7 +5,7 @@
 
 #include "ppp_agents/protocol/batch_codec.hpp"
 #include "ppp_msgs/node_liveness.h"
-#include "ppp_msgs/topic_names.h"
+#include "ppp_msgs/graph_names.h"
 
 namespace ppp {
 namespace simulator {

@@ -9,7 +9,7 @@
 #include "ppp_generator/fitness.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_msgs/conversions.h"
-#include "ppp_msgs/topic_names.h"
+#include "ppp_msgs/graph_names.h"
 #include "ppp_simulator/experiment_graph.hpp"
 
 namespace ppp {

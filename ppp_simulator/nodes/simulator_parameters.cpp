@@ -13,9 +13,12 @@ SimulatorParameters readSimulatorParameters(const ros::NodeHandle& nh) {
   SimulatorOptions& options = p;
   ppp_msgs::readOptionParameters(nh, simulatorOptionSpecs(), &options);
   ppp_msgs::validateParameters(options);
-  if (p.config.empty()) throw InvalidArgument("~config", "required: the experiment YAML (e.g. config/experiment.yaml)");
+  if (p.config.empty()) {
+    throw ppp_msgs::parameterError(
+        InvalidArgument("config", "required: the experiment YAML (e.g. config/experiment.yaml)"));
+  }
   if (p.mode == kExperimentMode && p.output_dir.empty()) {
-    throw InvalidArgument("~output_dir", "required: where results, report and bag go");
+    throw ppp_msgs::parameterError(InvalidArgument("output_dir", "required: where results, report and bag go"));
   }
   return p;
 }

@@ -187,7 +187,7 @@ void checkWork(const ExperimentWork& work, bool allow_large) {
   add(work.result_bytes > kLargeResultBytes, "results.csv above 10 GB");
   if (over.empty() || allow_large) return;
   throw InvalidArgument("work", "a large experiment (" + over + "): " + workSummary(work) +
-                                    "; pass --large (ROS: large:=true) to run it anyway");
+                                    "; pass --large (ROS: args:=--large) to run it anyway");
 }
 
 std::string experimentFingerprint(const ExperimentConfig& c) {

@@ -2,44 +2,19 @@
 
 #include <algorithm>
 #include <set>
-#include <sstream>
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/text_format.hpp"
 #include "ppp_generator/fitness.hpp"
+#include "ppp_agents/planner_bridge_options.hpp"
 #include "ppp_generator/generator_node_options.hpp"
-#include "ppp_msgs/topic_names.h"
+#include "ppp_msgs/graph_names.h"
+#include "ppp_msgs/launch_graph.h"
 
 namespace ppp {
 namespace simulator {
 
 namespace {
-
-/// `text` as a double-quoted XML attribute value; line breaks survive as character references.
-/// @throws InvalidArgument naming `what` for text roslaunch would substitute ("$(").
-std::string attribute(const std::string& text, const std::string& what) {
-  if (text.find("$(") != std::string::npos) {
-    throw InvalidArgument(what, "must not contain \"$(\" (roslaunch would substitute it): " + text);
-  }
-  std::string out;
-  for (const char c : escapeMarkup(text)) {
-    if (c == '\n') {
-      out += "&#10;";
-    } else if (c == '\t') {
-      out += "&#9;";
-    } else if (c == '\r') {
-      out += "&#13;";
-    } else {
-      out += c;
-    }
-  }
-  return "\"" + out + "\"";
-}
-
-/// `<param name="NAME" type="TYPE" value="VALUE"/>`.
-std::string param(const std::string& name, const std::string& type, const std::string& value) {
-  return "<param name=\"" + name + "\" type=\"" + type + "\" value=" + attribute(value, "~" + name) + "/>";
-}
 
 /// The roslaunch param type of a declared option ("int", "double", "bool"; else "str").
 template <typename Options>
@@ -52,70 +27,71 @@ std::string parameterType(const OptionSpec<Options>& spec) {
   }
 }
 
-/// One `<param>` line per declared option of `specs`, with its value in `values` (strings unquoted).
+/// Appends one param per declared option of `specs`, with its value in `values` (strings unquoted).
 template <typename Options>
-std::string params(const std::vector<OptionSpec<Options>>& specs, const Options& values, const std::string& indent) {
-  std::string lines;
+void addParams(const std::vector<OptionSpec<Options>>& specs, const Options& values, ppp_msgs::GraphNode* node) {
   for (const OptionSpec<Options>& spec : specs) {
-    lines += indent + param(spec.name, parameterType(spec), spec.plainText(values)) + "\n";
+    node->params.push_back({spec.name, parameterType(spec), spec.plainText(values)});
   }
-  return lines;
 }
 
-/// `<remap from="TOPIC" to="~TOPIC"/>`: the node's topic under its own name.
-std::string privateTopic(const char* topic) {
-  return std::string("<remap from=\"") + topic + "\" to=\"~" + topic + "\"/>";
-}
+/// The remapping of `topic` under the node's own name.
+ppp_msgs::GraphRemap privateTopic(const char* topic) { return {topic, std::string("~") + topic}; }
 
 /// The machine name of a host.
 std::string machineName(const std::string& host) { return "host_" + agents::agentGraphName(host); }
 
-/// ` machine="..."` for an agent on another host, or "".
-std::string machineOf(const agents::AgentConfig& agent) {
-  return agent.host.empty() ? "" : " machine=" + attribute(machineName(agent.host), "host");
-}
+/// The machine of an agent on another host, or "".
+std::string machineOf(const agents::AgentConfig& agent) { return agent.host.empty() ? "" : machineName(agent.host); }
 
 /// A generator node for `set` writing `output_dir`; a hunt's is required and exits when its set is written.
-void writeGenerator(std::ostream& out, const SetSpec& set, const std::string& output_dir, bool hunt) {
-  generator::GeneratorNodeOptions node;
-  node.options_yaml = generator::generatorOptionsYaml(*set.generator);
-  node.set_name = set.name;
-  node.output_dir = output_dir;
-  node.resume = true;
-  node.exit_when_done = hunt;
-  out << "  <node pkg=\"ppp_generator\" type=\"generator_node\" name=" << attribute(generatorNodeName(set.name), "sets")
-      << " output=\"screen\"" << (hunt ? " required=\"true\"" : "") << ">\n"
-      << params(generator::generatorNodeOptionSpecs(), node, "    ")
-      << "    " << privateTopic(ppp_msgs::topics::kProblemSet) << "\n"
-      << "    " << privateTopic(ppp_msgs::topics::kMap) << "\n"
-      << "  </node>\n";
+ppp_msgs::GraphNode generatorNode(const SetSpec& set, const std::string& output_dir, bool hunt) {
+  generator::GeneratorNodeOptions options;
+  options.options_yaml = generator::generatorOptionsYaml(*set.generator);
+  options.set_name = set.name;
+  options.output_dir = output_dir;
+  options.resume = true;
+  options.exit_when_done = hunt;
+  ppp_msgs::GraphNode node{"ppp_generator", "generator_node", generatorNodeName(set.name)};
+  node.required = hunt;
+  addParams(generator::generatorNodeOptionSpecs(), options, &node);
+  node.remaps = {privateTopic(ppp_msgs::topics::kProblemSet), privateTopic(ppp_msgs::topics::kMap)};
+  return node;
 }
 
-void writeAgent(std::ostream& out, const agents::AgentConfig& agent) {
-  out << "  <node pkg=\"ppp_agents\" type=\"agent_node\" name=" << attribute(agents::agentGraphName(agent.name), "name")
-      << machineOf(agent) << " output=\"screen\">\n"
-      << params(agents::agentNodeOptionSpecs(), agent, "    ")
-      << "    " << privateTopic(ppp_msgs::topics::kScans) << "\n"
-      << "    " << privateTopic(ppp_msgs::topics::kMoves) << "\n"
-      << "  </node>\n";
+ppp_msgs::GraphNode agentNode(const agents::AgentConfig& agent) {
+  ppp_msgs::GraphNode node{"ppp_agents", "agent_node", agents::agentGraphName(agent.name)};
+  node.machine = machineOf(agent);
+  node.agent = agent.name;
+  addParams(agents::agentNodeOptionSpecs(), agent, &node);
+  node.remaps = {privateTopic(ppp_msgs::topics::kScans), privateTopic(ppp_msgs::topics::kMoves)};
+  return node;
 }
 
-void writePlanner(std::ostream& out, const agents::AgentConfig& agent) {
+/// The bridge of a planner agent and, when the config names it, its planner, in the agent's namespace.
+std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent) {
   const std::size_t slash = agent.planner_node.find('/');
   const std::string package = agent.planner_node.substr(0, slash);
   const std::string type = slash == std::string::npos ? "" : agent.planner_node.substr(slash + 1);
-  out << "  <group ns=" << attribute(agents::agentGraphName(agent.name), "name") << ">\n"
-      << "    <node pkg=\"ppp_agents\" type=\"planner_bridge_node\" name=\"bridge\"" << machineOf(agent)
-      << " output=\"screen\">\n"
-      << "      " << param("memory", "str", agents::memoryWindowText(agent.memory_window)) << "\n"
-      // A planner the user starts by hand gets five minutes to appear; one started here, 20 s.
-      << "      " << param("connect_timeout", "double", type.empty() ? "300.0" : "20.0") << "\n"
-      << "    </node>\n";
-  if (!type.empty()) {
-    out << "    <node pkg=" << attribute(package, "planner_node") << " type=" << attribute(type, "planner_node")
-        << " name=\"planner\" ns=\"" << ppp_msgs::topics::kRobotNamespace << "\"" << machineOf(agent) << " output=\"screen\"/>\n";
-  }
-  out << "  </group>\n";
+  ppp_msgs::GraphNode bridge{"ppp_agents", "planner_bridge_node", ppp_msgs::nodes::kBridge};
+  bridge.group = agents::agentGraphName(agent.name);
+  bridge.machine = machineOf(agent);
+  bridge.agent = agent.name;
+  static const std::vector<OptionSpec<agents::AgentConfig>> memory = selectOptions(agents::agentNodeOptionSpecs(), {"memory"});
+  addParams(memory, agent, &bridge);
+  // A planner the user starts by hand gets five minutes to appear; one started here, 20 s.
+  agents::BridgeOptions options;
+  options.connect_timeout = type.empty() ? 300.0 : 20.0;
+  static const std::vector<OptionSpec<agents::BridgeOptions>> connect =
+      selectOptions(agents::bridgeOptionSpecs(), {"connect_timeout"});
+  addParams(connect, options, &bridge);
+  if (type.empty()) return {bridge};
+  ppp_msgs::GraphNode planner{package, type, ppp_msgs::nodes::kPlanner};
+  planner.group = bridge.group;
+  planner.ns = ppp_msgs::topics::kRobotNamespace;
+  planner.machine = bridge.machine;
+  planner.agent = agent.name;
+  return {bridge, planner};
 }
 
 /// The set a hunt graph evolves. @throws InvalidArgument naming "hunt" unless it is a `failure` set of `config`.
@@ -157,20 +133,21 @@ void assignPlannerNode(ExperimentConfig* config, const std::string& agent, const
                                        (planners.empty() ? "none" : joinNames(planners)) + ")");
 }
 
-std::string generatorNodeName(const std::string& set_name) { return "gen_" + agents::agentGraphName(set_name); }
+std::string generatorNodeName(const std::string& set_name) {
+  return ppp_msgs::nodes::kGeneratorPrefix + agents::agentGraphName(set_name);
+}
 
 std::string setTopic(const std::string& set_name) {
   return ppp_msgs::topics::under(generatorNodeName(set_name), ppp_msgs::topics::kProblemSet);
 }
 
-std::string experimentLaunchXml(const ExperimentConfig& config, const GraphOptions& options) {
+ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const GraphOptions& options) {
   config.validate();
   options.validate(config);
   const SetSpec* hunted = options.hunt.empty() ? nullptr : &huntedSet(config, options.hunt);
-  std::ostringstream out;
-  out << "<launch>\n"
-      << "  <!-- The ROS graph of " << (hunted ? "the hunt of set " + escapeMarkup(hunted->name) + " of " : "")
-      << "the experiment " << escapeMarkup(options.config_path) << ", written by `ppp launch-file`. -->\n";
+  ppp_msgs::LaunchGraph graph;
+  graph.comment = "The ROS graph of " + (hunted ? "the hunt of set " + hunted->name + " of " : std::string()) +
+                  "the experiment " + options.config_path + ", written by `ppp launch-file`.";
   std::vector<agents::AgentConfig> agents;
   for (const agents::AgentConfig& agent : config.agents) {
     const std::vector<std::string>* panel = hunted ? &hunted->generator->agents : nullptr;
@@ -179,35 +156,33 @@ std::string experimentLaunchXml(const ExperimentConfig& config, const GraphOptio
   std::set<std::string> hosts;
   for (const agents::AgentConfig& agent : agents) {
     if (agent.host.empty() || !hosts.insert(agent.host).second) continue;
-    out << "  <machine name=" << attribute(machineName(agent.host), "host")
-        << " address=" << attribute(agent.host, "host") << " env-loader=" << attribute(options.env_loader, "env_loader")
-        << "/>\n";
+    graph.machines.push_back({machineName(agent.host), agent.host, options.env_loader});
   }
   if (hunted) {
-    writeGenerator(out, *hunted, options.output_dir, true);
+    graph.nodes.push_back(generatorNode(*hunted, options.output_dir, true));
   } else {
     for (const SetSpec& set : config.sets) {
-      if (set.generator) writeGenerator(out, set, options.output_dir + "/sets/" + set.name, false);
+      if (set.generator) graph.nodes.push_back(generatorNode(set, options.output_dir + "/sets/" + set.name, false));
     }
   }
-  out << "  <node pkg=\"ppp_simulator\" type=\"simulator_node\" name=\"simulator\" output=\"screen\""
-      << (hunted ? "" : " required=\"true\"") << ">\n";
+  ppp_msgs::GraphNode simulator{"ppp_simulator", "simulator_node", ppp_msgs::nodes::kSimulator};
+  simulator.required = !hunted;
   SimulatorTask task;
   task.mode = hunted ? kHuntMode : kExperimentMode;
   task.config = options.config_path;
   task.output_dir = hunted ? "" : options.output_dir;
   task.generator_nodes = !hunted;
-  out << params(simulatorTaskSpecs(), task, "    ") << params(simulatorOptionSpecs(), options.simulator, "    ")
-      << "  </node>\n";
+  addParams(simulatorTaskSpecs(), task, &simulator);
+  addParams(simulatorOptionSpecs(), options.simulator, &simulator);
+  graph.nodes.push_back(simulator);
   for (const agents::AgentConfig& agent : agents) {
     if (agents::isPlanner(agent)) {
-      writePlanner(out, agent);
+      for (ppp_msgs::GraphNode& node : plannerNodes(agent)) graph.nodes.push_back(std::move(node));
     } else {
-      writeAgent(out, agent);
+      graph.nodes.push_back(agentNode(agent));
     }
   }
-  out << "</launch>\n";
-  return out.str();
+  return graph;
 }
 
 }  // namespace simulator

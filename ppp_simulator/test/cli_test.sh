@@ -173,8 +173,10 @@ expect_error "not a number" "--height: expected an integer, got 'tall'" "$ppp" g
 expect_error "negative budget" "--max-obstacles: expected an integer in [0, 1048576], got -1" "$ppp" generate --quiet --max-obstacles -1 -o "$work/bad1"
 expect_error "goal outside" "goal: cell (14, 0) is outside the 14x10 grid" "$ppp" generate --quiet --width 14 --height 10 --goal 14,0 -o "$work/bad1"
 expect_error "start is goal" "goal: must differ from start" "$ppp" generate --quiet --width 14 --height 10 --start 13,9 -o "$work/bad1"
-expect_error "size and width" "--size: give either --size or --width/--height, not both" \
+expect_error "size and width" "--size: give either --size or --width, not both" \
   "$ppp" generate --quiet --size 14x10 --width 12 -o "$work/bad1"
+expect_error "size and height" "--size: give either --size or --height, not both" \
+  "$ppp" generate --quiet --size 14x10 --height 12 -o "$work/bad1"
 expect_error "bad size" "--size: expected" "$ppp" generate --quiet --size 14by10 -o "$work/bad1"
 expect_error "episode flag without failure" "--fitness: --budget, --sensor-range, --connectivity and --threads are for" \
   "$ppp" generate --quiet --fitness turns --connectivity 8 -o "$work/bad1"

@@ -11,7 +11,9 @@ the simulator in hunt mode and the nodes of the panel's agents only.
 Loads everything with roslaunch's own parser; starts nothing. Usage: launch_files_test.py REPOSITORY_ROOT PPP
 """
 import os
+import json
 import re
+import shlex
 import subprocess
 import sys
 import tempfile
@@ -60,20 +62,58 @@ def write_config(directory, text):
 
 
 class ExperimentLaunchTest(unittest.TestCase):
-    def test_the_entry_runs_the_launcher_with_absolute_paths_and_the_arguments(self):
-        config = load('experiment.launch', 'output_dir:=relative/out', 'step_timeout:=2', 'batch_size:=7',
-                      'record:=false', 'planner:=mine', 'planner_pkg:=ppp_agents', 'planner_type:=simple_planner.py')
+    def test_the_entry_runs_the_launcher_with_absolute_paths_and_the_flags_as_given(self):
+        flags = '--step-timeout 2 --batch-size 7 --record false --planner mine=ppp_agents/simple_planner.py'
+        config = load('experiment.launch', 'output_dir:=relative/out', 'args:=' + flags)
         self.assertEqual([(n.package, n.type, n.name) for n in config.nodes],
                          [('ppp_simulator', 'experiment_launcher', 'experiment')])
         launcher = config.nodes[0]
         self.assertTrue(launcher.required)
-        args = launcher.args.split()
-        value = lambda flag: args[args.index(flag) + 1].strip("'")
+        args = shlex.split(launcher.args)
+        value = lambda flag: args[args.index(flag) + 1]
         self.assertEqual(value('--output-dir'), os.path.join(os.getcwd(), 'relative', 'out'))
         self.assertEqual(os.path.realpath(value('--config')), os.path.join(ROOT, 'config', 'experiment.yaml'))
-        self.assertEqual((value('--batch-size'), value('--step-timeout'), value('--record')), ('7', '2', 'false'))
-        self.assertEqual((value('--planner'), value('--planner-pkg'), value('--planner-type')),
-                         ('mine', 'ppp_agents', 'simple_planner.py'))
+        self.assertEqual(value('--removed').split()[0], 'batch_size=')
+        self.assertIn('--args=' + flags, args)
+
+    def test_the_launch_files_write_no_default_of_a_flag(self):
+        # Every setting beyond config, output_dir (and a hunt's set) is a `ppp launch-file` flag, whose default is
+        # declared once; the arguments of earlier versions default to nothing and are refused when given.
+        for launch in ('experiment.launch', 'hunt.launch'):
+            with open(os.path.join(ROOT, 'launch', launch)) as f:
+                text = f.read()
+            defaults = dict(re.findall(r'<arg name="([a-z_]+)" default="([^"]*)"', text))
+            kept = {'config', 'args'} | ({'set'} if launch == 'hunt.launch' else set())
+            self.assertEqual({k: v for k, v in defaults.items() if v and k not in kept}, {}, launch)
+            self.assertIn('doc="removed: see args"', text)
+
+    def test_an_argument_of_an_earlier_version_is_refused_naming_its_flag(self):
+        launcher = os.path.join(ROOT, 'ppp_simulator', 'scripts', 'experiment_launcher')
+        for removed, flag in (('batch_size=7', '--batch-size 7'), ('planner=mine', '--planner AGENT=')):
+            result = subprocess.run(['/usr/bin/python3', launcher, '--config', 'x.yaml', '--output-dir', '/tmp/x',
+                                     '--removed', removed + ' record='], stdout=subprocess.PIPE,
+                                    stderr=subprocess.PIPE, universal_newlines=True)
+            self.assertEqual(result.returncode, 1, result.stderr)
+            self.assertIn(removed.split('=')[0] + ':= is no longer an argument', result.stderr)
+            self.assertIn('args:="' + flag, result.stderr)
+
+    def test_generate_launch_takes_its_options_from_the_config(self):
+        config = load('generate.launch')
+        params = {k: p.value for k, p in config.params.items()}
+        with open(os.path.join(ROOT, 'config', 'generator.yaml')) as f:
+            defaults = yaml.safe_load(f)
+        self.assertEqual(params['/generator/fitness'], defaults['fitness'])
+        self.assertEqual(params['/generator/seed'], defaults['seed'])
+        self.assertNotIn('/generator/output_dir', params)
+        directory = tempfile.mkdtemp()
+        mine = os.path.join(directory, 'mine.yaml')
+        with open(mine, 'w') as f:
+            f.write('fitness: difficulty\nseed: 9\n')
+        params = {k: p.value for k, p in load('generate.launch', 'config:=' + mine, 'output_dir:=/tmp/x').params.items()}
+        self.assertEqual((params['/generator/fitness'], params['/generator/seed']), ('difficulty', 9))
+        self.assertEqual(params['/generator/output_dir'], '/tmp/x')
+        params = {k: p.value for k, p in load('generate.launch', 'fitness:=advances', 'seed:=3').params.items()}
+        self.assertEqual((params['/generator/fitness'], params['/generator/seed']), ('advances', 3))
 
 
 class DefaultGraphTest(unittest.TestCase):
@@ -139,6 +179,17 @@ class DefaultGraphTest(unittest.TestCase):
         self.assertEqual(self.params['/simulator/batch_size'], 2000)
         self.assertIsInstance(self.params['/simulator/step_timeout'], float)
 
+    def test_the_json_graph_is_the_xml_graph_with_its_hosts_and_required_node(self):
+        command = [PPP, 'launch-file', os.path.join(ROOT, 'config', 'experiment.yaml'), '-o', self.out]
+        xml = subprocess.run(command, stdout=subprocess.PIPE, universal_newlines=True, check=True).stdout
+        graph = json.loads(subprocess.run(command + ['--json'], stdout=subprocess.PIPE, universal_newlines=True,
+                                          check=True).stdout)
+        self.assertEqual(graph['xml'], xml)
+        self.assertEqual(graph['required'], 'simulator')
+        self.assertEqual(graph['machines'], [])
+        self.assertEqual(sorted(n['name'] for n in graph['nodes'] if n['type'] == 'agent_node'),
+                         sorted(n.name for n in self.config.nodes if n.type == 'agent_node'))
+
     def test_a_planner_named_on_the_command_line_replaces_the_configured_one(self):
         config, _ = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--planner',
                                'optimistic=ppp_agents/simple_planner.py', '--planner', 'ompl=')
@@ -177,6 +228,9 @@ sets:
         self.assertEqual((machine.address, machine.env_loader), ('10.0.0.2', '/ws/devel/env.sh'))
         self.assertIsNone([n for n in config.nodes if n.name == 'astar'][0].machine_name)
         self.assertEqual(config.params['/explorer/memory'].value, '5x5')
+        text, _, _, _ = launch_file(path, '--env-loader', '/ws/devel/env.sh', '--json')
+        self.assertEqual(json.loads(text)['machines'], [{'name': explorer.machine_name, 'address': '10.0.0.2',
+                                                         'env_loader': '/ws/devel/env.sh', 'agents': ['explorer']}])
 
     def test_bad_configs_and_flags_are_refused_naming_the_problem(self):
         directory = tempfile.mkdtemp()

@@ -6,6 +6,23 @@
 namespace ppp {
 namespace protocol {
 
+// The wire's constants, as the generated message headers declare them, are the core's values: a change on either
+// side stops the build here instead of moving agents the wrong way.
+static_assert(ppp_msgs::MoveBatch::STAY == static_cast<int>(Action::Stay), "MoveBatch STAY");
+static_assert(ppp_msgs::MoveBatch::NORTH == static_cast<int>(Action::North), "MoveBatch NORTH");
+static_assert(ppp_msgs::MoveBatch::EAST == static_cast<int>(Action::East), "MoveBatch EAST");
+static_assert(ppp_msgs::MoveBatch::SOUTH == static_cast<int>(Action::South), "MoveBatch SOUTH");
+static_assert(ppp_msgs::MoveBatch::WEST == static_cast<int>(Action::West), "MoveBatch WEST");
+static_assert(ppp_msgs::MoveBatch::NORTH_EAST == static_cast<int>(Action::NorthEast), "MoveBatch NORTH_EAST");
+static_assert(ppp_msgs::MoveBatch::SOUTH_EAST == static_cast<int>(Action::SouthEast), "MoveBatch SOUTH_EAST");
+static_assert(ppp_msgs::MoveBatch::SOUTH_WEST == static_cast<int>(Action::SouthWest), "MoveBatch SOUTH_WEST");
+static_assert(ppp_msgs::MoveBatch::NORTH_WEST == static_cast<int>(Action::NorthWest), "MoveBatch NORTH_WEST");
+static_assert(ppp_msgs::MoveBatch::NORTH_WEST + 1 == kOctileActionCount, "MoveBatch: one constant per action");
+static_assert(ppp_msgs::ScanBatch::UNKNOWN == kScanUnknown, "ScanBatch UNKNOWN");
+static_assert(ppp_msgs::ScanBatch::FREE == kScanFree, "ScanBatch FREE");
+static_assert(ppp_msgs::ScanBatch::OBSTACLE == kScanObstacle, "ScanBatch OBSTACLE");
+static_assert(ppp_msgs::ScanBatch::OUT_OF_BOUNDS == kScanOutOfBounds, "ScanBatch OUT_OF_BOUNDS");
+
 ppp_msgs::GridCell toGridCell(Cell cell) {
   ppp_msgs::GridCell m;
   m.x = cell.x;

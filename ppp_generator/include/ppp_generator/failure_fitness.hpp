@@ -64,6 +64,11 @@ Fitness fitnessFor(const GeneratorOptions& options,
                               const std::vector<agents::AgentConfig>& available, const EpisodeOptions& episode,
                               int threads);
 
+/// fitnessFor() with the panel looked up in options.agents_file (an agents list), or among the built-in agent types
+/// when it is empty: what `ppp generate` and a generator node hunting in process play.
+/// @throws InvalidArgument naming the option, IoError or ParseError for the agents file.
+Fitness fitnessFor(const GeneratorOptions& options, const EpisodeOptions& episode, int threads);
+
 /// Looks up the panel `names` among `available` configurations (an experiment's agents or an agents file);
 /// with no configurations available, each name must be a built-in agent type (no handicaps). Planner agents
 /// are refused unless `allow_planners` (a hunt through ROS, where the simulator node plays them).

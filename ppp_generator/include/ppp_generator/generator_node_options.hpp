@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "ppp_core/option_spec.hpp"
-#include "ppp_msgs/topic_names.h"
+#include "ppp_msgs/graph_names.h"
 
 namespace ppp {
 namespace generator {

@@ -93,6 +93,13 @@ int readOptionParameters(const ros::NodeHandle& nh, const std::vector<ppp::Optio
   return found;
 }
 
+/// `error`, naming an option, as the error of its `~` parameter ("weights.goal" as "~weights/goal").
+inline ppp::InvalidArgument parameterError(const ppp::InvalidArgument& error) {
+  std::string parameter = error.name();
+  for (char& c : parameter) c = c == '.' ? '/' : c;
+  return ppp::InvalidArgument("~" + parameter, error.problem());
+}
+
 /// Validates options read from `~` parameters (their validate()); an error names the parameter ("~weights/goal"
 /// for the option "weights.goal"). @throws ppp::InvalidArgument.
 template <typename Options>
@@ -100,9 +107,7 @@ void validateParameters(const Options& options) {
   try {
     options.validate();
   } catch (const ppp::InvalidArgument& e) {
-    std::string parameter = e.name();
-    for (char& c : parameter) c = c == '.' ? '/' : c;
-    throw ppp::InvalidArgument("~" + parameter, e.problem());
+    throw parameterError(e);
   }
 }
 

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "ppp_msgs/launch_graph.h"
 #include "ppp_simulator/experiment_config.hpp"
 #include "ppp_simulator/simulator_options.hpp"
 
@@ -32,13 +33,13 @@ std::string generatorNodeName(const std::string& set_name);
 /// The latched topic the generator node of `set_name` publishes the set on ("/gen_NAME/problem_set").
 std::string setTopic(const std::string& set_name);
 
-/// The roslaunch XML of `config`'s experiment, and nothing else: one generator_node per evolved set (options
+/// The ROS graph of `config`'s experiment, and nothing else (render it with ppp_msgs::launchXml or launchJson): one generator_node per evolved set (options
 /// from the config, resuming a set already written), the simulator_node (required; it plays the sets the
 /// generator nodes publish), one agent_node per built-in agent and a planner_bridge_node (plus the planner
 /// when one is named) per planner agent, each on its agent's host. With `options.hunt`, the graph of that
 /// set's hunt: its generator node (required, writing OUTPUT_DIR), the simulator serving hunts, and the nodes of
 /// the panel's agents only. @throws InvalidArgument.
-std::string experimentLaunchXml(const ExperimentConfig& config, const GraphOptions& options);
+ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const GraphOptions& options);
 
 }  // namespace simulator
 }  // namespace ppp

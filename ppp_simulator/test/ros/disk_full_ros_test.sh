@@ -20,7 +20,7 @@ sets:
 YAML
 launch() {
   timeout -s KILL 120 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$out" \
-    config:="$work/experiment.yaml" record:=false > "$1" 2>&1
+    config:="$work/experiment.yaml" args:="--record false" > "$1" 2>&1
 }
 avail=$(( $(stat -f -c '%a * %S' "$mnt") ))
 head -c $((avail - 300000)) /dev/zero > "$mnt/filler"

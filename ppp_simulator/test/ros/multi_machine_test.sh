@@ -84,12 +84,12 @@ cp "$root/config/generator.yaml" "$work/"
 built_in_rows=$((8 * 3 * 300))
 planner_rows=8
 
-# launch DIR [ARGS...]: the experiment through roslaunch in the master's namespace, in the background ($launched).
+# launch DIR: the experiment through roslaunch in the master's namespace, in the background ($launched).
 launch() {
   local dir="$1"; shift
   in_master env HOME="$work/home" ROS_HOME="$work/ros_master" ROS_IP="$master_ip" \
     ROS_MASTER_URI="http://$master_ip:11311" timeout 600 roslaunch -p 11311 "$root/launch/experiment.launch" \
-    output_dir:="$dir" config:="$work/experiment.yaml" batch_size:=100 step_timeout:=2 "$@" > "$dir.log" 2>&1 &
+    output_dir:="$dir" config:="$work/experiment.yaml" args:="--batch-size 100 --step-timeout 2" > "$dir.log" 2>&1 &
   launched=$!
 }
 # built_in DIR: DIR/results.csv without the planner's rows.

@@ -86,7 +86,7 @@ TEST(PlannerExperimentTest, TheBridgeNamesMissingPlannerTopicsAndWrongTypes) {
        "nothing publishes /lonely/robot/plan (nav_msgs/Path); nothing subscribes to "
        "/lonely/robot/move_base_simple/goal"},
       {"__ns:=/typo _connect_timeout:=5", "/typo/robot/plan is published as nav_msgs/Odometry; expected nav_msgs/Path"},
-      {"__ns:=/bad _plan_timeout:=-1", "~plan_timeout: expected a positive number"},
+      {"__ns:=/bad _plan_timeout:=-1", "~plan_timeout: expected a number in [0.001, 86400], got -1"},
       {"__ns:=/bad _memory:=4x4", "~memory: the window side must be odd"},
       {"_connect_timeout:=1", "~name: required when the bridge runs outside an agent's namespace"},
   };

@@ -2,9 +2,23 @@
 
 #include <string>
 
-// Every topic and service name of PPP Lab's ROS graph, in one place (header-only, no ROS headers: the graph
-// writer and the nodes share it).
+// Every node, topic, service and frame name of PPP Lab's ROS graph, in one place (header-only, no ROS headers:
+// the graph writer and the nodes share it).
 namespace ppp_msgs {
+
+namespace nodes {
+constexpr const char* kSimulator = "simulator";        ///< The simulator node (/simulator).
+constexpr const char* kGeneratorPrefix = "gen_";       ///< + set name: the generator node of an experiment's set.
+constexpr const char* kGenerator = "generator";        ///< A generator node started on its own (generate.launch).
+constexpr const char* kBridge = "bridge";              ///< A planner agent's bridge, in the agent's namespace.
+constexpr const char* kPlanner = "planner";            ///< A planner agent's planner, in /NAME/robot.
+}  // namespace nodes
+
+namespace frames {
+constexpr const char* kMap = "map";              ///< The fixed frame of maps, poses, goals and plans.
+constexpr const char* kBaseLink = "base_link";   ///< A robot's frame, under its namespace (NAME/robot/base_link).
+}  // namespace frames
+
 namespace topics {
 
 // An agent's namespace /NAME (NAME = ppp::agents::agentGraphName of the agent's name).

@@ -1,0 +1,31 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ppp_core/option_spec.hpp"
+#include "ppp_msgs/graph_names.h"
+
+namespace ppp {
+namespace agents {
+
+/// The planner bridge's own `~` parameters (besides its agent's name and memory): what it publishes to the
+/// planner and how long it waits for it.
+struct BridgeOptions {
+  double resolution = 1.0;                         ///< Metres per cell of the published map.
+  double plan_timeout = 5.0;                       ///< Seconds the planner has to answer a plan request.
+  double connect_timeout = 20.0;                   ///< Seconds to wait at start-up for the planner's topics.
+  std::string map_frame = ppp_msgs::frames::kMap;  ///< Frame of the map, poses and goal.
+  std::string base_frame;  ///< The robot's frame (tf child, odom child, scan frame); "": defaultBridgeBaseFrame.
+  /// @throws InvalidArgument naming the option out of its declared range, or an empty frame.
+  void validate() const;
+};
+
+/// One declaration per planner bridge parameter (the bridge reads them; the experiment's graph writes them).
+const std::vector<OptionSpec<BridgeOptions>>& bridgeOptionSpecs();
+
+/// The bridge's default base frame in namespace `ns`: "NS/robot/base_link" without the leading slash.
+std::string defaultBridgeBaseFrame(const std::string& ns);
+
+}  // namespace agents
+}  // namespace ppp

@@ -1,0 +1,62 @@
+#include "planner_node_options.hpp"
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/option_yaml.hpp"
+
+namespace ppp {
+namespace planners {
+
+void PlannerFrames::validate() const {
+  for (const auto& [name, frame] : {std::pair<const char*, const std::string*>{"map_frame", &map_frame},
+                                    {"base_frame", &base_frame}}) {
+    if (frame->empty() || frame->front() == '/') {
+      throw InvalidArgument(name, "expected a tf frame name without a leading slash, got '" + *frame + "'");
+    }
+  }
+}
+
+const std::vector<OptionSpec<PlannerFrames>>& plannerFrameSpecs() {
+  using F = PlannerFrames;
+  static const std::vector<OptionSpec<F>> specs = {
+      declareOption("map_frame", "frame of the map, the goal and the plan (no leading slash)",
+                    +[](F& f) -> std::string& { return f.map_frame; })
+          .notAffectingResults(),
+      declareOption("base_frame", "the robot's frame ('': the node's namespace + /base_link)",
+                    +[](F& f) -> std::string& { return f.base_frame; })
+          .notAffectingResults(),
+  };
+  return specs;
+}
+
+void OmplNodeParameters::validate() const {
+  checkOptionRanges(omplNodeOptionSpecs(), *this);
+  planner.validate();
+}
+
+const std::vector<OptionSpec<OmplNodeParameters>>& omplNodeOptionSpecs() {
+  using O = OmplNodeParameters;
+  static const std::vector<OptionSpec<O>> specs = [] {
+    std::vector<OptionChoice> planners;
+    for (const std::string& name : omplPlannerNames()) planners.push_back({name, ""});
+    return std::vector<OptionSpec<O>>{
+        declareOption("planner", "the OMPL geometric planner", +[](O& o) -> std::string& { return o.planner.planner; })
+            .withChoices("OMPL planner", planners),
+        declareOption("planning_time", "seconds OMPL may plan per request",
+                      +[](O& o) -> double& { return o.planner.planning_time; }, Bounds{1e-6, 3600}),
+        declareOption("seed", "seed of OMPL's random numbers (ompl::RNG::setSeed)",
+                      +[](O& o) -> int& { return o.seed; }, Bounds{1, 2147483647}),
+        declareOption("unknown_is_free", "plan through unknown map cells",
+                      +[](O& o) -> bool& { return o.unknown_is_free; }),
+    };
+  }();
+  return specs;
+}
+
+std::string defaultBaseFrame(const std::string& node_namespace) {
+  const std::size_t first = node_namespace.find_first_not_of('/');
+  return first == std::string::npos ? ppp_msgs::frames::kBaseLink
+                                    : node_namespace.substr(first) + "/" + ppp_msgs::frames::kBaseLink;
+}
+
+}  // namespace planners
+}  // namespace ppp

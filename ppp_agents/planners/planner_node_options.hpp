@@ -1,0 +1,41 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ompl_grid_planner.hpp"
+#include "ppp_core/option_spec.hpp"
+#include "ppp_msgs/graph_names.h"
+
+namespace ppp {
+namespace planners {
+
+/// The tf frames a planner node plans in (every example planner's `~map_frame` and `~base_frame`).
+struct PlannerFrames {
+  std::string map_frame = ppp_msgs::frames::kMap;  ///< Frame of the map, the goal and the plan.
+  std::string base_frame;  ///< The robot's frame; its origin is the robot's position ("": defaultBaseFrame).
+  /// @throws InvalidArgument naming the frame when it is empty or starts with a slash.
+  void validate() const;
+};
+
+/// One declaration per frame parameter of a planner node.
+const std::vector<OptionSpec<PlannerFrames>>& plannerFrameSpecs();
+
+/// What the OMPL planner node reads besides its frames.
+struct OmplNodeParameters {
+  OmplPlannerOptions planner;   ///< ~planner and ~planning_time.
+  int seed = 1;                 ///< ~seed, for ompl::RNG::setSeed.
+  bool unknown_is_free = true;  ///< ~unknown_is_free: plan through unknown map cells.
+  /// @throws InvalidArgument naming the parameter out of its declared range.
+  void validate() const;
+};
+
+/// One declaration per `~` parameter of the OMPL planner node besides its frames.
+const std::vector<OptionSpec<OmplNodeParameters>>& omplNodeOptionSpecs();
+
+/// The default ~base_frame of a node in `node_namespace`: the namespace without its leading slash, then
+/// "/base_link" ("/ompl/robot" -> "ompl/robot/base_link", "/" -> "base_link").
+std::string defaultBaseFrame(const std::string& node_namespace);
+
+}  // namespace planners
+}  // namespace ppp

@@ -1,0 +1,41 @@
+#include "ppp_agents/planner_bridge_options.hpp"
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/option_yaml.hpp"
+
+namespace ppp {
+namespace agents {
+
+void BridgeOptions::validate() const {
+  checkOptionRanges(bridgeOptionSpecs(), *this);
+  if (map_frame.empty()) throw InvalidArgument("map_frame", "expected a non-empty frame name");
+  if (base_frame.empty()) throw InvalidArgument("base_frame", "expected a non-empty frame name");
+}
+
+const std::vector<OptionSpec<BridgeOptions>>& bridgeOptionSpecs() {
+  using B = BridgeOptions;
+  static const std::vector<OptionSpec<B>> specs = {
+      declareOption("resolution", "metres per cell of the map published to the planner",
+                    +[](B& b) -> double& { return b.resolution; }, Bounds{1e-6, 1e6}),
+      declareOption("plan_timeout", "seconds the planner has to answer a plan request",
+                    +[](B& b) -> double& { return b.plan_timeout; }, Bounds{1e-3, 86400}),
+      declareOption("connect_timeout", "seconds to wait at start-up for the planner's topics",
+                    +[](B& b) -> double& { return b.connect_timeout; }, Bounds{1e-3, 86400})
+          .notAffectingResults(),
+      declareOption("map_frame", "frame of the map, poses and goal", +[](B& b) -> std::string& { return b.map_frame; })
+          .notAffectingResults(),
+      declareOption("base_frame", "the robot's frame ('': NAMESPACE/robot/base_link)",
+                    +[](B& b) -> std::string& { return b.base_frame; })
+          .notAffectingResults(),
+  };
+  return specs;
+}
+
+std::string defaultBridgeBaseFrame(const std::string& ns) {
+  const std::string robot = std::string(ppp_msgs::topics::kRobotNamespace) + "/" + ppp_msgs::frames::kBaseLink;
+  const std::size_t first = ns.find_first_not_of('/');
+  return first == std::string::npos ? robot : ns.substr(first) + "/" + robot;
+}
+
+}  // namespace agents
+}  // namespace ppp

@@ -1,0 +1,61 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+// A ROS graph as a value (machines, nodes, their parameters and remappings), rendered as roslaunch XML for
+// roslaunch and as JSON for the launcher's checks. ROS-free: the experiment's graph writer builds it, `ppp
+// launch-file` prints it.
+namespace ppp_msgs {
+
+/// One `<param>` of a node: a private parameter with its roslaunch type.
+struct GraphParam {
+  std::string name;   ///< Parameter name, relative to the node ("budget", "weights/goal").
+  std::string type;   ///< roslaunch type: "int", "double", "bool" or "str".
+  std::string value;  ///< The value as text.
+};
+
+/// One `<remap>` of a node.
+struct GraphRemap {
+  std::string from;  ///< The name the node uses.
+  std::string to;    ///< What it becomes ("~problem_set": under the node's own name).
+};
+
+/// One node of the graph.
+struct GraphNode {
+  std::string package;    ///< ROS package.
+  std::string type;       ///< Executable.
+  std::string name;       ///< Node name.
+  std::string group;      ///< Namespace of the `<group>` holding it ("" for none).
+  std::string ns;         ///< Its own `ns` attribute inside that group ("" for none).
+  std::string machine;    ///< The `<machine>` it runs on ("" for this one).
+  std::string agent;      ///< The experiment's agent it serves ("" for the generators and the simulator).
+  bool required = false;  ///< roslaunch stops everything when it ends.
+  std::vector<GraphParam> params;  ///< Its private parameters.
+  std::vector<GraphRemap> remaps;  ///< Its remappings.
+};
+
+/// One `<machine>`: another host nodes run on.
+struct GraphMachine {
+  std::string name;        ///< Machine name the nodes refer to.
+  std::string address;     ///< Host name or address (reached over ssh).
+  std::string env_loader;  ///< Script the host runs nodes through.
+};
+
+/// A whole graph.
+struct LaunchGraph {
+  std::string comment;                 ///< What the graph is, one line.
+  std::vector<GraphMachine> machines;  ///< Other hosts.
+  std::vector<GraphNode> nodes;        ///< Every node, in start order.
+};
+
+/// The roslaunch XML of `graph`; nodes with a group are wrapped in `<group ns="...">` (consecutive nodes of one
+/// group share it). @throws ppp::InvalidArgument naming the node for text roslaunch would substitute ("$(").
+std::string launchXml(const LaunchGraph& graph);
+
+/// `graph` as JSON: {"comment", "required": the required node's name or "", "machines": [{"name", "address",
+/// "env_loader", "agents": [names of the agents with a node there]}], "nodes": [...], "xml": launchXml(graph)}.
+/// @throws ppp::InvalidArgument as launchXml().
+std::string launchJson(const LaunchGraph& graph);
+
+}  // namespace ppp_msgs
