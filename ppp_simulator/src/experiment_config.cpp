@@ -12,6 +12,7 @@
 #include "ppp_core/yaml_reader.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_generator/failure_fitness.hpp"
+#include "ppp_simulator/report/episode_animation.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -136,6 +137,10 @@ const std::vector<OptionSpec<ExperimentConfig>>& experimentOptionSpecs() {
                        .notAffectingResults());
     list.push_back(declareOption("hardest", "pictures of the hardest PPPs in the report",
                                  +[](X& x) -> int& { return x.hardest; }, Bounds{0, kMaxHardest})
+                       .notAffectingResults());
+    list.push_back(declareOption("animation_frames",
+                                 "most frames of a failing run's animation in the report (longer runs: every k-th step)",
+                                 +[](X& x) -> int& { return x.animation_frames; }, Bounds{2, kMaxAnimationFrames})
                        .notAffectingResults());
     return list;
   }();

@@ -17,9 +17,6 @@ namespace simulator {
 
 namespace {
 
-/// Most frames of a failure's animation: every step of the default budget (300), a stride beyond it.
-constexpr int kReportAnimationFrames = 301;
-
 /// The first failing run of `agent` on PPP `problem` of `set`, replayed for its path and animated.
 FailureExample failingRun(const ExperimentConfig& config, const agents::PreparedSet& set, int problem,
                           const agents::AgentConfig& agent_config, const std::vector<ResultGroup>& groups,
@@ -35,7 +32,7 @@ FailureExample failingRun(const ExperimentConfig& config, const agents::Prepared
   }
   const Problem& ppp = set.set.problems[problem];
   AnimationOptions animation;
-  animation.max_frames = kReportAnimationFrames;
+  animation.max_frames = config.animation_frames;
   EpisodeAnimation run;
   if (std::max(ppp.width, ppp.height) <= kReportAnimationMaxSide) {
     run = animateEpisode(ppp, set.grids[problem], agent_config, config.episode, first_fail->seed, animation, stop);

@@ -30,6 +30,17 @@ for name in sys.argv[1:]:
     im = Image.open(name)
     assert im.format == "GIF" and im.n_frames >= 2 and im.info.get("loop") == 0, name
 ' "$work/a/pictures/"*.gif && pass || fail "the animations of the report do not read as looping GIFs"
+# animation_frames caps every animation of the report (a presentation option: same rows, same fingerprint).
+{ cat "$work/experiment.yaml"; echo "animation_frames: 3"; } > "$work/frames.yaml"
+expect_ok "experiment with animation_frames 3" "$ppp" experiment "$work/frames.yaml" -o "$work/frames" --quiet
+cmp -s "$work/a/results.csv" "$work/frames/results.csv" && pass || fail "animation_frames changed results.csv"
+/usr/bin/python3 -c '
+import sys
+from PIL import Image
+assert len(sys.argv) > 1
+for name in sys.argv[1:]:
+    assert Image.open(name).n_frames == 3, (name, Image.open(name).n_frames)
+' "$work/frames/pictures/"*.gif && pass || fail "animation_frames 3 did not cap the animations at 3 frames"
 expect_ok "rerun of a finished experiment" "$ppp" experiment "$work/experiment.yaml" -o "$work/a" --quiet
 grep -q "0 runs simulated, 54000 resumed" "$work/out" && pass || fail "rerun did work again: $(cat "$work/out")"
 

@@ -26,6 +26,7 @@ struct ExperimentConfig {
   EpisodeOptions episode;      ///< Budget and sensor range.
   int threads = 0;             ///< Worker threads; 0 = every core.
   int hardest = 6;             ///< Pictures of the hardest PPPs in the report.
+  int animation_frames = 301;  ///< Most frames of a failing run's animation in the report (default: budget 300 whole).
   std::vector<SetSpec> sets;   ///< The PPP sets, in report order.
   std::vector<agents::AgentConfig> agents;  ///< The agent configurations, in report order.
   /// @throws InvalidArgument naming the field.

@@ -12,11 +12,9 @@
 namespace ppp {
 namespace simulator {
 
-/// Largest map side whose failing runs the report animates (at most kReportAnimationFrames frames, 3 pixels per
-/// cell or more); larger maps get the still picture only, which keeps the report's time bounded.
+/// Largest map side whose failing runs the report animates (at most the experiment's animation_frames frames, 3
+/// pixels per cell or more); larger maps get the still picture only, which keeps the report's time bounded.
 constexpr int kReportAnimationMaxSide = 100;
-/// Most frames of a failure's animation in the report: every step of the default budget (300), a stride beyond.
-constexpr int kReportAnimationFrames = 301;
 
 /// The hardest PPPs of an experiment (lowest mean pass rate over every agent but the astar control), each with
 /// the first failing run of the agent it hurts most (largest drop below that agent's mean pass rate over all
