@@ -58,7 +58,7 @@ void checkDecoding(const ppp_msgs::ScanBatch& batch, bool reads_window) {
 /// The responder's answer to `batch` is complete and well formed; diagonal moves only in episodes whose start
 /// said connectivity 8 (`connectivity`: the last start's value per episode id).
 void checkAnswer(const ppp_msgs::ScanBatch& batch, const ppp_msgs::MoveBatch& moves, const std::string& agent,
-                 bool malformed, const std::map<std::uint32_t, int>& connectivity) {
+                 bool malformed, const std::map<std::uint32_t, ppp::Connectivity>& connectivity) {
   const std::size_t n = batch.episodes.size();
   if (moves.agent != agent || moves.batch != batch.batch) {
     finding("scan_batch_fuzz", "agent or batch not echoed", agent);
@@ -70,7 +70,7 @@ void checkAnswer(const ppp_msgs::ScanBatch& batch, const ppp_msgs::MoveBatch& mo
     if (moves.steps[i] != (i < batch.steps.size() ? batch.steps[i] : 0)) finding("scan_batch_fuzz", "step", agent);
     const std::uint8_t action = moves.actions[i];
     const auto started = connectivity.find(batch.episodes[i]);
-    const int model = started == connectivity.end() ? 4 : started->second;
+    const ppp::Connectivity model = started == connectivity.end() ? ppp::Connectivity::Four : started->second;
     if (!ppp::isAction(action, model) && action != protocol::kRejectedAction) {
       finding("scan_batch_fuzz", "an action that is no action and no rejection", agent);
     }
@@ -116,7 +116,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const ppp::agents::AgentConfig& config : configs()) {
     responders.push_back(std::make_unique<protocol::BatchResponder>(config));
   }
-  std::map<std::uint32_t, int> connectivity;
+  std::map<std::uint32_t, ppp::Connectivity> connectivity;
   for (std::size_t at = 0; at < size;) {
     ppp::fuzz::WireWalker walker(data + at, size - at);
     if (!walkScanBatch(&walker)) return 0;
@@ -127,7 +127,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     checkDecoding(batch, false);
     if (!smallMaps(batch)) continue;
     for (const ppp_msgs::EpisodeStart& start : batch.starts) {
-      connectivity[start.episode] = start.connectivity == 8 ? 8 : 4;
+      connectivity[start.episode] = start.connectivity == ppp::neighbours(ppp::Connectivity::Eight) ? ppp::Connectivity::Eight
+                                                                                                  : ppp::Connectivity::Four;
     }
     for (std::size_t r = 0; r < responders.size(); ++r) {
       const ppp::agents::AgentConfig& config = configs()[r];

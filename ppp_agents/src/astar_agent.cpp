@@ -58,7 +58,7 @@ bool AstarAgent::plan(const Grid& grid, Cell from, Cell goal, std::vector<Action
   plan->clear();
   if (!grid.isFree(from) || !grid.isFree(goal)) return false;
   if (from == goal) return true;
-  if (connectivity_ == 8) {  // octile-optimal: 1 per straight move, sqrt(2) per diagonal, no corner cut
+  if (connectivity_ == Connectivity::Eight) {  // octile-optimal: 1 per straight move, sqrt(2) per diagonal, no corner cut
     const OctileRoute route = shortestOctileRoute(grid, from, goal);
     for (std::size_t i = 1; i < route.cells.size(); ++i) {
       plan->push_back(actionTowards(route.cells[i - 1], route.cells[i]));

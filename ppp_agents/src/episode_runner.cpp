@@ -4,7 +4,7 @@ namespace ppp {
 namespace agents {
 
 EpisodeInfo episodeInfo(const Problem& problem, const Grid& grid, const AgentConfig& config,
-                                std::uint64_t run_seed, int connectivity) {
+                                std::uint64_t run_seed, Connectivity connectivity) {
   EpisodeInfo info;
   info.connectivity = connectivity;
   info.width = grid.width();

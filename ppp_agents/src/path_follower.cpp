@@ -64,7 +64,7 @@ std::optional<Action> PathFollower::next(Cell robot, const KnownMap& known) {
   if (!(walk_[position_] == robot) || position_ + 1 >= walk_.size()) return std::nullopt;
   const Cell ahead = walk_[position_ + 1];
   if (known.at(ahead) == kScanObstacle) return std::nullopt;
-  if (connectivity_ == 8 && position_ + 2 < walk_.size()) {
+  if (connectivity_ == Connectivity::Eight && position_ + 2 < walk_.size()) {
     const Cell beyond = walk_[position_ + 2];
     const Cell side{robot.x + beyond.x - ahead.x, robot.y + beyond.y - ahead.y};  // the corner's other side
     const bool corner = std::abs(beyond.x - robot.x) == 1 && std::abs(beyond.y - robot.y) == 1;

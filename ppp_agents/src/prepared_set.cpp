@@ -36,7 +36,7 @@ PreparedSet prepareSet(const std::string& name, ProblemSet set, const EpisodeOpt
     p.grids.push_back(decodeGrid(problem));
     const DpaResult& result = dpa.solve(p.grids.back(), problem.start, problem.goal);
     if (!result.reachable) throw InvalidArgument("sets", "set '" + name + "' holds an unsolvable PPP");
-    p.optimal.push_back(episode.connectivity == 8
+    p.optimal.push_back(episode.connectivity == Connectivity::Eight
                             ? shortestOctileRoute(p.grids.back(), problem.start, problem.goal).length
                             : static_cast<double>(result.advances));
     p.windows.push_back(WindowAtlas::bytes(p.grids.back(), sensor_range) <= kMaxWindowAtlasBytes

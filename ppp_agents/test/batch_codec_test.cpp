@@ -23,7 +23,7 @@ ScanRequest scan(std::uint32_t id, int step, bool starting, bool prior_map) {
   s.cells = {kScanOutOfBounds, kScanFree, kScanObstacle, kScanUnknown, kScanFree,
              kScanFree,        kScanFree, kScanFree,     static_cast<std::int8_t>(id)};
   if (starting) {
-    EpisodeStart start{4, 5, Cell{0, 1}, Cell{3, 4}, 0x123456789abcdefULL + id, {}, id % 2 == 1 ? 8 : 4};
+    EpisodeStart start{4, 5, Cell{0, 1}, Cell{3, 4}, 0x123456789abcdefULL + id, {}, id % 2 == 1 ? Connectivity::Eight : Connectivity::Four};
     if (prior_map) {
       start.prior_map.assign(20, kScanFree);
       start.prior_map[7] = kScanObstacle;

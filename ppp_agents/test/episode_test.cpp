@@ -174,7 +174,7 @@ TEST(EpisodeTest, BadOptions) {
   EXPECT_THROW(EpisodeRunner(config("flier"), EpisodeOptions{}), InvalidArgument);
   options.sensor_range = 2;
   for (int connectivity : {0, 5, 6, 9}) {
-    options.connectivity = connectivity;
+    options.connectivity = static_cast<Connectivity>(connectivity);
     try {
       EpisodeRunner(config("random"), options);
       FAIL() << "no error for connectivity " << connectivity;
@@ -202,7 +202,7 @@ TEST(EpisodeTest, DiagonalMovesUnderConnectivityEight) {
   const Problem problem = problemOf({"...", ".#.", "..."});
   const Grid grid = decodeGrid(problem);
   const SensorModel sensor(SensorOptions{2, 0.0});
-  Episode episode(problem, grid, sensor, 1, 10, 8, true);
+  Episode episode(problem, grid, sensor, 1, 10, Connectivity::Eight, true);
   episode.apply(Action::SouthEast);  // would pass beside (1,0) and (0,1): free, but lands on the obstacle
   EXPECT_TRUE(episode.scan().bumped());
   episode.apply(Action::East);        // (1,0)
@@ -223,7 +223,7 @@ TEST(EpisodeTest, DiagonalMovesUnderConnectivityEight) {
   // On an open map the diagonal is taken and costs sqrt(2).
   const Problem open = problemOf({"...", "...", "..."});
   const Grid open_grid = decodeGrid(open);
-  Episode diagonal(open, open_grid, sensor, 1, 10, 8, true);
+  Episode diagonal(open, open_grid, sensor, 1, 10, Connectivity::Eight, true);
   diagonal.apply(Action::SouthEast);
   diagonal.apply(Action::SouthEast);
   EXPECT_TRUE(diagonal.outcome().passed);
@@ -236,7 +236,7 @@ TEST(EpisodeTest, DiagonalUnderConnectivityFourIsAnInvalidAction) {
   const Problem open = problemOf({"...", "...", "..."});
   const Grid grid = decodeGrid(open);
   const SensorModel sensor(SensorOptions{2, 0.0});
-  Episode episode(open, grid, sensor, 1, 10, 4);
+  Episode episode(open, grid, sensor, 1, 10, Connectivity::Four);
   episode.apply(Action::East);
   episode.apply(Action::SouthEast);
   EXPECT_TRUE(episode.done());
@@ -251,7 +251,7 @@ TEST(EpisodeTest, AstarTakesOctileRoutesUnderConnectivityEight) {
   //           ((2,0)-(3,1) beside (2,1), (0,1)-(1,2) beside (1,1)), so the octile optimum is 5 straight moves.
   const Problem blocked = problemOf({"....", ".##.", "...."});
   EpisodeOptions options;
-  options.connectivity = 8;
+  options.connectivity = Connectivity::Eight;
   EpisodeRunner runner(config("astar"), options);
   auto agent = agents::makeAgent(config("astar"));
   const EpisodeOutcome o = runner.run(blocked, decodeGrid(blocked), *agent, 1);

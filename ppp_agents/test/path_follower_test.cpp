@@ -62,7 +62,7 @@ TEST(PathFollowerTest, UnderConnectivityEightCornersWithBothSidesKnownFreeAreCut
   // each known free the robot takes two diagonal moves.
   const KnownMap open = known({"....", "....", "...."});
   PathFollower follower;
-  follower.setConnectivity(8);
+  follower.setConnectivity(Connectivity::Eight);
   ASSERT_EQ(follower.follow({centre(0, 0, 3), centre(2, 2, 3)}, kFrame, Cell{0, 0}, Cell{2, 2}, open), "");
   EXPECT_EQ(follower.next(Cell{0, 0}, open), Action::SouthEast);
   EXPECT_EQ(drive(follower, Cell{0, 0}, open), (std::vector<Cell>{{0, 0}, {1, 1}, {2, 2}}));

@@ -56,7 +56,7 @@ void runScenariosCommand(const ScenariosFlags& f) {
   const double ratio = optimal_total > 0 ? path_total / optimal_total : 0;
   if (f.json) {
     const nlohmann::json j = {{"agent", options.agent.name},
-                              {"connectivity", options.episode.connectivity},
+                              {"connectivity", neighbours(options.episode.connectivity)},
                               {"scenarios", list},
                               {"totals",
                                {{"scenarios", results.size()},
@@ -68,7 +68,7 @@ void runScenariosCommand(const ScenariosFlags& f) {
   }
   std::cout << options.agent.name << " on " << f.scen << ": " << passed << " of " << results.size()
             << " scenarios passed; over those, path length / published optimal length = " << formatNumber(ratio)
-            << (options.episode.connectivity == 8 ? " (8-connected moves)\n"
+            << (options.episode.connectivity == Connectivity::Eight ? " (8-connected moves)\n"
                                                   : " (4-connected moves against the benchmark's 8-connected optima; "
                                                     "--connectivity 8 plays the benchmark's model)\n");
 }

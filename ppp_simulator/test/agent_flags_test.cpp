@@ -102,7 +102,7 @@ TEST(AgentFlagsTest, FlagsWrittenFromTheTablesReadBackAsTheSameOptions) {
   agents::AgentConfig agent{"explorer_memory_5x5", "explorer", 5, 0.1};
   EpisodeOptions episode;
   episode.budget = 120;
-  episode.connectivity = 8;
+  episode.connectivity = Connectivity::Eight;
   const std::string agent_flags = optionFlags(agents::agentPlayOptionSpecs(), agent, agents::AgentConfig{});
   const std::string episode_flags = optionFlags(episodeOptionSpecs(), episode, EpisodeOptions{});
   EXPECT_EQ(agent_flags, "--agent explorer --memory 5x5 --sensor-noise 0.1");
@@ -117,7 +117,7 @@ TEST(AgentFlagsTest, FlagsWrittenFromTheTablesReadBackAsTheSameOptions) {
   EXPECT_EQ(flags.agent().memory_window, 5);
   EXPECT_EQ(flags.agent().sensor_noise, 0.1);
   EXPECT_EQ(flags.episode().budget, 120);
-  EXPECT_EQ(flags.episode().connectivity, 8);
+  EXPECT_EQ(flags.episode().connectivity, Connectivity::Eight);
   EXPECT_EQ(flags.episode().sensor_range, EpisodeOptions{}.sensor_range);
   EXPECT_EQ(optionFlags(episodeOptionSpecs(), EpisodeOptions{}, EpisodeOptions{}), "");
 }

@@ -106,7 +106,7 @@ TEST(AgentLaneTest, BatchedPlayEqualsTheInProcessRunnerForEveryAgentAndBatchSize
 
 TEST(AgentLaneTest, BatchedPlayEqualsTheInProcessRunnerUnderConnectivityEight) {
   EpisodeOptions octile;
-  octile.connectivity = 8;
+  octile.connectivity = Connectivity::Eight;
   for (const agents::AgentConfig& c : {config("astar"), config("random")}) {
     auto expected = inProcess(c, 4, octile);
     sortRows(&expected);

@@ -214,14 +214,14 @@ TEST_F(ExperimentYaml, DirectoryHoldingAnotherExperimentIsRefused) {
     EXPECT_NE(std::string(e.what()).find("runs: '1000' there, '5' here"), std::string::npos) << e.what();
   }
   c.runs = 1000;
-  c.episode.connectivity = 8;  // the same rows under another move model would be mixed with these
+  c.episode.connectivity = Connectivity::Eight;  // the same rows under another move model would be mixed with these
   try {
     checkExperimentDirectory(c, out);
     FAIL();
   } catch (const IoError& e) {
     EXPECT_NE(std::string(e.what()).find("connectivity: '4' there, '8' here"), std::string::npos) << e.what();
   }
-  c.episode.connectivity = 4;
+  c.episode.connectivity = Connectivity::Four;
   c.threads = 1;  // pace only: the same experiment
   c.hardest = 2;
   c.agents[0].host = "10.0.0.2";

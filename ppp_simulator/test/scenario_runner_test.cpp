@@ -66,7 +66,7 @@ TEST(ScenarioRunnerTest, AstarTakesAShortestFourConnectedRouteOnEveryScenarioOfA
 
 TEST(ScenarioRunnerTest, AstarUnderConnectivityEightReproducesEveryPublishedLength) {
   ScenarioRunOptions options = agent("astar");
-  options.episode.connectivity = 8;
+  options.episode.connectivity = Connectivity::Eight;
   const std::vector<ScenarioResult> results = runScenarios(kData + "/arena.map.scen", options);
   ASSERT_EQ(results.size(), 130u);
   int with_diagonals = 0;

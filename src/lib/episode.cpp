@@ -18,7 +18,7 @@ std::uint64_t agentSeed(std::uint64_t run_seed) { return deriveSeed(run_seed, {1
 std::uint64_t noiseSeed(std::uint64_t run_seed) { return deriveSeed(run_seed, {2}); }
 
 Episode::Episode(const Problem& problem, const Grid& grid, const SensorModel& sensor, std::uint64_t run_seed,
-                 int budget, int connectivity, bool record_path, const WindowAtlas* windows)
+                 int budget, Connectivity connectivity, bool record_path, const WindowAtlas* windows)
     : problem_(&problem),
       grid_(&grid),
       sensor_(&sensor),
@@ -40,7 +40,7 @@ void Episode::apply(Action action) {
   ++outcome_.steps;
   bumped_ = false;
   const bool diagonal = isDiagonal(action);
-  if (diagonal && connectivity_ != 8) {
+  if (diagonal && connectivity_ != Connectivity::Eight) {
     fail(reason::kInvalidAction);
     return;
   }

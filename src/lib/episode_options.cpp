@@ -18,7 +18,7 @@ const std::vector<OptionSpec<EpisodeOptions>>& episodeOptionSpecs() {
       declareOption("sensor_range", "scan radius in cells (2: a 5x5 window)",
                     +[](E& e) -> int& { return e.sensor_range; }, Bounds{1, kMaxSensorRange}),
       declareOption("connectivity", "move model (agents other than astar move 4-connected either way)",
-                    +[](E& e) -> int& { return e.connectivity; }, Bounds{4, 8})
+                    +[](E& e) -> Connectivity& { return e.connectivity; }, Bounds{4, 8})
           .withChoices("connectivity", {{"4", "stay and the four straight moves"},
                                         {"8", "also the four diagonals, never cutting a corner"}}),
   };

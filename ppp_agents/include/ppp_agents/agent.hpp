@@ -20,7 +20,7 @@ struct EpisodeInfo {
   Cell goal;                        ///< Goal cell.
   std::uint64_t seed = 0;           ///< Seed of the agent's own random choices in this episode.
   const Grid* prior_map = nullptr;  ///< The true map, for agents with prior knowledge (astar); else null.
-  int connectivity = 4;             ///< Move model, 4 or 8; only astar takes diagonal moves under 8.
+  Connectivity connectivity = Connectivity::Four;  ///< Move model; only astar takes diagonal moves under Eight.
 };
 
 /// A test agent: each step it gets a scan (its cell, the goal, a bump flag and the window of cells) and returns

@@ -39,7 +39,7 @@ class AstarAgent final : public Agent {
   };
 
   const Grid* map_ = nullptr;  // the prior map, or corrected_ after a bump
-  int connectivity_ = 4;       // the episode's move model: 8 plans octile-optimal routes with diagonal moves
+  Connectivity connectivity_ = Connectivity::Four;  // Eight plans octile-optimal routes with diagonal moves
   Grid corrected_;
   bool own_map_ = false;
   Cell goal_;

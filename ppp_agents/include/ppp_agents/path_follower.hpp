@@ -39,12 +39,12 @@ class PathFollower {
   /// Forgets the path.
   void clear();
   /// Sets the move model (4 or 8) of the moves next() gives; 4 until set.
-  void setConnectivity(int connectivity) { connectivity_ = connectivity; }
+  void setConnectivity(Connectivity connectivity) { connectivity_ = connectivity; }
 
  private:
   std::vector<Cell> walk_;
   std::size_t position_ = 0;  // index of the robot's cell in walk_
-  int connectivity_ = 4;
+  Connectivity connectivity_ = Connectivity::Four;
 };
 
 }  // namespace agents

@@ -56,7 +56,7 @@ void encodeScans(const std::vector<ScanRequest>& scans, ppp_msgs::ScanBatch* mes
     start.goal = toGridCell(r.start->goal);
     start.agent_seed = r.start->agent_seed;
     start.prior_map = r.start->prior_map;
-    start.connectivity = static_cast<std::uint8_t>(r.start->connectivity);
+    start.connectivity = static_cast<std::uint8_t>(neighbours(r.start->connectivity));
     m.starts.push_back(std::move(start));
   }
 }
@@ -95,10 +95,11 @@ EpisodeStart decodeEpisodeStart(const ppp_msgs::EpisodeStart& message) {
   start.goal = toCell(message.goal);
   start.agent_seed = message.agent_seed;
   start.prior_map = message.prior_map;
-  if (message.connectivity != 0 && message.connectivity != 4 && message.connectivity != 8) {
+  const int model = message.connectivity == 0 ? neighbours(Connectivity::Four) : message.connectivity;
+  if (model != neighbours(Connectivity::Four) && model != neighbours(Connectivity::Eight)) {
     throw InvalidArgument("connectivity", "expected 4 or 8 (0: 4), got " + std::to_string(message.connectivity));
   }
-  start.connectivity = message.connectivity == 8 ? 8 : 4;
+  start.connectivity = static_cast<Connectivity>(model);
   requireOnGrid(start.start, start.width, start.height, "start");
   requireOnGrid(start.goal, start.width, start.height, "goal");
   priorGrid(start);  // checks the prior map

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 
+#include "ppp_core/connectivity.hpp"
 #include "ppp_core/grid.hpp"
 
 namespace ppp {
@@ -64,10 +65,10 @@ inline Action actionTowards(Cell from, Cell to) {
 /// True for the four diagonal moves.
 inline bool isDiagonal(Action action) { return static_cast<int>(action) >= static_cast<int>(Action::NorthEast); }
 
-/// True for a number that names an action of the move model with `connectivity` 4 or 8 (for actions received
-/// from other processes).
-inline bool isAction(int value, int connectivity = 4) {
-  return value >= 0 && value < (connectivity == 8 ? kOctileActionCount : kActionCount);
+/// True for a number that names an action of the move model `connectivity` (for actions received from other
+/// processes).
+inline bool isAction(int value, Connectivity connectivity = Connectivity::Four) {
+  return value >= 0 && value < (connectivity == Connectivity::Eight ? kOctileActionCount : kActionCount);
 }
 
 /// The action's name ("stay", "north", ..., "north_west").

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "ppp_core/action.hpp"
+#include "ppp_core/connectivity.hpp"
 #include "ppp_core/episode_reason.hpp"
 #include "ppp_core/episode_options.hpp"
 #include "ppp_core/problem.hpp"
@@ -40,7 +41,7 @@ class Episode {
   /// Starts at the problem's start. `grid`, `sensor` and `windows` (the grid's atlas at the sensor's range,
   /// when there is one: scans become lookups) must outlive the episode.
   Episode(const Problem& problem, const Grid& grid, const SensorModel& sensor, std::uint64_t run_seed, int budget,
-          int connectivity, bool record_path = false, const WindowAtlas* windows = nullptr);
+          Connectivity connectivity, bool record_path = false, const WindowAtlas* windows = nullptr);
   /// True once the agent stood on the goal, the budget was spent or fail() was called.
   bool done() const { return done_; }
   /// What the agent senses now (computed on first read).
@@ -61,7 +62,7 @@ class Episode {
   const WindowAtlas* windows_;
   std::uint64_t noise_seed_;
   int budget_;
-  int connectivity_;
+  Connectivity connectivity_;
   bool record_path_;
   Cell position_;
   bool bumped_ = false;

@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "ppp_core/connectivity.hpp"
 #include "ppp_core/option_spec.hpp"
 
 namespace ppp {
@@ -16,9 +17,7 @@ constexpr int kMaxEpisodeBudget = 1000000;
 struct EpisodeOptions {
   int budget = 300;       ///< Most actions before the episode fails.
   int sensor_range = 2;   ///< Scan radius (2: a 5x5 window).
-  /// Move model: 4 (the dissertation's: stay and four straight moves) or 8 (also the four diagonal moves, each
-  /// only when both cells it passes beside are free, MovingAI's rule).
-  int connectivity = 4;
+  Connectivity connectivity = Connectivity::Four;  ///< Move model.
   /// @throws InvalidArgument("budget", "sensor_range" or "connectivity", ...).
   void validate() const;
 };

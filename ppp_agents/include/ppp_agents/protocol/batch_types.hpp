@@ -25,7 +25,7 @@ struct EpisodeStart {
   Cell goal;                           ///< Goal cell (fixed for the episode).
   std::uint64_t agent_seed = 0;        ///< Seed of the agent's own choices.
   std::vector<std::int8_t> prior_map;  ///< The true map (kScanFree / kScanObstacle per cell) for astar; else empty.
-  int connectivity = 4;                ///< Move model, 4 or 8.
+  Connectivity connectivity = Connectivity::Four;  ///< Move model.
 };
 
 /// One scan of a batch, for one episode and step.
