@@ -15,30 +15,31 @@ namespace agents {
 const std::vector<AgentType>& agentRegistry() {
   // Sensor noise is applied by the sensor; the agents only see its effect in their scans.
   static const std::vector<AgentType> registry = {
-      {"astar", "A* on the true map, follows the plan (the control)", true, true, true, false,
+      {"astar", "A* on the true map, follows the plan (the control)",
+       AgentTrait::ReadsScanWindow | AgentTrait::NeedsPriorMap | AgentTrait::Control,
        [](int window) -> std::unique_ptr<Agent> { return std::make_unique<AstarAgent>(window); }},
-      {"random", "uniform over the five actions (the baseline)", false, false, false, true,
+      {"random", "uniform over the five actions (the baseline)", AgentTrait::Baseline,
        [](int window) -> std::unique_ptr<Agent> { return std::make_unique<RandomAgent>(window); }},
-      {"wall_follower_left", "heads for the goal, then keeps the first wall met on its left", true, false, false,
-       false,
+      {"wall_follower_left", "heads for the goal, then keeps the first wall met on its left",
+       AgentTrait::ReadsScanWindow,
        [](int window) -> std::unique_ptr<Agent> {
          return std::make_unique<WallFollowerAgent>(WallFollowerAgent::Side::Left, window);
        }},
-      {"wall_follower_right", "heads for the goal, then keeps the first wall met on its right", true, false, false,
-       false,
+      {"wall_follower_right", "heads for the goal, then keeps the first wall met on its right",
+       AgentTrait::ReadsScanWindow,
        [](int window) -> std::unique_ptr<Agent> {
          return std::make_unique<WallFollowerAgent>(WallFollowerAgent::Side::Right, window);
        }},
-      {"explorer", "moves to the neighbour revealing most unknown cells", true, false, false, false,
+      {"explorer", "moves to the neighbour revealing most unknown cells", AgentTrait::ReadsScanWindow,
        [](int window) -> std::unique_ptr<Agent> { return std::make_unique<ExplorerAgent>(false, window); }},
-      {"long_term_explorer", "the explorer, walking to the nearest frontier when nothing is new nearby", true, false,
-       false, false,
+      {"long_term_explorer", "the explorer, walking to the nearest frontier when nothing is new nearby",
+       AgentTrait::ReadsScanWindow,
        [](int window) -> std::unique_ptr<Agent> { return std::make_unique<ExplorerAgent>(true, window); }},
-      {"bumper", "straight until a bump, then a random new direction", true, false, false, false,
+      {"bumper", "straight until a bump, then a random new direction", AgentTrait::ReadsScanWindow,
        [](int window) -> std::unique_ptr<Agent> { return std::make_unique<BumperAgent>(false, window); }},
-      {"decision_bumper", "the bumper, trying untried directions at each bump cell first", true, false, false, false,
+      {"decision_bumper", "the bumper, trying untried directions at each bump cell first", AgentTrait::ReadsScanWindow,
        [](int window) -> std::unique_ptr<Agent> { return std::make_unique<BumperAgent>(true, window); }},
-      {kPlannerType, "an external ROS planner played through planner_bridge_node", true, false, false, false,
+      {kPlannerType, "an external ROS planner played through planner_bridge_node", AgentTrait::ReadsScanWindow,
        nullptr},
   };
   return registry;
@@ -73,10 +74,10 @@ std::unique_ptr<Agent> makeAgent(const AgentConfig& config) {
   return type.make(config.memory_window);
 }
 
-bool readsScanWindow(const AgentConfig& config) { return agentType(config.type).reads_scan_window; }
+bool readsScanWindow(const AgentConfig& config) { return agentType(config.type).has(AgentTrait::ReadsScanWindow); }
 
 bool givenPriorMap(const AgentConfig& config) {
-  return agentType(config.type).needs_prior_map || (isPlanner(config) && config.prior_map);
+  return agentType(config.type).has(AgentTrait::NeedsPriorMap) || (isPlanner(config) && config.prior_map);
 }
 
 }  // namespace agents

@@ -32,12 +32,12 @@ TEST(AgentRegistryTest, EveryBuiltInTypeBuildsAndThePlannerDoesNot) {
 }
 
 TEST(AgentRegistryTest, TraitsOfTheControlTheBaselineAndThePlanner) {
-  EXPECT_TRUE(agentType("astar").is_control);
-  EXPECT_TRUE(agentType("astar").needs_prior_map);
-  EXPECT_TRUE(agentType("random").is_baseline);
-  EXPECT_FALSE(agentType("random").reads_scan_window);
-  EXPECT_TRUE(agentType("explorer").reads_scan_window);
-  EXPECT_FALSE(agentType("explorer").is_control || agentType("explorer").is_baseline);
+  EXPECT_TRUE(agentType("astar").has(AgentTrait::Control));
+  EXPECT_TRUE(agentType("astar").has(AgentTrait::NeedsPriorMap));
+  EXPECT_TRUE(agentType("random").has(AgentTrait::Baseline));
+  EXPECT_FALSE(agentType("random").has(AgentTrait::ReadsScanWindow));
+  EXPECT_TRUE(agentType("explorer").has(AgentTrait::ReadsScanWindow));
+  EXPECT_FALSE(agentType("explorer").has(AgentTrait::Control) || agentType("explorer").has(AgentTrait::Baseline));
   AgentConfig planner{"mine", kPlannerType, 0, 0.0};
   EXPECT_FALSE(givenPriorMap(planner));
   planner.prior_map = true;

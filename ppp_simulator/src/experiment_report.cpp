@@ -69,7 +69,7 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
     // The control always passes; a planner's path cannot be replayed in-process for the picture.
     const agents::EpisodeResult& r = *g.row;
     const agents::AgentConfig& agent = *agent_by_name.at(r.agent);
-    if (agents::agentType(agent.type).is_control || agents::isPlanner(agent)) continue;
+    if (agents::agentType(agent.type).has(agents::AgentTrait::Control) || agents::isPlanner(agent)) continue;
     auto& c = counts[{r.set, r.problem, r.agent}];
     c.first += g.passes;
     c.second += g.runs;
@@ -138,7 +138,7 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
   std::vector<FailureExample> worst;
   for (const agents::AgentConfig& agent : config.agents) {
     const agents::AgentType& type = agents::agentType(agent.type);
-    if (type.is_control || type.is_baseline || agents::isPlanner(agent)) continue;
+    if (type.has(agents::AgentTrait::Control) || type.has(agents::AgentTrait::Baseline) || agents::isPlanner(agent)) continue;
     double lowest = 1.0;
     std::pair<int, int> at{-1, -1};
     for (const auto& [where, c] : counts[agent.name]) {  // set order, then PPP order: the first of equals wins
@@ -173,7 +173,7 @@ void writeExperimentReport(const std::string& dir, const ExperimentConfig& confi
                 (other_runs.empty() ? "" : " (" + other_runs + ")");
   input.config_text = config_text;
   for (const auto& a : config.agents) {
-    if (agents::agentType(a.type).is_control && agents_run.count(a.name) > 0 && input.control.empty()) {
+    if (agents::agentType(a.type).has(agents::AgentTrait::Control) && agents_run.count(a.name) > 0 && input.control.empty()) {
       input.control = a.name;
     }
   }

@@ -9,16 +9,29 @@
 namespace ppp {
 namespace agents {
 
+/// What the simulator and the report need to know of an agent type; combined with `|`.
+enum class AgentTrait : unsigned {
+  None = 0,                  ///< None of the below.
+  ReadsScanWindow = 1u << 0, ///< The simulator sends it the scan window (without it, it never looks).
+  NeedsPriorMap = 1u << 1,   ///< It is given the true map at the start of each episode.
+  Control = 1u << 2,         ///< The control: passes every valid PPP (left out when ranking PPPs).
+  Baseline = 1u << 3,        ///< No strategy to find faults in (left out of the report's worst PPPs).
+};
+
+/// Both traits.
+constexpr AgentTrait operator|(AgentTrait a, AgentTrait b) {
+  return static_cast<AgentTrait>(static_cast<unsigned>(a) | static_cast<unsigned>(b));
+}
+
 /// Everything the system knows about one agent type: the one place an agent type is named.
 struct AgentType {
   const char* name;                 ///< The type as configurations name it ("explorer").
   const char* description;          ///< One line for help texts.
-  bool reads_scan_window;           ///< False: the simulator sends it no window (it never looks).
-  bool needs_prior_map;             ///< True: it is given the true map at the start of each episode.
-  bool is_control;                  ///< The control: passes every valid PPP (left out when ranking PPPs).
-  bool is_baseline;                 ///< No strategy to find faults in (left out of the report's worst PPPs).
+  AgentTrait traits;                ///< What the simulator and the report need to know of it.
   /// Builds one agent with a memory window (0: full); null for planner agents, which are external ROS planners.
   std::unique_ptr<Agent> (*make)(int memory_window);
+  /// Whether the type has `trait`.
+  bool has(AgentTrait trait) const { return (static_cast<unsigned>(traits) & static_cast<unsigned>(trait)) != 0; }
 };
 
 /// Every agent type, the built-in ones first, then `planner`.
