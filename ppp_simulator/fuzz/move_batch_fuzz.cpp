@@ -19,13 +19,13 @@
 #include "ppp_core/fuzz_finding.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_agents/agent_lane.hpp"
+#include "ppp_simulator/experiment_runner.hpp"
 #include "ros_wire.hpp"
 
 namespace {
 
 using ppp::fuzz::finding;
 namespace protocol = ppp::protocol;
-namespace sim = ppp::simulator;
 
 /// The lane's PPPs: two small hand-made ones, prepared once.
 const std::vector<ppp::agents::PreparedSet>& laneSets() {
@@ -66,16 +66,16 @@ bool walkMoveBatch(ppp::fuzz::WireWalker* w) {
 
 /// Whether `reason` is one a run may end with when the moves come from an agent node.
 bool knownReason(const std::string& reason) {
-  namespace r = reason;
+  namespace r = ppp::reason;
   return reason == r::kGoalReached || reason == r::kBudgetExhausted || reason == r::kTimeout ||
-         reason == r::kInvalidAction || reason::agentReportedReason(reason) != nullptr;
+         reason == r::kInvalidAction || ppp::reason::agentReportedReason(reason) != nullptr;
 }
 
 /// decodeMoves answers every move of a well-formed message and none of a malformed one.
 void checkDecoded(const ppp_msgs::MoveBatch& message, const protocol::DecodedMoves& decoded) {
   const std::size_t n = message.episodes.size();
   if (message.steps.size() != n || message.actions.size() != n) {
-    if (!decoded.moves.empty() || std::strcmp(decoded.missing_reason, reason::kInvalidAction) != 0) {
+    if (!decoded.moves.empty() || std::strcmp(decoded.missing_reason, ppp::reason::kInvalidAction) != 0) {
       finding("move_batch_fuzz", "a malformed MoveBatch answered moves", decoded.fault);
     }
     return;
@@ -113,7 +113,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const ppp::agents::EpisodeResult& r : results) {
       if (!ended.emplace(r.problem, r.run).second) finding("move_batch_fuzz", "a run ended twice", r.problem);
       if (!knownReason(r.reason)) finding("move_batch_fuzz", "a run ended for an unknown reason", r.reason);
-      if (r.passed != (r.reason == reason::kGoalReached)) finding("move_batch_fuzz", "pass", r.reason);
+      if (r.passed != (r.reason == ppp::reason::kGoalReached)) finding("move_batch_fuzz", "pass", r.reason);
     }
   }
   return 0;
