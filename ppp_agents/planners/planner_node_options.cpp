@@ -53,9 +53,7 @@ const std::vector<OptionSpec<OmplNodeParameters>>& omplNodeOptionSpecs() {
 }
 
 std::string defaultBaseFrame(const std::string& node_namespace) {
-  const std::size_t first = node_namespace.find_first_not_of('/');
-  return first == std::string::npos ? ppp_msgs::frames::kBaseLink
-                                    : node_namespace.substr(first) + "/" + ppp_msgs::frames::kBaseLink;
+  return ppp_msgs::frames::under(node_namespace, ppp_msgs::frames::kBaseLink);
 }
 
 }  // namespace planners

@@ -3,8 +3,8 @@
 namespace ppp {
 namespace agents {
 
-EpisodeInfo episodeInfo(const Problem& problem, const Grid& grid, const AgentConfig& config,
-                                std::uint64_t run_seed, Connectivity connectivity) {
+EpisodeInfo episodeInfo(const Problem& problem, const Grid& grid, const AgentConfig& config, std::uint64_t run_seed,
+                        Connectivity connectivity) {
   EpisodeInfo info;
   info.connectivity = connectivity;
   info.width = grid.width();

@@ -32,9 +32,7 @@ const std::vector<OptionSpec<BridgeOptions>>& bridgeOptionSpecs() {
 }
 
 std::string defaultBridgeBaseFrame(const std::string& ns) {
-  const std::string robot = std::string(ppp_msgs::topics::kRobotNamespace) + "/" + ppp_msgs::frames::kBaseLink;
-  const std::size_t first = ns.find_first_not_of('/');
-  return first == std::string::npos ? robot : ns.substr(first) + "/" + robot;
+  return ppp_msgs::frames::under(ns + "/" + ppp_msgs::topics::kRobotNamespace, ppp_msgs::frames::kBaseLink);
 }
 
 }  // namespace agents

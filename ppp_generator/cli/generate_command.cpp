@@ -68,10 +68,9 @@ void runGenerate(const CLI::App& command, const GenerateFlags& flags) {
   if (flags.output.empty()) throw InvalidArgument("--output", "required: the set's directory");
   const generator::GeneratorOptions options = resolveOptions(command, flags);
   if (options.fitness != generator::kFailureFitness && episodeFlagsGiven(command)) {
-    static const auto fitness = selectOptions(generator::generatorOptionSpecs(), {"fitness"});
-    throw InvalidArgument(flagName(fitness[0]), "--budget, --sensor-range, --connectivity and --threads are for the "
-                                                "failure fitness, which plays episodes; this run's fitness is " +
-                                                    options.fitness);
+    throw InvalidArgument(flagName(optionNamed(generator::generatorOptionSpecs(), "fitness")),
+                          "--budget, --sensor-range, --connectivity and --threads are for the failure fitness, which "
+                          "plays episodes; this run's fitness is " + options.fitness);
   }
   EpisodeOptions episode;
   applyAndValidateFlags(command, episodeOptionSpecs(), flags.episode, &episode);

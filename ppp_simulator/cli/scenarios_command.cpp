@@ -28,8 +28,7 @@ void runScenariosCommand(const ScenariosFlags& f) {
   simulator::ScenarioRunOptions options;
   options.agent = f.agent.agent();
   options.episode = f.agent.episode();
-  static const auto budget = selectOptions(episodeOptionSpecs(), {"budget"});
-  options.budget_given = f.agent.given(flagName(budget[0]));
+  options.budget_given = f.agent.given(flagName(optionNamed(episodeOptionSpecs(), "budget")));
   options.seed = f.seed;
   options.map_dir = f.map_dir;
   const std::vector<simulator::ScenarioResult> results = simulator::runScenarios(f.scen, options);

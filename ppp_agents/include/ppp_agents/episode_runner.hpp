@@ -15,8 +15,8 @@ namespace agents {
 
 /// The EpisodeInfo an agent is given at the start of a run of `problem` (prior map only for astar) under the
 /// move model with `connectivity`.
-EpisodeInfo episodeInfo(const Problem& problem, const Grid& grid, const AgentConfig& config,
-                                std::uint64_t run_seed, Connectivity connectivity);
+EpisodeInfo episodeInfo(const Problem& problem, const Grid& grid, const AgentConfig& config, std::uint64_t run_seed,
+                        Connectivity connectivity);
 
 /// Runs episodes in process: the move model (Episode), scans by SensorModel with the agent's noise, the budget.
 /// Holds the sensor and buffers, so reuse one runner for many episodes of one agent configuration.

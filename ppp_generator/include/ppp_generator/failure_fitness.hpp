@@ -60,9 +60,8 @@ Fitness makeFailureFitness(const FailurePanel& panel);
 /// The fitness of a set's generator options: makeFitness(options.fitness), or for `failure` the failure
 /// fitness of the panel options.agents looked up in `available` (see resolvePanel), played with `episode`'s
 /// rules on `threads` threads (0: every core). @throws InvalidArgument naming the option.
-Fitness fitnessFor(const GeneratorOptions& options,
-                              const std::vector<agents::AgentConfig>& available, const EpisodeOptions& episode,
-                              int threads);
+Fitness fitnessFor(const GeneratorOptions& options, const std::vector<agents::AgentConfig>& available,
+                   const EpisodeOptions& episode, int threads);
 
 /// fitnessFor() with the panel looked up in options.agents_file (an agents list), or among the built-in agent types
 /// when it is empty: what `ppp generate` and a generator node hunting in process play.

@@ -17,6 +17,13 @@ constexpr const char* kPlanner = "planner";            ///< A planner agent's pl
 namespace frames {
 constexpr const char* kMap = "map";              ///< The fixed frame of maps, poses, goals and plans.
 constexpr const char* kBaseLink = "base_link";   ///< A robot's frame, under its namespace (NAME/robot/base_link).
+
+/// `frame` under the namespace `ns` as tf names it, without leading slashes
+/// ("/ompl/robot" -> "ompl/robot/base_link", "/" -> "base_link").
+inline std::string under(const std::string& ns, const char* frame) {
+  const std::size_t first = ns.find_first_not_of('/');
+  return first == std::string::npos ? frame : ns.substr(first) + "/" + frame;
+}
 }  // namespace frames
 
 namespace topics {

@@ -414,17 +414,22 @@ std::vector<OptionSpec<Options>> resultOptions(const std::vector<OptionSpec<Opti
   return selected;
 }
 
+/// The declaration of `specs` named `name`. @throws std::logic_error for a name not declared.
+template <typename Options>
+const OptionSpec<Options>& optionNamed(const std::vector<OptionSpec<Options>>& specs, const std::string& name) {
+  const auto named = [&](const OptionSpec<Options>& spec) { return spec.name == name; };
+  const auto found = std::find_if(specs.begin(), specs.end(), named);
+  if (found == specs.end()) throw std::logic_error("no option '" + name + "' declared");
+  return *found;
+}
+
 /// The declarations of `specs` named in `names`, in the order of `names` (a source that takes only some options).
 /// @throws std::logic_error for a name not declared.
 template <typename Options>
 std::vector<OptionSpec<Options>> selectOptions(const std::vector<OptionSpec<Options>>& specs,
                                                const std::vector<std::string>& names) {
   std::vector<OptionSpec<Options>> selected;
-  for (const std::string& name : names) {
-    const auto found = std::find_if(specs.begin(), specs.end(), [&](const auto& spec) { return spec.name == name; });
-    if (found == specs.end()) throw std::logic_error("no option '" + name + "' declared");
-    selected.push_back(*found);
-  }
+  for (const std::string& name : names) selected.push_back(optionNamed(specs, name));
   return selected;
 }
 
