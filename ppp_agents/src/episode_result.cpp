@@ -12,7 +12,7 @@ namespace agents {
 
 namespace {
 
-constexpr std::size_t kFields = 11;  // of a row, as resultCsvHeader()
+constexpr std::size_t kFields = 12;  // of a row, as resultCsvHeader()
 
 template <typename T>
 T parseNumber(std::string_view text, const std::string& source, int line, const char* field) {
@@ -23,6 +23,12 @@ T parseNumber(std::string_view text, const std::string& source, int line, const 
     throw ParseError(source, line, field, "expected a whole number, got '" + std::string(text) + "'");
   }
   return value;
+}
+
+/// A 0 or 1 field.
+bool parseFlag(std::string_view text, const std::string& source, int line, const char* field) {
+  if (text != "0" && text != "1") throw ParseError(source, line, field, "expected 0 or 1, got '" + std::string(text) + "'");
+  return text == "1";
 }
 
 /// A path or optimal length: a whole number, or one with decimals (diagonal moves), never negative but for -1
@@ -50,15 +56,14 @@ EpisodeResult rowFromFields(const Field* f, std::size_t count, const std::string
   r.agent = f[2];
   r.run = parseNumber<int>(f[3], source, line, "run");
   r.seed = parseNumber<std::uint64_t>(f[4], source, line, "seed");
-  if (f[5] != "0" && f[5] != "1") {
-    throw ParseError(source, line, "pass", "expected 0 or 1, got '" + std::string(f[5]) + "'");
-  }
-  r.passed = f[5] == "1";
+  r.passed = parseFlag(f[5], source, line, "pass");
   r.steps = parseNumber<int>(f[6], source, line, "steps");
   r.bumps = parseNumber<int>(f[7], source, line, "bumps");
   r.path_length = parseLength(f[8], source, line, "path_length");
   r.optimal_length = parseLength(f[9], source, line, "optimal_length");
   r.reason = f[10];
+  r.soft_failure = parseFlag(f[11], source, line, "soft_failure");
+  if (r.soft_failure && !r.passed) throw ParseError(source, line, "soft_failure", "a soft failure is a passed run");
   return r;
 }
 
@@ -102,8 +107,9 @@ std::string lengthText(double value) {
 }  // namespace
 
 const std::vector<std::string>& resultCsvHeader() {
-  static const std::vector<std::string> header = {"set",   "problem", "agent", "run",         "seed",          "pass",
-                                                  "steps", "bumps",   "path_length", "optimal_length", "reason"};
+  static const std::vector<std::string> header = {"set",   "problem", "agent",       "run",            "seed",
+                                                  "pass",  "steps",   "bumps",       "path_length",    "optimal_length",
+                                                  "reason", "soft_failure"};
   return header;
 }
 
@@ -118,7 +124,8 @@ std::vector<std::string> toCsvFields(const EpisodeResult& r) {
           std::to_string(r.bumps),
           lengthText(r.path_length),
           lengthText(r.optimal_length),
-          r.reason};
+          r.reason,
+          r.soft_failure ? "1" : "0"};
 }
 
 EpisodeResult fromCsvFields(const std::vector<std::string>& f, const std::string& source, int line) {
@@ -145,7 +152,7 @@ void appendCsvRow(const EpisodeResult& r, std::string* out) {
   appendLength(r.optimal_length, out);
   *out += ',';
   appendText(r.reason, out);
-  *out += '\n';
+  *out += r.soft_failure ? ",1\n" : ",0\n";
 }
 
 EpisodeResult parseCsvRow(std::string_view line, const std::string& source, int line_number) {

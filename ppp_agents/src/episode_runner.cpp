@@ -1,5 +1,7 @@
 #include "ppp_agents/episode_runner.hpp"
 
+#include "ppp_core/optimum.hpp"
+
 namespace ppp {
 namespace agents {
 
@@ -24,7 +26,8 @@ EpisodeRunner::EpisodeRunner(const AgentConfig& config, const EpisodeOptions& op
 EpisodeOutcome EpisodeRunner::run(const Problem& problem, const Grid& grid, Agent& agent,
                                   std::uint64_t run_seed, bool record_path, const WindowAtlas* windows) {
   agent.reset(episodeInfo(problem, grid, config_, run_seed, options_.connectivity));
-  Episode episode(problem, grid, sensor_, run_seed, options_.budget, options_.connectivity, record_path, windows);
+  Episode episode(problem, grid, sensor_, run_seed, episodeBudget(options_, problem, grid), options_.connectivity,
+                  record_path, windows);
   while (!episode.done()) episode.apply(agent.act(episode.scan()));
   return episode.outcome();
 }

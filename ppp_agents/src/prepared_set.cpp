@@ -1,10 +1,11 @@
 #include "ppp_agents/prepared_set.hpp"
 
+#include <algorithm>
 #include <utility>
 
-#include "ppp_core/dpa.hpp"
 #include "ppp_core/error.hpp"
-#include "ppp_core/octile.hpp"
+#include "ppp_core/optimum.hpp"
+#include "ppp_core/reachability.hpp"
 
 namespace ppp {
 namespace agents {
@@ -22,8 +23,17 @@ EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::stri
   r.bumps = outcome.bumps;
   r.path_length = pathLength(outcome);
   r.optimal_length = set.optimal[problem];
+  r.soft_failure = isSoftFailure(r.passed, r.path_length, r.optimal_length, set.episode.soft_failure_ratio);
   r.reason = outcome.reason;
   return r;
+}
+
+int largestBudget(const std::vector<PreparedSet>& sets) {
+  int largest = 0;
+  for (const PreparedSet& set : sets) {
+    for (const int budget : set.budgets) largest = std::max(largest, budget);
+  }
+  return largest;
 }
 
 PreparedSet prepareSet(const std::string& name, ProblemSet set, const EpisodeOptions& episode) {
@@ -31,14 +41,17 @@ PreparedSet prepareSet(const std::string& name, ProblemSet set, const EpisodeOpt
   PreparedSet p;
   p.name = name;
   p.set = std::move(set);
-  DpaSolver dpa;
+  p.episode = episode;
   for (const Problem& problem : p.set.problems) {
     p.grids.push_back(decodeGrid(problem));
-    const DpaResult& result = dpa.solve(p.grids.back(), problem.start, problem.goal);
-    if (!result.reachable) throw InvalidArgument("sets", "set '" + name + "' holds an unsolvable PPP");
-    p.optimal.push_back(episode.connectivity == Connectivity::Eight
-                            ? shortestOctileRoute(p.grids.back(), problem.start, problem.goal).length
-                            : static_cast<double>(result.advances));
+    // Every agent but astar moves 4-connected, so a PPP must be solvable that way whatever the move model.
+    if (!isReachable(p.grids.back(), problem.start, problem.goal)) {
+      throw InvalidArgument("sets", "set '" + name + "' holds an unsolvable PPP");
+    }
+    const Optimum optimum = optimumOf(problem, p.grids.back(), episode.connectivity);
+    p.optimal.push_back(optimum.length);
+    p.moves.push_back(optimum.moves);
+    p.budgets.push_back(episodeBudget(episode, optimum.moves));
     p.windows.push_back(WindowAtlas::bytes(p.grids.back(), sensor_range) <= kMaxWindowAtlasBytes
                             ? std::optional<WindowAtlas>(std::in_place, p.grids.back(), sensor_range)
                             : std::nullopt);

@@ -67,10 +67,10 @@ void runGenerate(const CLI::App& command, const GenerateFlags& flags) {
   }
   if (flags.output.empty()) throw InvalidArgument("--output", "required: the set's directory");
   const generator::GeneratorOptions options = resolveOptions(command, flags);
-  if (options.fitness != generator::kFailureFitness && episodeFlagsGiven(command)) {
+  if (!generator::isPanelFitness(options.fitness) && episodeFlagsGiven(command)) {
     throw InvalidArgument(flagName(optionNamed(generator::generatorOptionSpecs(), "fitness")),
-                          "--budget, --sensor-range, --connectivity and --threads are for the failure fitness, which "
-                          "plays episodes; this run's fitness is " + options.fitness);
+                          "the episode flags (--budget, --sensor-range, ...) and --threads are for the panel fitnesses "
+                          "(failure, regret), which play episodes; this run's fitness is " + options.fitness);
   }
   EpisodeOptions episode;
   applyAndValidateFlags(command, episodeOptionSpecs(), flags.episode, &episode);

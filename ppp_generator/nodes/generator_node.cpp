@@ -84,7 +84,7 @@ class GeneratorNode {
              options.matings, static_cast<unsigned long>(options.seed));
     // A hunt plays its panel through the simulator's evaluation service, or in process without one.
     const Fitness fitness =
-        options.fitness == kFailureFitness && !parameters_.evaluator.empty()
+        isPanelFitness(options.fitness) && !parameters_.evaluator.empty()
             ? makeRemoteFailureFitness(nh_, options, parameters_.evaluator, parameters_.evaluator_timeout)
             : fitnessFor(options, parameters_.episode, 0);
     EvolvedSet evolved = evolveSet(

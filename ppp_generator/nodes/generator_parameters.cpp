@@ -23,7 +23,7 @@ NodeParameters readNodeParameters(const ros::NodeHandle& nh) {
         "publish_index", "expected an index in [0, population = " + std::to_string(o.population) + "), got " +
                              std::to_string(p.publish_index)));
   }
-  if (o.fitness == kFailureFitness && !p.evaluator.empty() && !o.agents_file.empty()) {
+  if (isPanelFitness(o.fitness) && !p.evaluator.empty() && !o.agents_file.empty()) {
     throw ppp_msgs::parameterError(InvalidArgument(
         "agents_file", "a hunt through ROS names the simulator's agents (its config); leave it empty, or hunt "
                        "in process with an empty evaluator"));

@@ -2,8 +2,11 @@
 
 #include <memory>
 
+#include "ppp_core/episode_reason.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/stop.hpp"
+#include "ppp_generator/failure_fitness.hpp"
+#include "ppp_generator/hunt_evaluation.hpp"
 #include "ppp_msgs/EvaluateProblems.h"
 #include "ppp_msgs/conversions.h"
 
@@ -18,7 +21,7 @@ Fitness makeRemoteFailureFitness(ros::NodeHandle& nh, const GeneratorOptions& op
   }
   auto client = std::make_shared<ros::ServiceClient>(nh.serviceClient<ppp_msgs::EvaluateProblems>(service, true));
   Fitness fitness;
-  fitness.name = kFailureFitness;
+  fitness.name = options.fitness;
   fitness.maximise = true;
   fitness.batch_size = kFailureBatchSize;
   fitness.batch = [client, options, service](const std::vector<const Problem*>& problems,
@@ -41,9 +44,13 @@ Fitness makeRemoteFailureFitness(ros::NodeHandle& nh, const GeneratorOptions& op
     }
     std::vector<FitnessScore> scores;
     for (const ppp_msgs::ProblemEvaluation& e : call.response.evaluations) {
-      scores.push_back(failureScore(e.failure_rate, e.budget_used));
+      FailureEstimate estimate;
+      estimate.failure_rate = e.failure_rate;
+      estimate.budget_used = e.budget_used;
+      estimate.regret = e.regret;
+      scores.push_back(panelScore(options.fitness, estimate));
       for (std::size_t r = 0; r < e.reasons.size() && r < e.reason_counts.size(); ++r) {
-        if (e.reasons[r] != "budget_exhausted") {
+        if (e.reasons[r] != reason::kBudgetExhausted && e.reasons[r] != kSoftFailureReason) {
           ROS_WARN_THROTTLE(10, "hunt: %u runs of a candidate failed as %s", e.reason_counts[r], e.reasons[r].c_str());
         }
       }

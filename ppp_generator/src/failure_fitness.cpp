@@ -10,6 +10,7 @@
 
 #include "ppp_agents/episode_runner.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/optimum.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_core/text_format.hpp"
 #include "ppp_core/window_atlas.hpp"
@@ -20,7 +21,7 @@ namespace generator {
 namespace {
 
 void checkPanel(const std::vector<agents::AgentConfig>& panel) {
-  if (panel.empty()) throw InvalidArgument("agents", "empty panel: the failure fitness needs at least one agent");
+  if (panel.empty()) throw InvalidArgument("agents", "empty panel: a panel fitness (failure, regret) needs at least one agent");
   for (const agents::AgentConfig& a : panel) {
     if (agents::isPlanner(a)) {
       throw InvalidArgument("agents", "'" + a.name + "' is a ROS planner agent; in process a hunt can only run "
@@ -37,14 +38,27 @@ std::uint64_t failureRunSeed(std::uint64_t generator_seed, std::uint64_t grid_ha
   return deriveSeed(generator_seed, {0x6661696c, grid_hash, nameHash(agent), static_cast<std::uint64_t>(run)});
 }
 
+void PanelTally::add(std::size_t agent, bool passed, int run_steps, int budget, int optimal_moves) {
+  failures[agent] += passed ? 0 : 1;
+  // A run that ended before its budget without reaching the goal (timeout, lost agent) used its whole budget.
+  steps[agent] += passed ? run_steps : budget;
+  regret[agent] += runRegret(passed, run_steps, budget, optimal_moves);
+}
+
 FailureEstimate estimateOf(const PanelTally& tally, int runs, int budget) {
   FailureEstimate estimate;
   const double agents = static_cast<double>(tally.failures.size());
   for (std::size_t a = 0; a < tally.failures.size(); ++a) {
     estimate.failure_rate += tally.failures[a] / static_cast<double>(runs) / agents;
     estimate.budget_used += tally.steps[a] / (static_cast<double>(runs) * budget) / agents;
+    estimate.regret += tally.regret[a] / runs / agents;
   }
   return estimate;
+}
+
+FitnessScore panelScore(const std::string& fitness, const FailureEstimate& estimate) {
+  return fitness == kRegretFitness ? regretScore(estimate.regret, estimate.budget_used)
+                                   : failureScore(estimate.failure_rate, estimate.budget_used);
 }
 
 std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const std::vector<const Problem*>& problems,
@@ -52,11 +66,16 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
   checkPanel(panel.agents);
   const std::size_t agent_count = panel.agents.size();
   const std::size_t units = problems.size() * agent_count;
-  std::vector<int> failures(units, 0);
-  std::vector<long> steps(units, 0);
+  std::vector<PanelTally> tallies(problems.size(), PanelTally(agent_count));  // a worker owns a (PPP, agent) slot
   std::vector<std::uint64_t> hashes;
+  std::vector<Optimum> optima;
+  std::vector<int> budgets;
   std::vector<std::optional<WindowAtlas>> atlases(problems.size());
-  for (const Grid* grid : grids) hashes.push_back(grid->hash());
+  for (std::size_t p = 0; p < problems.size(); ++p) {
+    hashes.push_back(grids[p]->hash());
+    optima.push_back(optimumOf(*problems[p], *grids[p], panel.episode.connectivity));
+    budgets.push_back(episodeBudget(panel.episode, optima.back().moves));
+  }
   std::vector<std::once_flag> atlas_built(problems.size());
   std::atomic<std::size_t> next{0};
   std::exception_ptr error;
@@ -82,8 +101,9 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
         for (int run = 0; run < panel.runs_per_eval; ++run) {
           const std::uint64_t seed = failureRunSeed(panel.seed, hashes[p], panel.agents[a].name, run);
           const EpisodeOutcome outcome = runners[a]->run(*problems[p], *grids[p], *agents[a], seed, false, atlas);
-          failures[u] += outcome.passed ? 0 : 1;
-          steps[u] += outcome.steps;
+          const bool soft = isSoftFailure(outcome.passed, pathLength(outcome), optima[p].length,
+                                          panel.episode.soft_failure_ratio);
+          tallies[p].add(a, outcome.passed && !soft, outcome.steps, budgets[p], optima[p].moves);
         }
       }
     } catch (...) {
@@ -100,12 +120,7 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
   if (error) std::rethrow_exception(error);
   std::vector<FailureEstimate> estimates;
   for (std::size_t p = 0; p < problems.size(); ++p) {
-    PanelTally tally;
-    tally.failures.assign(failures.begin() + static_cast<long>(p * agent_count),
-                          failures.begin() + static_cast<long>((p + 1) * agent_count));
-    tally.steps.assign(steps.begin() + static_cast<long>(p * agent_count),
-                       steps.begin() + static_cast<long>((p + 1) * agent_count));
-    estimates.push_back(estimateOf(tally, panel.runs_per_eval, panel.episode.budget));
+    estimates.push_back(estimateOf(tallies[p], panel.runs_per_eval, budgets[p]));
   }
   return estimates;
 }
@@ -121,15 +136,17 @@ Fitness makeFailureFitness(const FailurePanel& panel) {
     throw InvalidArgument("threads", "expected 0 (every core) or a count up to " + std::to_string(kMaxThreads) +
                                          ", got " + std::to_string(panel.threads));
   }
+  if (!isPanelFitness(panel.fitness)) {
+    throw InvalidArgument("fitness", "'" + panel.fitness + "' is not a panel fitness (" + kFailureFitness + " or " +
+                                         kRegretFitness + ")");
+  }
   Fitness fitness;
-  fitness.name = kFailureFitness;
+  fitness.name = panel.fitness;
   fitness.maximise = true;
   fitness.batch_size = kFailureBatchSize;
   fitness.batch = [panel](const std::vector<const Problem*>& problems, const std::vector<const Grid*>& grids) {
     std::vector<generator::FitnessScore> scores;
-    for (const FailureEstimate& e : estimateFailures(panel, problems, grids)) {
-      scores.push_back(failureScore(e.failure_rate, e.budget_used));
-    }
+    for (const FailureEstimate& e : estimateFailures(panel, problems, grids)) scores.push_back(panelScore(panel.fitness, e));
     return scores;
   };
   return fitness;
@@ -137,10 +154,11 @@ Fitness makeFailureFitness(const FailurePanel& panel) {
 
 Fitness fitnessFor(const GeneratorOptions& options, const std::vector<agents::AgentConfig>& available,
                    const EpisodeOptions& episode, int threads) {
-  if (options.fitness != kFailureFitness) {
+  if (!isPanelFitness(options.fitness)) {
     return makeFitness(options.fitness, FitnessParameters{options.weights, options.seed});
   }
   FailurePanel panel;
+  panel.fitness = options.fitness;
   panel.agents = resolvePanel(options.agents, available);
   panel.episode = episode;
   panel.runs_per_eval = options.runs_per_eval;
@@ -158,7 +176,7 @@ Fitness fitnessFor(const GeneratorOptions& options, const EpisodeOptions& episod
 std::vector<agents::AgentConfig> resolvePanel(const std::vector<std::string>& names,
                                               const std::vector<agents::AgentConfig>& available,
                                               bool allow_planners) {
-  if (names.empty()) throw InvalidArgument("agents", "empty panel: the failure fitness needs at least one agent name");
+  if (names.empty()) throw InvalidArgument("agents", "empty panel: a panel fitness (failure, regret) needs at least one agent name");
   std::vector<agents::AgentConfig> panel;
   for (const std::string& name : names) {
     if (std::any_of(panel.begin(), panel.end(), [&](const agents::AgentConfig& a) { return a.name == name; })) {

@@ -68,6 +68,9 @@ std::vector<FitnessInfo> fitnessCatalogue() {
   for (const Entry& e : kEntries) catalogue.push_back({e.name, e.maximise, e.description});
   catalogue.push_back({kFailureFitness, true,
                        "share of failed episodes of the named agents (agents, runs_per_eval; maximised)"});
+  catalogue.push_back({kRegretFitness, true,
+                       "mean regret of the named agents: (moves used - fewest moves) / fewest moves, a failed run "
+                       "using its whole budget (agents, runs_per_eval; maximised)"});
   return catalogue;
 }
 
@@ -87,8 +90,8 @@ Fitness makeFitness(const std::string& name, const FitnessParameters& parameters
   for (const Entry& e : kEntries) {
     if (name == e.name) return Fitness{e.name, e.maximise, e.make(parameters), {}, 1};
   }
-  if (name == kFailureFitness) {
-    throw InvalidArgument("fitness", "'failure' plays episodes of an agent panel; it is built by the episode "
+  if (isPanelFitness(name)) {
+    throw InvalidArgument("fitness", "'" + name + "' plays episodes of an agent panel; it is built by the episode "
                                      "engine (ppp generate, ppp experiment, the simulator node), not on its own");
   }
   throw InvalidArgument("fitness", "unknown fitness '" + name + "'; valid: " + fitnessNames());
@@ -97,6 +100,10 @@ Fitness makeFitness(const std::string& name, const FitnessParameters& parameters
 FitnessScore failureScore(double failure_rate, double budget_used) {
   return {failure_rate, failure_rate + 0.001 * budget_used};
 }
+
+FitnessScore regretScore(double regret, double budget_used) { return {regret, regret + 0.001 * budget_used}; }
+
+bool isPanelFitness(const std::string& name) { return name == kFailureFitness || name == kRegretFitness; }
 
 bool fitnessMaximises(const std::string& name) {
   for (const FitnessInfo& info : fitnessCatalogue()) {

@@ -21,13 +21,15 @@ namespace {
 /// Largest generator options file read (the options are a few hundred bytes).
 constexpr std::size_t kMaxOptionsBytes = 1u << 20;
 
-/// The failure fitness's and the archive's options.
+/// The panel fitnesses' and the archive's options.
 void validateHuntOptions(const GeneratorOptions& o) {
-  const bool failure = o.fitness == kFailureFitness;
-  if (failure && o.agents.empty()) {
-    throw InvalidArgument("agents", "empty panel: the failure fitness needs at least one agent name");
+  const bool panel = isPanelFitness(o.fitness);
+  if (panel && o.agents.empty()) {
+    throw InvalidArgument("agents", "empty panel: the " + o.fitness + " fitness needs at least one agent name");
   }
-  if (!failure && !o.agents.empty()) throw InvalidArgument("agents", "only the failure fitness uses an agent panel");
+  if (!panel && !o.agents.empty()) {
+    throw InvalidArgument("agents", "only the panel fitnesses (failure, regret) use an agent panel");
+  }
   for (std::size_t i = 0; i < o.agents.size(); ++i) {
     if (o.agents[i].empty()) throw InvalidArgument("agents", "empty agent name");
     for (std::size_t j = 0; j < i; ++j) {
@@ -58,7 +60,7 @@ void validateHuntOptions(const GeneratorOptions& o) {
 
 void GeneratorOptions::validate() const {
   checkOptionRanges(generatorOptionSpecs(), *this);
-  if (fitness == kFailureFitness) {
+  if (isPanelFitness(fitness)) {
     fitnessMaximises(fitness);
   } else {
     makeFitness(fitness, FitnessParameters{weights, seed});

@@ -14,7 +14,7 @@ std::string candidateId(std::size_t index) { return "c" + std::to_string(index);
 
 HuntEvaluation::HuntEvaluation(const std::vector<Problem>& problems, const std::vector<agents::AgentConfig>& panel,
                                const EpisodeOptions& episode, int runs, std::uint64_t generator_seed, int batch_size)
-    : episode_(episode), runs_(runs) {
+    : runs_(runs) {
   if (runs < 1 || runs > generator::kMaxRunsPerEval) {
     throw InvalidArgument("runs", "expected runs in [1, " + std::to_string(generator::kMaxRunsPerEval) + "], got " +
                                       std::to_string(runs));
@@ -40,7 +40,7 @@ HuntEvaluation::HuntEvaluation(const std::vector<Problem>& problems, const std::
         },
         runs, batch_size));
   }
-  tallies_.assign(problems.size(), PanelTally{std::vector<int>(panel.size(), 0), std::vector<long>(panel.size(), 0)});
+  tallies_.assign(problems.size(), PanelTally(panel.size()));
   evaluations_.assign(problems.size(), PanelEvaluation{});
 }
 
@@ -51,12 +51,11 @@ void HuntEvaluation::record(const std::vector<agents::EpisodeResult>& ended) {
     const auto a = static_cast<std::size_t>(agent_index_.at(r.agent));
     PanelEvaluation& e = evaluations_.at(p);
     ++e.episodes;
-    // A run that ended before its budget without reaching the goal (timeout, lost agent) counts its whole budget.
-    tallies_[p].steps[a] += r.passed ? r.steps : episode_.budget;
-    if (!r.passed) {
-      ++tallies_[p].failures[a];
+    const bool passed = r.passed && !r.soft_failure;
+    tallies_[p].add(a, passed, r.steps, sets_[0].budgets[p], sets_[0].moves[p]);
+    if (!passed) {
       ++e.failed;
-      ++e.reasons[r.reason];
+      ++e.reasons[r.soft_failure ? kSoftFailureReason : r.reason];
     }
   }
 }
@@ -64,7 +63,7 @@ void HuntEvaluation::record(const std::vector<agents::EpisodeResult>& ended) {
 std::vector<PanelEvaluation> HuntEvaluation::evaluations() const {
   std::lock_guard<std::mutex> lock(mutex_);
   std::vector<PanelEvaluation> result = evaluations_;
-  for (std::size_t p = 0; p < result.size(); ++p) result[p].estimate = estimateOf(tallies_[p], runs_, episode_.budget);
+  for (std::size_t p = 0; p < result.size(); ++p) result[p].estimate = estimateOf(tallies_[p], runs_, sets_[0].budgets[p]);
   return result;
 }
 

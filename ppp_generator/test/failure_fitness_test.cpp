@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "ppp_agents/episode_runner.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/random_problem.hpp"
 #include "ppp_core/reachability.hpp"
@@ -62,6 +63,68 @@ TEST(FailureFitnessTest, HandWorkedFiguresOnTheIsland) {
   EXPECT_DOUBLE_EQ(scores[0].value, 0.5);
   EXPECT_NEAR(scores[0].score, 0.5 + 0.001 * (1.0 + 38.0 / 300.0) / 2.0, 1e-12);
   EXPECT_EQ(fitness.batch_size, kFailureBatchSize);
+}
+
+TEST(FailureFitnessTest, RegretHandWorkedOnTheIslandUnderBothBudgets) {
+  // astar's 38 moves are the optimum (regret 0); wall_follower_left fails, using its whole budget.
+  // Budget 300: its regret is (300 - 38) / 38 per run; the panel's mean (262/38 + 0) / 2 = 131/38.
+  FailurePanel panel;
+  panel.fitness = kRegretFitness;
+  panel.agents = {builtIn("wall_follower_left"), builtIn("astar")};
+  panel.runs_per_eval = 10;
+  const Problem problem = islandProblem();
+  const Grid grid = decodeGrid(problem);
+  FailureEstimate e = estimateFailures(panel, {&problem}, {&grid})[0];
+  EXPECT_NEAR(e.regret, 131.0 / 38.0, 1e-12);
+  std::vector<FitnessScore> scores = makeFailureFitness(panel).batch({&problem}, {&grid});
+  EXPECT_NEAR(scores[0].value, 131.0 / 38.0, 1e-12);
+  EXPECT_NEAR(scores[0].score, 131.0 / 38.0 + 0.001 * (1.0 + 38.0 / 300.0) / 2.0, 1e-12);
+  // budget_factor 2: each episode gets 76 moves; the wall follower's regret is (76 - 38) / 38 = 1, astar uses half
+  // its budget: regret (1 + 0) / 2, budget used (76/76 + 38/76) / 2.
+  panel.episode.budget_factor = 2;
+  e = estimateFailures(panel, {&problem}, {&grid})[0];
+  EXPECT_DOUBLE_EQ(e.regret, 0.5);
+  EXPECT_DOUBLE_EQ(e.failure_rate, 0.5);
+  EXPECT_DOUBLE_EQ(e.budget_used, 0.75);
+  EXPECT_EQ(makeFailureFitness(panel).name, kRegretFitness);
+  panel.fitness = "turns";
+  EXPECT_THROW(makeFailureFitness(panel), InvalidArgument);
+}
+
+TEST(FailureFitnessTest, TalliesWorkedByHand) {
+  // Agent 0: passed in 50 and failed (budget 300); agent 1: passed in 38 and in 76; optimum 38.
+  PanelTally tally(2);
+  tally.add(0, true, 50, 300, 38);
+  tally.add(0, false, 120, 300, 38);  // a timeout after 120 moves counts the whole budget
+  tally.add(1, true, 38, 300, 38);
+  tally.add(1, true, 76, 300, 38);
+  const FailureEstimate e = estimateOf(tally, 2, 300);
+  EXPECT_DOUBLE_EQ(e.failure_rate, (0.5 + 0) / 2);
+  EXPECT_NEAR(e.budget_used, ((50 + 300) / 600.0 + (38 + 76) / 600.0) / 2, 1e-12);
+  EXPECT_NEAR(e.regret, ((12.0 / 38 + 262.0 / 38) / 2 + (0 + 1.0) / 2) / 2, 1e-12);
+  EXPECT_DOUBLE_EQ(panelScore(kFailureFitness, e).value, e.failure_rate);
+  EXPECT_DOUBLE_EQ(panelScore(kRegretFitness, e).value, e.regret);
+}
+
+TEST(FailureFitnessTest, SoftFailuresCountAsFailuresWhenARatioIsSet) {
+  // The long-term explorer reaches the goal round the island on detours; which of its runs are longer than 1.2 x
+  // the optimum is read off each run replayed on its own, then compared with the fitness's failure rate.
+  FailurePanel panel;
+  panel.agents = {builtIn("long_term_explorer")};
+  panel.runs_per_eval = 10;
+  panel.episode.soft_failure_ratio = 1.2;
+  const Problem problem = islandProblem();
+  const Grid grid = decodeGrid(problem);
+  int failed = 0;
+  for (int run = 0; run < panel.runs_per_eval; ++run) {
+    const std::uint64_t seed = failureRunSeed(panel.seed, grid.hash(), "long_term_explorer", run);
+    const EpisodeOutcome outcome = agents::recordEpisode(problem, grid, panel.agents[0], EpisodeOptions{}, seed);
+    failed += !outcome.passed || pathLength(outcome) > 1.2 * 38 ? 1 : 0;
+  }
+  EXPECT_GT(failed, 0) << "no detour longer than 1.2 x: the test shows nothing";
+  EXPECT_DOUBLE_EQ(estimateFailures(panel, {&problem}, {&grid})[0].failure_rate, failed / 10.0);
+  panel.episode.soft_failure_ratio = 0;
+  EXPECT_LT(estimateFailures(panel, {&problem}, {&grid})[0].failure_rate, failed / 10.0);
 }
 
 TEST(FailureFitnessTest, APppIsJudgedTheSameWhateverItsBatchPositionOrThreads) {
@@ -131,7 +194,7 @@ TEST(FailureFitnessTest, PanelsResolveByNameAndRefuseWhatCannotRunInProcess) {
   EXPECT_EQ(errorOf({"explorer"}, available),
             "agents: unknown agent 'explorer'; valid: astar, explorer_memory_5x5, mine");
   EXPECT_EQ(errorOf({"wall_folower"}, {}).rfind("agents: unknown agent 'wall_folower'; with no agents file", 0), 0u);
-  EXPECT_EQ(errorOf({}, available), "agents: empty panel: the failure fitness needs at least one agent name");
+  EXPECT_EQ(errorOf({}, available), "agents: empty panel: a panel fitness (failure, regret) needs at least one agent name");
   EXPECT_EQ(errorOf({"mine"}, available).rfind("agents: 'mine' is a ROS planner agent; in process", 0), 0u);
 }
 

@@ -70,9 +70,9 @@ TEST(FitnessTest, UnknownNameListsTheValidOnes) {
   } catch (const InvalidArgument& e) {
     EXPECT_EQ(std::string(e.what()),
               "fitness: unknown fitness 'hardness'; valid: turns, advances, turns_plus_advances, difficulty, "
-              "goal_visibility, visibility_magnitude, random, failure");
+              "goal_visibility, visibility_magnitude, random, failure, regret");
   }
-  EXPECT_EQ(fitnessCatalogue().size(), 8u);
+  EXPECT_EQ(fitnessCatalogue().size(), 9u);
 }
 
 TEST(FitnessTest, FailureIsListedButNeedsAnAgentPanel) {

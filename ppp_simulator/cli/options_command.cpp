@@ -54,7 +54,8 @@ std::string optionsReference() {
       << "\n## Generator\n\n"
       << "Keys of `config/generator.yaml` and of a set's `generator` mapping, `generator_node` `~` parameters and\n"
       << "`ppp generate` flags (`--size WIDTHxHEIGHT` sets `width` and `height` together, as for `ppp random`;\n"
-      << "the failure fitness also takes the episode's `--budget`, `--sensor-range` and `--connectivity`).\n\n"
+      << "the panel fitnesses, failure and regret, also take the episode options' flags: `--budget`, `--budget-factor`,\n"
+      << "`--sensor-range`, `--connectivity`, `--soft-failure-ratio`, ...).\n\n"
       << optionsMarkdownTable(generator::generatorOptionSpecs(), generator::GeneratorOptions{}, &key)
       << "\n## Generator node\n\n"
       << "`generator_node` `~` parameters besides the generator options above (which it reads as `~options`, YAML\n"

@@ -71,6 +71,7 @@ ppp_msgs::ProblemEvaluation HuntServer::toMessage(const generator::PanelEvaluati
   ppp_msgs::ProblemEvaluation m;
   m.failure_rate = e.estimate.failure_rate;
   m.budget_used = e.estimate.budget_used;
+  m.regret = e.estimate.regret;
   m.episodes = static_cast<std::uint32_t>(e.episodes);
   m.failed = static_cast<std::uint32_t>(e.failed);
   for (const auto& [reason, count] : e.reasons) {

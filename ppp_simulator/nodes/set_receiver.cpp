@@ -49,7 +49,7 @@ ReceivedSets receiveSets(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const
   bool hunting = false;
   for (const SetSpec& spec : config.sets) {
     if (!spec.generator) continue;
-    hunting = hunting || spec.generator->fitness == generator::kFailureFitness;
+    hunting = hunting || generator::isPanelFitness(spec.generator->fitness);
     const std::string name = spec.name;
     awaited.push_back({name,
                        nh.subscribe<ppp_msgs::ProblemSet>(

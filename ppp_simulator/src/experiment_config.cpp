@@ -63,6 +63,7 @@ std::vector<SetSpec> readSets(YamlMapReader& reader, const fs::path& base) {
 
 void ExperimentConfig::validate() const {
   checkOptionRanges(experimentOptionSpecs(), *this);
+  episode.validate();
   if (sets.empty()) throw InvalidArgument("sets", "an experiment needs at least one PPP set");
   if (agents.empty()) throw InvalidArgument("agents", "an experiment needs at least one agent");
   std::set<std::string> names;
@@ -75,7 +76,7 @@ void ExperimentConfig::validate() const {
     if (!s.generator) continue;
     try {
       s.generator->validate();
-      if (s.generator->fitness == generator::kFailureFitness) {
+      if (generator::isPanelFitness(s.generator->fitness)) {
         if (!s.generator->agents_file.empty()) {
           throw InvalidArgument("agents_file", "in an experiment the panel's names come from its agents");
         }
@@ -157,7 +158,7 @@ ExperimentWork estimateWork(const ExperimentConfig& config) {
       const generator::GeneratorOptions& g = *set.generator;
       problems = g.population;
       work.matings += static_cast<double>(g.matings);
-      if (g.fitness == generator::kFailureFitness) {
+      if (generator::isPanelFitness(g.fitness)) {
         work.hunt_episodes += (2.0 * static_cast<double>(g.matings) + g.population) * g.agents.size() * g.runs_per_eval;
       }
     } else {

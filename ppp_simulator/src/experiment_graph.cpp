@@ -94,15 +94,16 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent) 
   return {bridge, planner};
 }
 
-/// The set a hunt graph evolves. @throws InvalidArgument naming "hunt" unless it is a `failure` set of `config`.
+/// The set a hunt graph evolves. @throws InvalidArgument naming "hunt" unless it is a set of `config` evolved with a
+/// panel fitness.
 const SetSpec& huntedSet(const ExperimentConfig& config, const std::string& name) {
   std::vector<std::string> hunted;
   for (const SetSpec& set : config.sets) {
-    if (!set.generator || set.generator->fitness != generator::kFailureFitness) continue;
+    if (!set.generator || !generator::isPanelFitness(set.generator->fitness)) continue;
     if (set.name == name) return set;
     hunted.push_back(set.name);
   }
-  throw InvalidArgument("hunt", "the config has no set '" + name + "' evolved with the failure fitness (its hunted sets: " +
+  throw InvalidArgument("hunt", "the config has no set '" + name + "' evolved with a panel fitness (its hunted sets: " +
                                     (hunted.empty() ? "none" : joinNames(hunted)) + ")");
 }
 

@@ -17,35 +17,27 @@ namespace simulator {
 
 namespace {
 
-/// The first failing run of `agent` on PPP `problem` of `set`, replayed for its path and animated.
-FailureExample failingRun(const ExperimentConfig& config, const agents::PreparedSet& set, int problem,
-                          const agents::AgentConfig& agent_config, const std::vector<ResultGroup>& groups,
-                          const StopCheck& stop) {
+/// The run `row` of `agent` on PPP `problem` of `set`, replayed for its path and animated.
+FailureExample replayedRun(const ExperimentConfig& config, const agents::PreparedSet& set, int problem,
+                           const agents::AgentConfig& agent_config, const agents::EpisodeResult& row,
+                           const StopCheck& stop) {
   stopIfAsked(stop);
-  const agents::EpisodeResult* first_fail = nullptr;
-  for (const ResultGroup& g : groups) {
-    const agents::EpisodeResult* f = g.first_fail;
-    if (f != nullptr && f->agent == agent_config.name && f->problem == set.set.ids[problem] && f->set == set.name &&
-        (first_fail == nullptr || f->run < first_fail->run)) {
-      first_fail = f;
-    }
-  }
   const Problem& ppp = set.set.problems[problem];
   AnimationOptions animation;
   animation.max_frames = config.animation_frames;
   EpisodeAnimation run;
   if (std::max(ppp.width, ppp.height) <= kReportAnimationMaxSide) {
-    run = animateEpisode(ppp, set.grids[problem], agent_config, config.episode, first_fail->seed, animation, stop);
+    run = animateEpisode(ppp, set.grids[problem], agent_config, config.episode, row.seed, animation, stop);
   } else {
-    run.outcome = agents::recordEpisode(ppp, set.grids[problem], agent_config, config.episode, first_fail->seed);
+    run.outcome = agents::recordEpisode(ppp, set.grids[problem], agent_config, config.episode, row.seed);
   }
   const EpisodeOutcome& outcome = run.outcome;
   FailureExample example;
   example.set = set.name;
   example.problem = set.set.ids[problem];
   example.agent = agent_config.name;
-  example.run = first_fail->run;
-  example.seed = first_fail->seed;
+  example.run = row.run;
+  example.seed = row.seed;
   example.ppp = ppp;
   example.path = outcome.path;
   example.reason = outcome.reason;
@@ -54,6 +46,27 @@ FailureExample failingRun(const ExperimentConfig& config, const agents::Prepared
   const std::string episode_flags = optionFlags(episodeOptionSpecs(), config.episode, EpisodeOptions{});
   if (!episode_flags.empty()) example.replay_flags += " " + episode_flags;
   return example;
+}
+
+/// The first failing run of `agent` on PPP `problem` of `set`, replayed for its path and animated.
+FailureExample failingRun(const ExperimentConfig& config, const agents::PreparedSet& set, int problem,
+                          const agents::AgentConfig& agent_config, const std::vector<ResultGroup>& groups,
+                          const StopCheck& stop) {
+  const agents::EpisodeResult* first_fail = nullptr;
+  for (const ResultGroup& g : groups) {
+    const agents::EpisodeResult* f = g.first_fail;
+    if (f != nullptr && f->agent == agent_config.name && f->problem == set.set.ids[problem] && f->set == set.name &&
+        (first_fail == nullptr || f->run < first_fail->run)) {
+      first_fail = f;
+    }
+  }
+  return replayedRun(config, set, problem, agent_config, *first_fail, stop);
+}
+
+/// Whether the report replays runs of `agent`: not the control, the random baseline or planner agents.
+bool replayedInReport(const agents::AgentConfig& agent) {
+  const agents::AgentType& type = agents::agentType(agent.type);
+  return !type.has(agents::AgentTrait::Control) && !type.has(agents::AgentTrait::Baseline) && !agents::isPlanner(agent);
 }
 
 }  // namespace
@@ -137,8 +150,7 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
   }
   std::vector<FailureExample> worst;
   for (const agents::AgentConfig& agent : config.agents) {
-    const agents::AgentType& type = agents::agentType(agent.type);
-    if (type.has(agents::AgentTrait::Control) || type.has(agents::AgentTrait::Baseline) || agents::isPlanner(agent)) continue;
+    if (!replayedInReport(agent)) continue;
     double lowest = 1.0;
     std::pair<int, int> at{-1, -1};
     for (const auto& [where, c] : counts[agent.name]) {  // set order, then PPP order: the first of equals wins
@@ -148,6 +160,26 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
     if (at.first >= 0) worst.push_back(failingRun(config, sets[at.first], at.second, agent, groups, stop));
   }
   return worst;
+}
+
+std::vector<FailureExample> longestDetours(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets,
+                                           const std::vector<DetourStats>& detours, const StopCheck& stop) {
+  std::vector<FailureExample> examples;
+  for (const agents::AgentConfig& agent : config.agents) {
+    if (!replayedInReport(agent)) continue;
+    const DetourStats* worst = nullptr;
+    for (const DetourStats& d : detours) {
+      if (d.agent == agent.name && (worst == nullptr || d.worst_mean > worst->worst_mean)) worst = &d;
+    }
+    if (worst == nullptr) continue;
+    for (const agents::PreparedSet& set : sets) {
+      if (set.name != worst->set) continue;
+      const auto id = std::find(set.set.ids.begin(), set.set.ids.end(), worst->worst_problem);
+      const int problem = static_cast<int>(id - set.set.ids.begin());
+      examples.push_back(replayedRun(config, set, problem, agent, *worst->longest, stop));
+    }
+  }
+  return examples;
 }
 
 void writeExperimentReport(const std::string& dir, const ExperimentConfig& config, const std::string& config_text,
@@ -185,6 +217,9 @@ void writeExperimentReport(const std::string& dir, const ExperimentConfig& confi
   input.failures = hardestFailures(config, sets, groups, config.hardest, stop);
   stopIfAsked(stop);
   input.worst = worstFailures(config, sets, groups, stop);
+  stopIfAsked(stop);
+  input.detours = detourStats(rows, set_names, agent_names);
+  input.detour_examples = longestDetours(config, sets, input.detours, stop);
   stopIfAsked(stop);
   for (const agents::PreparedSet& set : sets) {
     SetInfo info{set.name, set.set.diversity, ""};

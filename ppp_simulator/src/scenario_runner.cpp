@@ -6,6 +6,7 @@
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/movingai_map.hpp"
+#include "ppp_core/optimum.hpp"
 #include "ppp_core/rng.hpp"
 
 namespace ppp {
@@ -57,7 +58,7 @@ std::vector<ScenarioResult> runScenarios(const std::string& scen_path, const Sce
     ScenarioResult result;
     result.scenario = s;
     result.seed = deriveSeed(options.seed, {static_cast<std::uint64_t>(i)});
-    result.budget = map.budget;
+    result.budget = options.episode.budget_factor > 0 ? episodeBudget(options.episode, map.problem, map.grid) : map.budget;
     result.outcome = map.runner->run(map.problem, map.grid, *agent, result.seed);
     results.push_back(std::move(result));
   }

@@ -155,6 +155,12 @@ expect_ok "scenarios default budget" "$ppp" scenarios "$work/snake.map.scen" --a
 grep -q '"passed":true,"path_length":880.0' "$work/out" && pass || fail "the 880-move route did not fit the default budget: $(cat "$work/out")"
 expect_ok "scenarios --budget" "$ppp" scenarios "$work/snake.map.scen" --agent astar --budget 300 --json
 grep -q '"passed":false,"path_length":300.0,.*"steps":300' "$work/out" && pass || fail "--budget 300 was not applied: $(cat "$work/out")"
+expect_ok "scenarios --budget-factor 1" "$ppp" scenarios "$work/snake.map.scen" --agent astar --budget-factor 1 --json
+grep -q '"passed":true,.*"steps":880' "$work/out" && pass || fail "factor 1 did not give astar its 880 moves: $(cat "$work/out")"
+expect_ok "scenarios --budget-factor 0.99" "$ppp" scenarios "$work/snake.map.scen" --agent astar --budget-factor 0.99 --json
+grep -q '"passed":false,.*"steps":872' "$work/out" && pass || fail "ceil(0.99 x 880) is not 872 moves: $(cat "$work/out")"
+expect_error "budget and budget factor" "--budget-factor: give either --budget or --budget-factor, not both" \
+  "$ppp" scenarios "$work/snake.map.scen" --agent astar --budget 300 --budget-factor 2
 expect_error "scenarios connectivity 6" "--connectivity: unknown connectivity '6'; valid: 4, 8" "$ppp" scenarios "$arena" --agent astar --connectivity 6
 cp "$arena" "$work/lonely.scen"
 expect_error "scenarios map missing" "map 'arena.map' not found" "$ppp" scenarios "$work/lonely.scen" --agent astar
@@ -178,7 +184,7 @@ expect_error "size and width" "--size: give either --size or --width, not both" 
 expect_error "size and height" "--size: give either --size or --height, not both" \
   "$ppp" generate --quiet --size 14x10 --height 12 -o "$work/bad1"
 expect_error "bad size" "--size: expected" "$ppp" generate --quiet --size 14by10 -o "$work/bad1"
-expect_error "episode flag without failure" "--fitness: --budget, --sensor-range, --connectivity and --threads are for" \
+expect_error "episode flag without failure" "--fitness: the episode flags (--budget, --sensor-range, ...) and --threads are for the panel fitnesses" \
   "$ppp" generate --quiet --fitness turns --connectivity 8 -o "$work/bad1"
 expect_error "connectivity 6" "--connectivity: unknown connectivity '6'; valid: 4, 8" \
   "$ppp" generate --quiet --fitness failure --agents bumper --connectivity 6 -o "$work/bad1"
@@ -210,6 +216,15 @@ for f in archive.csv archive.svg; do
   [ -s "$work/hunt_m/$f" ] && pass || fail "map_elites did not write $f"
 done
 head -1 "$work/hunt_m/archive.csv" | grep -q "^cell,turns_bin,visibility_goal_bin," && pass || fail "archive.csv header"
+regret=(generate --population 12 --matings 100 --quiet --fitness regret --runs-per-eval 3 --agents explorer,long_term_explorer)
+expect_ok "regret hunt" "$ppp" "${regret[@]}" --budget-factor 3 --archive map_elites --seed 4 -o "$work/regret_a"
+expect_ok "regret hunt again" "$ppp" "${regret[@]}" --budget-factor 3 --archive map_elites --seed 4 --threads 1 \
+  -o "$work/regret_b"
+diff -r "$work/regret_a" "$work/regret_b" > /dev/null && pass || fail "same regret hunt seed gave different sets"
+grep -q "^meta fitness regret$" "$work/regret_a/ppp_000.ppp" && pass || fail "a regret PPP lacks its fitness"
+grep -h "^meta fitness_value " "$work"/regret_a/ppp_*.ppp | awk '$3 < 0 || $3 > 2 { bad = 1 } END { exit bad }' && pass \
+  || fail "a regret outside [0, 2] with budgets of 3 x the optimum"
+expect_error "regret without panel" "agents: empty panel: the regret fitness" "$ppp" generate --quiet --fitness regret -o "$work/bad2"
 expect_error "empty panel" "agents: empty panel" "$ppp" "${hunt[@]}" -o "$work/bad2"
 expect_error "unknown panel agent" "agents: unknown agent 'nobody'" "$ppp" "${hunt[@]}" --agents nobody -o "$work/bad2"
 expect_error "planner in process" "agents: 'optimistic' is a ROS planner agent" \
@@ -220,7 +235,7 @@ expect_error "unknown feature" "features: unknown character 'width'" \
   "$ppp" "${hunt[@]}" --agents bumper --archive map_elites --features turns,width -o "$work/bad2"
 expect_error "bins 1" "--bins: expected an integer in [2, 100], got 1" \
   "$ppp" "${hunt[@]}" --agents bumper --archive map_elites --bins 1 -o "$work/bad2"
-expect_error "panel without failure" "agents: only the failure fitness uses an agent panel" \
+expect_error "panel without failure" "agents: only the panel fitnesses (failure, regret) use an agent panel" \
   "$ppp" generate --quiet --agents bumper -o "$work/bad2"
 [ ! -e "$work/bad2" ] && pass || fail "a failed hunt left an output directory"
 

@@ -71,7 +71,7 @@ cp -r "$work/a" "$work/l"
 awk 'NR == 1 || NR % 997 != 0' "$work/a/results.csv" > "$work/l/results.csv"
 awk -F, -v OFS=, 'NR > 1 && NR % 997 == 0 { $6 = 0; $11 = (NR % 2 ? "timeout" : "agent_lost"); print }' \
   "$work/a/results.csv" >> "$work/l/results.csv"
-lost=$(grep -c ",timeout$\|,agent_lost$" "$work/l/results.csv")
+lost=$(grep -c ",timeout,0$\|,agent_lost,0$" "$work/l/results.csv")
 expect_ok "resume with lost runs" "$ppp" experiment "$work/experiment.yaml" -o "$work/l"
 grep -q "playing again $lost runs lost to the agent link" "$work/err" "$work/out" && pass || \
   fail "no word about $lost lost runs: $(cat "$work/err")"

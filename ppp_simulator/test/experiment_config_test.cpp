@@ -98,6 +98,11 @@ TEST_F(ExperimentYaml, BadInputNamesKeyAndLine) {
   EXPECT_EQ(errorOf("agents: agents.yaml\nruns: 0\n" + sets).rfind(" runs: expected an integer in [1, 100000000], got 0", 0), 0u);
   EXPECT_EQ(errorOf("agents: agents.yaml\nbudget: 0\n" + sets).rfind(" budget: expected an integer in [1, 1000000], got 0", 0), 0u);
   EXPECT_EQ(errorOf("agents: agents.yaml\nsensor_range: 0\n" + sets).rfind(" sensor_range: expected", 0), 0u);
+  EXPECT_EQ(errorOf("agents: agents.yaml\nbudget: 100\nbudget_factor: 2\n" + sets),
+            "3: budget_factor: give either budget or budget_factor, not both");
+  EXPECT_EQ(errorOf("agents: agents.yaml\nbudget_factor: 2\nbudget_min: 50\n" + sets), "no error");
+  EXPECT_EQ(errorOf("agents: agents.yaml\nsoft_failure_ratio: 0.5\n" + sets),
+            " soft_failure_ratio: expected 0 (no soft failures) or a ratio of at least 1, got 0.5");
   EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - {generator: {matings: 5}}\n"),
             "3: sets[0].name: missing; every set needs a name");
   EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - name: a\n    generator: {fitnes: turns}\n")
@@ -189,7 +194,7 @@ TEST_F(ExperimentYaml, HuntedSetsNameTheirPanelFromTheExperimentsAgents) {
   EXPECT_EQ(errorOf(hunt("agents: [slow], agents_file: agents.yaml")),
             " sets[0].generator.agents_file: in an experiment the panel's names come from its agents");
   EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - name: t\n    generator: {fitness: turns, agents: [slow]}\n"),
-            " sets[0].generator.agents: only the failure fitness uses an agent panel");
+            " sets[0].generator.agents: only the panel fitnesses (failure, regret) use an agent panel");
   EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - name: t\n    generator: {replacement: best}\n"),
             "4: sets[0].generator.replacement: unknown rule 'best'; valid: crowding, tournament");
   EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - name: t\n    generator: {crowding_window: 1}\n"),

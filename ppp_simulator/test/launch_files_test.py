@@ -297,7 +297,7 @@ class HuntLaunchTest(unittest.TestCase):
     def test_only_failure_sets_can_be_hunted(self):
         _, status, errors, _ = launch_file(os.path.join(ROOT, 'config', 'experiment.yaml'), '--hunt', 'turns')
         self.assertNotEqual(status, 0)
-        self.assertIn("no set 'turns' evolved with the failure fitness (its hunted sets: hunted)", errors)
+        self.assertIn("no set 'turns' evolved with a panel fitness (its hunted sets: hunted)", errors)
 
 
 if __name__ == '__main__':

@@ -83,8 +83,8 @@ TEST_F(ResultsFileTest, AStopWhileReadingLeavesTheFileAsItWas) {
 TEST_F(ResultsFileTest, ForeignFilesAreRefused) {
   std::ofstream(path_) << "a,b,c\n1,2,3\n";
   EXPECT_THROW(ResultsFile{path_}, ParseError);
-  std::ofstream(path_) << "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason\n"
-                       << "turns,ppp_000,random,zero,1,1,1,0,1,1,goal_reached\n";
+  std::ofstream(path_) << "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,soft_failure\n"
+                       << "turns,ppp_000,random,zero,1,1,1,0,1,1,goal_reached,0\n";
   try {
     ResultsFile file(path_);
     FAIL();
@@ -94,13 +94,13 @@ TEST_F(ResultsFileTest, ForeignFilesAreRefused) {
 }
 
 TEST(ResultsCsvText, RowsOfTextWithErrorsNamingTheGivenPath) {
-  const std::string header = "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason\n";
-  const std::string good = "turns,ppp_000,random,0,1,1,1,0,1,1,goal_reached\n";
+  const std::string header = "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,soft_failure\n";
+  const std::string good = "turns,ppp_000,random,0,1,1,1,0,1,1,goal_reached,0\n";
   const auto rows = parseResultsCsv(header + good + "turns,ppp_000,ran", "out/results.csv");
   ASSERT_EQ(rows.size(), 1u);  // the half-written last line is left out
   EXPECT_EQ(rows[0].reason, "goal_reached");
   try {
-    parseResultsCsv(header + good + "turns,ppp_000,random,zero,1,1,1,0,1,1,goal_reached\n", "out/results.csv");
+    parseResultsCsv(header + good + "turns,ppp_000,random,zero,1,1,1,0,1,1,goal_reached,0\n", "out/results.csv");
     ADD_FAILURE() << "run zero accepted";
   } catch (const ParseError& e) {
     EXPECT_EQ(std::string(e.what()), "out/results.csv:3: run: expected a whole number, got 'zero'");
@@ -119,28 +119,28 @@ TEST(ResultsCsvText, LengthsAreWholeNumbersOrEightDecimals) {
   r.optimal_length = -1;
   std::string line;
   agents::appendCsvRow(r, &line);
-  EXPECT_EQ(line, "s,p,astar,0,0,0,0,0,12,-1,goal_reached\n");
+  EXPECT_EQ(line, "s,p,astar,0,0,0,0,0,12,-1,goal_reached,0\n");
   r.path_length = 3 + 2 * std::sqrt(2.0);
   r.optimal_length = 5.65685424949238;
   line.clear();
   agents::appendCsvRow(r, &line);
-  EXPECT_EQ(line, "s,p,astar,0,0,0,0,0,5.82842712,5.65685425,goal_reached\n");
+  EXPECT_EQ(line, "s,p,astar,0,0,0,0,0,5.82842712,5.65685425,goal_reached,0\n");
   const agents::EpisodeResult back = agents::parseCsvRow(line.substr(0, line.size() - 1), "x.csv", 2);
   EXPECT_NEAR(back.path_length, 5.82842712, 1e-12);
   // A length that rounds to a whole number at eight decimals is written as that number (the text of a row read
   // back and written again does not change).
   r.path_length = 7 + 1.5e-9;
   r.optimal_length = 2.999999996;
-  EXPECT_EQ(csvLine(agents::toCsvFields(r)), "s,p,astar,0,0,0,0,0,7,3,goal_reached");
-  EXPECT_THROW(agents::parseCsvRow("s,p,astar,0,0,0,0,0,7,-0.5,goal_reached", "x.csv", 2), ParseError);  // only -1 is negative
+  EXPECT_EQ(csvLine(agents::toCsvFields(r)), "s,p,astar,0,0,0,0,0,7,3,goal_reached,0");
+  EXPECT_THROW(agents::parseCsvRow("s,p,astar,0,0,0,0,0,7,-0.5,goal_reached,0", "x.csv", 2), ParseError);  // only -1 is negative
   std::string again;
   agents::appendCsvRow(back, &again);
   EXPECT_EQ(again, line);
-  for (const std::string bad : {"s,p,a,0,0,0,0,0,long,1,r", "s,p,a,0,0,0,0,0,1,nan,r", "s,p,a,0,0,0,0,0,-2,1,r"}) {
+  for (const std::string bad : {"s,p,a,0,0,0,0,0,long,1,r,0", "s,p,a,0,0,0,0,0,1,nan,r,0", "s,p,a,0,0,0,0,0,-2,1,r,0"}) {
     EXPECT_THROW(agents::parseCsvRow(bad, "x.csv", 3), ParseError) << bad;
   }
   try {
-    agents::parseCsvRow("s,p,a,0,0,0,0,0,1e99,1,r", "x.csv", 3);
+    agents::parseCsvRow("s,p,a,0,0,0,0,0,1e99,1,r,0", "x.csv", 3);
     ADD_FAILURE() << "1e99 accepted";
   } catch (const ParseError& e) {
     EXPECT_EQ(std::string(e.what()), "x.csv:3: path_length: expected a length, got '1e99'");

@@ -100,3 +100,25 @@ TEST(Chart, ValidateRejectsMismatchedSeriesAndBadScale) {
 
 }  // namespace
 }  // namespace ppp::simulator
+
+namespace ppp::simulator {
+namespace {
+
+TEST(BoxPlotSvg, DrawsOneBoxPerSampleWithItsFiguresAndRefusesMissingBoxes) {
+  Chart chart = twoByThree();
+  const double none = std::nan("");
+  std::vector<std::vector<BoxStats>> boxes = {
+      {{1, 1.2, 1.5, 2, 3}, {1, 2, 3, 4, 5}, {1, 1, 1, 1, 1}},
+      {{1, 1.1, 1.2, 1.3, 1.4}, {none, none, none, none, none}, {2, 2.5, 3, 3.5, 4}}};
+  chart.y_max = 6;
+  const std::string svg = boxPlotSvg(chart, boxes, true);
+  EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
+  EXPECT_EQ(count(svg, "<g><title>"), 5u);  // one box left empty
+  EXPECT_NE(svg.find("set B on explorer: median 3.00, quartiles 2.50-3.50, 5th-95th percentile 2.00-4.00"),
+            std::string::npos);
+  boxes[1].pop_back();
+  EXPECT_THROW(boxPlotSvg(chart, boxes, false), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace ppp::simulator

@@ -52,7 +52,8 @@ void addOptionFlags(CLI::App* command, const std::vector<OptionSpec<Options>>& s
 }
 
 /// Applies the flags given on the command line over `options`, each read as its YAML value would be
-/// ("a,b" for a list, "X,Y" for a cell). @throws InvalidArgument naming the flag and what was expected.
+/// ("a,b" for a list, "X,Y" for a cell); a flag given with the one it excludes is refused.
+/// @throws InvalidArgument naming the flag and what was expected.
 template <typename Options>
 void applyOptionFlags(const CLI::App& command, const std::vector<OptionSpec<Options>>& specs,
                       const std::map<std::string, std::string>& given, Options* options) {
@@ -67,6 +68,11 @@ void applyOptionFlags(const CLI::App& command, const std::vector<OptionSpec<Opti
     }
     const std::string problem = spec.set(options, node);
     if (!problem.empty()) throw InvalidArgument(flag, problem);
+  }
+  const auto given_flag = [&](const std::string& name) { return command.count(flagFor(name)) > 0; };
+  if (const OptionSpec<Options>* both = exclusionBroken(specs, given_flag)) {
+    throw InvalidArgument(flagName(*both), "give either " + flagFor(both->excludes) + " or " + flagName(*both) +
+                                               ", not both");
   }
 }
 

@@ -1,8 +1,10 @@
 #include "ppp_core/reachability.hpp"
 
+#include "ppp_core/octile.hpp"
+
 namespace ppp {
 
-std::vector<int> stepDistances(const Grid& grid, Cell from) {
+std::vector<int> stepDistances(const Grid& grid, Cell from, Connectivity connectivity) {
   std::vector<int> distance(static_cast<std::size_t>(grid.size()), -1);
   if (!grid.isFree(from)) return distance;
   std::vector<int> queue;
@@ -24,8 +26,19 @@ std::vector<int> stepDistances(const Grid& grid, Cell from) {
     visit(c.x + 1 < w, i + 1);
     visit(c.y > 0, i - w);
     visit(c.y + 1 < grid.height(), i + w);
+    if (connectivity != Connectivity::Eight) continue;
+    for (const int dy : {-1, 1}) {
+      for (const int dx : {-1, 1}) {
+        if (octileMoveAllowed(grid, c, dx, dy)) visit(true, i + dy * w + dx);
+      }
+    }
   }
   return distance;
+}
+
+int fewestMoves(const Grid& grid, Cell start, Cell goal, Connectivity connectivity) {
+  if (!grid.contains(start) || !grid.contains(goal)) return -1;
+  return stepDistances(grid, start, connectivity)[grid.index(goal)];
 }
 
 bool isReachable(const Grid& grid, Cell start, Cell goal) {

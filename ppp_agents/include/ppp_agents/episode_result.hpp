@@ -24,12 +24,14 @@ struct EpisodeResult {
   double optimal_length = 0;  ///< Optimal length from start to goal: the DPA's fewest advances, or the octile
                               ///< length under connectivity 8.
   std::string reason;       ///< One of the reason:: constants.
+  bool soft_failure = false;  ///< Passed, but on a path longer than the soft failure ratio x the optimal length.
 };
 
-/// The results.csv header: set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason.
+/// The results.csv header: set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,
+/// soft_failure.
 const std::vector<std::string>& resultCsvHeader();
 
-/// A result as CSV fields in header order (pass as 1/0).
+/// A result as CSV fields in header order (pass and soft_failure as 1/0).
 std::vector<std::string> toCsvFields(const EpisodeResult& result);
 
 /// Parses CSV fields in header order. @throws ParseError naming `source`, `line` and the field.

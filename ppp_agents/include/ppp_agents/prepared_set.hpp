@@ -15,16 +15,22 @@
 namespace ppp {
 namespace agents {
 
-/// A PPP set ready to run: its PPPs, decoded grids and optimal lengths.
+/// A PPP set ready to run under one episode's rules: its PPPs, decoded grids, optima and budgets.
 struct PreparedSet {
   std::string name;              ///< Set name.
   std::string directory;         ///< The set's directory (PPP files, set.csv, trees, any archive).
-  ProblemSet set;     ///< The PPPs and their evaluations.
+  ProblemSet set;                ///< The PPPs and their evaluations.
+  EpisodeOptions episode;        ///< The rules it is played under.
   std::vector<Grid> grids;       ///< Decoded grid of each PPP.
   std::vector<double> optimal;   ///< Optimal length of each PPP: fewest moves (connectivity 4), octile length (8).
+  std::vector<int> moves;        ///< Fewest moves of each PPP under the move model.
+  std::vector<int> budgets;      ///< Move budget of each PPP's episodes (episodeBudget()).
   /// Each PPP's WindowAtlas at the experiment's sensor range, when it fits kMaxWindowAtlasBytes.
   std::vector<std::optional<WindowAtlas>> windows;
 };
+
+/// The most moves any episode of `sets` may take.
+int largestBudget(const std::vector<PreparedSet>& sets);
 
 /// PPP `problem`'s WindowAtlas in `set`, or nullptr when it has none.
 inline const WindowAtlas* windowsOf(const PreparedSet& set, int problem) {
@@ -32,12 +38,12 @@ inline const WindowAtlas* windowsOf(const PreparedSet& set, int problem) {
   return windows ? &*windows : nullptr;
 }
 
-/// The results.csv row of one run of `agent` on PPP `problem` of `set`.
+/// The results.csv row of one run of `agent` on PPP `problem` of `set` (a soft failure under its rules).
 EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::string& agent, int run,
                             std::uint64_t seed, const EpisodeOutcome& outcome);
 
-/// A set ready to play under `episode`'s rules: its grids, optimal lengths (the fewest moves, or the octile
-/// length under connectivity 8) and window atlases at the sensor range.
+/// A set ready to play under `episode`'s rules: its grids, optima (optimumOf()), budgets and window atlases at
+/// the sensor range.
 /// @throws InvalidArgument naming "sets" for an unsolvable PPP.
 PreparedSet prepareSet(const std::string& name, ProblemSet set, const EpisodeOptions& episode);
 

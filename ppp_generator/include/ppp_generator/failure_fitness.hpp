@@ -17,8 +17,9 @@ namespace generator {
 /// Most worker threads a failure fitness or an experiment may ask for.
 constexpr int kMaxThreads = 1024;
 
-/// The agents and rules of a failure fitness (SPEC 6b).
+/// The agents and rules of a panel fitness, `failure` or `regret` (SPEC 6b, 6c).
 struct FailurePanel {
+  std::string fitness = kFailureFitness;    ///< kFailureFitness or kRegretFitness: what the panel's runs score.
   std::vector<agents::AgentConfig> agents;  ///< The panel, each run `runs_per_eval` times per PPP.
   EpisodeOptions episode;                   ///< Budget and sensor range of the episodes.
   int runs_per_eval = 20;                   ///< Episodes per agent per PPP.
@@ -33,32 +34,42 @@ std::uint64_t failureRunSeed(std::uint64_t generator_seed, std::uint64_t grid_ha
 
 /// One PPP's failure figures.
 struct FailureEstimate {
-  double failure_rate = 0;  ///< Mean over the panel of each agent's share of failed runs.
+  double failure_rate = 0;  ///< Mean over the panel of each agent's share of failed runs (soft failures included).
   double budget_used = 0;   ///< Mean share of the budget the panel's runs used.
+  double regret = 0;        ///< Mean over the panel of each agent's mean regret (runRegret()).
 };
 
-/// What a panel's runs on one PPP came to: per panel agent, its failed runs and the steps of all its runs.
+/// What a panel's runs on one PPP came to, per panel agent.
 struct PanelTally {
-  std::vector<int> failures;  ///< Failed runs per agent.
-  std::vector<long> steps;    ///< Steps of all runs per agent.
+  /// An empty tally of a panel of `agents`.
+  explicit PanelTally(std::size_t agents = 0) : failures(agents, 0), steps(agents, 0), regret(agents, 0) {}
+  std::vector<int> failures;   ///< Failed runs (soft failures included).
+  std::vector<long> steps;     ///< Moves used: a run's steps, or its whole budget when it failed.
+  std::vector<double> regret;  ///< Sum of the runs' regrets.
+  /// Adds a run of panel agent `agent` that `passed` (false for a soft failure too) after `steps`, on a PPP with
+  /// move budget `budget` and fewest moves `optimal_moves`.
+  void add(std::size_t agent, bool passed, int steps, int budget, int optimal_moves);
 };
 
 /// The figures of a tally of `runs` runs per agent with move budget `budget`.
 FailureEstimate estimateOf(const PanelTally& tally, int runs, int budget);
+
+/// The score of a panel fitness (`failure` or `regret`) from a PPP's figures.
+FitnessScore panelScore(const std::string& fitness, const FailureEstimate& estimate);
 
 /// Plays every panel agent runs_per_eval times on each PPP (in parallel over PPPs and agents) and returns
 /// the figures in input order. @throws InvalidArgument for a planner agent (those run only through ROS).
 std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const std::vector<const Problem*>& problems,
                                               const std::vector<const Grid*>& grids);
 
-/// The failure fitness: value = the failure rate, maximised; score = failureScore. Scores
-/// kFailureBatchSize PPPs per call. @throws InvalidArgument naming "agents", "runs_per_eval",
+/// The panel's fitness, maximised: for `failure`, value = the failure rate, score = failureScore(); for
+/// `regret`, value = the mean regret, score = regretScore(). Scores kFailureBatchSize PPPs per call.
+/// @throws InvalidArgument naming "fitness", "agents" (an empty panel or a planner agent), "runs_per_eval",
 /// "threads" or an episode option.
-/// @throws InvalidArgument("agents", ...) for an empty panel or a planner agent.
 Fitness makeFailureFitness(const FailurePanel& panel);
 
-/// The fitness of a set's generator options: makeFitness(options.fitness), or for `failure` the failure
-/// fitness of the panel options.agents looked up in `available` (see resolvePanel), played with `episode`'s
+/// The fitness of a set's generator options: makeFitness(options.fitness), or for a panel fitness (`failure`,
+/// `regret`) the panel options.agents looked up in `available` (see resolvePanel), played with `episode`'s
 /// rules on `threads` threads (0: every core). @throws InvalidArgument naming the option.
 Fitness fitnessFor(const GeneratorOptions& options, const std::vector<agents::AgentConfig>& available,
                    const EpisodeOptions& episode, int threads);

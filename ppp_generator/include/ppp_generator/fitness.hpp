@@ -61,8 +61,15 @@ std::string fitnessNames();
 std::vector<OptionChoice> fitnessChoices();
 
 /// The fitness that is the failure rate of a panel of agents (SPEC 6b); built by makeFailureFitness
-/// (failure_fitness.hpp) in process, or through ROS by the simulator node, not by makeFitness.
+/// (failure_fitness.hpp) in process, or with the simulator node's evaluations through ROS, not by makeFitness.
 constexpr const char* kFailureFitness = "failure";
+
+/// The fitness that is a panel's mean regret (SPEC 6c): how much longer than the optimum its runs took, a failed
+/// run counting as its whole budget; built like kFailureFitness.
+constexpr const char* kRegretFitness = "regret";
+
+/// True for the fitnesses that play episodes of an agent panel (kFailureFitness, kRegretFitness).
+bool isPanelFitness(const std::string& name);
 
 /// PPPs a failure fitness scores per batch (and matings per round of a hunt), in process and through ROS.
 constexpr int kFailureBatchSize = 16;
@@ -72,11 +79,15 @@ constexpr int kFailureBatchSize = 16;
 /// gradient before the first failure is found).
 FitnessScore failureScore(double failure_rate, double budget_used);
 
+/// The regret fitness's score of a PPP: its mean regret plus 0.001 x the mean share of the move budget the panel
+/// used, as failureScore() breaks ties.
+FitnessScore regretScore(double regret, double budget_used);
+
 /// Builds a fitness function by name. @throws InvalidArgument("fitness", ...) listing the valid names, and
-/// for kFailureFitness, which needs an agent panel.
+/// for a panel fitness, which needs an agent panel.
 Fitness makeFitness(const std::string& name, const FitnessParameters& parameters = {});
 
-/// True when the named fitness (any registered name or kFailureFitness) selects larger values.
+/// True when the named fitness (any registered name or a panel fitness) selects larger values.
 /// @throws InvalidArgument("fitness", ...) for an unknown name.
 bool fitnessMaximises(const std::string& name);
 

@@ -16,12 +16,15 @@
 namespace ppp {
 namespace generator {
 
+/// The reason PanelEvaluation::reasons gives a soft failure (a passed run; results.csv says goal_reached).
+constexpr const char* kSoftFailureReason = "soft_failure";
+
 /// What a panel's runs on one PPP of a hunt came to, with why runs failed.
 struct PanelEvaluation {
-  FailureEstimate estimate;             ///< Failure rate and budget used, as the in-process fitness computes them.
+  FailureEstimate estimate;             ///< Failure rate, budget used and regret, as computed in process.
   int episodes = 0;                     ///< Runs played.
   int failed = 0;                       ///< Of them, failed.
-  std::map<std::string, int> reasons;   ///< Failed runs per reason (budget_exhausted, planner_timeout, ...).
+  std::map<std::string, int> reasons;   ///< Failed runs per reason (budget_exhausted, soft_failure, ...).
 };
 
 /// One evaluation request of a hunt, played through agent lanes (the simulator node's ~evaluate): one lane per
@@ -42,7 +45,6 @@ class HuntEvaluation {
   std::vector<PanelEvaluation> evaluations() const;
 
  private:
-  EpisodeOptions episode_;
   int runs_;
   std::vector<agents::PreparedSet> sets_;  // one set of the candidates; the lanes refer to it
   std::vector<std::unique_ptr<agents::AgentLane>> lanes_;

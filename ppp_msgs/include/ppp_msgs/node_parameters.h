@@ -75,29 +75,38 @@ inline XmlRpc::XmlRpcValue yamlParameter(const YAML::Node& node) {
   return XmlRpc::XmlRpcValue(node.Scalar());
 }
 
+/// The parameter name of a declared option: dotted names as slashes ("weights.goal" as "weights/goal").
+inline std::string parameterName(std::string option) {
+  for (char& c : option) c = c == '.' ? '/' : c;
+  return option;
+}
+
 /// Reads every declared option that is set as a `~` parameter (dotted names as "~weights/goal") over `options`,
-/// each as its YAML value would be read. Returns how many were set. @throws ppp::InvalidArgument naming `~name`.
+/// each as its YAML value would be read; one set with the option it excludes is refused. Returns how many were
+/// set. @throws ppp::InvalidArgument naming `~name`.
 template <typename Options>
 int readOptionParameters(const ros::NodeHandle& nh, const std::vector<ppp::OptionSpec<Options>>& specs,
                          Options* options) {
   int found = 0;
   for (const ppp::OptionSpec<Options>& spec : specs) {
-    std::string name = spec.name;
-    for (char& c : name) c = c == '.' ? '/' : c;
+    const std::string name = parameterName(spec.name);
     XmlRpc::XmlRpcValue value;
     if (!nh.hasParam(name) || !nh.getParam(name, value)) continue;
     const std::string problem = spec.set(options, parameterYaml(value, name));
     if (!problem.empty()) throw ppp::InvalidArgument("~" + name, problem);
     ++found;
   }
+  const auto given = [&](const std::string& name) { return nh.hasParam(parameterName(name)); };
+  if (const ppp::OptionSpec<Options>* both = ppp::exclusionBroken(specs, given)) {
+    throw ppp::InvalidArgument("~" + parameterName(both->name), "give either ~" + parameterName(both->excludes) +
+                                                                    " or ~" + parameterName(both->name) + ", not both");
+  }
   return found;
 }
 
 /// `error`, naming an option, as the error of its `~` parameter ("weights.goal" as "~weights/goal").
 inline ppp::InvalidArgument parameterError(const ppp::InvalidArgument& error) {
-  std::string parameter = error.name();
-  for (char& c : parameter) c = c == '.' ? '/' : c;
-  return ppp::InvalidArgument("~" + parameter, error.problem());
+  return ppp::InvalidArgument("~" + parameterName(error.name()), error.problem());
 }
 
 /// Validates options read from `~` parameters (their validate()); an error names the parameter ("~weights/goal"

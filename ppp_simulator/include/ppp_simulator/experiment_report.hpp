@@ -31,6 +31,12 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
 std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets,
                                           const std::vector<ResultGroup>& groups, const StopCheck& stop = {});
 
+/// Per agent (as worstFailures()), its longest passed run on the PPP of `detours` (detourStats() of the results)
+/// where its passed runs were longest against the optimum, replayed and animated; agents with no passed run are
+/// left out. @throws Interrupted as hardestFailures().
+std::vector<FailureExample> longestDetours(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets,
+                                           const std::vector<DetourStats>& detours, const StopCheck& stop = {});
+
 /// Writes summary.csv and report.{md,html} (with plots and pictures) of a finished experiment into `dir`;
 /// `stop` is asked between the pieces (the pass rates, the failures replayed, each picture and file).
 /// @throws IoError, Interrupted (every file written by then is whole: a rerun writes them all again).

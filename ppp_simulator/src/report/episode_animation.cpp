@@ -10,6 +10,7 @@
 #include "ppp_core/canvas.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/gif_animation.hpp"
+#include "ppp_core/optimum.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -187,7 +188,8 @@ EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const 
 
   const agents::EpisodeInfo info = agents::episodeInfo(problem, grid, config, run_seed, options.connectivity);
   agent->reset(info);
-  Episode episode(problem, grid, runner.sensor(), run_seed, options.budget, options.connectivity, true);
+  Episode episode(problem, grid, runner.sensor(), run_seed, episodeBudget(options, problem, grid), options.connectivity,
+                  true);
   std::unique_ptr<agents::AgentMemory> memory;
   if (info.prior_map == nullptr) {
     memory = std::make_unique<agents::AgentMemory>();

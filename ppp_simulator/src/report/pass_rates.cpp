@@ -79,6 +79,7 @@ struct ProblemKeyLess {
 struct Tally {
   int runs = 0;
   int passes = 0;
+  int soft_failures = 0;
   double steps = 0;
 };
 
@@ -117,6 +118,7 @@ std::vector<ResultGroup> groupResults(const std::vector<agents::EpisodeResult>& 
     ResultGroup& group = groups.back();
     ++group.runs;
     if (r.passed) ++group.passes;
+    if (r.soft_failure) ++group.soft_failures;
     group.steps += r.steps;
     if (!r.passed && (group.first_fail == nullptr || r.run < group.first_fail->run)) group.first_fail = &r;
   }
@@ -149,6 +151,7 @@ PassRateTable computeGroupedPassRates(const std::vector<ResultGroup>& groups, co
     Tally& tally = tallies[ProblemKey{set->second, result.problem, agent->second}];
     tally.runs += group.runs;
     tally.passes += group.passes;
+    tally.soft_failures += group.soft_failures;
     tally.steps += group.steps;
   }
 
@@ -165,12 +168,14 @@ PassRateTable computeGroupedPassRates(const std::vector<ResultGroup>& groups, co
     row.agent = agent_order[static_cast<std::size_t>(key.agent)];
     row.runs = tally.runs;
     row.passes = tally.passes;
+    row.soft_failures = tally.soft_failures;
     row.mean_steps = tally.steps / tally.runs;
     const std::size_t slot = static_cast<std::size_t>(key.set) * agent_order.size() + static_cast<std::size_t>(key.agent);
     SetPassRate& sum = sums[slot];
     ++sum.problems;
     sum.runs += row.runs;
     sum.passes += row.passes;
+    sum.soft_failures += row.soft_failures;
     sum.mean_rate += row.rate();
     table.per_problem.push_back(std::move(row));
   }
@@ -188,8 +193,8 @@ PassRateTable computeGroupedPassRates(const std::vector<ResultGroup>& groups, co
 }
 
 const std::vector<std::string>& summaryCsvHeader() {
-  static const std::vector<std::string> header = {"level", "set",    "problem", "agent",
-                                                  "problems", "runs", "passes",  "pass_rate"};
+  static const std::vector<std::string> header = {"level",  "set",    "problem",   "agent",        "problems",
+                                                  "runs",   "passes", "pass_rate", "soft_failures"};
   return header;
 }
 
@@ -197,12 +202,12 @@ void writeSummaryCsv(const std::string& path, const PassRateTable& table) {
   std::string text = csvLine(summaryCsvHeader()) + "\n";
   for (const ProblemPassRate& row : table.per_problem) {
     text += csvLine({"problem", row.set, row.problem, row.agent, "1", std::to_string(row.runs),
-                     std::to_string(row.passes), formatNumber(row.rate())}) +
+                     std::to_string(row.passes), formatNumber(row.rate()), std::to_string(row.soft_failures)}) +
             "\n";
   }
   for (const SetPassRate& row : table.per_set) {
     text += csvLine({"set", row.set, "", row.agent, std::to_string(row.problems), std::to_string(row.runs),
-                     std::to_string(row.passes), formatNumber(row.mean_rate)}) +
+                     std::to_string(row.passes), formatNumber(row.mean_rate), std::to_string(row.soft_failures)}) +
             "\n";
   }
   writeFileAtomically(path, text);

@@ -221,6 +221,36 @@ std::vector<Plot> makePlots(const PassRateTable& rates) {
   return plots;
 }
 
+/// The box plot of path / optimal per agent (categories) and set (series), when any run passed.
+std::vector<Plot> detourPlots(const PassRateTable& rates, const std::vector<DetourStats>& detours) {
+  if (detours.empty()) return {};
+  const double missing = std::numeric_limits<double>::quiet_NaN();
+  Chart chart;
+  chart.title = "Path length / optimal length of the passed runs";
+  chart.x_label = "agent";
+  chart.y_label = "path / optimal";
+  chart.value_suffix = "";
+  chart.categories = rates.agents;
+  std::vector<std::vector<BoxStats>> boxes;
+  double top = 1;
+  for (const std::string& set : rates.sets) {
+    chart.series.push_back(PlotSeries{set, std::vector<double>(rates.agents.size(), missing)});
+    boxes.emplace_back(rates.agents.size(), BoxStats{missing, missing, missing, missing, missing});
+    for (std::size_t a = 0; a < rates.agents.size(); ++a) {
+      for (const DetourStats& d : detours) {
+        if (d.set != set || d.agent != rates.agents[a]) continue;
+        boxes.back()[a] = d.spread;
+        top = std::max(top, d.spread.p95);
+      }
+    }
+  }
+  chart.y_max = std::ceil(top * 1.1 * 2) / 2;
+  return {Plot{"plots/path_ratio.svg",
+               "Path length / optimal length of every agent's passed runs on every set: the box spans the middle "
+               "half of the runs with the median across it, the whiskers the 5th to the 95th percentile.",
+               boxPlotSvg(chart, boxes, true), boxPlotSvg(chart, boxes, false)}};
+}
+
 PictureOptions pictureOptions(const Problem& problem) {
   PictureOptions options;
   const int side = std::max({problem.width, problem.height, 1});
@@ -617,6 +647,40 @@ void faultSection(const ReportInput& input, const std::vector<Picture>& pictures
   }
 }
 
+/// Per agent and set, how much longer than the optimum its passed runs were and how many were soft failures;
+/// each agent's longest detour.
+void detourSection(const ReportInput& input, const std::vector<Picture>& pictures, Text* out) {
+  if (input.detours.empty()) return;
+  out->md += "## Detours\n\n";
+  out->html += "<h2>Detours</h2>\n";
+  const std::string intro =
+      "Per agent and set, path length / optimal length of the passed runs: the median, the 95th percentile and "
+      "the largest, then the soft failures (passed runs longer than the configured soft_failure_ratio allows). "
+      "The box plot under Plots shows the whole spread. Below, per agent, its longest run on the PPP where its "
+      "passed runs were longest on average.";
+  const std::string text = intro + animationGuide(input.detour_examples);
+  out->md += mdText(text) + "\n\n";
+  out->html += "<p>" + escapeMarkup(text) + "</p>\n";
+  agentSetTable(input.rates, "", [&](const std::string& set, const std::string& agent) {
+    for (const DetourStats& d : input.detours) {
+      if (d.set != set || d.agent != agent) continue;
+      const double soft = static_cast<double>(d.soft_failures) / d.passed;
+      return TableCell{true,
+                       formatFixed(d.spread.median, 2) + " / " + formatFixed(d.spread.p95, 2) + " / " +
+                           formatFixed(d.max, 2) + ", soft " + std::to_string(d.soft_failures),
+                       1.0 - soft,
+                       std::to_string(d.passed) + " passed runs; worst PPP " + d.worst_problem + " (mean " +
+                           formatFixed(d.worst_mean, 2) + ")"};
+    }
+    return TableCell{};
+  }, out);
+  out->md += "\n";
+  out->html += "</tbody>\n</table>\n";
+  for (std::size_t i = 0; i < input.detour_examples.size(); ++i) {
+    failureEntry(input.detour_examples[i], pictures[i], "", out);
+  }
+}
+
 void configurationSection(const ReportInput& input, Text* out) {
   out->md += "## Configuration\n\n";
   out->html += "<h2>Configuration</h2>\n";
@@ -651,12 +715,17 @@ void makeDirectory(const std::string& path) {
 
 void writeReport(const std::string& dir, const ReportInput& input, const StopCheck& stop) {
   checkComparisons(input);
-  const std::vector<Plot> plots = makePlots(input.rates);
+  std::vector<Plot> plots = makePlots(input.rates);
+  for (Plot& plot : detourPlots(input.rates, input.detours)) plots.push_back(std::move(plot));
   std::vector<FailureExample> shown = input.failures;
   shown.insert(shown.end(), input.worst.begin(), input.worst.end());
+  shown.insert(shown.end(), input.detour_examples.begin(), input.detour_examples.end());
   const std::vector<Picture> all_pictures = makePictures(shown, stop);
-  const std::vector<Picture> pictures(all_pictures.begin(), all_pictures.begin() + input.failures.size());
-  const std::vector<Picture> worst_pictures(all_pictures.begin() + input.failures.size(), all_pictures.end());
+  const auto failures_end = all_pictures.begin() + static_cast<long>(input.failures.size());
+  const auto worst_end = failures_end + static_cast<long>(input.worst.size());
+  const std::vector<Picture> pictures(all_pictures.begin(), failures_end);
+  const std::vector<Picture> worst_pictures(failures_end, worst_end);
+  const std::vector<Picture> detour_pictures(worst_end, all_pictures.end());
 
   Text text;
   const std::string title = input.title.empty() ? "PPP experiment report" : input.title;
@@ -668,6 +737,7 @@ void writeReport(const std::string& dir, const ReportInput& input, const StopChe
   passRateSection(input, &text);
   comparisonSection(input, &text);
   faultSection(input, worst_pictures, &text);
+  detourSection(input, detour_pictures, &text);
   plotSection(plots, &text);
   failureSection(input, pictures, &text);
   configurationSection(input, &text);

@@ -199,6 +199,43 @@ std::string groupedBarChartSvg(const Chart& chart, bool standalone) {
   return svg;
 }
 
+std::string boxPlotSvg(const Chart& chart, const std::vector<std::vector<BoxStats>>& boxes, bool standalone) {
+  chart.validate();
+  bool fits = boxes.size() == chart.series.size();
+  for (const auto& row : boxes) fits = fits && row.size() == chart.categories.size();
+  if (!fits) throw InvalidArgument("boxes", "expected one box per series and category");
+  const double min_band = std::max(36.0, static_cast<double>(chart.series.size()) * 16 + 14);
+  const Layout layout = layOut(chart, min_band);
+  std::string svg = openSvg(chart, layout, standalone, "box plot") + axes(chart, layout);
+  const double group = layout.band * 0.8;
+  const double slot = chart.series.empty() ? 0 : group / static_cast<double>(chart.series.size());
+  for (std::size_t c = 0; c < chart.categories.size(); ++c) {
+    const double left = kLeft + static_cast<double>(c) * layout.band + (layout.band - group) / 2;
+    for (std::size_t s = 0; s < chart.series.size(); ++s) {
+      const BoxStats& b = boxes[s][c];
+      if (std::isnan(b.median)) continue;
+      const double x0 = left + static_cast<double>(s) * slot + 1.5, x1 = x0 + std::max(2.0, slot - 3);
+      const double mid = (x0 + x1) / 2;
+      const std::string tip = escapeMarkup(chart.series[s].name + " on " + chart.categories[c] + ": median " +
+                                           formatFixed(b.median, 2) + ", quartiles " + formatFixed(b.p25, 2) + "-" +
+                                           formatFixed(b.p75, 2) + ", 5th-95th percentile " + formatFixed(b.p5, 2) +
+                                           "-" + formatFixed(b.p95, 2) + chart.value_suffix);
+      svg += "<g><title>" + tip + "</title>\n";
+      svg += "<line x1=\"" + px(mid) + "\" y1=\"" + px(valueY(chart, b.p5)) + "\" x2=\"" + px(mid) + "\" y2=\"" +
+             px(valueY(chart, b.p95)) + "\" stroke=\"" + colour(s) + "\"/>\n";
+      const double top = valueY(chart, b.p75);
+      svg += "<rect x=\"" + px(x0) + "\" y=\"" + px(top) + "\" width=\"" + px(x1 - x0) + "\" height=\"" +
+             px(std::max(1.0, valueY(chart, b.p25) - top)) + "\" fill=\"" + colour(s) + "\" fill-opacity=\"0.35\" stroke=\"" +
+             colour(s) + "\"/>\n";
+      svg += "<line x1=\"" + px(x0) + "\" y1=\"" + px(valueY(chart, b.median)) + "\" x2=\"" + px(x1) + "\" y2=\"" +
+             px(valueY(chart, b.median)) + "\" stroke=\"#222\" stroke-width=\"2\"/>\n</g>\n";
+    }
+  }
+  svg += legend(chart, layout);
+  svg += "</svg>\n";
+  return svg;
+}
+
 std::string heatMapSvg(const Chart& chart, bool standalone) {
   chart.validate();
   const std::size_t columns = chart.categories.size();

@@ -68,7 +68,7 @@ ppp_msgs::EvaluateProblems request(const std::vector<std::string>& agents, std::
   return call;
 }
 
-TEST_F(HuntTest, BuiltInAgentsAreJudgedAsInProcess) {
+TEST_F(HuntTest, BuiltInAgentsAreJudgedAsInProcessUnderRelativeBudgetsAndSoftFailures) {
   ppp_msgs::EvaluateProblems call = request({"wall_follower_left", "bumper"}, 6);
   ASSERT_TRUE(ros::service::call("/simulator/evaluate", call));
   ASSERT_EQ(call.response.error, "");
@@ -77,6 +77,7 @@ TEST_F(HuntTest, BuiltInAgentsAreJudgedAsInProcess) {
   const ExperimentConfig config = loadExperimentConfig(kConfig);
   generator::FailurePanel panel;
   panel.agents = generator::resolvePanel({"wall_follower_left", "bumper"}, config.agents);
+  panel.episode = config.episode;
   panel.runs_per_eval = 6;
   panel.seed = 7;
   const std::vector<Problem> problems = twoProblems();
@@ -86,6 +87,7 @@ TEST_F(HuntTest, BuiltInAgentsAreJudgedAsInProcess) {
   for (std::size_t i = 0; i < 2; ++i) {
     EXPECT_EQ(call.response.evaluations[i].failure_rate, expected[i].failure_rate) << i;
     EXPECT_EQ(call.response.evaluations[i].budget_used, expected[i].budget_used) << i;
+    EXPECT_EQ(call.response.evaluations[i].regret, expected[i].regret) << i;
     EXPECT_EQ(call.response.evaluations[i].episodes, 12u);
   }
 }

@@ -61,6 +61,8 @@ struct OptionSpec {
   bool affects_results = true;
   std::vector<std::string> examples;  ///< Valid values as YAML text, for docs and tests (Custom kinds).
   std::vector<OptionChoice> choices;  ///< The only values allowed, when the option takes a fixed set (else empty).
+  /// The option that may not be given in the same source as this one (two forms of one setting), or "".
+  std::string excludes;
   /// The value in `options` as YAML flow text ("" for an unset optional).
   std::function<std::string(const Options& options)> text;
   /// Sets the value from a YAML node; returns what is wrong with it ("" when nothing is).
@@ -120,6 +122,12 @@ struct OptionSpec {
       const std::string wrong = chosen(options);
       return wrong.empty() ? check(options) : wrong;
     };
+    return copy;
+  }
+  /// This declaration, refused when `other` is given in the same source (a file, the flags or the parameters).
+  OptionSpec excluding(const std::string& other) const {
+    OptionSpec copy = *this;
+    copy.excludes = other;
     return copy;
   }
   /// This declaration, marked as never changing a result (threads, pictures, hosts): out of the fingerprint.
@@ -373,6 +381,7 @@ std::vector<OptionSpec<Outer>> nestedOptions(const std::vector<OptionSpec<Inner>
     spec.affects_results = inner.affects_results;
     spec.examples = inner.examples;
     spec.choices = inner.choices;
+    spec.excludes = inner.excludes;
     spec.text = [inner, member](const Outer& o) { return inner.text(member(const_cast<Outer&>(o))); };
     spec.set = [inner, member](Outer* o, const YAML::Node& node) { return inner.set(&member(*o), node); };
     spec.check = [inner, member](const Outer& o) { return inner.check(member(const_cast<Outer&>(o))); };
@@ -404,6 +413,16 @@ std::string optionFlags(const std::vector<OptionSpec<Options>>& specs, const Opt
     if (value != spec.text(defaults)) flags += (flags.empty() ? "" : " ") + flagName(spec) + " " + shellWord(value);
   }
   return flags;
+}
+
+/// The first option of `specs` given (`given(name)`) together with the one it excludes, or nullptr; `name` spells
+/// option names as the source does.
+template <typename Options, typename Given>
+const OptionSpec<Options>* exclusionBroken(const std::vector<OptionSpec<Options>>& specs, Given given) {
+  for (const OptionSpec<Options>& spec : specs) {
+    if (!spec.excludes.empty() && given(spec.name) && given(spec.excludes)) return &spec;
+  }
+  return nullptr;
 }
 
 /// The declarations of `specs` that may change results (affects_results), in declaration order.

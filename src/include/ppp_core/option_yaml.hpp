@@ -14,10 +14,12 @@ namespace ppp {
 
 /// Reads every declared option present in the mapping of `reader` into `options` (dotted names are keys of
 /// nested mappings: "weights.goal") and refuses unknown keys of those nested mappings; the caller refuses unknown
-/// keys of `reader` once everything it holds is read. @throws ParseError naming file, line and key.
+/// keys of `reader` once everything it holds is read; an option given with the one it excludes is refused.
+/// @throws ParseError naming file, line and key.
 template <typename Options>
 void readOptionsYaml(YamlMapReader& reader, const std::vector<OptionSpec<Options>>& specs, Options* options) {
   std::map<std::string, std::unique_ptr<YamlMapReader>> groups;
+  std::map<std::string, std::pair<YamlMapReader*, YAML::Node>> given;  // by option name: where it was read
   for (const OptionSpec<Options>& spec : specs) {
     const std::size_t dot = spec.name.find('.');
     YamlMapReader* at = &reader;
@@ -34,8 +36,14 @@ void readOptionsYaml(YamlMapReader& reader, const std::vector<OptionSpec<Options
     }
     const YAML::Node node = at->lookup(key);
     if (!node) continue;
+    given[spec.name] = {at, node};
     const std::string problem = spec.set(options, node);
     if (!problem.empty()) at->fail(node, key, problem);
+  }
+  if (const OptionSpec<Options>* both = exclusionBroken(specs, [&](const std::string& n) { return given.count(n) > 0; })) {
+    const auto& [at, node] = given.at(both->name);
+    at->fail(node, both->name.substr(both->name.find('.') + 1),
+             "give either " + both->excludes + " or " + both->name + ", not both");
   }
   for (const auto& group : groups) {
     if (group.second) group.second->rejectUnknownKeys();

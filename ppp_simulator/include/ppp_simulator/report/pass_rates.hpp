@@ -15,6 +15,7 @@ struct ProblemPassRate {
   std::string agent;      ///< Agent configuration name.
   int runs = 0;           ///< Episodes run.
   int passes = 0;         ///< Episodes that reached the goal.
+  int soft_failures = 0;  ///< Of them, soft failures (longer than the soft failure ratio allows).
   double mean_steps = 0;  ///< Mean actions per episode, over all runs (failed runs count their full budget).
 
   /// Fraction of runs that passed, in [0, 1]; 0 when there are no runs.
@@ -28,6 +29,7 @@ struct SetPassRate {
   int problems = 0;      ///< PPPs of the set this agent ran on.
   int runs = 0;          ///< Episodes over all those PPPs.
   int passes = 0;        ///< Episodes that passed.
+  int soft_failures = 0; ///< Of them, soft failures.
   double mean_rate = 0;  ///< Mean over the set's PPPs of their pass rates, in [0, 1] (not passes / runs).
 };
 
@@ -50,6 +52,7 @@ struct ResultGroup {
   std::size_t index = 0;                      ///< Its position in the results.
   int runs = 0;                               ///< Results in the group.
   int passes = 0;                             ///< Of them, passed.
+  int soft_failures = 0;                      ///< Of the passed, soft failures.
   double steps = 0;                           ///< Their steps, summed.
   const agents::EpisodeResult* first_fail = nullptr;  ///< The failed result with the lowest run number, or nullptr.
 };
@@ -72,7 +75,7 @@ PassRateTable computePassRates(const std::vector<agents::EpisodeResult>& results
 PassRateTable computeGroupedPassRates(const std::vector<ResultGroup>& groups, const std::vector<std::string>& set_order,
                                const std::vector<std::string>& agent_order);
 
-/// The summary CSV header: level,set,problem,agent,problems,runs,passes,pass_rate.
+/// The summary CSV header: level,set,problem,agent,problems,runs,passes,pass_rate,soft_failures.
 const std::vector<std::string>& summaryCsvHeader();
 
 /// Writes the summary CSV atomically: one `problem` row per (set, PPP, agent) with problems = 1 and its pass

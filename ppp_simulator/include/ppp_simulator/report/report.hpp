@@ -8,6 +8,7 @@
 #include "ppp_core/grid.hpp"
 #include "ppp_core/problem.hpp"
 #include "ppp_core/stop.hpp"
+#include "ppp_simulator/report/detours.hpp"
 #include "ppp_simulator/report/pass_rates.hpp"
 
 namespace ppp {
@@ -48,6 +49,8 @@ struct ReportInput {
   std::vector<std::pair<std::string, std::string>> comparisons;  ///< Set pairs to compare, usually the first two.
   std::vector<FailureExample> failures;                          ///< Hardest PPPs with a failing path each.
   std::vector<FailureExample> worst;  ///< Per agent, a failing run on its worst PPP ("Faults found").
+  std::vector<DetourStats> detours;   ///< Path / optimal of passed runs per set and agent ("Detours").
+  std::vector<FailureExample> detour_examples;  ///< Per agent, its longest run on its worst-detour PPP.
   std::vector<SetInfo> sets;          ///< Diversity and archive of each set (may be empty).
 };
 
@@ -56,7 +59,8 @@ struct ReportInput {
 /// shows `worst` and the sets' archives):
 /// `report.md` (Markdown, referring to the files below by relative path), `report.html` (self-contained: the
 /// same content with inline SVG charts and base64 PNG pictures, nothing fetched), `plots/pass_rate_by_agent.svg`,
-/// `plots/pass_rate_by_ppp_<set>.svg` per set (a heat map), and per failure example (hardest and worst) `pictures/<set>_<problem>_<agent>.png`
+/// `plots/pass_rate_by_ppp_<set>.svg` per set (a heat map), `plots/path_ratio.svg` (the detours' box plot,
+/// when there are any), and per failure and detour example (hardest and worst) `pictures/<set>_<problem>_<agent>.png`
 /// (the PPP with the agent's path), beside it `.gif` (the run animated, when the example has one; inline in the
 /// HTML too) and `ppps/<set>_<problem>.ppp` (the PPP, for `ppp replay`). Names are
 /// reduced to letters, digits, '.', '-' and '_' in file names. Every file is written atomically.

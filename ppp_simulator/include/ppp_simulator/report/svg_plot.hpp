@@ -40,5 +40,21 @@ std::string groupedBarChartSvg(const Chart& chart, bool standalone);
 /// @throws InvalidArgument as Chart::validate().
 std::string heatMapSvg(const Chart& chart, bool standalone);
 
+/// The spread of one sample, as a box plot draws it.
+struct BoxStats {
+  double p5 = 0;      ///< Lower whisker: the 5th percentile.
+  double p25 = 0;     ///< Bottom of the box: the first quartile.
+  double median = 0;  ///< The line across the box.
+  double p75 = 0;     ///< Top of the box: the third quartile.
+  double p95 = 0;     ///< Upper whisker: the 95th percentile.
+};
+
+/// Box plot as an `<svg>` element: per category, one box per series side by side (`boxes[series][category]`;
+/// a NaN median leaves the slot empty), the box from the first to the third quartile with the median across it,
+/// whiskers from the 5th to the 95th percentile, a legend on the right and a tooltip with the five figures.
+/// `chart`'s series give the names (their values are unused). `standalone` as for groupedBarChartSvg().
+/// @throws InvalidArgument as Chart::validate(), and naming "boxes" unless there is one box per series and category.
+std::string boxPlotSvg(const Chart& chart, const std::vector<std::vector<BoxStats>>& boxes, bool standalone);
+
 }  // namespace simulator
 }  // namespace ppp
