@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <map>
+#include <sstream>
 
 #include "ppp_agents/agent_registry.hpp"
 #include "ppp_core/error.hpp"
@@ -40,6 +41,27 @@ std::string plannerNodeProblem(const AgentConfig& config) {
   if (slash == std::string::npos || !isFileName(config.planner_node.substr(0, slash)) ||
       !isFileName(config.planner_node.substr(slash + 1))) {
     return "expected package/executable (e.g. ppp_agents/ompl_planner_node), got '" + config.planner_node + "'";
+  }
+  return "";
+}
+
+/// What is wrong with a planner node's arguments, or "" when nothing is: each word a private parameter
+/// `_name:=value` (what ros::init reads as ~name), given only with the planner_node they are for.
+std::string plannerArgsProblem(const AgentConfig& config) {
+  if (config.planner_args.empty()) return "";
+  if (config.planner_node.empty()) return "given to the planner_node the experiment starts; this agent has none";
+  std::istringstream words(config.planner_args);
+  for (std::string word; words >> word;) {
+    const std::size_t assign = word.find(":=");
+    const bool named = word[0] == '_' && assign != std::string::npos && assign > 1 &&
+                       std::all_of(word.begin() + 1, word.begin() + static_cast<long>(assign), [](char c) {
+                         return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '/';
+                       });
+    const bool plain = word.find_first_of("\"'<>&") == std::string::npos;
+    if (!named || !plain) {
+      return "expected private parameters _name:=value separated by spaces (e.g. _planning_time:=0.005), got '" +
+             word + "'";
+    }
   }
   return "";
 }
@@ -94,6 +116,7 @@ void AgentConfig::validate() const {
   }
   if (!priorMapProblem(*this).empty()) throw InvalidArgument("prior_map", priorMapProblem(*this));
   if (!plannerNodeProblem(*this).empty()) throw InvalidArgument("planner_node", plannerNodeProblem(*this));
+  if (!plannerArgsProblem(*this).empty()) throw InvalidArgument("planner_args", plannerArgsProblem(*this));
   if (!hostProblem(host).empty()) throw InvalidArgument("host", hostProblem(host));
 }
 
@@ -116,10 +139,19 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
                       +[](A& a) -> bool& { return a.prior_map; }),
         declareOption("planner_node", "planner agents: package/executable of the planner to start",
                       +[](A& a) -> std::string& { return a.planner_node; }),
+        declareOption("planner_args",
+                      "planner agents: private parameters of the planner_node, as _name:=value words (e.g. "
+                      "_planning_time:=0.005)",
+                      +[](A& a) -> std::string& { return a.planner_args; }),
         declareOption("host", "through ROS: the machine the agent's nodes run on ('': the simulator's)",
                       +[](A& a) -> std::string& { return a.host; })
             .notAffectingResults(),
     };
+    for (OptionSpec<A>& spec : nestedOptions(selectOptions(bridgeOptionSpecs(), {"plan_timeout"}),
+                                             +[](A& a) -> BridgeOptions& { return a.bridge; })) {
+      spec.doc = "planner agents: " + spec.doc;
+      list.insert(list.end() - 1, spec);
+    }
     list[0].flag = "agent";
     return list;
   }();

@@ -29,7 +29,7 @@ inline std::vector<OptionCase> agentOptionCases(const std::vector<OptionSpec<Age
       {"type", "astar", true},          {"type", "robot", false},        {"memory", "5x5", true},
       {"memory", "4x4", false},         {"memory", "5x3", false},        {"memory", "5", false},
       {"name", "''", false},            {"prior_map", "true", false},    {"planner_node", "a/b", false},
-      {"host", "robot-2.lab", true},    {"host", "'two words'", false},
+      {"host", "robot-2.lab", true},    {"host", "'two words'", false},  {"planner_args", "_a:=1", false},
   };
   for (const OptionCase& c : more) {
     const bool declared =

@@ -39,6 +39,7 @@ void writeNode(std::ostream& out, const GraphNode& node, const std::string& inde
       << " name=" << attribute(node.name, what);
   if (!node.ns.empty()) out << " ns=" << attribute(node.ns, what);
   if (!node.machine.empty()) out << " machine=" << attribute(node.machine, what);
+  if (!node.args.empty()) out << " args=" << attribute(node.args, what);
   out << " output=\"screen\"" << (node.required ? " required=\"true\"" : "");
   if (node.params.empty() && node.remaps.empty()) {
     out << "/>\n";
@@ -99,7 +100,7 @@ std::string launchJson(const LaunchGraph& graph) {
     for (const GraphParam& p : n.params) params[p.name] = p.value;
     json["nodes"].push_back({{"package", n.package}, {"type", n.type}, {"name", n.name}, {"group", n.group},
                              {"ns", n.ns}, {"machine", n.machine}, {"agent", n.agent}, {"required", n.required},
-                             {"params", params}});
+                             {"args", n.args}, {"params", params}});
   }
   json["xml"] = launchXml(graph);
   return json.dump(2) + "\n";

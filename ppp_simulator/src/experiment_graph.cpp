@@ -80,17 +80,18 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent) 
   static const std::vector<OptionSpec<agents::AgentConfig>> memory = selectOptions(agents::agentNodeOptionSpecs(), {"memory"});
   addParams(memory, agent, &bridge);
   // A planner the user starts by hand gets five minutes to appear; one started here, 20 s.
-  agents::BridgeOptions options;
+  agents::BridgeOptions options = agent.bridge;
   options.connect_timeout = type.empty() ? 300.0 : 20.0;
-  static const std::vector<OptionSpec<agents::BridgeOptions>> connect =
-      selectOptions(agents::bridgeOptionSpecs(), {"connect_timeout"});
-  addParams(connect, options, &bridge);
+  static const std::vector<OptionSpec<agents::BridgeOptions>> timeouts =
+      selectOptions(agents::bridgeOptionSpecs(), {"plan_timeout", "connect_timeout"});
+  addParams(timeouts, options, &bridge);
   if (type.empty()) return {bridge};
   ppp_msgs::GraphNode planner{package, type, ppp_msgs::nodes::kPlanner};
   planner.group = bridge.group;
   planner.ns = ppp_msgs::topics::kRobotNamespace;
   planner.machine = bridge.machine;
   planner.agent = agent.name;
+  planner.args = agent.planner_args;
   return {bridge, planner};
 }
 

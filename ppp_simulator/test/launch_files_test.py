@@ -232,6 +232,21 @@ sets:
         self.assertEqual(json.loads(text)['machines'], [{'name': explorer.machine_name, 'address': '10.0.0.2',
                                                          'env_loader': '/ws/devel/env.sh', 'agents': ['explorer']}])
 
+    def test_a_planners_time_limits_reach_its_bridge_and_its_node(self):
+        directory = tempfile.mkdtemp()
+        path = write_config(directory, """
+agents:
+  - {name: fast, type: planner, prior_map: true, planner_node: ppp_agents/ompl_planner_node,
+     planner_args: "_planning_time:=0.005 _planner:=RRTConnect", plan_timeout: 0.5}
+sets:
+  - name: mine
+    generator: {fitness: advances, population: 6, matings: 50, seed: 4}
+""")
+        config, _ = load_graph(path)
+        planner = [n for n in config.nodes if n.namespace == '/fast/robot/'][0]
+        self.assertEqual(planner.args, '_planning_time:=0.005 _planner:=RRTConnect')
+        self.assertEqual(config.params['/fast/bridge/plan_timeout'].value, 0.5)
+
     def test_bad_configs_and_flags_are_refused_naming_the_problem(self):
         directory = tempfile.mkdtemp()
         agents = "agents:\n  - {name: a, type: %s%s}\n"
@@ -242,6 +257,10 @@ sets:
             (agents % ('astar', ', host: 10.0.0.9') + sets, [], 'env_loader'),
             (agents % ('astar', ', planner_node: pkg/exe') + sets, [], 'planner_node: only planner agents'),
             (agents % ('planner', ', planner_node: nopackage') + sets, [], 'expected package/executable'),
+            (agents % ('planner', ', planner_args: _a:=1') + sets, [], 'planner_args: given to the planner_node'),
+            (agents % ('planner', ', planner_node: p/t, planner_args: "a:=1"') + sets, [],
+             "expected private parameters _name:=value separated by spaces (e.g. _planning_time:=0.005), got 'a:=1'"),
+            (agents % ('planner', ', plan_timeout: 0') + sets, [], 'plan_timeout: expected a number in [0.001, 86400]'),
             (agents % ('planner', '') + sets, ['--planner', 'other=p/t'], "no planner agent named 'other'"),
             (agents % ('planner', '') + sets, ['--planner', 'a'], 'expected NAME=PACKAGE/EXECUTABLE'),
         ]

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "ppp_agents/agent.hpp"
+#include "ppp_agents/planner_bridge_options.hpp"
 #include "ppp_core/option_spec.hpp"
 #include "ppp_core/yaml_reader.hpp"
 
@@ -23,9 +24,12 @@ struct AgentConfig {
   int runs = 0;                ///< Runs per PPP for this agent; 0 = the experiment's `runs`.
   bool prior_map = false;      ///< Planner agents only: the planner is given the true map instead of the memory.
   std::string planner_node;    ///< Planner agents only: "package/executable" of the planner to start ("" = the user's).
+  std::string planner_args;    ///< Planner agents only: arguments of planner_node ("_planning_time:=0.005 ...").
+  BridgeOptions bridge;        ///< Planner agents only: its bridge's plan_timeout (the rest are the bridge's own).
   std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
   /// @throws InvalidArgument naming "type" (listing the valid ones), "name", "memory", "sensor_noise", "runs",
-  /// "prior_map", "planner_node" or "host".
+  /// "prior_map", "planner_node", "planner_args", "plan_timeout" or "host" (other agents have no planner to wait
+  /// for: their plan_timeout is unused).
   void validate() const;
 };
 

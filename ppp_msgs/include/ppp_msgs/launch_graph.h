@@ -31,6 +31,7 @@ struct GraphNode {
   std::string machine;    ///< The `<machine>` it runs on ("" for this one).
   std::string agent;      ///< The experiment's agent it serves ("" for the generators and the simulator).
   bool required = false;  ///< roslaunch stops everything when it ends.
+  std::string args;       ///< Its command-line arguments ("" for none), e.g. private parameters `_name:=value`.
   std::vector<GraphParam> params;  ///< Its private parameters.
   std::vector<GraphRemap> remaps;  ///< Its remappings.
 };
