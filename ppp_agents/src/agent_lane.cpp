@@ -37,7 +37,8 @@ void AgentLane::scans(std::vector<ScanRequest>* requests) {
     const std::uint64_t seed = seed_of_(work.set, work.problem, work.run);
     active_.push_back({next_id_++, work, seed,
                        Episode(set.set.problems[work.problem], set.grids[work.problem], sensor_, seed,
-                               set.budgets[work.problem], options_.connectivity, false, windowsOf(set, work.problem)),
+                               set.budgets[work.problem], options_.connectivity, false, windowsOf(set, work.problem),
+                               motionOf(set, work.problem)),
                        false});
   }
   requests->resize(active_.size());
@@ -64,9 +65,10 @@ void AgentLane::scans(std::vector<ScanRequest>* requests) {
     if (!a.started) {
       const PreparedSet& set = sets_[a.work.set];
       const Grid& grid = set.grids[a.work.problem];
-      const EpisodeInfo info = episodeInfo(set.set.problems[a.work.problem], grid, config_, a.seed, options_.connectivity);
+      const EpisodeInfo info = episodeInfo(set.set.problems[a.work.problem], grid, config_, a.seed, options_.connectivity,
+                                           motionOf(set, a.work.problem));
       EpisodeStart start{info.width, info.height, info.start, info.goal, info.seed, {}, info.connectivity};
-      if (info.prior_map != nullptr) start.prior_map = protocol::priorMapCells(grid);
+      if (info.prior_map != nullptr) start.prior_map = protocol::priorMapCells(*info.prior_map);
       r.start = std::move(start);
       a.started = true;
     }

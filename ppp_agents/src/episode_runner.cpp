@@ -1,12 +1,13 @@
 #include "ppp_agents/episode_runner.hpp"
 
+#include "ppp_core/footprint.hpp"
 #include "ppp_core/optimum.hpp"
 
 namespace ppp {
 namespace agents {
 
 EpisodeInfo episodeInfo(const Problem& problem, const Grid& grid, const AgentConfig& config, std::uint64_t run_seed,
-                        Connectivity connectivity) {
+                        Connectivity connectivity, const Grid* motion) {
   EpisodeInfo info;
   info.connectivity = connectivity;
   info.width = grid.width();
@@ -14,7 +15,7 @@ EpisodeInfo episodeInfo(const Problem& problem, const Grid& grid, const AgentCon
   info.start = problem.start;
   info.goal = problem.goal;
   info.seed = agentSeed(run_seed);
-  info.prior_map = givenPriorMap(config) ? &grid : nullptr;
+  info.prior_map = !givenPriorMap(config) ? nullptr : isPlanner(config) || motion == nullptr ? &grid : motion;
   return info;
 }
 
@@ -25,9 +26,11 @@ EpisodeRunner::EpisodeRunner(const AgentConfig& config, const EpisodeOptions& op
 
 EpisodeOutcome EpisodeRunner::run(const Problem& problem, const Grid& grid, Agent& agent,
                                   std::uint64_t run_seed, bool record_path, const WindowAtlas* windows) {
-  agent.reset(episodeInfo(problem, grid, config_, run_seed, options_.connectivity));
+  Grid space;
+  const Grid* motion = &motionGrid(grid, options_.robot_radius, &space);
+  agent.reset(episodeInfo(problem, grid, config_, run_seed, options_.connectivity, motion));
   Episode episode(problem, grid, sensor_, run_seed, episodeBudget(options_, problem, grid), options_.connectivity,
-                  record_path, windows);
+                  record_path, windows, motion);
   while (!episode.done()) episode.apply(agent.act(episode.scan()));
   return episode.outcome();
 }

@@ -4,6 +4,8 @@
 #include <utility>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/footprint.hpp"
+#include "ppp_core/text_format.hpp"
 #include "ppp_core/optimum.hpp"
 #include "ppp_core/reachability.hpp"
 
@@ -44,11 +46,15 @@ PreparedSet prepareSet(const std::string& name, ProblemSet set, const EpisodeOpt
   p.episode = episode;
   for (const Problem& problem : p.set.problems) {
     p.grids.push_back(decodeGrid(problem));
+    if (!isPointRobot(episode.robot_radius)) p.spaces.push_back(configurationSpace(p.grids.back(), episode.robot_radius));
+    const Grid& motion = p.spaces.empty() ? p.grids.back() : p.spaces.back();
     // Every agent but astar moves 4-connected, so a PPP must be solvable that way whatever the move model.
-    if (!isReachable(p.grids.back(), problem.start, problem.goal)) {
-      throw InvalidArgument("sets", "set '" + name + "' holds an unsolvable PPP");
+    if (!isReachable(motion, problem.start, problem.goal)) {
+      throw InvalidArgument("sets", "set '" + name + "' holds a PPP (" + p.set.ids[p.grids.size() - 1] +
+                                        ") unsolvable" + (p.spaces.empty() ? "" : " for a robot of radius " +
+                                        formatShortest(episode.robot_radius)));
     }
-    const Optimum optimum = optimumOf(problem, p.grids.back(), episode.connectivity);
+    const Optimum optimum = optimumOf(problem, motion, episode.connectivity);
     p.optimal.push_back(optimum.length);
     p.moves.push_back(optimum.moves);
     p.budgets.push_back(episodeBudget(episode, optimum.moves));

@@ -4,7 +4,10 @@
 
 #include <vector>
 
+#include "ppp_agents/episode_runner.hpp"
 #include "ppp_core/dpa.hpp"
+#include "ppp_core/footprint.hpp"
+#include "ppp_core/optimum.hpp"
 #include "ppp_core/problem.hpp"
 #include "ppp_core/random_problem.hpp"
 #include "ppp_core/reachability.hpp"
@@ -46,6 +49,28 @@ TEST(AstarAgentTest, PassesRandomValidProblemsInTheFewestMoves) {
     }
   }
   EXPECT_EQ(problems, 360);
+}
+
+TEST(AstarAgentTest, PlansInTheConfigurationSpaceOfTheRobotsBody) {
+  // 11x11, a wall across row 3 with a gap two cells wide (x 5-6) and one three wide at the right edge (x 8-10).
+  // The point robot takes the near gap; a disc of radius 1 fits only the far one, and astar takes it at once.
+  Problem problem = Problem::empty(11, 11, 2);
+  problem.start = Cell{1, 1};
+  problem.goal = Cell{1, 9};
+  problem.obstacles = {Obstacle{Shape::HorizontalBar, 0, 3, 5, 1}, Obstacle{Shape::HorizontalBar, 7, 3, 1, 1}};
+  const Grid grid = decodeGrid(problem);
+  AgentConfig config;
+  config.name = config.type = "astar";
+  EpisodeOptions options;
+  const int point = recordEpisode(problem, grid, config, options, 1).steps;
+  EXPECT_EQ(point, 8 + 2 * 4);  // down 8, across to x 5 and back
+  options.robot_radius = 1;
+  const EpisodeOutcome body = recordEpisode(problem, grid, config, options, 1);
+  EXPECT_TRUE(body.passed);
+  EXPECT_EQ(body.bumps, 0);
+  EXPECT_EQ(body.steps, 8 + 2 * 8);  // across to x 9 and back
+  Grid space;
+  EXPECT_EQ(body.steps, optimumOf(problem, motionGrid(grid, 1, &space), Connectivity::Four).moves);
 }
 
 TEST(AstarAgentTest, PlanIsAShortestPathAroundWalls) {

@@ -51,7 +51,7 @@ generator::GeneratorOptions resolveOptions(const CLI::App& command, const Genera
 
 /// Whether any flag of the episode options or --threads was given (they serve the failure fitness only).
 bool episodeFlagsGiven(const CLI::App& command) {
-  for (const OptionSpec<EpisodeOptions>& spec : episodeOptionSpecs()) {
+  for (const OptionSpec<EpisodeOptions>& spec : generator::huntEpisodeOptionSpecs()) {
     if (command.count(flagName(spec)) > 0) return true;
   }
   return command.count("--threads") > 0;
@@ -73,7 +73,7 @@ void runGenerate(const CLI::App& command, const GenerateFlags& flags) {
                           "(failure, regret), which play episodes; this run's fitness is " + options.fitness);
   }
   EpisodeOptions episode;
-  applyAndValidateFlags(command, episodeOptionSpecs(), flags.episode, &episode);
+  applyAndValidateFlags(command, generator::huntEpisodeOptionSpecs(), flags.episode, &episode);
   const generator::Fitness fitness = generator::fitnessFor(options, episode, flags.threads);
   Progress progress("matings", flags.quiet);
   const generator::EvolvedSet evolved = generator::evolveSetDirectory(
@@ -99,7 +99,7 @@ void addGenerateCommand(CLI::App& app) {
   addOptionFlags(command, generator::generatorOptionSpecs(), &defaults, &flags->options);
   command->add_option("--size", flags->size, "grid size, for --width and --height together")->type_name("WIDTHxHEIGHT");
   static const EpisodeOptions episode_defaults;
-  addOptionFlags(command, episodeOptionSpecs(), &episode_defaults, &flags->episode);
+  addOptionFlags(command, generator::huntEpisodeOptionSpecs(), &episode_defaults, &flags->episode);
   command->add_option("--threads", flags->threads, "failure: worker threads (default 0: every core)");
   command->add_option("-o,--output", flags->output, "Output directory (required)");
   command->add_flag("--print-options", flags->print_options,

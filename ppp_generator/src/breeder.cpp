@@ -4,8 +4,10 @@
 #include <string>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/footprint.hpp"
 
 #include "ppp_core/random_problem.hpp"
+#include "ppp_core/text_format.hpp"
 
 namespace ppp {
 namespace generator {
@@ -15,6 +17,15 @@ Breeder::Breeder(const GeneratorOptions& options, const Fitness& fitness, Rng* r
   shape_ = Problem::empty(options.width, options.height, options.max_obstacles);
   shape_.start = options.startCell();
   shape_.goal = options.goalCell();
+  // A robot that cannot stand at the start or the goal of an empty map has no solvable PPP to find.
+  const Grid open_space = configurationSpace(Grid(options.width, options.height), options.robot_radius);
+  for (const auto& [name, cell] : {std::pair<const char*, Cell>{"start", shape_.start}, {"goal", shape_.goal}}) {
+    if (!open_space.isFree(cell)) {
+      throw InvalidArgument(name, "cell " + cellText(cell) + " is within robot_radius " +
+                                      formatShortest(options.robot_radius) +
+                                      " of the map's edge: the robot does not fit there; move it further in");
+    }
+  }
 }
 
 Problem Breeder::randomChromosome() {
@@ -77,7 +88,10 @@ Individual Breeder::randomSolvable(long* redraws) {
 bool Breeder::decode(Individual* individual) {
   individual->grid = decodeGrid(individual->problem);
   individual->grid_hash = individual->grid.hash();
-  const DpaResult& dpa = dpa_.solve(individual->grid, individual->problem.start, individual->problem.goal);
+  // With a body the robot's routes are those of its configuration space.
+  Grid space;
+  const Grid& motion = motionGrid(individual->grid, options_.robot_radius, &space);
+  const DpaResult& dpa = dpa_.solve(motion, individual->problem.start, individual->problem.goal);
   if (!dpa.reachable) return false;
   if (!batched()) {
     individual->value = fitness_.value(individual->problem, individual->grid, dpa);

@@ -10,6 +10,7 @@
 
 #include "ppp_agents/episode_runner.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/footprint.hpp"
 #include "ppp_core/optimum.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_core/text_format.hpp"
@@ -73,7 +74,9 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
   std::vector<std::optional<WindowAtlas>> atlases(problems.size());
   for (std::size_t p = 0; p < problems.size(); ++p) {
     hashes.push_back(grids[p]->hash());
-    optima.push_back(optimumOf(*problems[p], *grids[p], panel.episode.connectivity));
+    Grid space;
+    const Grid& motion = motionGrid(*grids[p], panel.episode.robot_radius, &space);
+    optima.push_back(optimumOf(*problems[p], motion, panel.episode.connectivity));
     budgets.push_back(episodeBudget(panel.episode, optima.back().moves));
   }
   std::vector<std::once_flag> atlas_built(problems.size());
@@ -161,6 +164,7 @@ Fitness fitnessFor(const GeneratorOptions& options, const std::vector<agents::Ag
   panel.fitness = options.fitness;
   panel.agents = resolvePanel(options.agents, available);
   panel.episode = episode;
+  panel.episode.robot_radius = options.robot_radius;  // the robot its PPPs are solvable for
   panel.runs_per_eval = options.runs_per_eval;
   panel.seed = options.seed;
   panel.threads = threads;
@@ -171,6 +175,16 @@ Fitness fitnessFor(const GeneratorOptions& options, const EpisodeOptions& episod
   const std::vector<agents::AgentConfig> available =
       options.agents_file.empty() ? std::vector<agents::AgentConfig>{} : agents::loadAgentConfigs(options.agents_file);
   return fitnessFor(options, available, episode, threads);
+}
+
+const std::vector<OptionSpec<EpisodeOptions>>& huntEpisodeOptionSpecs() {
+  static const std::vector<OptionSpec<EpisodeOptions>> specs = [] {
+    std::vector<OptionSpec<EpisodeOptions>> list = episodeOptionSpecs();
+    list.erase(std::remove_if(list.begin(), list.end(), [](const auto& s) { return s.name == "robot_radius"; }),
+               list.end());
+    return list;
+  }();
+  return specs;
 }
 
 std::vector<agents::AgentConfig> resolvePanel(const std::vector<std::string>& names,

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/footprint.hpp"
 #include "ppp_core/option_yaml.hpp"
 #include "ppp_core/problem.hpp"
 #include "ppp_core/text_file.hpp"
@@ -124,6 +125,10 @@ const std::vector<OptionSpec<GeneratorOptions>>& generatorOptionSpecs() {
                     +[](O& o) -> std::optional<Cell>& { return o.start; }),
       declareOption("goal", "goal cell [x, y], y down; default the bottom-right corner",
                     +[](O& o) -> std::optional<Cell>& { return o.goal; }),
+      declareOption("robot_radius",
+                    "the robot as a disc of this radius in cells: every PPP is solvable for it, and the DPA's "
+                    "turns and advances are its (0: a point)",
+                    +[](O& o) -> double& { return o.robot_radius; }, Bounds{0, kMaxRobotRadius}),
       declareOption("max_obstacles", "obstacle budget: most descriptors per chromosome",
                     +[](O& o) -> int& { return o.max_obstacles; }, Bounds{0, kMaxObstacleBudget}),
       declareOption("max_bar_length", "longest random bar; 0 = half the longer side",

@@ -8,6 +8,7 @@
 #include "ppp_core/barn_metrics.hpp"
 #include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/footprint.hpp"
 #include "ppp_core/text_format.hpp"
 #include "ppp_generator/taxonomy.hpp"
 
@@ -113,7 +114,8 @@ MapElites::MapElites(const GeneratorOptions& options, Fitness fitness)
 
 std::vector<double> MapElites::featuresOf(const Individual& individual) {
   const Problem& problem = individual.problem;
-  const DpaResult& dpa = dpa_.solve(individual.grid, problem.start, problem.goal);  // one DPA for both
+  Grid space;  // the DPA in the robot's configuration space, one for both
+  const DpaResult& dpa = dpa_.solve(motionGrid(individual.grid, options_.robot_radius, &space), problem.start, problem.goal);
   std::vector<double> all = characterVector(evaluator_.evaluate(problem, individual.grid, dpa));
   if (barn_features_) {
     const std::vector<double> metrics = barnCharacterVector(barnMetrics(individual.grid, dpa));

@@ -6,7 +6,9 @@
 #include <string>
 #include <utility>
 
+#include "ppp_core/error.hpp"
 #include "ppp_core/evaluation.hpp"
+#include "ppp_core/footprint.hpp"
 #include "ppp_core/reachability.hpp"
 #include "ppp_generator/diversity.hpp"
 
@@ -76,6 +78,34 @@ TEST(GeneticAlgorithmTest, NoInvalidOrDuplicatePppEverInThePool) {
       }
       EXPECT_GT(ga.stats().children_pruned, 0) << "pruning never happened: the test map is too easy";
     }
+  }
+}
+
+TEST(GeneticAlgorithmTest, EveryPppIsSolvableForTheRobotsBodyAndScoredInItsSpace) {
+  GeneratorOptions o = smallRun("turns", 5, 400);
+  o.robot_radius = 1;
+  o.start = Cell{1, 1};
+  o.goal = Cell{18, 18};
+  GeneticAlgorithm ga(o);
+  int narrow = 0;  // PPPs a point robot could cross somewhere the disc cannot
+  for (const Individual& i : ga.run()) {
+    const Grid grid = decodeGrid(i.problem);
+    const Grid space = configurationSpace(grid, 1);
+    ASSERT_TRUE(isReachable(space, i.problem.start, i.problem.goal));
+    DpaSolver dpa;
+    EXPECT_EQ(i.value, dpa.solve(space, i.problem.start, i.problem.goal).turns);  // the turns of the disc's routes
+    narrow += dpa.solve(grid, i.problem.start, i.problem.goal).advances <
+                      dpa.solve(space, i.problem.start, i.problem.goal).advances ? 1 : 0;
+  }
+  EXPECT_GT(narrow, 0) << "no PPP where the body matters: the test shows nothing";
+  GeneratorOptions corner = smallRun("turns", 5, 10);
+  corner.robot_radius = 1;
+  try {
+    GeneticAlgorithm refused(corner);
+    ADD_FAILURE() << "a disc of radius 1 accepted in the corner";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(std::string(e.what()), "start: cell (0, 0) is within robot_radius 1 of the map's edge: the robot does "
+                                     "not fit there; move it further in");
   }
 }
 

@@ -105,6 +105,17 @@ ExperimentConfig parseExperimentConfig(const std::string& yaml, const std::strin
   ExperimentConfig config;
   readOptionsYaml(reader, experimentOptionSpecs(), &config);
   config.sets = readSets(reader, base);
+  // The experiment's robot is the one every evolved set is made solvable for.
+  for (std::size_t i = 0; i < config.sets.size(); ++i) {
+    std::optional<generator::GeneratorOptions>& g = config.sets[i].generator;
+    if (!g) continue;
+    if (g->robot_radius != 0 && g->robot_radius != config.episode.robot_radius) {
+      throw InvalidArgument(path + ": sets[" + std::to_string(i) + "].generator.robot_radius",
+                            "the experiment's robot_radius (" + formatShortest(config.episode.robot_radius) +
+                                ") decides it; give it there");
+    }
+    g->robot_radius = config.episode.robot_radius;
+  }
   const YAML::Node agents = reader.lookup("agents");
   if (agents && agents.IsScalar()) {
     config.agents = agents::loadAgentConfigs(resolve(base, agents.Scalar()));

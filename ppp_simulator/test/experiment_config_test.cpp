@@ -101,6 +101,8 @@ TEST_F(ExperimentYaml, BadInputNamesKeyAndLine) {
   EXPECT_EQ(errorOf("agents: agents.yaml\nbudget: 100\nbudget_factor: 2\n" + sets),
             "3: budget_factor: give either budget or budget_factor, not both");
   EXPECT_EQ(errorOf("agents: agents.yaml\nbudget_factor: 2\nbudget_min: 50\n" + sets), "no error");
+  EXPECT_EQ(errorOf("agents: agents.yaml\nrobot_radius: 1\nsets:\n  - {name: a, generator: {robot_radius: 2}}\n"),
+            " sets[0].generator.robot_radius: the experiment's robot_radius (1) decides it; give it there");
   EXPECT_EQ(errorOf("agents: agents.yaml\nsoft_failure_ratio: 0.5\n" + sets),
             " soft_failure_ratio: expected 0 (no soft failures) or a ratio of at least 1, got 0.5");
   EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - {generator: {matings: 5}}\n"),

@@ -18,9 +18,11 @@ std::uint64_t agentSeed(std::uint64_t run_seed) { return deriveSeed(run_seed, {1
 std::uint64_t noiseSeed(std::uint64_t run_seed) { return deriveSeed(run_seed, {2}); }
 
 Episode::Episode(const Problem& problem, const Grid& grid, const SensorModel& sensor, std::uint64_t run_seed,
-                 int budget, Connectivity connectivity, bool record_path, const WindowAtlas* windows)
+                 int budget, Connectivity connectivity, bool record_path, const WindowAtlas* windows,
+                 const Grid* motion)
     : problem_(&problem),
       grid_(&grid),
+      motion_(motion != nullptr ? motion : &grid),
       sensor_(&sensor),
       windows_(windows),
       noise_seed_(noiseSeed(run_seed)),
@@ -48,7 +50,7 @@ void Episode::apply(Action action) {
     const Cell d = offset(action);
     const Cell next{position_.x + d.x, position_.y + d.y};
     // A straight move needs a free target; a diagonal also both cells beside it.
-    if (diagonal ? octileMoveAllowed(*grid_, position_, d.x, d.y) : grid_->isFree(next)) {
+    if (diagonal ? octileMoveAllowed(*motion_, position_, d.x, d.y) : motion_->isFree(next)) {
       position_ = next;
       ++outcome_.path_length;
       if (diagonal) ++outcome_.diagonal_moves;

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/footprint.hpp"
 #include "ppp_core/option_yaml.hpp"
 #include "ppp_core/sensor.hpp"
 #include "ppp_core/text_format.hpp"
@@ -37,6 +38,10 @@ const std::vector<OptionSpec<EpisodeOptions>>& episodeOptionSpecs() {
       declareOption("soft_failure_ratio",
                     "a passed run whose path is longer than R x the optimal length is a soft failure (0: none)",
                     +[](E& e) -> double& { return e.soft_failure_ratio; }, Bounds{0, kMaxBudgetFactor}),
+      declareOption("robot_radius",
+                    "the robot as a disc of this radius in cells; a move that would put it over an obstacle or off "
+                    "the map bumps (0: a point)",
+                    +[](E& e) -> double& { return e.robot_radius; }, Bounds{0, kMaxRobotRadius}),
   };
   return specs;
 }

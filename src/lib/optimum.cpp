@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ppp_core/footprint.hpp"
 #include "ppp_core/octile.hpp"
 #include "ppp_core/reachability.hpp"
 
@@ -27,7 +28,8 @@ int episodeBudget(const EpisodeOptions& options, int optimal_moves) {
 
 int episodeBudget(const EpisodeOptions& options, const Problem& problem, const Grid& grid) {
   if (options.budget_factor == 0) return episodeBudget(options, 0);
-  return episodeBudget(options, optimumOf(problem, grid, options.connectivity).moves);
+  Grid space;
+  return episodeBudget(options, optimumOf(problem, motionGrid(grid, options.robot_radius, &space), options.connectivity).moves);
 }
 
 double runRegret(bool passed, int steps, int budget, int optimal_moves) {

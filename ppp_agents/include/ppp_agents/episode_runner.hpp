@@ -13,12 +13,14 @@
 namespace ppp {
 namespace agents {
 
-/// The EpisodeInfo an agent is given at the start of a run of `problem` (prior map only for astar) under the
-/// move model with `connectivity`.
+/// The EpisodeInfo an agent is given at the start of a run of `problem` under the move model with
+/// `connectivity`: a prior map only for astar, which plans in the robot's configuration space `motion` when it
+/// has one, and planners with prior_map, which get the true `grid` (their inflation is theirs).
 EpisodeInfo episodeInfo(const Problem& problem, const Grid& grid, const AgentConfig& config, std::uint64_t run_seed,
-                        Connectivity connectivity);
+                        Connectivity connectivity, const Grid* motion = nullptr);
 
-/// Runs episodes in process: the move model (Episode), scans by SensorModel with the agent's noise, the budget.
+/// Runs episodes in process: the move model (Episode, in the robot's configuration space), scans by SensorModel
+/// with the agent's noise, the budget.
 /// Holds the sensor and buffers, so reuse one runner for many episodes of one agent configuration.
 class EpisodeRunner {
  public:

@@ -22,6 +22,7 @@ struct PreparedSet {
   ProblemSet set;                ///< The PPPs and their evaluations.
   EpisodeOptions episode;        ///< The rules it is played under.
   std::vector<Grid> grids;       ///< Decoded grid of each PPP.
+  std::vector<Grid> spaces;      ///< The robot's configuration space on each PPP (empty for a point robot).
   std::vector<double> optimal;   ///< Optimal length of each PPP: fewest moves (connectivity 4), octile length (8).
   std::vector<int> moves;        ///< Fewest moves of each PPP under the move model.
   std::vector<int> budgets;      ///< Move budget of each PPP's episodes (episodeBudget()).
@@ -31,6 +32,12 @@ struct PreparedSet {
 
 /// The most moves any episode of `sets` may take.
 int largestBudget(const std::vector<PreparedSet>& sets);
+
+/// The grid the robot moves on in PPP `problem` of `set`: its configuration space, or nullptr for a point robot
+/// (which moves on the PPP's grid).
+inline const Grid* motionOf(const PreparedSet& set, int problem) {
+  return set.spaces.empty() ? nullptr : &set.spaces[problem];
+}
 
 /// PPP `problem`'s WindowAtlas in `set`, or nullptr when it has none.
 inline const WindowAtlas* windowsOf(const PreparedSet& set, int problem) {
@@ -44,7 +51,7 @@ EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::stri
 
 /// A set ready to play under `episode`'s rules: its grids, optima (optimumOf()), budgets and window atlases at
 /// the sensor range.
-/// @throws InvalidArgument naming "sets" for an unsolvable PPP.
+/// @throws InvalidArgument naming "sets" for a PPP unsolvable for the robot (4-connected, with its body).
 PreparedSet prepareSet(const std::string& name, ProblemSet set, const EpisodeOptions& episode);
 
 }  // namespace agents

@@ -28,6 +28,7 @@ struct Individual {
 class Breeder {
  public:
   /// Operators for `options` (validated by the caller) drawing from `rng`, scoring with `fitness`.
+  /// @throws InvalidArgument naming "start" or "goal" when the robot (robot_radius) cannot stand there.
   Breeder(const GeneratorOptions& options, const Fitness& fitness, Rng* rng);
 
   /// A chromosome of 1..max_obstacles random descriptors.

@@ -68,9 +68,14 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
 /// "threads" or an episode option.
 Fitness makeFailureFitness(const FailurePanel& panel);
 
+/// The episode options a hunt takes besides the generator's: all but robot_radius, which is the generator's
+/// (`ppp generate`'s episode flags).
+const std::vector<OptionSpec<EpisodeOptions>>& huntEpisodeOptionSpecs();
+
 /// The fitness of a set's generator options: makeFitness(options.fitness), or for a panel fitness (`failure`,
 /// `regret`) the panel options.agents looked up in `available` (see resolvePanel), played with `episode`'s
-/// rules on `threads` threads (0: every core). @throws InvalidArgument naming the option.
+/// rules on the generator's robot (options.robot_radius) on `threads` threads (0: every core).
+/// @throws InvalidArgument naming the option.
 Fitness fitnessFor(const GeneratorOptions& options, const std::vector<agents::AgentConfig>& available,
                    const EpisodeOptions& episode, int threads);
 

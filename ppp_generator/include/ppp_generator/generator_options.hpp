@@ -50,6 +50,7 @@ struct GeneratorOptions {
   int height = 20;                  ///< Grid rows.
   std::optional<Cell> start;        ///< Start cell; default top-left.
   std::optional<Cell> goal;         ///< Goal cell; default bottom-right.
+  double robot_radius = 0;          ///< The robot as a disc of this radius in cells: PPPs are solvable for it.
   int max_obstacles = 10;           ///< Obstacle budget: most descriptors per chromosome, >= 0.
   RandomObstacleOptions obstacle_shapes;  ///< Size limits of random descriptors.
   std::uint64_t seed = 1;           ///< Seed of every random choice of the run.

@@ -9,6 +9,7 @@
 #include "ppp_agents/agent_registry.hpp"
 #include "ppp_core/canvas.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/footprint.hpp"
 #include "ppp_core/gif_animation.hpp"
 #include "ppp_core/optimum.hpp"
 
@@ -186,10 +187,12 @@ EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const 
   const int steps = runner.run(problem, grid, *agent, run_seed).steps;
   result.stride = std::max(1, (steps + animation.max_frames - 2) / (animation.max_frames - 1));
 
-  const agents::EpisodeInfo info = agents::episodeInfo(problem, grid, config, run_seed, options.connectivity);
+  Grid space;
+  const Grid* motion = &motionGrid(grid, options.robot_radius, &space);
+  const agents::EpisodeInfo info = agents::episodeInfo(problem, grid, config, run_seed, options.connectivity, motion);
   agent->reset(info);
   Episode episode(problem, grid, runner.sensor(), run_seed, episodeBudget(options, problem, grid), options.connectivity,
-                  true);
+                  true, nullptr, motion);
   std::unique_ptr<agents::AgentMemory> memory;
   if (info.prior_map == nullptr) {
     memory = std::make_unique<agents::AgentMemory>();

@@ -38,10 +38,12 @@ std::uint64_t noiseSeed(std::uint64_t run_seed);
 /// runner and the ROS simulator node both drive episodes through this class.
 class Episode {
  public:
-  /// Starts at the problem's start. `grid`, `sensor` and `windows` (the grid's atlas at the sensor's range,
-  /// when there is one: scans become lookups) must outlive the episode.
+  /// Starts at the problem's start. `grid`, `sensor`, `windows` (the grid's atlas at the sensor's range, when
+  /// there is one: scans become lookups) and `motion` (the robot's configuration space when it has a body:
+  /// configurationSpace(); moves are checked against it, scans against `grid`) must outlive the episode.
   Episode(const Problem& problem, const Grid& grid, const SensorModel& sensor, std::uint64_t run_seed, int budget,
-          Connectivity connectivity, bool record_path = false, const WindowAtlas* windows = nullptr);
+          Connectivity connectivity, bool record_path = false, const WindowAtlas* windows = nullptr,
+          const Grid* motion = nullptr);
   /// True once the agent stood on the goal, the budget was spent or fail() was called.
   bool done() const { return done_; }
   /// What the agent senses now (computed on first read).
@@ -58,6 +60,7 @@ class Episode {
  private:
   const Problem* problem_;
   const Grid* grid_;
+  const Grid* motion_;
   const SensorModel* sensor_;
   const WindowAtlas* windows_;
   std::uint64_t noise_seed_;

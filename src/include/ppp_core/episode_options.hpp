@@ -23,6 +23,7 @@ struct EpisodeOptions {
   int sensor_range = 2;      ///< Scan radius (2: a 5x5 window).
   Connectivity connectivity = Connectivity::Four;  ///< Move model.
   double soft_failure_ratio = 0;  ///< A passed run longer than ratio x the optimal length is a soft failure; 0: never.
+  double robot_radius = 0;   ///< The robot as a disc of this radius in cells (footprint.hpp); <= 0.5: a point.
   /// @throws InvalidArgument naming the option.
   void validate() const;
 };

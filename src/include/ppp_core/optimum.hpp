@@ -16,14 +16,16 @@ struct Optimum {
   double length = -1;  ///< Shortest length: the fewest moves under connectivity 4, the octile length under 8.
 };
 
-/// The optimum of `problem`, decoded as `grid`, under the move model `connectivity`.
+/// The optimum of `problem` on `grid` (its decoded grid, or the robot's configuration space) under the move model
+/// `connectivity`.
 Optimum optimumOf(const Problem& problem, const Grid& grid, Connectivity connectivity);
 
 /// The move budget of an episode on a PPP whose optimum takes `optimal_moves`: the absolute `budget`, or under a
 /// `budget_factor` K, ceil(K x optimal_moves); either at least `budget_min` (and at most kMaxEpisodeBudget).
 int episodeBudget(const EpisodeOptions& options, int optimal_moves);
 
-/// episodeBudget() of `problem` (decoded as `grid`), finding its optimum only for a relative budget.
+/// episodeBudget() of `problem` (decoded as `grid`), finding its optimum (in the robot's configuration space) only
+/// for a relative budget.
 int episodeBudget(const EpisodeOptions& options, const Problem& problem, const Grid& grid);
 
 /// A run's regret: (moves used - optimal moves) / optimal moves, where a failed run used its whole `budget`
