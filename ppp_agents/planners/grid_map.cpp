@@ -5,12 +5,14 @@
 #include <string>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/footprint.hpp"
 #include "ppp_core/segment_walk.hpp"
 
 namespace ppp {
 namespace planners {
 
-GridMap::GridMap(int width, int height, double resolution, const std::vector<std::int8_t>& data, bool unknown_is_free)
+GridMap::GridMap(int width, int height, double resolution, const std::vector<std::int8_t>& data, bool unknown_is_free,
+                 double inflation)
     : frame_{width, height, resolution} {
   validateGridSize(width, height, "map size");
   if (!(resolution > 0.0) || !std::isfinite(resolution)) {
@@ -23,6 +25,7 @@ GridMap::GridMap(int width, int height, double resolution, const std::vector<std
         "map data", "expected width*height = " + std::to_string(cells) + " values, got " + std::to_string(data.size()));
   }
   passable_.assign(cells, 0);
+  Grid obstacles(width, height);  // the known obstacles, y down, for the inflation
   for (std::size_t i = 0; i < cells; ++i) {
     const int value = data[i];
     if (value < kUnknownOccupancy || value > 100) {
@@ -33,7 +36,11 @@ GridMap::GridMap(int width, int height, double resolution, const std::vector<std
     const Cell cell = frame_.cellOfMapRowColumn(static_cast<int>(i % static_cast<std::size_t>(width)),
                                                 static_cast<int>(i / static_cast<std::size_t>(width)));
     passable_[static_cast<std::size_t>(index(cell))] = free ? 1 : 0;
+    obstacles.setObstacle(cell, value >= kObstacleOccupancy);
   }
+  if (isPointRobot(inflation)) return;
+  const Grid space = configurationSpace(obstacles, inflation);
+  for (int i = 0; i < static_cast<int>(cells); ++i) passable_[static_cast<std::size_t>(i)] &= space.isFree(space.cellAt(i)) ? 1 : 0;
 }
 
 Cell GridMap::cellOf(MapPoint p) const { return walkMapSegment(frame_, p.x, p.y, p.x, p.y).front(); }

@@ -15,13 +15,16 @@ constexpr std::int8_t kUnknownOccupancy = -1;
 constexpr std::int8_t kObstacleOccupancy = 50;
 
 /// Which cells of a nav_msgs/OccupancyGrid a planner may use, in grid cells (y down) through ppp::MapFrame.
-/// A cell is passable when it is on the map and free, or unknown and the map was built with unknown_is_free.
+/// A cell is passable when it is on the map and free, or unknown and the map was built with unknown_is_free, and,
+/// with an inflation, a disc of that radius centred in it covers no known obstacle and stays on the map.
 class GridMap {
  public:
   /// Reads occupancy data laid out as in nav_msgs/OccupancyGrid (row-major, row 0 at the bottom).
   /// @throws InvalidArgument for sides outside the grid limits, a resolution that is not positive and finite,
-  /// data of the wrong length, or a value outside -1 and [0, 100].
-  GridMap(int width, int height, double resolution, const std::vector<std::int8_t>& data, bool unknown_is_free);
+  /// data of the wrong length, or a value outside -1 and [0, 100]. `inflation` is the robot's radius in map
+  /// cells as the planner believes it (ppp/footprint.hpp; <= 0.5: none).
+  GridMap(int width, int height, double resolution, const std::vector<std::int8_t>& data, bool unknown_is_free,
+          double inflation = 0);
 
   /// Size and resolution, and the flip between grid cells and the map frame.
   const MapFrame& frame() const { return frame_; }

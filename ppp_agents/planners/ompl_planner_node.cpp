@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     planners::PlannerNodeOptions options;
     options.frames = planners::readPlannerFrames(private_nh, ros::this_node::getNamespace());
+    options.body = planners::readPlannerBody(private_nh);
     options.unknown_is_free = parameters.unknown_is_free;
     const planners::OmplGridPlanner planner(parameters.planner);
     planners::PlannerNode node(nh, options, [&planner](const planners::GridMap& map, ppp::Cell robot, ppp::Cell goal) {

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     namespace planners = ppp::planners;
     planners::PlannerNodeOptions options;
     options.frames = planners::readPlannerFrames(private_nh, ros::this_node::getNamespace());
+    options.body = planners::readPlannerBody(private_nh);
     options.unknown_is_free = true;
     options.replan_on_map = true;
     planners::PlannerNode node(nh, options, [](const planners::GridMap& map, ppp::Cell robot, ppp::Cell goal) {

@@ -21,14 +21,14 @@ constexpr std::chrono::seconds kRequestWait{1};
 constexpr std::chrono::milliseconds kIdlePoll{100};
 
 /// The planner's view of a map message. @throws InvalidArgument when it does not follow the interface.
-GridMap gridMapOf(const nav_msgs::OccupancyGrid& map, bool unknown_is_free) {
+GridMap gridMapOf(const nav_msgs::OccupancyGrid& map, bool unknown_is_free, double inflation) {
   const geometry_msgs::Point& origin = map.info.origin.position;
   if (origin.x != 0.0 || origin.y != 0.0) {
     throw InvalidArgument("map.info.origin",
                           "expected (0, 0), got (" + std::to_string(origin.x) + ", " + std::to_string(origin.y) + ")");
   }
   return GridMap(static_cast<int>(map.info.width), static_cast<int>(map.info.height), map.info.resolution, map.data,
-                 unknown_is_free);
+                 unknown_is_free, inflation);
 }
 
 }  // namespace
@@ -140,7 +140,7 @@ void PlannerNode::serve(const Request& request) {
     return;
   }
   try {
-    const GridMap map = gridMapOf(*request.map, options_.unknown_is_free);
+    const GridMap map = gridMapOf(*request.map, options_.unknown_is_free, options_.body.inflation);
     const Cell robot = map.cellOf(MapPoint{pose.transform.translation.x, pose.transform.translation.y});
     const Cell target = map.cellOf(MapPoint{goal.pose.position.x, goal.pose.position.y});
     if (request.replan && robot == target) {

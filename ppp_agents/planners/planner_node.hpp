@@ -28,6 +28,7 @@ struct PlannerNodeOptions {
   PlannerFrames frames;         ///< The map and robot frames.
   bool unknown_is_free = true;  ///< Unknown map cells (-1) are passable.
   bool replan_on_map = false;   ///< Plan again on every new map while there is a goal the robot is not at.
+  PlannerBody body;             ///< The robot's body as the planner believes it (its inflation).
 };
 
 /// The ROS side of the example planners (docs/planner-interface.md): keeps the newest `map`, answers every

@@ -1,6 +1,7 @@
 #include "planner_node_options.hpp"
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/footprint.hpp"
 #include "ppp_core/option_yaml.hpp"
 
 namespace ppp {
@@ -24,6 +25,19 @@ const std::vector<OptionSpec<PlannerFrames>>& plannerFrameSpecs() {
       declareOption("base_frame", "the robot's frame ('': the node's namespace + /base_link)",
                     +[](F& f) -> std::string& { return f.base_frame; })
           .notAffectingResults(),
+  };
+  return specs;
+}
+
+void PlannerBody::validate() const { checkOptionRanges(plannerBodySpecs(), *this); }
+
+const std::vector<OptionSpec<PlannerBody>>& plannerBodySpecs() {
+  using B = PlannerBody;
+  static const std::vector<OptionSpec<B>> specs = {
+      declareOption("inflation",
+                    "plan as a disc of this radius in map cells: cells nearer a known obstacle or the map's edge are "
+                    "not entered (0: a point; right for the robot when it equals its robot_radius)",
+                    +[](B& b) -> double& { return b.inflation; }, Bounds{0, kMaxRobotRadius}),
   };
   return specs;
 }

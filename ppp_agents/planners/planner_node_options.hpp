@@ -21,6 +21,16 @@ struct PlannerFrames {
 /// One declaration per frame parameter of a planner node.
 const std::vector<OptionSpec<PlannerFrames>>& plannerFrameSpecs();
 
+/// The robot's body as an example planner believes it (every example planner's `~inflation`).
+struct PlannerBody {
+  double inflation = 0;  ///< Known obstacles grown by a disc of this radius in map cells (footprint.hpp; 0: none).
+  /// @throws InvalidArgument naming the parameter out of its declared range.
+  void validate() const;
+};
+
+/// One declaration per body parameter of a planner node.
+const std::vector<OptionSpec<PlannerBody>>& plannerBodySpecs();
+
 /// What the OMPL planner node reads besides its frames.
 struct OmplNodeParameters {
   OmplPlannerOptions planner;   ///< ~planner and ~planning_time.

@@ -13,6 +13,13 @@ PlannerFrames readPlannerFrames(const ros::NodeHandle& private_nh, const std::st
   return frames;
 }
 
+PlannerBody readPlannerBody(const ros::NodeHandle& private_nh) {
+  PlannerBody body;
+  ppp_msgs::readOptionParameters(private_nh, plannerBodySpecs(), &body);
+  ppp_msgs::validateParameters(body);
+  return body;
+}
+
 OmplNodeParameters readOmplNodeParameters(const ros::NodeHandle& private_nh) {
   OmplNodeParameters parameters;
   ppp_msgs::readOptionParameters(private_nh, omplNodeOptionSpecs(), &parameters);

@@ -13,6 +13,9 @@ namespace planners {
 /// @throws InvalidArgument naming the parameter when it is not a non-empty tf frame name (no leading slash).
 PlannerFrames readPlannerFrames(const ros::NodeHandle& private_nh, const std::string& node_namespace);
 
+/// Reads ~inflation from its declaration. @throws InvalidArgument naming the parameter and what was expected.
+PlannerBody readPlannerBody(const ros::NodeHandle& private_nh);
+
 /// Reads the OMPL planner node's declared parameters (omplNodeOptionSpecs()).
 /// @throws InvalidArgument naming the parameter and what was expected.
 OmplNodeParameters readOmplNodeParameters(const ros::NodeHandle& private_nh);

@@ -5,6 +5,7 @@
 
 #include "ppp_agents/episode_runner.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/footprint.hpp"
 
 namespace ppp {
 namespace agents {
@@ -18,6 +19,7 @@ AgentLane::AgentLane(const AgentConfig& config, const EpisodeOptions& options,
       seed_of_(std::move(seed_of)),
       batch_size_(isPlanner(config) ? 1 : batch_size),
       reads_window_(readsScanWindow(config)),
+      collisions_end_(isPlanner(config) && !isPointRobot(options.robot_radius)),
       sensor_(SensorOptions{options.sensor_range, config.sensor_noise}) {
   if (batch_size < 1) throw InvalidArgument("batch_size", "expected at least 1, got " + std::to_string(batch_size));
   for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
@@ -111,7 +113,9 @@ std::vector<EpisodeResult> AgentLane::answer(const std::vector<MoveReply>& moves
     } else if (static_cast<int>(move->step) != a.episode.step() || !isAction(move->action, options_.connectivity)) {
       a.episode.fail(reason::kInvalidAction);
     } else {
+      const int bumps = a.episode.outcome().bumps;
       a.episode.apply(static_cast<Action>(move->action));
+      if (collisions_end_ && a.episode.outcome().bumps > bumps) a.episode.fail(reason::kCollision);
     }
     if (a.episode.done()) {
       finished.push_back(result(a.work, a.seed, a.episode.outcome()));

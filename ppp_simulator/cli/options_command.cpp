@@ -75,6 +75,8 @@ std::string optionsReference() {
       << "\n## Example planner nodes\n\n"
       << "`~` parameters of `optimistic_planner_node` and `ompl_planner_node` (the frames they plan in):\n\n"
       << optionsMarkdownTable(planners::plannerFrameSpecs(), planners::PlannerFrames{}, &parameter)
+      << "\nand the robot's body as they believe it:\n\n"
+      << optionsMarkdownTable(planners::plannerBodySpecs(), planners::PlannerBody{}, &parameter)
       << "\nand of `ompl_planner_node` alone:\n\n"
       << optionsMarkdownTable(planners::omplNodeOptionSpecs(), planners::OmplNodeParameters{}, &parameter);
   return out.str();

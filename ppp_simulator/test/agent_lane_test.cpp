@@ -153,6 +153,32 @@ TEST(AgentLaneTest, FaultsFailOnlyTheirEpisodes) {
   EXPECT_TRUE(lane.finished());
 }
 
+TEST(AgentLaneTest, APlannerDrivingARobotWithABodyIntoAWallEndsItsRunAsACollision) {
+  // A corridor three cells high (rows 1-3) narrowing to two from x = 4: a disc of radius 1 stands at (1, 2) or
+  // (2, 2) only. Its north move would put the disc over the top wall.
+  Problem corridor = Problem::empty(9, 5, 3);
+  corridor.start = Cell{1, 2};
+  corridor.goal = Cell{2, 2};
+  corridor.obstacles = {Obstacle{Shape::HorizontalBar, 0, 0, 9, 1}, Obstacle{Shape::HorizontalBar, 0, 4, 9, 1},
+                        Obstacle{Shape::HorizontalBar, 4, 3, 5, 1}};
+  EpisodeOptions body;
+  body.robot_radius = 1;
+  ProblemSet set;
+  set.ids = {"corridor"};
+  set.problems = {corridor};
+  const std::vector<agents::PreparedSet> sets = {agents::prepareSet("corridor", set, body)};
+  const auto endOfNorth = [&](const agents::AgentConfig& agent) {
+    agents::AgentLane lane(agent, body, sets, [](int, int, int) { return 1u; }, 1, 1);
+    std::vector<protocol::ScanRequest> scans;
+    lane.scans(&scans);
+    const auto ended = lane.answer({{scans[0].episode, 0, static_cast<int>(Action::North)}}, reason::kTimeout);
+    return ended.empty() ? std::string("still running") : ended[0].reason;
+  };
+  agents::AgentConfig planner{"mine", agents::kPlannerType, 0, 0.0};
+  EXPECT_EQ(endOfNorth(planner), reason::kCollision);
+  EXPECT_EQ(endOfNorth(config("bumper")), "still running");  // a built-in agent bumps and goes on, as a point would
+}
+
 TEST(AgentLaneTest, ASilentAgentIsGivenUpAfterSomeUnansweredBatches) {
   agents::AgentLane lane = experimentLane(config("random"), EpisodeOptions{}, smallSets(), 5, 2, {}, 4);
   std::vector<protocol::ScanRequest> scans;

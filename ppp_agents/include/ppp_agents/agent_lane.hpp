@@ -46,7 +46,8 @@ class AgentLane {
   void scans(std::vector<ScanRequest>* requests);
   /// Applies a batch of moves. An active episode with no move gets `missing_reason`; a move for the wrong step
   /// or with an unknown action fails its episode with reason::kInvalidAction, a move with a failure fails it
-  /// with that reason; moves for unknown episodes are ignored. Returns the results of the episodes that ended.
+  /// with that reason, and a planner agent's move that bumps a robot with a body (robot_radius) fails it with
+  /// reason::kCollision, as a real robot's run would end; moves for unknown episodes are ignored. Returns the results of the episodes that ended.
   std::vector<EpisodeResult> answer(const std::vector<MoveReply>& moves, const char* missing_reason);
   /// A batch went unanswered: its episodes fail with `reason`, and once `give_up_after` batches in a row went
   /// unanswered every remaining run fails with it too (a silent agent does not hold the experiment up).
@@ -79,6 +80,7 @@ class AgentLane {
   SeedFunction seed_of_;
   int batch_size_;
   bool reads_window_;
+  bool collisions_end_;  // a planner driving a robot with a body: a bump is a collision that ends the run
   SensorModel sensor_;
   std::deque<Work> queue_;
   std::vector<Active> active_;

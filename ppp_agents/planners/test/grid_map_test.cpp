@@ -23,6 +23,27 @@ TEST(GridMapTest, ReadsOccupancyDataBottomRowFirst) {
   EXPECT_FALSE(optimistic.passable(Cell{0, -1}));
 }
 
+TEST(GridMapTest, AnInflationKeepsTheDiscOffKnownObstaclesAndTheEdge) {
+  // 5x5, one obstacle in the middle (data is bottom row first; the middle row is row 2 either way). Inflated by
+  // 1, a cell is kept when its 3x3 block is on the map and clear of the obstacle: the inner 3x3 cells all touch
+  // (2, 2) and the outer ring touches the edge, so nothing is left.
+  std::vector<std::int8_t> data(25, 0);
+  data[2 * 5 + 2] = 100;
+  const GridMap point(5, 5, 1.0, data, true, 0);
+  const GridMap disc(5, 5, 1.0, data, true, 1);
+  EXPECT_TRUE(point.passable(Cell{1, 1}));
+  for (int y = 0; y < 5; ++y) {
+    for (int x = 0; x < 5; ++x) EXPECT_FALSE(disc.passable(Cell{x, y})) << x << "," << y;
+  }
+  // 7x7 with nothing known: the 5x5 inside is left, the unknown corner does not block (1, 1).
+  std::vector<std::int8_t> open(49, 0);
+  open[6 * 7 + 0] = -1;
+  const GridMap room(7, 7, 1.0, open, true, 1);
+  EXPECT_TRUE(room.passable(Cell{1, 1}));
+  EXPECT_FALSE(room.passable(Cell{0, 3}));
+  EXPECT_TRUE(room.passable(Cell{5, 5}));
+}
+
 TEST(GridMapTest, HighOccupancyIsAnObstacle) {
   const GridMap map(2, 2, 1.0, {49, 50, 0, 99}, true);
   EXPECT_TRUE(map.passable(Cell{0, 1}));

@@ -308,6 +308,7 @@ std::string reasonText(const std::string& reason) {
   if (reason == reason::kTimeout) return "the agent did not answer in time";
   if (reason == reason::kAgentLost) return "the agent process went away";
   if (reason == reason::kInvalidAction) return "the agent sent an unusable action";
+  if (reason == reason::kCollision) return "the planner drove the robot's body into an obstacle";
   return "";
 }
 

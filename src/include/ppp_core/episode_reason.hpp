@@ -15,6 +15,7 @@ constexpr const char* kNoPath = "no_path";                    ///< Fail (planner
 constexpr const char* kInvalidPath = "invalid_path";          ///< Fail (planner): its path was unusable.
 constexpr const char* kPlannerTimeout = "planner_timeout";    ///< Fail (planner): no path in time.
 constexpr const char* kPlannerLost = "planner_lost";          ///< Fail (planner): its process went away.
+constexpr const char* kCollision = "collision";  ///< Fail (planner, robot with a body): it drove into an obstacle.
 /// The reason constant equal to `text` among those an agent may report itself (the four planner ones), or
 /// nullptr.
 const char* agentReportedReason(const std::string& text);
