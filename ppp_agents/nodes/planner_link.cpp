@@ -42,6 +42,16 @@ PlannerLink::PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters
       ppp_msgs::topics::kPlannerPath, 10, [this](const nav_msgs::Path::ConstPtr& path) { onPlan(path); }, ros::VoidPtr(), &queue_);
   options.transport_hints = ros::TransportHints().tcpNoDelay();  // Nagle would hold each path back 40 ms
   plan_ = nh_.subscribe(options);
+  // The robot's body as costmaps read it, in metres, for planners that plan with a footprint.
+  nh_.setParam(ppp_msgs::topics::kPlannerRobotRadius, parameters_.robot_radius * parameters_.resolution);
+  XmlRpc::XmlRpcValue footprint;
+  footprint.setSize(0);
+  int vertex = 0;
+  for (const auto& [x, y] : footprintPolygon(parameters_.robot_radius * parameters_.resolution)) {
+    footprint[vertex][0] = x;
+    footprint[vertex++][1] = y;
+  }
+  if (parameters_.robot_radius > 0) nh_.setParam(ppp_msgs::topics::kPlannerFootprint, footprint);
   spinner_.start();
 }
 
@@ -157,8 +167,9 @@ std::optional<nav_msgs::Path> PlannerLink::waitForPath(const ros::Time& request,
 void PlannerLink::publishState(const ros::Time& stamp, const PlannerEpisode& episode, Cell robot,
                                const std::int8_t* window, int range) {
   const MapFrame& frame = episode.frame();
-  nav_msgs::OccupancyGrid map = ppp_msgs::toOccupancyGrid(episode.known().cells, frame.width, frame.height,
-                                                          parameters_.resolution, parameters_.map_frame);
+  nav_msgs::OccupancyGrid map =
+      ppp_msgs::toFinerOccupancyGrid(episode.known().cells, frame.width, frame.height, parameters_.resolution,
+                                     parameters_.cells_per_ppp_cell, parameters_.map_frame);
   map.header.stamp = stamp;
   map.info.map_load_time = stamp;
   map_.publish(map);

@@ -1,6 +1,9 @@
 #include "ppp_agents/planner_bridge_options.hpp"
 
+#include <cmath>
+
 #include "ppp_core/error.hpp"
+#include "ppp_core/footprint.hpp"
 #include "ppp_core/option_yaml.hpp"
 
 namespace ppp {
@@ -15,8 +18,16 @@ void BridgeOptions::validate() const {
 const std::vector<OptionSpec<BridgeOptions>>& bridgeOptionSpecs() {
   using B = BridgeOptions;
   static const std::vector<OptionSpec<B>> specs = {
-      declareOption("resolution", "metres per cell of the map published to the planner",
+      declareOption("resolution", "metres per PPP cell",
                     +[](B& b) -> double& { return b.resolution; }, Bounds{1e-6, 1e6}),
+      declareOption("cells_per_ppp_cell",
+                    "map cells per PPP cell side in the map published to the planner (so a robot's disc is "
+                    "several map cells wide)",
+                    +[](B& b) -> int& { return b.cells_per_ppp_cell; }, Bounds{1, kMaxCellsPerPppCell}),
+      declareOption("robot_radius",
+                    "the robot's radius in PPP cells (the experiment's), set for the planner as robot/robot_radius "
+                    "and robot/footprint in metres",
+                    +[](B& b) -> double& { return b.robot_radius; }, Bounds{0, kMaxRobotRadius}),
       declareOption("plan_timeout", "seconds the planner has to answer a plan request",
                     +[](B& b) -> double& { return b.plan_timeout; }, Bounds{1e-3, 86400}),
       declareOption("connect_timeout", "seconds to wait at start-up for the planner's topics",
@@ -29,6 +40,16 @@ const std::vector<OptionSpec<BridgeOptions>>& bridgeOptionSpecs() {
           .notAffectingResults(),
   };
   return specs;
+}
+
+std::vector<std::pair<double, double>> footprintPolygon(double radius) {
+  constexpr int kVertices = 16;
+  std::vector<std::pair<double, double>> vertices;
+  for (int i = 0; i < kVertices; ++i) {
+    const double angle = 2 * M_PI * i / kVertices;
+    vertices.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
+  }
+  return vertices;
 }
 
 std::string defaultBridgeBaseFrame(const std::string& ns) {

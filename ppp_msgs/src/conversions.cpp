@@ -86,6 +86,27 @@ nav_msgs::OccupancyGrid toOccupancyGrid(const std::vector<std::int8_t>& cells, i
   return map;
 }
 
+nav_msgs::OccupancyGrid toFinerOccupancyGrid(const std::vector<std::int8_t>& cells, int width, int height,
+                                             double resolution, int per_cell, const std::string& frame_id) {
+  if (per_cell < 1 || per_cell > 16) {
+    throw ppp::InvalidArgument("per_cell", "expected map cells per cell side in [1, 16], got " + std::to_string(per_cell));
+  }
+  if (per_cell == 1) return toOccupancyGrid(cells, width, height, resolution, frame_id);
+  checkResolution(resolution, "resolution");
+  ppp::validateGridSize(width, height, "grid");
+  if (cells.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {
+    throw ppp::InvalidArgument("cells", "expected " + sizeText(width, height) + " cells, got " + std::to_string(cells.size()));
+  }
+  std::vector<std::int8_t> finer(cells.size() * static_cast<std::size_t>(per_cell * per_cell));
+  const int fine_width = width * per_cell;
+  for (int y = 0; y < height * per_cell; ++y) {
+    for (int x = 0; x < fine_width; ++x) {
+      finer[static_cast<std::size_t>(y) * fine_width + x] = cells[static_cast<std::size_t>(y / per_cell) * width + x / per_cell];
+    }
+  }
+  return toOccupancyGrid(finer, fine_width, height * per_cell, resolution / per_cell, frame_id);
+}
+
 geometry_msgs::TransformStamped cellTransform(const ppp::MapFrame& frame, ppp::Cell cell, const std::string& parent,
                                               const std::string& child) {
   geometry_msgs::TransformStamped transform;

@@ -105,6 +105,23 @@ TEST(ToOccupancyGrid, BottomRightGridCellIsLastCellOfFirstMapRow) {
   EXPECT_EQ(ppp_msgs::toOccupancyGrid(grid, 1.0).data, expected);
 }
 
+TEST(ToOccupancyGrid, AFinerMapDrawsEachCellAsABlockAtTheSameMetres) {
+  // Cells y down: row 0 = {obstacle, free}, row 1 = {unknown, free}; two map cells per cell side, 0.5 m each.
+  const std::vector<std::int8_t> cells = {100, 0, -1, 0};
+  const nav_msgs::OccupancyGrid map = ppp_msgs::toFinerOccupancyGrid(cells, 2, 2, 1.0, 2, "map");
+  EXPECT_EQ(map.info.width, 4u);
+  EXPECT_EQ(map.info.height, 4u);
+  EXPECT_FLOAT_EQ(map.info.resolution, 0.5f);
+  // Map rows bottom first: the unknown cell (bottom-left in metres) fills map rows 0-1, columns 0-1.
+  const std::vector<std::int8_t> expected = {-1, -1, 0, 0,   -1, -1, 0, 0,
+                                             100, 100, 0, 0, 100, 100, 0, 0};
+  EXPECT_EQ(map.data, expected);
+  EXPECT_EQ(ppp_msgs::toFinerOccupancyGrid(cells, 2, 2, 1.0, 1, "map").data,
+            ppp_msgs::toOccupancyGrid(cells, 2, 2, 1.0, "map").data);
+  EXPECT_THROW(ppp_msgs::toFinerOccupancyGrid(cells, 2, 2, 1.0, 0, "map"), ppp::InvalidArgument);
+  EXPECT_THROW(ppp_msgs::toFinerOccupancyGrid(cells, 2, 2, 1.0, 17, "map"), ppp::InvalidArgument);
+}
+
 TEST(ToOccupancyGrid, EveryCellLandsAtTheFlippedIndex) {
   for (const ppp::Problem& problem : randomProblems(11, 3)) {
     const ppp::Grid grid = ppp::decodeGrid(problem);

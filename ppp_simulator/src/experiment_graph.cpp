@@ -68,8 +68,9 @@ ppp_msgs::GraphNode agentNode(const agents::AgentConfig& agent) {
   return node;
 }
 
-/// The bridge of a planner agent and, when the config names it, its planner, in the agent's namespace.
-std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent) {
+/// The bridge of a planner agent (told the robot's radius) and, when the config names it, its planner, in the agent's
+/// namespace.
+std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, double robot_radius) {
   const std::size_t slash = agent.planner_node.find('/');
   const std::string package = agent.planner_node.substr(0, slash);
   const std::string type = slash == std::string::npos ? "" : agent.planner_node.substr(slash + 1);
@@ -82,9 +83,10 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent) 
   // A planner the user starts by hand gets five minutes to appear; one started here, 20 s.
   agents::BridgeOptions options = agent.bridge;
   options.connect_timeout = type.empty() ? 300.0 : 20.0;
-  static const std::vector<OptionSpec<agents::BridgeOptions>> timeouts =
-      selectOptions(agents::bridgeOptionSpecs(), {"plan_timeout", "connect_timeout"});
-  addParams(timeouts, options, &bridge);
+  options.robot_radius = robot_radius;
+  static const std::vector<OptionSpec<agents::BridgeOptions>> written =
+      selectOptions(agents::bridgeOptionSpecs(), {"plan_timeout", "connect_timeout", "cells_per_ppp_cell", "robot_radius"});
+  addParams(written, options, &bridge);
   if (type.empty()) return {bridge};
   ppp_msgs::GraphNode planner{package, type, ppp_msgs::nodes::kPlanner};
   planner.group = bridge.group;
@@ -179,7 +181,7 @@ ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const Grap
   graph.nodes.push_back(simulator);
   for (const agents::AgentConfig& agent : agents) {
     if (agents::isPlanner(agent)) {
-      for (ppp_msgs::GraphNode& node : plannerNodes(agent)) graph.nodes.push_back(std::move(node));
+      for (ppp_msgs::GraphNode& node : plannerNodes(agent, config.episode.robot_radius)) graph.nodes.push_back(std::move(node));
     } else {
       graph.nodes.push_back(agentNode(agent));
     }

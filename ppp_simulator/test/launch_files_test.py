@@ -237,15 +237,18 @@ sets:
         path = write_config(directory, """
 agents:
   - {name: fast, type: planner, prior_map: true, planner_node: ppp_agents/ompl_planner_node,
-     planner_args: "_planning_time:=0.005 _planner:=RRTConnect", plan_timeout: 0.5}
+     planner_args: "_planning_time:=0.005 _planner:=RRTConnect", plan_timeout: 0.5, cells_per_ppp_cell: 4}
+robot_radius: 1.5
 sets:
   - name: mine
-    generator: {fitness: advances, population: 6, matings: 50, seed: 4}
+    generator: {fitness: advances, population: 6, matings: 50, seed: 4, start: [2, 2], goal: [17, 17]}
 """)
         config, _ = load_graph(path)
         planner = [n for n in config.nodes if n.namespace == '/fast/robot/'][0]
         self.assertEqual(planner.args, '_planning_time:=0.005 _planner:=RRTConnect')
         self.assertEqual(config.params['/fast/bridge/plan_timeout'].value, 0.5)
+        self.assertEqual(config.params['/fast/bridge/cells_per_ppp_cell'].value, 4)
+        self.assertEqual(config.params['/fast/bridge/robot_radius'].value, 1.5)
 
     def test_bad_configs_and_flags_are_refused_naming_the_problem(self):
         directory = tempfile.mkdtemp()

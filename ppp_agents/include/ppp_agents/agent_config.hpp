@@ -25,11 +25,11 @@ struct AgentConfig {
   bool prior_map = false;      ///< Planner agents only: the planner is given the true map instead of the memory.
   std::string planner_node;    ///< Planner agents only: "package/executable" of the planner to start ("" = the user's).
   std::string planner_args;    ///< Planner agents only: arguments of planner_node ("_planning_time:=0.005 ...").
-  BridgeOptions bridge;        ///< Planner agents only: its bridge's plan_timeout (the rest are the bridge's own).
+  BridgeOptions bridge;        ///< Planner agents only: its bridge's plan_timeout and cells_per_ppp_cell.
   std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
   /// @throws InvalidArgument naming "type" (listing the valid ones), "name", "memory", "sensor_noise", "runs",
-  /// "prior_map", "planner_node", "planner_args", "plan_timeout" or "host" (other agents have no planner to wait
-  /// for: their plan_timeout is unused).
+  /// "prior_map", "planner_node", "planner_args", "plan_timeout", "cells_per_ppp_cell" or "host" (other agents have
+  /// no planner: their bridge options are unused).
   void validate() const;
 };
 

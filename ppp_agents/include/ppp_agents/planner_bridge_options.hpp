@@ -9,10 +9,15 @@
 namespace ppp {
 namespace agents {
 
+/// Most map cells per PPP cell side in the map the bridge publishes.
+constexpr int kMaxCellsPerPppCell = 16;
+
 /// The planner bridge's own `~` parameters (besides its agent's name and memory): what it publishes to the
 /// planner and how long it waits for it.
 struct BridgeOptions {
-  double resolution = 1.0;                         ///< Metres per cell of the published map.
+  double resolution = 1.0;                         ///< Metres per PPP cell.
+  int cells_per_ppp_cell = 1;                      ///< Map cells per PPP cell side in the published map.
+  double robot_radius = 0;                         ///< The robot's radius in PPP cells (published for the planner).
   double plan_timeout = 5.0;                       ///< Seconds the planner has to answer a plan request.
   double connect_timeout = 20.0;                   ///< Seconds to wait at start-up for the planner's topics.
   std::string map_frame = ppp_msgs::frames::kMap;  ///< Frame of the map, poses and goal.
@@ -23,6 +28,10 @@ struct BridgeOptions {
 
 /// One declaration per planner bridge parameter (the bridge reads them; the experiment's graph writes them).
 const std::vector<OptionSpec<BridgeOptions>>& bridgeOptionSpecs();
+
+/// The robot's footprint as costmaps read it (`footprint`): a 16-gon of `radius` metres round the robot's centre,
+/// as [x, y] vertices.
+std::vector<std::pair<double, double>> footprintPolygon(double radius);
 
 /// The bridge's default base frame in namespace `ns`: "NS/robot/base_link" without the leading slash.
 std::string defaultBridgeBaseFrame(const std::string& ns);

@@ -48,6 +48,12 @@ ppp::Grid fromOccupancyGrid(const nav_msgs::OccupancyGrid& map);
 nav_msgs::OccupancyGrid toOccupancyGrid(const std::vector<std::int8_t>& cells, int width, int height,
                                         double resolution, const std::string& frame_id);
 
+/// toOccupancyGrid() with each cell drawn as `per_cell` x `per_cell` map cells of resolution / per_cell metres
+/// (the same metres: a cell's centre is where it was). @throws ppp::InvalidArgument as toOccupancyGrid(), and
+/// naming "per_cell" unless it is in [1, 16].
+nav_msgs::OccupancyGrid toFinerOccupancyGrid(const std::vector<std::int8_t>& cells, int width, int height,
+                                             double resolution, int per_cell, const std::string& frame_id);
+
 /// The transform `parent` -> `child` placing `child` on the centre of `cell` (identity rotation), unstamped.
 geometry_msgs::TransformStamped cellTransform(const ppp::MapFrame& frame, ppp::Cell cell, const std::string& parent,
                                               const std::string& child);
