@@ -12,6 +12,8 @@ packages=(
   python3-visualization-msgs python3-tf2-msgs
   # the example planners: OMPL (sampling-based planning)
   libompl-dev
+  # the MRPT example planner: MRPT's navigation library (its wavefront planner for circular robots)
+  libmrpt-nav-dev
   # rviz, headless under a virtual X server, screenshots and their check
   rviz xvfb xauth imagemagick python3-pil
   # headless rviz videos of a bag (screen capture, encoding, ffprobe's checks)

@@ -66,6 +66,17 @@ const std::vector<OptionSpec<OmplNodeParameters>>& omplNodeOptionSpecs() {
   return specs;
 }
 
+void MrptNodeParameters::validate() const { checkOptionRanges(mrptNodeOptionSpecs(), *this); }
+
+const std::vector<OptionSpec<MrptNodeParameters>>& mrptNodeOptionSpecs() {
+  using M = MrptNodeParameters;
+  static const std::vector<OptionSpec<M>> specs = {
+      declareOption("unknown_is_free", "plan through unknown map cells (MRPT itself takes them for obstacles)",
+                    +[](M& m) -> bool& { return m.unknown_is_free; }),
+  };
+  return specs;
+}
+
 std::string defaultBaseFrame(const std::string& node_namespace) {
   return ppp_msgs::frames::under(node_namespace, ppp_msgs::frames::kBaseLink);
 }

@@ -43,6 +43,16 @@ struct OmplNodeParameters {
 /// One declaration per `~` parameter of the OMPL planner node besides its frames.
 const std::vector<OptionSpec<OmplNodeParameters>>& omplNodeOptionSpecs();
 
+/// What the MRPT planner node reads besides its frames and body.
+struct MrptNodeParameters {
+  bool unknown_is_free = true;  ///< ~unknown_is_free: plan through unknown map cells.
+  /// @throws InvalidArgument naming the parameter out of its declared range.
+  void validate() const;
+};
+
+/// One declaration per `~` parameter of the MRPT planner node besides its frames and body.
+const std::vector<OptionSpec<MrptNodeParameters>>& mrptNodeOptionSpecs();
+
 /// The default ~base_frame of a node in `node_namespace`: the namespace without its leading slash, then
 /// "/base_link" ("/ompl/robot" -> "ompl/robot/base_link", "/" -> "base_link").
 std::string defaultBaseFrame(const std::string& node_namespace);

@@ -20,5 +20,9 @@ PlannerBody readPlannerBody(const ros::NodeHandle& private_nh);
 /// @throws InvalidArgument naming the parameter and what was expected.
 OmplNodeParameters readOmplNodeParameters(const ros::NodeHandle& private_nh);
 
+/// Reads the MRPT planner node's declared parameters (mrptNodeOptionSpecs()).
+/// @throws InvalidArgument naming the parameter and what was expected.
+MrptNodeParameters readMrptNodeParameters(const ros::NodeHandle& private_nh);
+
 }  // namespace planners
 }  // namespace ppp

@@ -1,6 +1,7 @@
 # The example planner nodes (docs/planner-interface.md), included by ppp_agents/CMakeLists.txt. The algorithms
 # are a ROS-free library tested without a master; the nodes share one ROS glue library.
 find_package(ompl REQUIRED)
+find_package(mrpt-nav REQUIRED)
 
 add_library(ppp_planners STATIC
   planners/grid_map.cpp
@@ -14,6 +15,11 @@ target_include_directories(ppp_planners SYSTEM PUBLIC ${OMPL_INCLUDE_DIRS})
 target_link_libraries(ppp_planners PUBLIC ${ppp_core_LIBRARIES} ${OMPL_LIBRARIES})
 target_compile_options(ppp_planners PRIVATE -Wall -Wextra)
 
+# MRPT's wavefront planner, in a library of its own so only its node and test link MRPT.
+add_library(ppp_planners_mrpt STATIC planners/mrpt_grid_planner.cpp)
+target_link_libraries(ppp_planners_mrpt PUBLIC ppp_planners mrpt::nav)
+target_compile_options(ppp_planners_mrpt PRIVATE -Wall -Wextra)
+
 add_library(ppp_planners_ros STATIC planners/planner_node.cpp planners/planner_node_parameters.cpp)
 target_include_directories(ppp_planners_ros SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
 target_link_libraries(ppp_planners_ros PUBLIC ppp_planners ${catkin_LIBRARIES})
@@ -25,8 +31,11 @@ foreach(node optimistic_planner_node ompl_planner_node)
   target_link_libraries(${node} ppp_planners_ros)
   target_compile_options(${node} PRIVATE -Wall -Wextra)
 endforeach()
+add_executable(mrpt_planner_node planners/mrpt_planner_node.cpp)
+target_link_libraries(mrpt_planner_node ppp_planners_ros ppp_planners_mrpt)
+target_compile_options(mrpt_planner_node PRIVATE -Wall -Wextra)
 
-install(TARGETS optimistic_planner_node ompl_planner_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+install(TARGETS optimistic_planner_node ompl_planner_node mrpt_planner_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 catkin_install_python(PROGRAMS scripts/simple_planner.py DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
@@ -35,6 +44,9 @@ if(CATKIN_ENABLE_TESTING)
     target_link_libraries(${test_name} ppp_planners GTest::gtest_main)
     target_compile_options(${test_name} PRIVATE -Wall -Wextra)
   endforeach()
+  catkin_add_gtest(mrpt_grid_planner_test planners/test/mrpt_grid_planner_test.cpp)
+  target_link_libraries(mrpt_grid_planner_test ppp_planners_mrpt GTest::gtest_main)
+  target_compile_options(mrpt_grid_planner_test PRIVATE -Wall -Wextra)
   catkin_add_gtest(planner_node_parameters_test planners/test/planner_node_parameters_test.cpp)
   target_link_libraries(planner_node_parameters_test ppp_planners_ros GTest::gtest_main)
 endif()

@@ -245,7 +245,7 @@ TEST(AgentConfigTest, LoadRejectsUnknownTopLevelKeysAndMissingFiles) {
   EXPECT_THROW(loadAgentConfigs(path + ".missing"), IoError);
 }
 
-TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgentsAndTwoPlanners) {
+TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgentsAndThreePlanners) {
   const auto configs = loadAgentConfigs(std::string(PPP_CONFIG_DIR) + "/agents.yaml");
   struct Expected {
     const char* name;
@@ -266,6 +266,7 @@ TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgentsAndTwoPlanners) {
       {"decision_bumper", "decision_bumper", 0, 0.0},
       {"ompl", "planner", 0, 0.0},
       {"optimistic", "planner", 0, 0.0},
+      {"mrpt", "planner", 0, 0.0},
   };
   ASSERT_EQ(configs.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
@@ -278,6 +279,7 @@ TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgentsAndTwoPlanners) {
   }
   EXPECT_TRUE(configs[10].prior_map);
   EXPECT_FALSE(configs[11].prior_map);
+  EXPECT_EQ(configs[12].bridge.cells_per_ppp_cell, 4);
 }
 
 TEST(AgentConfigTest, GraphNamesAreLegalRosNames) {

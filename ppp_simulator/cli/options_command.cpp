@@ -73,12 +73,15 @@ std::string optionsReference() {
       << "(docs/planner-interface.md).\n\n"
       << optionsMarkdownTable(agents::bridgeOptionSpecs(), agents::BridgeOptions{}, &parameter)
       << "\n## Example planner nodes\n\n"
-      << "`~` parameters of `optimistic_planner_node` and `ompl_planner_node` (the frames they plan in):\n\n"
+      << "`~` parameters of `optimistic_planner_node`, `ompl_planner_node` and `mrpt_planner_node` (the frames\n"
+      << "they plan in):\n\n"
       << optionsMarkdownTable(planners::plannerFrameSpecs(), planners::PlannerFrames{}, &parameter)
       << "\nand the robot's body as they believe it:\n\n"
       << optionsMarkdownTable(planners::plannerBodySpecs(), planners::PlannerBody{}, &parameter)
       << "\nand of `ompl_planner_node` alone:\n\n"
-      << optionsMarkdownTable(planners::omplNodeOptionSpecs(), planners::OmplNodeParameters{}, &parameter);
+      << optionsMarkdownTable(planners::omplNodeOptionSpecs(), planners::OmplNodeParameters{}, &parameter)
+      << "\nand of `mrpt_planner_node` alone (its `~inflation` is MRPT's own robot radius):\n\n"
+      << optionsMarkdownTable(planners::mrptNodeOptionSpecs(), planners::MrptNodeParameters{}, &parameter);
   return out.str();
 }
 

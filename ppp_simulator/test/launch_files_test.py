@@ -147,7 +147,7 @@ class DefaultGraphTest(unittest.TestCase):
 
     def test_one_bridge_and_its_planner_per_planner_agent(self):
         planners = [a for a in self.agents if a['type'] == 'planner']
-        self.assertEqual(len(planners), 2)
+        self.assertEqual(len(planners), 3)
         bridges = sorted(n.namespace for n in self.config.nodes if n.type == 'planner_bridge_node')
         self.assertEqual(bridges, sorted('/%s/' % graph_name(a['name']) for a in planners))
         for agent in planners:
@@ -194,7 +194,7 @@ class DefaultGraphTest(unittest.TestCase):
         config, _ = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--planner',
                                'optimistic=ppp_agents/simple_planner.py', '--planner', 'ompl=')
         robots = sorted((n.namespace, n.type) for n in config.nodes if n.namespace.endswith('/robot/'))
-        self.assertEqual(robots, [('/optimistic/robot/', 'simple_planner.py')])
+        self.assertEqual(robots, [('/mrpt/robot/', 'mrpt_planner_node'), ('/optimistic/robot/', 'simple_planner.py')])
 
     def test_your_own_planner_gets_a_bridge_and_optionally_its_node(self):
         config_path = os.path.join(ROOT, 'config', 'planner_experiment.yaml')

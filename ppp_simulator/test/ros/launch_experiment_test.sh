@@ -5,7 +5,7 @@
 # configs naming an unknown agent type or an unreachable host stop before any node starts; launch/hunt.launch
 # hunts a small set with only its panel's nodes.
 # Then the default config with 2 runs (three sets of 60 PPPs from three generator nodes, one of them hunting
-# through the simulator; the ten agents with 2 runs each and the two example planners with their own 3):
+# through the simulator; the ten agents with 2 runs each and the three example planners with their own 3):
 # exactly sets x PPPs x agents x runs rows, the report and bag exist, and rviz (headless) shows the recorded map.
 # Usage: launch_experiment_test.sh DEVEL_DIR
 source "$(dirname "${BASH_SOURCE[0]}")/ros_harness.sh"
@@ -76,7 +76,7 @@ cp "$root/config/agents.yaml" "$root/config/generator.yaml" "$work/"
 timeout 600 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/out" config:="$work/experiment.yaml" \
   > "$work/launch.log" 2>&1
 rows=$(($(wc -l < "$work/out/results.csv") - 1))
-expected=$((3 * 60 * (10 * 2 + 2 * 3)))
+expected=$((3 * 60 * (10 * 2 + 3 * 3)))
 [ "$rows" -eq "$expected" ] && pass || fail "results.csv has $rows rows, expected $expected: $(tail -20 "$work/launch.log")"
 for f in summary.csv report.html report.md experiment.bag sets/turns/tree.html sets/difficulty/set.csv sets/hunted/set.csv; do
   [ -s "$work/out/$f" ] && pass || fail "the launched experiment did not write $f"
@@ -90,16 +90,16 @@ reasons() {
 ! grep -q ",agent_lost,[01]$\|,timeout,[01]$\|,planner_lost,[01]$\|,planner_timeout,[01]$\|,invalid_path,[01]$\|,invalid_action,[01]$" \
   "$work/out/results.csv" && pass || fail "healthy agents lost runs: $(grep "lost,[01]$\|timeout,[01]$\|invalid" "$work/out/results.csv" | head)
 $(grep "fails as" "$work/launch.log" | head)"
-# Measured: both planners pass all 540 runs. OMPL plans on the true map, so only its time limit (1 s per plan,
-# on a loaded machine) could make it miss a path; the optimistic planner's re-plans race the robot.
-for planner in ompl optimistic; do
+# Measured: the planners pass all 540 runs. OMPL plans on the true map, so only its time limit (1 s per plan,
+# on a loaded machine) could make it miss a path; the optimistic and MRPT planners' re-plans race the robot.
+for planner in ompl optimistic mrpt; do
   passes=$(grep -c ",$planner,.*,goal_reached,[01]$" "$work/out/results.csv")
   [ "$passes" -ge 531 ] && pass || fail "$planner passed $passes of 540 runs: $(reasons "$planner")"
 done
 
 # The same experiment in process gives the same rows (it runs no planner agents).
 "$devel/lib/ppp_simulator/ppp" experiment "$work/experiment.yaml" -o "$work/cli" --quiet > /dev/null 2>&1
-grep -v ",ompl,\|,optimistic," "$work/out/results.csv" > "$work/ros_built_in.csv"
+grep -v ",ompl,\|,optimistic,\|,mrpt," "$work/out/results.csv" > "$work/ros_built_in.csv"
 cmp -s "$work/ros_built_in.csv" "$work/cli/results.csv" && pass || fail "roslaunch and ppp experiment results differ"
 
 # rviz, headless, on the recorded bag: the picture must show the map (pixels checked, not just a file).
