@@ -13,6 +13,7 @@ set(PPP_SIMULATOR_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/scenario_runner.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/experiment_config.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/results_file.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/planner_moves.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/experiment_runner.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/canonical_order.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/experiment_report.cpp

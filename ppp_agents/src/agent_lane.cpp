@@ -20,6 +20,7 @@ AgentLane::AgentLane(const AgentConfig& config, const EpisodeOptions& options,
       batch_size_(isPlanner(config) ? 1 : batch_size),
       reads_window_(readsScanWindow(config)),
       collisions_end_(isPlanner(config) && !isPointRobot(options.robot_radius)),
+      keeps_actions_(isPlanner(config)),
       sensor_(SensorOptions{options.sensor_range, config.sensor_noise}) {
   if (batch_size < 1) throw InvalidArgument("batch_size", "expected at least 1, got " + std::to_string(batch_size));
   for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
@@ -41,7 +42,7 @@ void AgentLane::scans(std::vector<ScanRequest>* requests) {
                        Episode(set.set.problems[work.problem], set.grids[work.problem], sensor_, seed,
                                set.budgets[work.problem], options_.connectivity, false, windowsOf(set, work.problem),
                                motionOf(set, work.problem)),
-                       false});
+                       false, {}});
   }
   requests->resize(active_.size());
   for (std::size_t i = 0; i < active_.size(); ++i) {
@@ -115,10 +116,12 @@ std::vector<EpisodeResult> AgentLane::answer(const std::vector<MoveReply>& moves
     } else {
       const int bumps = a.episode.outcome().bumps;
       a.episode.apply(static_cast<Action>(move->action));
+      if (keeps_actions_) a.actions.push_back(static_cast<Action>(move->action));
       if (collisions_end_ && a.episode.outcome().bumps > bumps) a.episode.fail(reason::kCollision);
     }
     if (a.episode.done()) {
       finished.push_back(result(a.work, a.seed, a.episode.outcome()));
+      finished.back().actions = std::move(a.actions);
     } else {
       if (kept != i) active_[kept] = std::move(a);
       ++kept;
@@ -133,6 +136,7 @@ std::vector<EpisodeResult> AgentLane::failAll(const char* why) {
   for (Active& a : active_) {
     a.episode.fail(why);
     failed.push_back(result(a.work, a.seed, a.episode.outcome()));
+    failed.back().actions = std::move(a.actions);
   }
   active_.clear();
   for (const Work& work : queue_) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "ppp_agents/agent_registry.hpp"
@@ -26,7 +27,10 @@ FailureExample replayedRun(const ExperimentConfig& config, const agents::Prepare
   AnimationOptions animation;
   animation.max_frames = config.animation_frames;
   EpisodeAnimation run;
-  if (std::max(ppp.width, ppp.height) <= kReportAnimationMaxSide) {
+  if (agents::isPlanner(agent_config)) {  // another process's run: drawn from its recorded actions (replayable())
+    run = animateRecordedEpisode(ppp, set.grids[problem], agent_config, config.episode, row.seed, row.actions,
+                                 row.reason, animation, stop);
+  } else if (std::max(ppp.width, ppp.height) <= kReportAnimationMaxSide) {
     run = animateEpisode(ppp, set.grids[problem], agent_config, config.episode, row.seed, animation, stop);
   } else {
     run.outcome = agents::recordEpisode(ppp, set.grids[problem], agent_config, config.episode, row.seed);
@@ -42,14 +46,29 @@ FailureExample replayedRun(const ExperimentConfig& config, const agents::Prepare
   example.path = outcome.path;
   example.reason = outcome.reason;
   example.animation_gif = run.gif;
+  example.recorded = agents::isPlanner(agent_config);
   example.replay_flags = optionFlags(agents::agentPlayOptionSpecs(), agent_config, agents::AgentConfig{});
   const std::string episode_flags = optionFlags(episodeOptionSpecs(), config.episode, EpisodeOptions{});
   if (!episode_flags.empty()) example.replay_flags += " " + episode_flags;
   return example;
 }
 
-/// The first failing run of `agent` on PPP `problem` of `set`, replayed for its path and animated.
-FailureExample failingRun(const ExperimentConfig& config, const agents::PreparedSet& set, int problem,
+/// Whether the report shows runs of `agent`: not the control or the random baseline.
+bool replayedInReport(const agents::AgentConfig& agent) {
+  const agents::AgentType& type = agents::agentType(agent.type);
+  return !type.has(agents::AgentTrait::Control) && !type.has(agents::AgentTrait::Baseline);
+}
+
+/// Whether the run `row` of `agent` on `ppp` can be shown: any run of an agent played in process; a planner's
+/// when its actions were recorded (planner_moves.csv) and its map is small enough to animate.
+bool replayable(const agents::AgentConfig& agent, const agents::EpisodeResult& row, const Problem& ppp) {
+  return !agents::isPlanner(agent) || (static_cast<int>(row.actions.size()) == row.steps &&
+                                       std::max(ppp.width, ppp.height) <= kReportAnimationMaxSide);
+}
+
+/// The first failing run of `agent` on PPP `problem` of `set`, replayed for its path and animated; nothing when
+/// it cannot be (replayable()).
+std::optional<FailureExample> failingRun(const ExperimentConfig& config, const agents::PreparedSet& set, int problem,
                           const agents::AgentConfig& agent_config, const std::vector<ResultGroup>& groups,
                           const StopCheck& stop) {
   const agents::EpisodeResult* first_fail = nullptr;
@@ -60,13 +79,8 @@ FailureExample failingRun(const ExperimentConfig& config, const agents::Prepared
       first_fail = f;
     }
   }
+  if (!replayable(agent_config, *first_fail, set.set.problems[problem])) return std::nullopt;
   return replayedRun(config, set, problem, agent_config, *first_fail, stop);
-}
-
-/// Whether the report replays runs of `agent`: not the control, the random baseline or planner agents.
-bool replayedInReport(const agents::AgentConfig& agent) {
-  const agents::AgentType& type = agents::agentType(agent.type);
-  return !type.has(agents::AgentTrait::Control) && !type.has(agents::AgentTrait::Baseline) && !agents::isPlanner(agent);
 }
 
 }  // namespace
@@ -126,7 +140,8 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
   if (static_cast<int>(candidates.size()) > count) candidates.resize(static_cast<std::size_t>(count));
   std::vector<FailureExample> failures;
   for (const Candidate& c : candidates) {
-    failures.push_back(failingRun(config, sets[c.set], c.problem, *agent_by_name.at(c.worst_agent), groups, stop));
+    // Planners are not candidates, so every run here can be replayed.
+    failures.push_back(*failingRun(config, sets[c.set], c.problem, *agent_by_name.at(c.worst_agent), groups, stop));
   }
   return failures;
 }
@@ -157,7 +172,10 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
       const double rate = static_cast<double>(c.first) / c.second;
       if (rate < lowest) lowest = rate, at = where;
     }
-    if (at.first >= 0) worst.push_back(failingRun(config, sets[at.first], at.second, agent, groups, stop));
+    if (at.first < 0) continue;
+    if (std::optional<FailureExample> run = failingRun(config, sets[at.first], at.second, agent, groups, stop)) {
+      worst.push_back(std::move(*run));
+    }
   }
   return worst;
 }
@@ -176,6 +194,7 @@ std::vector<FailureExample> longestDetours(const ExperimentConfig& config, const
       if (set.name != worst->set) continue;
       const auto id = std::find(set.set.ids.begin(), set.set.ids.end(), worst->worst_problem);
       const int problem = static_cast<int>(id - set.set.ids.begin());
+      if (!replayable(agent, *worst->longest, set.set.problems[problem])) continue;
       examples.push_back(replayedRun(config, set, problem, agent, *worst->longest, stop));
     }
   }

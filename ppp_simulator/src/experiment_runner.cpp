@@ -16,6 +16,7 @@
 #include "ppp_simulator/canonical_order.hpp"
 #include "ppp_agents/episode_runner.hpp"
 #include "ppp_simulator/experiment_report.hpp"
+#include "ppp_simulator/planner_moves.hpp"
 #include "ppp_simulator/results_file.hpp"
 #include "ppp_generator/set_evolution.hpp"
 #include "ppp_generator/failure_fitness.hpp"
@@ -153,6 +154,7 @@ void finishExperiment(const ExperimentConfig& config, const std::string& config_
   stopIfAsked(stop);
   if (moved || rows.size() != read) results->rewrite(rows, stop);  // else the file holds these rows, in this order
   stopIfAsked(stop);
+  attachPlannerMoves((fs::path(dir) / kPlannerMovesFile).string(), &rows, stop);
   say(log, "writing the report");
   writeExperimentReport(dir, config, config_text, sets, rows, stop);
 }

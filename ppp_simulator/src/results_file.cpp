@@ -7,6 +7,7 @@
 #include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/text_file.hpp"
+#include "ppp_simulator/planner_moves.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -92,8 +93,21 @@ ResultsFile::ResultsFile(const std::string& path, const StopCheck& stop) : path_
 
 void ResultsFile::append(const std::vector<agents::EpisodeResult>& rows) {
   std::string block;
-  for (const agents::EpisodeResult& r : rows) agents::appendCsvRow(r, &block);
+  std::string moves;
+  for (const agents::EpisodeResult& r : rows) {
+    agents::appendCsvRow(r, &block);
+    if (!r.actions.empty()) moves += plannerMovesLine(r);
+  }
   std::lock_guard<std::mutex> lock(mutex_);
+  if (!moves.empty()) {
+    // The moves first: a run whose row is written has its moves on file.
+    if (moves_out_ == nullptr) {
+      const std::string path = (std::filesystem::path(path_).parent_path() / kPlannerMovesFile).string();
+      moves_out_ = std::make_unique<AppendFile>(path, false);
+      if (moves_out_->size() == 0) moves_out_->append(plannerMovesHeader() + '\n');
+    }
+    moves_out_->append(moves);
+  }
   out_->append(block);
 }
 

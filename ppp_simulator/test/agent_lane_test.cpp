@@ -179,6 +179,36 @@ TEST(AgentLaneTest, APlannerDrivingARobotWithABodyIntoAWallEndsItsRunAsACollisio
   EXPECT_EQ(endOfNorth(config("bumper")), "still running");  // a built-in agent bumps and goes on, as a point would
 }
 
+// A planner's run cannot be replayed, so its result carries the actions it took (for planner_moves.csv); a
+// built-in agent's carries none (it is replayed from its seed).
+TEST(AgentLaneTest, APlannersResultsCarryTheirActions) {
+  ProblemSet set;
+  set.ids = {"open"};
+  set.problems = {Problem::empty(3, 3, 1)};
+  const std::vector<agents::PreparedSet> sets = {agents::prepareSet("open", set, EpisodeOptions{})};
+  const auto play = [&](const agents::AgentConfig& agent, const std::vector<Action>& moves) {
+    agents::AgentLane lane(agent, EpisodeOptions{}, sets, [](int, int, int) { return 1u; }, 1, 1);
+    std::vector<protocol::ScanRequest> scans;
+    std::vector<agents::EpisodeResult> ended;
+    for (const Action a : moves) {
+      lane.scans(&scans);
+      ended = lane.answer({{scans[0].episode, scans[0].step, static_cast<int>(a)}}, reason::kTimeout);
+    }
+    if (ended.empty()) ended = lane.failAll(reason::kNoPath);  // a planner that gave up mid-run
+    return ended.at(0);
+  };
+  const std::vector<Action> to_goal = {Action::East, Action::Stay, Action::North, Action::East, Action::South,
+                                       Action::South};
+  const agents::AgentConfig planner{"mine", agents::kPlannerType, 0, 0.0};
+  const agents::EpisodeResult passed = play(planner, to_goal);
+  EXPECT_TRUE(passed.passed);
+  EXPECT_EQ(passed.actions, to_goal);  // the stay and the bump against the top edge included
+  const agents::EpisodeResult stopped = play(planner, {Action::East, Action::East});
+  EXPECT_EQ(stopped.reason, reason::kNoPath);
+  EXPECT_EQ(stopped.actions, (std::vector<Action>{Action::East, Action::East}));
+  EXPECT_TRUE(play(config("bumper"), to_goal).actions.empty());
+}
+
 TEST(AgentLaneTest, ASilentAgentIsGivenUpAfterSomeUnansweredBatches) {
   agents::AgentLane lane = experimentLane(config("random"), EpisodeOptions{}, smallSets(), 5, 2, {}, 4);
   std::vector<protocol::ScanRequest> scans;

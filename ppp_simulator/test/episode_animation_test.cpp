@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "ppp_core/episode_reason.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/gif_animation.hpp"
 #include "ppp_core/random_problem.hpp"
@@ -92,20 +93,25 @@ TEST(EpisodeAnimationTest, TheSameSeedGivesTheSameBytes) {
   EXPECT_NE(animateEpisode(problem, grid, agentConfig("random"), EpisodeOptions{}, 12).gif, once);
 }
 
-/// Where the agent stands after each step of the run with `seed` (entry 0: the start), stepping Episode directly.
-std::vector<Cell> positionsAfterEachStep(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
-                                         std::uint64_t seed) {
+/// The run of `config` with `seed`, stepping Episode directly: its actions, and where the agent stands after each
+/// step (entry 0: the start).
+struct PlayedRun {
+  std::vector<Action> actions;
+  std::vector<Cell> positions;
+};
+PlayedRun playRun(const Problem& problem, const Grid& grid, const agents::AgentConfig& config, std::uint64_t seed) {
   const EpisodeOptions options;
   agents::EpisodeRunner runner(config, options);
   auto agent = agents::makeAgent(config);
   agent->reset(agents::episodeInfo(problem, grid, config, seed, options.connectivity));
   Episode episode(problem, grid, runner.sensor(), seed, options.budget, options.connectivity, true);
-  std::vector<Cell> positions = {problem.start};
+  PlayedRun run{{}, {problem.start}};
   while (!episode.done()) {
-    episode.apply(agent->act(episode.scan()));
-    positions.push_back(episode.outcome().path.back());
+    run.actions.push_back(agent->act(episode.scan()));
+    episode.apply(run.actions.back());
+    run.positions.push_back(episode.outcome().path.back());
   }
-  return positions;
+  return run;
 }
 
 TEST(EpisodeAnimationTest, LongEpisodesShowEveryStrideThStepAndTheLast) {
@@ -120,7 +126,7 @@ TEST(EpisodeAnimationTest, LongEpisodesShowEveryStrideThStepAndTheLast) {
   EXPECT_EQ(a.frames, 11);  // steps 0, 30, ..., 300
   const GifMovie capped = decodeGif(a.gif, "capped.gif");
   ASSERT_EQ(capped.frames.size(), 11u);
-  const std::vector<Cell> at = positionsAfterEachStep(problem, grid, agentConfig("random"), 5);
+  const std::vector<Cell> at = playRun(problem, grid, agentConfig("random"), 5).positions;
   for (int f = 0; f < 11; ++f) {
     EXPECT_EQ(agentCells(capped, f, problem), std::vector<Cell>{at[30 * f]}) << "frame " << f << ": step " << 30 * f;
   }
@@ -131,7 +137,7 @@ TEST(EpisodeAnimationTest, LongEpisodesShowEveryStrideThStepAndTheLast) {
   EXPECT_EQ(b.stride, 13);         // ceil(38 / 3)
   EXPECT_EQ(b.frames, 4);          // steps 0, 13, 26 and 38
   const GifMovie uneven = decodeGif(b.gif, "uneven.gif");
-  const std::vector<Cell> route = positionsAfterEachStep(problem, grid, agentConfig("astar"), 5);
+  const std::vector<Cell> route = playRun(problem, grid, agentConfig("astar"), 5).positions;
   const int shown[] = {0, 13, 26, 38};
   ASSERT_EQ(uneven.frames.size(), 4u);
   for (int f = 0; f < 4; ++f) {
@@ -196,6 +202,56 @@ TEST(EpisodeAnimationTest, AStopCheckIsAskedBeforeEachFrame) {
                               stop_at_the_fifth),
                Interrupted);
   EXPECT_EQ(asked, 5);
+}
+
+// A recorded run drawn from its actions is the played run drawn: the same bytes, for a run that reaches the goal
+// (wall follower) and one that spends its budget (bumper).
+TEST(EpisodeAnimationTest, ARecordedRunIsDrawnAsThePlayedOne) {
+  const Problem problem = obstacleProblem();
+  const Grid grid = decodeGrid(problem);
+  for (const std::string type : {"wall_follower_left", "bumper"}) {
+    const EpisodeAnimation played = animateEpisode(problem, grid, agentConfig(type), EpisodeOptions{}, 3);
+    const std::vector<Action> actions = playRun(problem, grid, agentConfig(type), 3).actions;
+    const EpisodeAnimation recorded = animateRecordedEpisode(problem, grid, agentConfig(type), EpisodeOptions{}, 3,
+                                                             actions, played.outcome.reason);
+    EXPECT_EQ(recorded.gif, played.gif) << type;
+    EXPECT_EQ(recorded.outcome.path, played.outcome.path) << type;
+    EXPECT_EQ(recorded.outcome.reason, played.outcome.reason) << type;
+  }
+}
+
+// A planner's run that ended early (its planner found no path at step 3) ends there with that reason; actions
+// that do not make the recorded run, and reasons no episode ends for, are refused.
+TEST(EpisodeAnimationTest, ARecordedRunEndsWhereAndWhyItsRowSays) {
+  const Problem problem = Problem::empty(5, 5, 1);
+  const Grid grid = decodeGrid(problem);
+  const std::vector<Action> three = {Action::East, Action::East, Action::South};
+  const EpisodeAnimation a =
+      animateRecordedEpisode(problem, grid, agentConfig("explorer"), EpisodeOptions{}, 1, three, "no_path");
+  EXPECT_EQ(a.outcome.steps, 3);
+  EXPECT_EQ(a.outcome.reason, std::string(reason::kNoPath));
+  EXPECT_EQ(a.outcome.path.back(), (Cell{2, 1}));
+  EXPECT_EQ(decodeGif(a.gif, "no_path.gif").frames.size(), 4u);
+  // The row says the goal was reached, but three moves do not reach it.
+  EXPECT_THROW(animateRecordedEpisode(problem, grid, agentConfig("explorer"), EpisodeOptions{}, 1, three,
+                                      "goal_reached"),
+               Error);
+  // Eight moves reach the goal; a row saying the run ended after three does not match them.
+  std::vector<Action> eight(4, Action::East);
+  eight.insert(eight.end(), 4, Action::South);
+  EXPECT_EQ(animateRecordedEpisode(problem, grid, agentConfig("explorer"), EpisodeOptions{}, 1, eight, "goal_reached")
+                .outcome.steps,
+            8);
+  eight.push_back(Action::North);  // a move after the goal: the world ended the run first
+  EXPECT_THROW(animateRecordedEpisode(problem, grid, agentConfig("explorer"), EpisodeOptions{}, 1, eight,
+                                      "goal_reached"),
+               Error);
+  try {
+    animateRecordedEpisode(problem, grid, agentConfig("explorer"), EpisodeOptions{}, 1, three, "lost_in_space");
+    ADD_FAILURE() << "an unknown reason was accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.name(), "reason");
+  }
 }
 
 TEST(EpisodeAnimationTest, RejectsBadOptionsByName) {

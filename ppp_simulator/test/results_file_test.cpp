@@ -6,9 +6,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <utility>
 
 #include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_simulator/planner_moves.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -91,6 +94,68 @@ TEST_F(ResultsFileTest, ForeignFilesAreRefused) {
   } catch (const ParseError& e) {
     EXPECT_EQ(std::string(e.what()), path_ + ":2: run: expected a whole number, got 'zero'");
   }
+}
+
+/// Row `run` of the planner agent `mine`, with one action per step (E, E, S, ...).
+agents::EpisodeResult plannerRow(int run, int steps) {
+  agents::EpisodeResult r = row(run, false);
+  r.agent = "mine";
+  r.steps = steps;
+  r.reason = "no_path";
+  for (int i = 0; i < steps; ++i) r.actions.push_back(i % 3 == 2 ? Action::South : Action::East);
+  return r;
+}
+
+TEST_F(ResultsFileTest, PlannerRunsKeepTheirMovesBesideTheResults) {
+  const std::string moves_path = (fs::path(path_).parent_path() / kPlannerMovesFile).string();
+  fs::remove(moves_path);
+  {
+    ResultsFile file(path_);
+    file.append({row(0, true)});  // no actions: no moves file yet
+    EXPECT_FALSE(fs::exists(moves_path));
+    file.append({plannerRow(0, 4), row(1, true), plannerRow(1, 2)});
+  }
+  std::ifstream in(moves_path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text, "set,problem,agent,run,moves\nturns,ppp_000,mine,0,2232\nturns,ppp_000,mine,1,22\n");
+  // Read back onto the rows of results.csv, which hold no actions: each planner row gets its own.
+  std::vector<agents::EpisodeResult> rows = readResultsFile(path_);
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_TRUE(rows[2].actions.empty());
+  attachPlannerMoves(moves_path, &rows);
+  EXPECT_EQ(rows[1].actions, plannerRow(0, 4).actions);
+  EXPECT_TRUE(rows[2].actions.empty());
+  EXPECT_EQ(rows[3].actions, plannerRow(1, 2).actions);
+  fs::remove(moves_path);
+}
+
+TEST_F(ResultsFileTest, PlannerMovesOfARunPlayedAgainAndBadLinesAreHandled) {
+  const std::string moves_path = (fs::temp_directory_path() / "planner_moves_test.csv").string();
+  // Run 0 played twice (the last line stands), run 1's line has one action too many for its row (stale: left
+  // out), and a half-written last line (the process died mid-write) is left out.
+  std::ofstream(moves_path) << "set,problem,agent,run,moves\nturns,ppp_000,mine,0,11\nturns,ppp_000,mine,0,222\n"
+                            << "turns,ppp_000,mine,1,333\nturns,ppp_000,mine,2,4";
+  std::vector<agents::EpisodeResult> rows = {plannerRow(0, 3), plannerRow(1, 2), plannerRow(2, 1)};
+  for (agents::EpisodeResult& r : rows) r.actions.clear();
+  attachPlannerMoves(moves_path, &rows);
+  EXPECT_EQ(rows[0].actions, std::vector<Action>(3, Action::East));
+  EXPECT_TRUE(rows[1].actions.empty());
+  EXPECT_TRUE(rows[2].actions.empty());
+  for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
+           {"set,problem,agent,run\n", ":1: header: expected 'set,problem,agent,run,moves'"},
+           {"set,problem,agent,run,moves\nturns,ppp_000,mine,0,129\n", ":2: moves: expected action digits 0 to 8, got '9'"},
+           {"set,problem,agent,run,moves\nturns,ppp_000,mine,first,1\n", ":2: run: expected a run number, got 'first'"},
+           {"set,problem,agent,run,moves\nturns,ppp_000,mine,0\n", ":2: moves: expected 5 fields, got 4"}}) {
+    std::ofstream(moves_path) << text;
+    try {
+      attachPlannerMoves(moves_path, &rows);
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const ParseError& e) {
+      EXPECT_EQ(std::string(e.what()), moves_path + message);
+    }
+  }
+  fs::remove(moves_path);
+  attachPlannerMoves(moves_path, &rows);  // no file: nothing to attach, no error
 }
 
 TEST(ResultsCsvText, RowsOfTextWithErrorsNamingTheGivenPath) {

@@ -9,4 +9,12 @@ const char* reason::agentReportedReason(const std::string& text) {
   return nullptr;
 }
 
+const char* reason::reasonNamed(const std::string& text) {
+  for (const char* r : {kGoalReached, kBudgetExhausted, kTimeout, kAgentLost, kInvalidAction, kNoPath, kInvalidPath,
+                        kPlannerTimeout, kPlannerLost, kCollision}) {
+    if (text == r) return r;
+  }
+  return nullptr;
+}
+
 }  // namespace ppp

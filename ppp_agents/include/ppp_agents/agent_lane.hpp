@@ -71,6 +71,7 @@ class AgentLane {
     std::uint64_t seed;
     Episode episode;
     bool started;
+    std::vector<Action> actions;  // a planner's run: its actions so far
   };
   EpisodeResult result(const Work& work, std::uint64_t seed, const EpisodeOutcome& outcome) const;
 
@@ -81,6 +82,7 @@ class AgentLane {
   int batch_size_;
   bool reads_window_;
   bool collisions_end_;  // a planner driving a robot with a body: a bump is a collision that ends the run
+  bool keeps_actions_;   // a planner: its runs cannot be replayed, so each result carries its actions
   SensorModel sensor_;
   std::deque<Work> queue_;
   std::vector<Active> active_;

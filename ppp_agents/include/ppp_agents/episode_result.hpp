@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ppp_agents/protocol/batch_types.hpp"
+#include "ppp_core/action.hpp"
 
 namespace ppp {
 namespace agents {
@@ -25,6 +26,9 @@ struct EpisodeResult {
                               ///< length under connectivity 8.
   std::string reason;       ///< One of the reason:: constants.
   bool soft_failure = false;  ///< Passed, but on a path longer than the soft failure ratio x the optimal length.
+  /// Planner agents played by an AgentLane: every action of the run in order (not in results.csv; the simulator
+  /// keeps them in planner_moves.csv so the report can show the run); empty otherwise.
+  std::vector<Action> actions;
 };
 
 /// The results.csv header: set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,

@@ -25,9 +25,10 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
                                             const std::vector<ResultGroup>& groups, int count,
                                             const StopCheck& stop = {});
 
-/// Per agent (but the astar control, the random baseline and planners), the first failing run on its worst PPP
-/// (lowest pass rate over every set; the first of equals), replayed for its path and animated as above; agents
-/// that never fail are left out. @throws Interrupted as hardestFailures().
+/// Per agent (but the astar control and the random baseline), the first failing run on its worst PPP (lowest pass
+/// rate over every set; the first of equals), replayed for its path and animated as above (a planner's from the
+/// actions its row carries, planner_moves.csv; left out when it has none or the map is too large to animate);
+/// agents that never fail are left out. @throws Interrupted as hardestFailures().
 std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets,
                                           const std::vector<ResultGroup>& groups, const StopCheck& stop = {});
 

@@ -44,8 +44,9 @@ class ResultsFile {
   const std::set<RunKey>& done() const { return done_; }
   /// How many runs present when the file was opened were lost (and are not done).
   std::size_t lostRuns() const { return lost_.size(); }
-  /// Appends rows in one write; safe to call from several threads. @throws IoError naming the file and the
-  /// system's reason (the file is then as before the call).
+  /// Appends rows in one write, and the actions of those that carry any (planner runs) to planner_moves.csv
+  /// beside the file (planner_moves.hpp); safe to call from several threads. @throws IoError naming the file and
+  /// the system's reason (the file is then as before the call).
   void append(const std::vector<agents::EpisodeResult>& rows);
   /// Rewrites the file atomically with `rows` in the given order, asking `stop` as it goes (the file is then
   /// as before). @throws IoError, Interrupted.
@@ -58,6 +59,7 @@ class ResultsFile {
   std::set<RunKey> lost_;
   std::mutex mutex_;
   std::unique_ptr<AppendFile> out_;
+  std::unique_ptr<AppendFile> moves_out_;  // opened at the first row with actions
 };
 
 /// Reads every row of a results.csv, asking `stop` as it goes. @throws IoError, ParseError, Interrupted.

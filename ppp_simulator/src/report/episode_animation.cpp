@@ -1,13 +1,16 @@
 #include "ppp_simulator/report/episode_animation.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "ppp_agents/agent_memory.hpp"
 #include "ppp_agents/agent_registry.hpp"
 #include "ppp_core/canvas.hpp"
+#include "ppp_core/episode_reason.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/footprint.hpp"
 #include "ppp_core/gif_animation.hpp"
@@ -175,22 +178,25 @@ void AnimationOptions::validate() const {
   checkMilliseconds(last_frame_ms, "last_frame_ms");
 }
 
-EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
-                                const EpisodeOptions& options, std::uint64_t run_seed,
-                                const AnimationOptions& animation, const StopCheck& stop) {
-  animation.validate();
+namespace {
+
+/// The action for a step's scan, or nothing when a recorded run ended there for its recorded reason.
+using NextAction = std::function<std::optional<Action>(const Scan&)>;
+
+/// Plays the episode whose actions `next` gives (ending it with `end_reason` where `next` gives none) and draws
+/// it frame by frame, with frames spread over its `steps` steps. @throws Error when it takes another number of
+/// steps; as animateEpisode otherwise.
+EpisodeAnimation drawEpisode(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
+                             const EpisodeOptions& options, std::uint64_t run_seed, int steps, const NextAction& next,
+                             const char* end_reason, const AnimationOptions& animation, const StopCheck& stop) {
   const FramePainter painter(problem, grid, cellPixels(problem, animation));
-  agents::EpisodeRunner runner(config, options);
-  std::unique_ptr<agents::Agent> agent = agents::makeAgent(config);
+  const agents::EpisodeRunner runner(config, options);
   EpisodeAnimation result;
-  // A first run counts the steps, so the frames can be spread over the episode before any is drawn.
-  const int steps = runner.run(problem, grid, *agent, run_seed).steps;
   result.stride = std::max(1, (steps + animation.max_frames - 2) / (animation.max_frames - 1));
 
   Grid space;
   const Grid* motion = &motionGrid(grid, options.robot_radius, &space);
   const agents::EpisodeInfo info = agents::episodeInfo(problem, grid, config, run_seed, options.connectivity, motion);
-  agent->reset(info);
   Episode episode(problem, grid, runner.sensor(), run_seed, episodeBudget(options, problem, grid), options.connectivity,
                   true, nullptr, motion);
   std::unique_ptr<agents::AgentMemory> memory;
@@ -205,6 +211,15 @@ EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const 
   Cell position = problem.start;
   for (;;) {
     const Scan scan = episode.scan();
+    std::optional<Action> action;
+    if (!episode.done()) {
+      action = next(scan);
+      if (!action && end_reason == nullptr) {
+        throw Error("the recorded run of " + config.name + " with seed " + std::to_string(run_seed) +
+                    " ends at step " + std::to_string(episode.step()) + " before its episode does");
+      }
+      if (!action) episode.fail(end_reason);
+    }
     const bool last = episode.done();
     if (memory != nullptr) memory->update(scan);  // the last one only for the picture: the agent never acts on it
     if (last || episode.step() % result.stride == 0) {
@@ -213,12 +228,11 @@ EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const 
       gif.addFrame(painter.paint(state), (last ? animation.last_frame_ms : animation.frame_ms) / 10);
     }
     if (last) break;
-    const Action action = agent->act(scan);
     const int bumps_before = episode.outcome().bumps;
-    episode.apply(action);
+    episode.apply(*action);
     const Cell now = episode.outcome().path.back();
-    if (episode.outcome().bumps > bumps_before) bumps.add(Bump{position, action}, moveKey(problem, position, action));
-    if (now != position) trail.add({position, now}, moveKey(problem, position, action));
+    if (episode.outcome().bumps > bumps_before) bumps.add(Bump{position, *action}, moveKey(problem, position, *action));
+    if (now != position) trail.add({position, now}, moveKey(problem, position, *action));
     position = now;
   }
   if (episode.outcome().steps != steps) {
@@ -231,6 +245,41 @@ EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const 
   result.height = painter.height();
   result.gif = gif.encode();
   return result;
+}
+
+}  // namespace
+
+EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
+                                const EpisodeOptions& options, std::uint64_t run_seed,
+                                const AnimationOptions& animation, const StopCheck& stop) {
+  animation.validate();
+  agents::EpisodeRunner runner(config, options);
+  std::unique_ptr<agents::Agent> agent = agents::makeAgent(config);
+  // A first run counts the steps, so the frames can be spread over the episode before any is drawn.
+  const int steps = runner.run(problem, grid, *agent, run_seed).steps;
+  Grid space;
+  agent->reset(agents::episodeInfo(problem, grid, config, run_seed, options.connectivity,
+                                   &motionGrid(grid, options.robot_radius, &space)));
+  return drawEpisode(problem, grid, config, options, run_seed, steps,
+                     [&agent](const Scan& scan) { return std::optional<Action>(agent->act(scan)); }, nullptr,
+                     animation, stop);
+}
+
+EpisodeAnimation animateRecordedEpisode(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
+                                        const EpisodeOptions& options, std::uint64_t run_seed,
+                                        const std::vector<Action>& actions, const std::string& reason,
+                                        const AnimationOptions& animation, const StopCheck& stop) {
+  animation.validate();
+  const char* end_reason = reason::reasonNamed(reason);
+  if (end_reason == nullptr) throw InvalidArgument("reason", "not a reason an episode ends for: '" + reason + "'");
+  // The world ends a run on the goal or at the budget: the actions must take the replay there by themselves.
+  if (reason == reason::kGoalReached || reason == reason::kBudgetExhausted) end_reason = nullptr;
+  std::size_t next = 0;
+  return drawEpisode(problem, grid, config, options, run_seed, static_cast<int>(actions.size()),
+                     [&](const Scan&) {
+                       return next < actions.size() ? std::optional<Action>(actions[next++]) : std::nullopt;
+                     },
+                     end_reason, animation, stop);
 }
 
 }  // namespace simulator

@@ -336,6 +336,7 @@ std::string animationGuide(const std::vector<FailureExample>& examples) {
 }
 
 std::string replayCommand(const FailureExample& failure, const Picture& picture) {
+  if (failure.recorded) return "its moves: planner_moves.csv, run " + std::to_string(failure.run);
   const std::string flags = failure.replay_flags.empty() ? "--agent " + shellWord(failure.agent) : failure.replay_flags;
   return "ppp replay " + shellWord(picture.ppp_file) + " " + flags + " --seed " + std::to_string(failure.seed) +
          " -o path.png";
@@ -613,8 +614,8 @@ void faultSection(const ReportInput& input, const std::vector<Picture>& pictures
   out->html += "<h2>Faults found</h2>\n";
   const std::string intro =
       "Per agent and set: the PPPs the agent passes in fewer than half of its runs, out of the set's PPPs. "
-      "Below, every agent that fails somewhere with a failing run on its worst PPP (not the control, the random "
-      "baseline or planner agents, whose runs cannot be replayed in process).";
+      "Below, every agent that fails somewhere with a failing run on its worst PPP (not the control or the random "
+      "baseline; a planner's run is drawn from its recorded moves, planner_moves.csv).";
   const std::string text = intro + animationGuide(input.worst);
   out->md += mdText(text) + "\n\n";
   out->html += "<p>" + escapeMarkup(text) + "</p>\n";

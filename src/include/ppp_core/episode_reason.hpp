@@ -19,6 +19,8 @@ constexpr const char* kCollision = "collision";  ///< Fail (planner, robot with 
 /// The reason constant equal to `text` among those an agent may report itself (the four planner ones), or
 /// nullptr.
 const char* agentReportedReason(const std::string& text);
+/// The reason constant equal to `text` among all of them, or nullptr.
+const char* reasonNamed(const std::string& text);
 }  // namespace reason
 
 }  // namespace ppp

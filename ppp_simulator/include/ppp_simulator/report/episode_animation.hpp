@@ -2,8 +2,10 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "ppp_agents/agent_config.hpp"
+#include "ppp_core/action.hpp"
 #include "ppp_core/grid.hpp"
 #include "ppp_core/picture.hpp"
 #include "ppp_core/problem.hpp"
@@ -63,6 +65,16 @@ struct EpisodeAnimation {
 EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
                                 const EpisodeOptions& options, std::uint64_t run_seed,
                                 const AnimationOptions& animation = {}, const StopCheck& stop = {});
+
+/// Draws a recorded run as animateEpisode draws a played one: the episode of `config` with `run_seed` (its scans,
+/// for the memory shading) driven by `actions`, ended where they end for `reason` (results.csv's reason) unless
+/// the world ended it (the goal, the budget). For the runs of planner agents, which cannot be replayed.
+/// @throws InvalidArgument for an unknown reason or bad options; Error when the actions do not make that run
+/// (the world ends it before or after they do); Interrupted as animateEpisode.
+EpisodeAnimation animateRecordedEpisode(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
+                                        const EpisodeOptions& options, std::uint64_t run_seed,
+                                        const std::vector<Action>& actions, const std::string& reason,
+                                        const AnimationOptions& animation = {}, const StopCheck& stop = {});
 
 }  // namespace simulator
 }  // namespace ppp

@@ -28,6 +28,8 @@ struct FailureExample {
   std::string replay_flags;     ///< `ppp replay` flags recreating the agent configuration (e.g. "--agent explorer
                                 ///< --memory 5x5"); empty means "--agent <agent>".
   std::string animation_gif;    ///< The run frame by frame (animateEpisode's GIF bytes); empty when there is none.
+  bool recorded = false;        ///< A planner's run, drawn from its moves in planner_moves.csv (`ppp replay`
+                                ///< cannot play a planner).
 };
 
 /// What the report says about a set besides its pass rates.
