@@ -25,29 +25,39 @@ def wait_for(kind, stamp):
     return newest[kind]
 
 
-def shortest_path(grid, start, goal):
+def path_to(came_from, cell):
+    """The cells from the search's start to `cell`, following `came_from` (each cell's predecessor) back."""
+    path = []
+    while cell is not None:
+        path.append(cell)
+        cell = came_from[cell]
+    return path[::-1]
+
+
+def shortest_path(grid, start, goal, neighbours=None):
     """Breadth-first search: the (column, row) cells from start to goal, or [] when the goal is walled off.
-    Row 0 is the bottom row; cells of occupancy 50 or more are obstacles, unknown (-1) counts as free."""
+    Row 0 is the bottom row; cells of occupancy 50 or more are obstacles, unknown (-1) counts as free.
+    `neighbours(cell)` gives the cells a step may reach (default: the four beside it on the map)."""
     width, height = grid.info.width, grid.info.height
+    if neighbours is None:
+        neighbours = lambda cell: [(c, r) for c, r in ((cell[0] + 1, cell[1]), (cell[0] - 1, cell[1]),
+                                                       (cell[0], cell[1] + 1), (cell[0], cell[1] - 1))
+                                   if 0 <= c < width and 0 <= r < height]
     came_from = {start: None}
     queue = deque([start])
     while queue:
         cell = queue.popleft()
         if cell == goal:
-            path = []
-            while cell is not None:
-                path.append(cell)
-                cell = came_from[cell]
-            return path[::-1]
-        column, row = cell
-        for c, r in ((column + 1, row), (column - 1, row), (column, row + 1), (column, row - 1)):
-            if 0 <= c < width and 0 <= r < height and (c, r) not in came_from and grid.data[r * width + c] < 50:
+            return path_to(came_from, goal)
+        for c, r in neighbours(cell):
+            if (c, r) not in came_from and grid.data[r * width + c] < 50:
                 came_from[(c, r)] = cell
                 queue.append((c, r))
     return []
 
 
-def on_goal(goal):
+def on_goal(goal, search=shortest_path):
+    """Answers a goal with the path `search(grid, start, goal)` gives on the newest map."""
     grid = wait_for("map", goal.header.stamp)
     odom = wait_for("odom", goal.header.stamp)
     if grid is None or odom is None:
@@ -61,7 +71,7 @@ def on_goal(goal):
     path = Path()
     path.header.frame_id = "map"
     path.header.stamp = max(goal.header.stamp, grid.header.stamp)
-    for column, row in shortest_path(grid, cell_of(odom.pose.pose.position), cell_of(goal.pose.position)):
+    for column, row in search(grid, cell_of(odom.pose.pose.position), cell_of(goal.pose.position)):
         pose = PoseStamped()
         pose.header = path.header
         pose.pose.position.x = (column + 0.5) * size
@@ -71,11 +81,19 @@ def on_goal(goal):
     plan_publisher.publish(path)
 
 
-if __name__ == "__main__":
-    rospy.init_node("simple_planner")
+def serve(name, search=shortest_path, read_parameters=lambda: None):
+    """Runs the node `name`, answering every goal with `search`, until ROS shuts down; `read_parameters` runs
+    once the node is up, to read its `~` parameters."""
+    global plan_publisher
+    rospy.init_node(name)
+    read_parameters()
     plan_publisher = rospy.Publisher("plan", Path, queue_size=1)
     # tcp_nodelay: without it TCP may hold each small message back for 40 ms.
     rospy.Subscriber("map", OccupancyGrid, lambda message: newest.update(map=message), tcp_nodelay=True)
     rospy.Subscriber("odom", Odometry, lambda message: newest.update(odom=message), tcp_nodelay=True)
-    rospy.Subscriber("move_base_simple/goal", PoseStamped, on_goal, tcp_nodelay=True)
+    rospy.Subscriber("move_base_simple/goal", PoseStamped, lambda goal: on_goal(goal, search), tcp_nodelay=True)
     rospy.spin()
+
+
+if __name__ == "__main__":
+    serve("simple_planner")
