@@ -97,6 +97,13 @@ for planner in ompl optimistic mrpt; do
   [ "$passes" -ge 531 ] && pass || fail "$planner passed $passes of 540 runs: $(reasons "$planner")"
 done
 
+# Every planner run that moved has its moves recorded, one action per step (the report draws planner runs from
+# them); a report entry of a planner says so.
+unmatched=$(awk -F, 'NR == FNR { if (FNR > 1) moves[$1 "," $2 "," $3 "," $4] = length($5); next }
+  FNR > 1 && ($3 == "ompl" || $3 == "optimistic" || $3 == "mrpt") && $7 > 0 && moves[$1 "," $2 "," $3 "," $4] != $7' \
+  "$work/out/planner_moves.csv" "$work/out/results.csv" | wc -l)
+[ "$unmatched" -eq 0 ] && pass || fail "$unmatched planner runs without their moves in planner_moves.csv"
+
 # The same experiment in process gives the same rows (it runs no planner agents).
 "$devel/lib/ppp_simulator/ppp" experiment "$work/experiment.yaml" -o "$work/cli" --quiet > /dev/null 2>&1
 grep -v ",ompl,\|,optimistic,\|,mrpt," "$work/out/results.csv" > "$work/ros_built_in.csv"
