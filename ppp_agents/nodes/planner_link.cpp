@@ -43,15 +43,18 @@ PlannerLink::PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters
   options.transport_hints = ros::TransportHints().tcpNoDelay();  // Nagle would hold each path back 40 ms
   plan_ = nh_.subscribe(options);
   // The robot's body as costmaps read it, in metres, for planners that plan with a footprint.
-  nh_.setParam(ppp_msgs::topics::kPlannerRobotRadius, parameters_.robot_radius * parameters_.resolution);
-  XmlRpc::XmlRpcValue footprint;
-  footprint.setSize(0);
-  int vertex = 0;
-  for (const auto& [x, y] : footprintPolygon(parameters_.robot_radius * parameters_.resolution)) {
-    footprint[vertex][0] = x;
-    footprint[vertex++][1] = y;
+  const double radius = parameters_.robot_radius * parameters_.resolution;
+  nh_.setParam(ppp_msgs::topics::kPlannerRobotRadius, radius);
+  if (parameters_.robot_radius > 0) {
+    XmlRpc::XmlRpcValue footprint;
+    footprint.setSize(0);
+    int vertex = 0;
+    for (const auto& [x, y] : footprintPolygon(radius)) {
+      footprint[vertex][0] = x;
+      footprint[vertex++][1] = y;
+    }
+    nh_.setParam(ppp_msgs::topics::kPlannerFootprint, footprint);
   }
-  if (parameters_.robot_radius > 0) nh_.setParam(ppp_msgs::topics::kPlannerFootprint, footprint);
   spinner_.start();
 }
 

@@ -25,7 +25,8 @@ GridMap::GridMap(int width, int height, double resolution, const std::vector<std
         "map data", "expected width*height = " + std::to_string(cells) + " values, got " + std::to_string(data.size()));
   }
   passable_.assign(cells, 0);
-  Grid obstacles(width, height);  // the known obstacles, y down, for the inflation
+  const bool inflating = !isPointRobot(inflation);
+  Grid obstacles = inflating ? Grid(width, height) : Grid();  // the known obstacles, y down, for the inflation
   for (std::size_t i = 0; i < cells; ++i) {
     const int value = data[i];
     if (value < kUnknownOccupancy || value > 100) {
@@ -36,9 +37,9 @@ GridMap::GridMap(int width, int height, double resolution, const std::vector<std
     const Cell cell = frame_.cellOfMapRowColumn(static_cast<int>(i % static_cast<std::size_t>(width)),
                                                 static_cast<int>(i / static_cast<std::size_t>(width)));
     passable_[static_cast<std::size_t>(index(cell))] = free ? 1 : 0;
-    obstacles.setObstacle(cell, value >= kObstacleOccupancy);
+    if (inflating) obstacles.setObstacle(cell, value >= kObstacleOccupancy);
   }
-  if (isPointRobot(inflation)) return;
+  if (!inflating) return;
   const Grid space = configurationSpace(obstacles, inflation);
   for (int i = 0; i < static_cast<int>(cells); ++i) passable_[static_cast<std::size_t>(i)] &= space.isFree(space.cellAt(i)) ? 1 : 0;
 }

@@ -1,20 +1,28 @@
 #include "ppp_core/episode_reason.hpp"
 
+#include <initializer_list>
+
 namespace ppp {
 
-const char* reason::agentReportedReason(const std::string& text) {
-  for (const char* r : {kNoPath, kInvalidPath, kPlannerTimeout, kPlannerLost}) {
+namespace {
+
+/// The constant of `reasons` equal to `text`, or nullptr.
+const char* reasonAmong(const std::string& text, std::initializer_list<const char*> reasons) {
+  for (const char* r : reasons) {
     if (text == r) return r;
   }
   return nullptr;
 }
 
+}  // namespace
+
+const char* reason::agentReportedReason(const std::string& text) {
+  return reasonAmong(text, {kNoPath, kInvalidPath, kPlannerTimeout, kPlannerLost});
+}
+
 const char* reason::reasonNamed(const std::string& text) {
-  for (const char* r : {kGoalReached, kBudgetExhausted, kTimeout, kAgentLost, kInvalidAction, kNoPath, kInvalidPath,
-                        kPlannerTimeout, kPlannerLost, kCollision}) {
-    if (text == r) return r;
-  }
-  return nullptr;
+  return reasonAmong(text, {kGoalReached, kBudgetExhausted, kTimeout, kAgentLost, kInvalidAction, kNoPath,
+                            kInvalidPath, kPlannerTimeout, kPlannerLost, kCollision});
 }
 
 }  // namespace ppp
