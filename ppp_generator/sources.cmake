@@ -8,6 +8,7 @@ set(PPP_GENERATOR_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/generator_options.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/generator_node_options.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/genetic_algorithm.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/initial_pool.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/map_elites.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/set_evolution.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/problem_set.cpp

@@ -6,7 +6,8 @@
 //              ~options (the generator options as YAML text), ~set_name, ~resume (publish the set already
 //              in ~output_dir), ~generate_on_start, ~exit_when_done, and for fitness failure ~evaluator (the simulator node's
 //              ppp_msgs/EvaluateProblems service that plays the panel; empty: the node plays built-in agents
-//              itself, under ~budget, ~sensor_range and ~connectivity) and ~evaluator_timeout
+//              itself, under ~budget, ~sensor_range and ~connectivity) and ~evaluator_timeout, and
+//              ~wait_for_set (a set topic to hear from before evolving: the generator of initial_pool's set)
 #include <ros/ros.h>
 
 #include <iostream>
@@ -78,8 +79,23 @@ class GeneratorNode {
     return true;
   }
 
+  /// Waits for one message on ~wait_for_set (latched by the generator of the set initial_pool reads, which writes
+  /// that set before it publishes it). @throws Interrupted when ROS shuts down first.
+  void waitForInitialPool() {
+    if (parameters_.wait_for_set.empty()) return;
+    ROS_INFO("waiting for %s: its set is this one's initial pool", parameters_.wait_for_set.c_str());
+    bool heard = false;
+    const ros::Subscriber subscriber = nh_.subscribe<ppp_msgs::ProblemSet>(
+        parameters_.wait_for_set, 1, [&heard](const ppp_msgs::ProblemSet::ConstPtr&) { heard = true; });
+    for (ros::Rate rate(20); !heard; rate.sleep()) {
+      if (!ros::ok()) throw Interrupted();
+      ros::spinOnce();
+    }
+  }
+
   /// Evolves a set with `options` and writes it to ~output_dir (when set).
   ProblemSet evolve(const GeneratorOptions& options) {
+    waitForInitialPool();
     ROS_INFO("generating %d PPPs (%s fitness, %ld matings, seed %lu)", options.population, options.fitness.c_str(),
              options.matings, static_cast<unsigned long>(options.seed));
     // A hunt plays its panel through the simulator's evaluation service, or in process without one.

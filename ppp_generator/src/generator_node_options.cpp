@@ -32,6 +32,10 @@ const std::vector<OptionSpec<GeneratorNodeOptions>>& generatorNodeOptionSpecs() 
                       +[](N& n) -> std::string& { return n.evaluator; }),
         declareOption("evaluator_timeout", "seconds to wait for the evaluator to appear",
                       +[](N& n) -> double& { return n.evaluator_timeout; }, Bounds{0.001, 86400}),
+        declareOption("wait_for_set",
+                      "a ppp_msgs/ProblemSet topic to hear from before evolving: the generator of the set that "
+                      "initial_pool reads ('': none)",
+                      +[](N& n) -> std::string& { return n.wait_for_set; }),
     };
     for (std::size_t i = 1; i < list.size(); ++i) list[i] = list[i].notAffectingResults();  // where and how
     return list;

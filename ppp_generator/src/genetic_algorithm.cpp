@@ -6,6 +6,7 @@
 
 #include "ppp_core/error.hpp"
 #include "ppp_generator/diversity.hpp"
+#include "ppp_generator/initial_pool.hpp"
 
 namespace ppp {
 namespace generator {
@@ -33,7 +34,7 @@ GeneticAlgorithm::GeneticAlgorithm(const GeneratorOptions& options, Fitness fitn
       breeder_(options_, fitness_, &rng_) {}
 
 std::vector<Individual> GeneticAlgorithm::initialPool(const StopCheck& stop) {
-  std::vector<Individual> pool;
+  std::vector<Individual> pool = initialPoolIndividuals(options_, &breeder_);
   pool.reserve(static_cast<std::size_t>(options_.population));
   while (static_cast<int>(pool.size()) < options_.population) {
     stopIfAsked(stop);

@@ -10,6 +10,7 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/footprint.hpp"
 #include "ppp_core/text_format.hpp"
+#include "ppp_generator/initial_pool.hpp"
 #include "ppp_generator/taxonomy.hpp"
 
 namespace ppp {
@@ -144,8 +145,8 @@ std::vector<Individual> MapElites::run(const ProgressCallback& progress, long pr
       }
     }
   };
-  // Seed the archive with random valid PPPs.
-  std::vector<Individual> batch;
+  // Seed the archive with the initial pool's PPPs, then random valid ones.
+  std::vector<Individual> batch = initialPoolIndividuals(options_, &breeder_);
   long redraws = 0;
   while (static_cast<int>(batch.size()) < options_.population) {
     stopIfAsked(stop);

@@ -76,6 +76,12 @@ void ExperimentConfig::validate() const {
     if (!s.generator) continue;
     try {
       s.generator->validate();
+      const SetSpec* start = findSet(*this, s.generator->initial_pool);
+      if (start && !names.count(start->name)) {
+        throw InvalidArgument("initial_pool", "names set '" + start->name + "', which is not listed before '" +
+                                                  s.name + "': list the set it starts from first");
+      }
+      if (start == &s) throw InvalidArgument("initial_pool", "names set '" + s.name + "' itself");
       if (generator::isPanelFitness(s.generator->fitness)) {
         if (!s.generator->agents_file.empty()) {
           throw InvalidArgument("agents_file", "in an experiment the panel's names come from its agents");
@@ -92,6 +98,24 @@ void ExperimentConfig::validate() const {
     a.validate();
     if (!names.insert(a.name).second) throw InvalidArgument("agents", "duplicate agent name '" + a.name + "'");
   }
+}
+
+const SetSpec* findSet(const ExperimentConfig& config, const std::string& name) {
+  for (const SetSpec& set : config.sets) {
+    if (set.name == name) return &set;
+  }
+  return nullptr;
+}
+
+std::string setDirectory(const SetSpec& set, const std::string& dir) {
+  return set.generator ? (fs::path(dir) / "sets" / set.name).string() : set.directory;
+}
+
+generator::GeneratorOptions generatorOptionsIn(const ExperimentConfig& config, const SetSpec& set,
+                                               const std::string& dir) {
+  generator::GeneratorOptions options = *set.generator;
+  if (const SetSpec* start = findSet(config, options.initial_pool)) options.initial_pool = setDirectory(*start, dir);
+  return options;
 }
 
 ExperimentConfig loadExperimentConfig(const std::string& path) {
@@ -115,6 +139,12 @@ ExperimentConfig parseExperimentConfig(const std::string& yaml, const std::strin
                                 ") decides it; give it there");
     }
     g->robot_radius = config.episode.robot_radius;
+  }
+  // initial_pool: the name of a set of this experiment, or a directory relative to the YAML's.
+  for (SetSpec& set : config.sets) {
+    if (set.generator && !set.generator->initial_pool.empty() && !findSet(config, set.generator->initial_pool)) {
+      set.generator->initial_pool = resolve(base, set.generator->initial_pool);
+    }
   }
   const YAML::Node agents = reader.lookup("agents");
   if (agents && agents.IsScalar()) {

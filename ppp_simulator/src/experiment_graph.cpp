@@ -44,10 +44,22 @@ std::string machineName(const std::string& host) { return "host_" + agents::agen
 /// The machine of an agent on another host, or "".
 std::string machineOf(const agents::AgentConfig& agent) { return agent.host.empty() ? "" : machineName(agent.host); }
 
-/// A generator node for `set` writing `output_dir`; a hunt's is required and exits when its set is written.
-ppp_msgs::GraphNode generatorNode(const SetSpec& set, const std::string& output_dir, bool hunt) {
+/// A generator node for `set` of the experiment writing to `experiment_dir`, its set to `output_dir`; a hunt's is
+/// required and exits when its set is written. A set that starts from another evolved set waits for its
+/// generator. @throws InvalidArgument("initial_pool", ...) for a hunt that would wait for a set nobody evolves.
+ppp_msgs::GraphNode generatorNode(const ExperimentConfig& config, const SetSpec& set,
+                                  const std::string& experiment_dir, const std::string& output_dir, bool hunt) {
   generator::GeneratorNodeOptions options;
-  options.options_yaml = generator::generatorOptionsYaml(*set.generator);
+  options.options_yaml = generator::generatorOptionsYaml(generatorOptionsIn(config, set, experiment_dir));
+  const SetSpec* start = findSet(config, set.generator->initial_pool);
+  if (start && start->generator) {
+    if (hunt) {
+      throw InvalidArgument("initial_pool", "set '" + set.name + "' starts from set '" + start->name +
+                                                "', which a hunt alone does not evolve: run the experiment, or give "
+                                                "initial_pool a directory");
+    }
+    options.wait_for_set = setTopic(start->name);
+  }
   options.set_name = set.name;
   options.output_dir = output_dir;
   options.resume = true;
@@ -163,10 +175,12 @@ ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const Grap
     graph.machines.push_back({machineName(agent.host), agent.host, options.env_loader});
   }
   if (hunted) {
-    graph.nodes.push_back(generatorNode(*hunted, options.output_dir, true));
+    graph.nodes.push_back(generatorNode(config, *hunted, options.output_dir, options.output_dir, true));
   } else {
     for (const SetSpec& set : config.sets) {
-      if (set.generator) graph.nodes.push_back(generatorNode(set, options.output_dir + "/sets/" + set.name, false));
+      if (set.generator) {
+        graph.nodes.push_back(generatorNode(config, set, options.output_dir, setDirectory(set, options.output_dir), false));
+      }
     }
   }
   ppp_msgs::GraphNode simulator{"ppp_simulator", "simulator_node", ppp_msgs::nodes::kSimulator};

@@ -104,9 +104,8 @@ std::vector<agents::PreparedSet> prepareSets(const ExperimentConfig& config, con
                                      const std::function<void(const std::string&)>& log, const StopCheck& stop) {
   std::vector<agents::PreparedSet> prepared;
   for (const SetSpec& spec : config.sets) {
-    std::string set_dir = spec.directory;
+    const std::string set_dir = setDirectory(spec, dir);
     if (spec.generator) {
-      set_dir = (fs::path(dir) / "sets" / spec.name).string();
       if (!fs::exists(fs::path(set_dir) / "set.csv")) {
         say(log, "generating set '" + spec.name + "' (" + spec.generator->fitness + ", " +
                      std::to_string(spec.generator->matings) + " matings)");
@@ -116,7 +115,8 @@ std::vector<agents::PreparedSet> prepareSets(const ExperimentConfig& config, con
         } catch (const InvalidArgument& e) {
           throw InvalidArgument("sets", "set '" + spec.name + "': " + e.what());
         }
-        const generator::EvolvedSet evolved = generator::evolveSetDirectory(set_dir, *spec.generator, fitness, {}, stop);
+        const generator::EvolvedSet evolved = generator::evolveSetDirectory(
+            set_dir, generatorOptionsIn(config, spec, dir), fitness, {}, stop);
         say(log, "set '" + spec.name + "': " + evolved.summary);
       }
     }

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/option_cases.hpp"
@@ -204,6 +205,35 @@ TEST_F(ExperimentYaml, HuntedSetsNameTheirPanelFromTheExperimentsAgents) {
             "4: sets[0].generator.replacement: unknown rule 'best'; valid: crowding, tournament");
   EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - name: t\n    generator: {crowding_window: 1}\n"),
             " sets[0].generator.crowding_window: expected an integer in [2, 100000], got 1");
+}
+
+TEST_F(ExperimentYaml, ASetStartsFromAnEarlierSetOrADirectory) {
+  const auto sets = [](const std::string& first, const std::string& second) {
+    return "agents: agents.yaml\nsets:\n  - {name: " + first + "}\n  - {name: " + second + "}\n";
+  };
+  EXPECT_EQ(errorOf(sets("a, generator: {matings: 5, initial_pool: b}", "b, generator: {matings: 5}")),
+            " sets[0].generator.initial_pool: names set 'b', which is not listed before 'a': list the set it starts "
+            "from first");
+  EXPECT_EQ(errorOf(sets("a, generator: {matings: 5, initial_pool: a}", "b, generator: {matings: 5}")),
+            " sets[0].generator.initial_pool: names set 'a' itself");
+  EXPECT_EQ(errorOf(sets("a, generator: {population: 4, matings: 0, width: 8, height: 8}",
+                         "b, generator: {population: 6, matings: 0, width: 8, height: 8, initial_pool: a}")),
+            "no error");
+  const ExperimentConfig config = loadExperimentConfig((dir_ / "experiment.yaml").string());
+  // The name stays in the fingerprint; the run reads the set's directory in the experiment's output.
+  EXPECT_NE(experimentFingerprint(config).find("initial_pool: a\n"), std::string::npos);
+  EXPECT_EQ(generatorOptionsIn(config, config.sets[1], "/out").initial_pool, "/out/sets/a");
+  const std::vector<agents::PreparedSet> prepared = prepareSets(config, (dir_ / "out").string());
+  ASSERT_EQ(prepared.size(), 2u);
+  std::set<std::uint64_t> second;
+  for (const Grid& grid : prepared[1].grids) second.insert(grid.hash());
+  for (const Grid& grid : prepared[0].grids) EXPECT_EQ(second.count(grid.hash()), 1u);
+  EXPECT_EQ(second.size(), 6u);
+
+  // Anything else is a directory, relative to the YAML's.
+  EXPECT_EQ(errorOf(sets("a, generator: {matings: 5, initial_pool: suite}", "b, generator: {matings: 5}")), "no error");
+  EXPECT_EQ(loadExperimentConfig((dir_ / "experiment.yaml").string()).sets[0].generator->initial_pool,
+            (dir_ / "suite").string());
 }
 
 TEST_F(ExperimentYaml, DirectoryHoldingAnotherExperimentIsRefused) {

@@ -250,6 +250,27 @@ sets:
         self.assertEqual(config.params['/fast/bridge/cells_per_ppp_cell'].value, 4)
         self.assertEqual(config.params['/fast/bridge/robot_radius'].value, 1.5)
 
+    def test_a_set_that_starts_from_another_waits_for_its_generator(self):
+        directory = tempfile.mkdtemp()
+        path = write_config(directory, """
+agents:
+  - {name: explorer, type: explorer}
+sets:
+  - name: turns
+    generator: {fitness: turns, population: 6, matings: 50}
+  - name: hunted
+    generator: {fitness: failure, agents: [explorer], population: 6, matings: 50, initial_pool: turns}
+""")
+        config, out = load_graph(path)
+        self.assertEqual(config.params['/gen_hunted/wait_for_set'].value, '/gen_turns/problem_set')
+        self.assertEqual(yaml.safe_load(config.params['/gen_hunted/options'].value)['initial_pool'],
+                         os.path.join(out, 'sets', 'turns'))
+        self.assertEqual(config.params['/gen_turns/wait_for_set'].value, '')
+        # A hunt alone evolves no other set to start from.
+        _, status, errors, _ = launch_file(path, '--hunt', 'hunted')
+        self.assertNotEqual(status, 0)
+        self.assertIn("set 'hunted' starts from set 'turns', which a hunt alone does not evolve", errors)
+
     def test_bad_configs_and_flags_are_refused_naming_the_problem(self):
         directory = tempfile.mkdtemp()
         agents = "agents:\n  - {name: a, type: %s%s}\n"

@@ -21,6 +21,7 @@ struct GeneratorNodeOptions {
   bool exit_when_done = false;    ///< Exit once the start-up set is published.
   std::string evaluator = ppp_msgs::topics::kEvaluator;  ///< Failure fitness: the simulator's EvaluateProblems service.
   double evaluator_timeout = 120.0;                      ///< Seconds to wait for that service to appear.
+  std::string wait_for_set;       ///< A set topic to hear from before evolving (its set is the initial pool).
   /// @throws InvalidArgument naming the option out of its declared range.
   void validate() const;
 };

@@ -63,6 +63,7 @@ struct GeneratorOptions {
   std::string archive = kNoArchive; ///< kNoArchive or kMapElitesArchive.
   std::vector<std::string> features{"turns", "obstacles"};  ///< MAP-Elites: characters binned (two or more).
   int bins = 8;                     ///< MAP-Elites: bins per feature.
+  std::string initial_pool;         ///< Directory of .ppp files the initial pool starts from ("": all random).
 
   /// Checks every option. @throws InvalidArgument naming the option and what was expected.
   void validate() const;

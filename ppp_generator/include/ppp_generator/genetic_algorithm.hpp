@@ -47,7 +47,8 @@ class GeneticAlgorithm {
   GeneticAlgorithm(const GeneticAlgorithm&) = delete;             ///< Its breeder refers to its own members.
   GeneticAlgorithm& operator=(const GeneticAlgorithm&) = delete;  ///< As the copy constructor.
 
-  /// Builds the initial pool and runs every mating event; returns the final pool in pool order.
+  /// Builds the initial pool (options.initial_pool's PPPs first, then random ones) and runs every mating event;
+  /// returns the final pool in pool order.
   /// @throws Interrupted when `stop` says stop (asked before each PPP of the initial pool and each round).
   std::vector<Individual> run(const ProgressCallback& progress = {}, long progress_interval = 1000,
                               const StopCheck& stop = {});

@@ -70,8 +70,8 @@ struct ArchiveStats {
   long children_rejected = 0;  ///< Children less fit than their cell's elite.
 };
 
-/// MAP-Elites with the generator's chromosomes and operators: `population` random valid PPPs seed the
-/// archive; each of `matings` events picks two elites at random, crosses and mutates them, and offers the
+/// MAP-Elites with the generator's chromosomes and operators: `population` valid PPPs (initial_pool's, then
+/// random ones) seed the archive; each of `matings` events picks two elites at random, crosses and mutates them, and offers the
 /// valid children to the archive. A batch fitness is scored a round of batch_size events at a time (parents
 /// drawn before the round). Deterministic for a seed.
 class MapElites {

@@ -52,6 +52,18 @@ ExperimentConfig loadExperimentConfig(const std::string& path);
 /// (a file it names).
 ExperimentConfig parseExperimentConfig(const std::string& yaml, const std::string& path);
 
+/// The set of `config` called `name`, or null.
+const SetSpec* findSet(const ExperimentConfig& config, const std::string& name);
+
+/// Where the set's PPPs are when the experiment writes to `dir`: `dir`/sets/NAME for an evolved set, else its
+/// directory.
+std::string setDirectory(const SetSpec& set, const std::string& dir);
+
+/// An evolved set's generator options as run with the experiment writing to `dir`: an initial_pool naming a set
+/// of the experiment (listed before it) becomes that set's directory.
+generator::GeneratorOptions generatorOptionsIn(const ExperimentConfig& config, const SetSpec& set,
+                                               const std::string& dir);
+
 /// How much an experiment asks for, estimated before it starts.
 struct ExperimentWork {
   double episodes = 0;       ///< Runs of agents on PPPs (sets x PPPs x agents x runs; ROS planners included).
