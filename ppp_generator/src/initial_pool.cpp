@@ -34,8 +34,7 @@ std::string mismatch(const Problem& problem, const GeneratorOptions& options) {
   return "";
 }
 
-}  // namespace
-
+/// The `.ppp` files of a directory, in file-name order. @throws IoError when it is not a readable directory.
 std::vector<std::string> pppFilesIn(const std::string& dir) {
   std::error_code error;
   if (!fs::is_directory(dir, error)) throw IoError(dir, "is not a directory of .ppp files");
@@ -48,9 +47,16 @@ std::vector<std::string> pppFilesIn(const std::string& dir) {
   return files;
 }
 
+}  // namespace
+
 std::vector<Individual> initialPoolIndividuals(const GeneratorOptions& options, Breeder* breeder) {
   if (options.initial_pool.empty()) return {};
-  const std::vector<std::string> files = pppFilesIn(options.initial_pool);
+  std::vector<std::string> files;
+  try {
+    files = pppFilesIn(options.initial_pool);
+  } catch (const IoError& e) {
+    throw InvalidArgument("initial_pool", e.what());
+  }
   if (files.empty()) throw InvalidArgument("initial_pool", options.initial_pool + " holds no .ppp file");
   std::vector<Individual> pool;
   for (const std::string& file : files) {

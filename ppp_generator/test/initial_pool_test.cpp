@@ -45,9 +45,12 @@ std::string emptyDirectory(const std::string& name) {
   return dir.string();
 }
 
+/// Sets of grids, as cells.
+using Grids = std::set<std::vector<std::uint8_t>>;
+
 /// The decoded grids of a pool.
-std::set<std::vector<std::uint8_t>> gridsOf(const std::vector<Individual>& pool) {
-  std::set<std::vector<std::uint8_t>> grids;
+Grids gridsOf(const std::vector<Individual>& pool) {
+  Grids grids;
   for (const Individual& i : pool) grids.insert(i.grid.cells());
   return grids;
 }
@@ -74,7 +77,7 @@ TEST(InitialPoolTest, TheSearchStartsFromThePoolsFilesInNameOrderAndDrawsTheRest
 
   // A pool larger than the population: the first files by name.
   const std::vector<Individual> two = GeneticAlgorithm(poolOptions(dir, 2), makeFitness("turns")).run();
-  EXPECT_EQ(gridsOf(two), (std::set<std::vector<std::uint8_t>>{gridOf(barProblem(3, 0, 7)), gridOf(barProblem(7, 3, 7))}));
+  EXPECT_EQ(gridsOf(two), (Grids{gridOf(barProblem(3, 0, 7)), gridOf(barProblem(7, 3, 7))}));
 }
 
 TEST(InitialPoolTest, MapElitesSeedsItsArchiveFromThePool) {
@@ -88,7 +91,7 @@ TEST(InitialPoolTest, MapElitesSeedsItsArchiveFromThePool) {
   GeneratorOptions o = poolOptions(dir, 2);
   o.archive = kMapElitesArchive;
   MapElites search(o, makeFitness("turns"));
-  EXPECT_EQ(gridsOf(search.run()), (std::set<std::vector<std::uint8_t>>{gridOf(barProblem(3, 0, 7)), gridOf(three)}));
+  EXPECT_EQ(gridsOf(search.run()), (Grids{gridOf(barProblem(3, 0, 7)), gridOf(three)}));
 }
 
 /// The message of the InvalidArgument("initial_pool", ...) that starting from `dir` throws.
@@ -151,7 +154,8 @@ TEST(InitialPoolTest, PppsThatDoNotFitTheGeneratorAreRefusedNamingTheFile) {
   EXPECT_NE(message.find("broken.ppp:2"), std::string::npos) << message;
 
   message = poolError(poolOptions(dir + "/missing", 4));
-  EXPECT_NE(message.find("missing: is not a directory of .ppp files"), std::string::npos) << message;
+  EXPECT_NE(message.find("initial_pool: " + dir + "/missing: is not a directory of .ppp files"), std::string::npos)
+      << message;
 }
 
 }  // namespace

@@ -179,7 +179,8 @@ ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const Grap
   } else {
     for (const SetSpec& set : config.sets) {
       if (set.generator) {
-        graph.nodes.push_back(generatorNode(config, set, options.output_dir, setDirectory(set, options.output_dir), false));
+        const std::string set_dir = setDirectory(set, options.output_dir);
+        graph.nodes.push_back(generatorNode(config, set, options.output_dir, set_dir, false));
       }
     }
   }

@@ -71,8 +71,8 @@ struct ArchiveStats {
 };
 
 /// MAP-Elites with the generator's chromosomes and operators: `population` valid PPPs (initial_pool's, then
-/// random ones) seed the archive; each of `matings` events picks two elites at random, crosses and mutates them, and offers the
-/// valid children to the archive. A batch fitness is scored a round of batch_size events at a time (parents
+/// random ones) seed the archive; each of `matings` events picks two elites at random, crosses and mutates them,
+/// and offers the valid children to the archive. A batch fitness is scored a round of batch_size events at a time (parents
 /// drawn before the round). Deterministic for a seed.
 class MapElites {
  public:
