@@ -32,7 +32,14 @@ if ! scripts/loopback-only /bin/true; then
 fi
 export ROS_MASTER_URI="http://127.0.0.1:$port" ROS_IP=127.0.0.1
 echo "running the experiment with ROS (log: $log)"
-"${isolate[@]}" roslaunch -p "$port" launch/experiment.launch output_dir:="$out" > "$log" 2>&1 || true
+# The whole output goes to the log; the terminal gets the phases and a progress line every few seconds. The
+# filters ignore Ctrl-C, so roslaunch shuts its nodes down and its last words still reach the log.
+"${isolate[@]}" roslaunch -p "$port" launch/experiment.launch output_dir:="$out" 2>&1 | (
+  trap '' INT TERM
+  tee "$log" |
+    grep --line-buffered -E 'progress: |generating [0-9]+ PPPs|running [0-9]+ episodes|finishing|experiment done|ERROR|FATAL' |
+    sed -u -e 's/\x1b\[[0-9;]*m//g' -e 's/^\[ *INFO\] \[[0-9.]*\]: /  /' -e 's/^\[ *\([A-Z]*\)\] \[[0-9.]*\]: /  \1: /'
+) || true
 # roslaunch's exit status says nothing about its nodes: the report is the verdict.
 if [ ! -s "$out/report.md" ] || ! grep -q "experiment done" "$log"; then
   grep -E "FATAL|ERROR" "$log" | tail -10

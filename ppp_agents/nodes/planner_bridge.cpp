@@ -84,7 +84,9 @@ PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch)
     return rejected;
   }
   const auto fail = [&](const char* reason, const std::string& detail) {
-    ROS_INFO("bridge '%s': episode %u fails as %s: %s", parameters_.config.name.c_str(), id, reason, detail.c_str());
+    // Every reason is in results.csv: the log gets a sample, not a line per failed run of a long hunt.
+    ROS_INFO_THROTTLE(5, "bridge '%s': episode %u fails as %s: %s", parameters_.config.name.c_str(), id, reason,
+                      detail.c_str());
     active_ = false;
     return StepOutcome{0, reason};
   };

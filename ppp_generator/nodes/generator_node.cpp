@@ -16,6 +16,8 @@
 
 #include "generator_parameters.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/progress_meter.hpp"
+#include "ppp_core/text_format.hpp"
 #include "ppp_core/stop.hpp"
 #include "ppp_generator/failure_fitness.hpp"
 #include "ppp_generator/problem_set.hpp"
@@ -103,10 +105,15 @@ class GeneratorNode {
         isPanelFitness(options.fitness) && !parameters_.evaluator.empty()
             ? makeRemoteFailureFitness(nh_, options, parameters_.evaluator, parameters_.evaluator_timeout)
             : fitnessFor(options, parameters_.episode, 0);
+    ProgressMeter meter("set '" + (parameters_.set_name.empty() ? options.fitness : parameters_.set_name) + "'",
+                        "matings");
     EvolvedSet evolved = evolveSet(
         options, fitness,
-        [](long done, long total, double best) { ROS_INFO("%ld/%ld matings, best fitness %g", done, total, best); },
-        std::max(1L, options.matings / 10), [] { return !ros::ok(); });
+        [&meter](long done, long total, double best) {
+          const std::string line = meter.update(done, total, steadySeconds(), "best fitness " + formatGeneral(best, 4));
+          if (!line.empty()) ROS_INFO("%s", line.c_str());
+        },
+        1, [] { return !ros::ok(); });
     ROS_INFO("%s", evolved.summary.c_str());
     if (!parameters_.output_dir.empty()) {
       writeProblemSetDirectory(parameters_.output_dir, evolved.set, options, evolved.extra_files);

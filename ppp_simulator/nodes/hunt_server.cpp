@@ -23,7 +23,6 @@ bool HuntServer::evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs
     for (const ppp_msgs::Problem& m : request.problems) problems.push_back(ppp_msgs::fromMessage(m));
     generator::HuntEvaluation evaluation(problems, panel, config_.episode, static_cast<int>(request.runs), request.seed,
                               parameters_.batch_size);
-    const ros::WallTime started = ros::WallTime::now();
     std::vector<LaneRunner*> runners;
     for (const agents::AgentConfig& agent : panel) runners.push_back(&runnerFor(agent));
     target_ = &evaluation;  // the runners' sink
@@ -48,13 +47,11 @@ bool HuntServer::evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs
       if (!lane->finished()) throw IoError("~evaluate", "shutting down before every run was played");
     }
     for (const generator::PanelEvaluation& e : evaluation.evaluations()) response.evaluations.push_back(toMessage(e));
-    const double seconds = (ros::WallTime::now() - started).toSec();
     episodes_ += static_cast<long>(problems.size() * panel.size()) * request.runs;
-    seconds_ += seconds;
     ++requests_;
-    ROS_INFO("evaluation %ld: %zu PPPs x %zu agents x %u runs in %.2f s (%.0f episodes/s over the hunt so far)",
-             requests_, problems.size(), panel.size(), request.runs, seconds,
-             seconds_ > 0 ? episodes_ / seconds_ : 0.0);
+    const std::string line =
+        progress_.update(episodes_, 0, steadySeconds(), "evaluations: " + std::to_string(requests_));
+    if (!line.empty()) ROS_INFO("%s", line.c_str());
   } catch (const Error& e) {
     response.evaluations.clear();
     response.error = e.what();

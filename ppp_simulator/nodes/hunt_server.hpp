@@ -8,6 +8,7 @@
 #include <ros/ros.h>
 
 #include "lane_runner.hpp"
+#include "ppp_core/progress_meter.hpp"
 #include "ppp_msgs/EvaluateProblems.h"
 #include "ppp_simulator/experiment_config.hpp"
 #include "ppp_generator/hunt_evaluation.hpp"
@@ -43,7 +44,7 @@ class HuntServer {
   generator::HuntEvaluation* target_ = nullptr;  // the request in flight, where the runners' results go
   long requests_ = 0;
   long episodes_ = 0;
-  double seconds_ = 0;
+  ProgressMeter progress_{"hunt", "episodes"};  // a line every few seconds, not one per request
 };
 
 /// The simulator node in hunt mode: serves ~evaluate with a HuntServer until shut down. Returns the exit status.

@@ -17,6 +17,7 @@
 #include "episode_recorder.hpp"
 #include "hunt_server.hpp"
 #include "lane_runner.hpp"
+#include "progress_reporter.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/stop.hpp"
 #include "ppp_core/text_file.hpp"
@@ -69,15 +70,17 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
   std::vector<std::unique_ptr<agents::AgentLane>> lanes;
   std::vector<std::unique_ptr<LaneRunner>> runners;
   long remaining = 0;
+  std::atomic<long> ended_runs{0};
   for (const auto& agent : config.agents) {
     lanes.push_back(std::make_unique<agents::AgentLane>(experimentLane(
         agent, config.episode, sets, config.seed, config.runsFor(agent), results.done(), parameters.batch_size)));
     remaining += lanes.back()->remaining();
     runners.push_back(std::make_unique<LaneRunner>(
         nh, parameters, agent,
-        [&results, &recorder](const std::vector<agents::EpisodeResult>& ended) {
+        [&results, &recorder, &ended_runs](const std::vector<agents::EpisodeResult>& ended) {
           results.append(ended);
           recorder.recordResults(ended);
+          ended_runs += static_cast<long>(ended.size());
         },
         [&recorder](const std::string& name, const std::vector<protocol::ScanRequest>& scans) {
           recorder.recordScans(name, scans);
@@ -85,20 +88,23 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
   }
   ROS_INFO("running %ld episodes (%zu already done, %zu lost to the agent link played again) with %zu agent nodes, "
            "batches of %d", remaining, results.done().size(), results.lostRuns(), lanes.size(), parameters.batch_size);
-  std::vector<std::thread> threads;
   std::atomic<bool> failed{false};
-  for (std::size_t i = 0; i < runners.size(); ++i) {
-    threads.emplace_back([&runners, &lanes, &failed, i] {
-      try {
-        runners[i]->run(lanes[i].get());
-      } catch (const std::exception& e) {  // results.csv or the bag cannot be written (a full disk, say)
-        ROS_FATAL("simulator: %s", e.what());  // logged here: once shutdown is requested, the log is gone
-        failed = true;
-        ros::requestShutdown();  // every lane stops; the node exits 1
-      }
-    });
+  {
+    const ProgressReporter progress("episodes", "episodes", remaining, [&ended_runs] { return ended_runs.load(); });
+    std::vector<std::thread> threads;
+    for (std::size_t i = 0; i < runners.size(); ++i) {
+      threads.emplace_back([&runners, &lanes, &failed, i] {
+        try {
+          runners[i]->run(lanes[i].get());
+        } catch (const std::exception& e) {  // results.csv or the bag cannot be written (a full disk, say)
+          ROS_FATAL("simulator: %s", e.what());  // logged here: once shutdown is requested, the log is gone
+          failed = true;
+          ros::requestShutdown();  // every lane stops; the node exits 1
+        }
+      });
+    }
+    for (std::thread& t : threads) t.join();
   }
-  for (std::thread& t : threads) t.join();
   if (failed) return 1;
   recorder.close();
   if (!ros::ok()) {

@@ -30,6 +30,10 @@ timeout 300 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$
 [ "$(started "$work/small/launch.log")" = "astar experiment explorer gen_mine rosout simulator " ] && pass || \
   fail "the small config started other processes: $(started "$work/small/launch.log")"
 [ "$(ls "$work/small/out/sets")" = "mine" ] && pass || fail "sets/ holds $(ls "$work/small/out/sets")"
+# Progress reaches the output as it happens: each phase's first and last lines at least.
+grep -q "progress: set 'mine': 50/50 matings (100.0 %)" "$work/small/launch.log" &&
+  grep -qE "progress: episodes: ([0-9]+)/\1 episodes \(100.0 %\)" "$work/small/launch.log" && pass ||
+  fail "no progress lines for the set and the episodes: $(grep progress "$work/small/launch.log")"
 "$devel/lib/ppp_simulator/ppp" experiment "$work/small/experiment.yaml" -o "$work/small/cli" --quiet > /dev/null 2>&1
 cmp -s "$work/small/out/results.csv" "$work/small/cli/results.csv" && pass || \
   fail "roslaunch and ppp experiment differ on the small config: $(tail -20 "$work/small/launch.log")"

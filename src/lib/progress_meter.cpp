@@ -1,0 +1,67 @@
+#include "ppp_core/progress_meter.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <utility>
+
+#include "ppp_core/text_format.hpp"
+
+namespace ppp {
+
+double steadySeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+std::string formatDuration(double seconds) {
+  const long s = std::lround(std::max(0.0, seconds));
+  char text[64];
+  if (s < 60) {
+    std::snprintf(text, sizeof text, "%ld s", s);
+  } else if (s < 3600) {
+    std::snprintf(text, sizeof text, "%ld min %02ld s", s / 60, s % 60);
+  } else {
+    const long minutes = std::lround(s / 60.0);
+    std::snprintf(text, sizeof text, "%ld h %02ld min", minutes / 60, minutes % 60);
+  }
+  return text;
+}
+
+namespace {
+
+/// A rate with about three significant digits, never in exponent form: 9812, 98.1, 9.81, 0.98.
+std::string formatRate(double rate) { return formatFixed(rate, rate >= 100 ? 0 : rate >= 10 ? 1 : 2); }
+
+}  // namespace
+
+ProgressMeter::ProgressMeter(std::string phase, std::string unit, double interval_seconds)
+    : phase_(std::move(phase)), unit_(std::move(unit)), interval_(interval_seconds) {}
+
+std::string ProgressMeter::update(long done, long total, double now, const std::string& status) {
+  const bool complete = total > 0 && done >= total;
+  if (!started_) {
+    started_ = true;
+    start_time_ = now;
+    start_done_ = done;
+  } else if (finished_ || (!complete && now - last_line_ < interval_)) {
+    return "";
+  }
+  last_line_ = now;
+  finished_ = complete;
+  const double elapsed = now - start_time_;
+  const double rate = elapsed > 0 ? static_cast<double>(done - start_done_) / elapsed : 0.0;
+  std::string line = "progress: " + phase_ + ": " + std::to_string(done);
+  if (total > 0) {
+    line += "/" + std::to_string(total) + " " + unit_ + " (" + formatFixed(100.0 * done / total, 1) + " %)";
+  } else {
+    line += " " + unit_;
+  }
+  if (elapsed > 0) line += ", " + formatRate(rate) + " " + unit_ + "/s";
+  if (total > 0 && !complete && rate > 0) line += ", ETA " + formatDuration((total - done) / rate);
+  if (complete) line += ", done in " + formatDuration(elapsed);
+  if (!status.empty()) line += ", " + status;
+  return line;
+}
+
+}  // namespace ppp
