@@ -94,11 +94,16 @@ PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch)
   link_.publishState(stamp, episode_, robot, batch.cells.data(), range);
   if (link_.gone()) return fail(reason::kPlannerLost, "the planner's process is gone");
 
-  // A path the planner published on its own (re-planning on the new map) replaces the current one if usable.
   std::vector<MapPoint> points;
   const std::optional<nav_msgs::Path> unasked = link_.takeUnasked();
-  if (unasked && pathPoints(*unasked, parameters_.map_frame, &points).empty()) episode_.offer(points, robot);
-  std::optional<Action> action = episode_.next(robot);
+  std::optional<Action> action;
+  if (!parameters_.lockstep) {
+    // Free-running: a path the planner published on its own (re-planning on the new map) replaces the current
+    // one if usable, whenever it arrives; without one the robot follows the path it has.
+    if (unasked && pathPoints(*unasked, parameters_.map_frame, &points).empty()) episode_.offer(points, robot);
+    action = episode_.next(robot);
+  }
+  // Lockstep: every step is a request, and only the answer to this step's state moves the robot.
   if (!action) {
     link_.publishGoal(stamp, episode_);
     const std::optional<nav_msgs::Path> path = link_.waitForPath(

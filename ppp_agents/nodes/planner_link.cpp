@@ -139,7 +139,11 @@ std::optional<nav_msgs::Path> PlannerLink::waitForPath(const ros::Time& request,
       // (not from the robot's cell, not to the goal, through a known wall) may still be a late answer to an
       // earlier request carrying a newer map's stamp: wait for another, and judge it if none comes.
       const nav_msgs::Path& path = *latest_;
-      if (path.header.stamp.isZero() || path.header.stamp >= request) {
+      const bool unstamped = path.header.stamp.isZero();
+      if (unstamped && parameters_.lockstep) {
+        ROS_WARN_ONCE("an unstamped path does not answer a lockstep request: stamp it with the goal's stamp "
+                      "(docs/planner-interface.md)");
+      } else if (unstamped || path.header.stamp >= request) {
         if (fits(path)) {
           answered_ = true;
           return path;

@@ -40,7 +40,8 @@ class PlannerLink {
   void newEpisode();
   /// The newest path the planner published on its own since the last look, if any.
   std::optional<nav_msgs::Path> takeUnasked();
-  /// Waits up to plan_timeout for a path stamped at or after `request` (or unstamped) that `fits`; a path that
+  /// Waits up to plan_timeout for a path stamped at or after `request` (or unstamped, unless lockstep) that
+  /// `fits`; a path that
   /// does not fit is kept and returned when no better one comes. `resend(stamp)` sends the request again every
   /// second (a restarted planner missed it). Marks the planner as having answered when a path is returned.
   std::optional<nav_msgs::Path> waitForPath(const ros::Time& request,

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/segment_walk.hpp"
 #include "ppp_msgs/graph_names.h"
 
 namespace ppp {
@@ -148,8 +149,13 @@ void PlannerNode::serve(const Request& request) {
       if (goal_ == request.goal) goal_reached_ = true;
       return;
     }
+    if (keepsLastPlan(request, map, robot, target)) {
+      publish(last_plan_.waypoints, request.pose_stamp);
+      return;
+    }
     const auto start = std::chrono::steady_clock::now();
     const std::vector<MapPoint> waypoints = plan_(map, robot, target);
+    last_plan_ = LastPlan{waypoints, robot, target, request.pose_stamp, request.map};
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     char text[160];
     std::snprintf(text, sizeof text, "planned cell (%d, %d) -> (%d, %d)%s in %.6f s: %zu waypoints", robot.x, robot.y,
@@ -166,6 +172,23 @@ void PlannerNode::serve(const Request& request) {
   } catch (const Error& e) {
     ROS_WARN("not planning: %s", e.what());
   }
+}
+
+bool PlannerNode::keepsLastPlan(const Request& request, const GridMap& map, Cell robot, Cell target) const {
+  const LastPlan& last = last_plan_;
+  if (!last.map || last.target != target || last.waypoints.empty()) return false;
+  if (request.pose_stamp == last.stamp) return true;  // the same state: a re-plan on its map answered it already
+  // The robot moved on along the plan and the map says nothing new (a new run of the same PPP starts where the
+  // plan did, and gets a new plan).
+  if (robot == last.from || (last.map != request.map && last.map->data != request.map->data)) return false;
+  for (std::size_t i = 1; i < last.waypoints.size(); ++i) {
+    const MapPoint& a = last.waypoints[i - 1];
+    const MapPoint& b = last.waypoints[i];
+    for (const Cell cell : walkMapSegment(map.frame(), a.x, a.y, b.x, b.y)) {
+      if (cell == robot) return true;
+    }
+  }
+  return false;
 }
 
 void PlannerNode::publish(const std::vector<MapPoint>& waypoints, const ros::Time& stamp) {

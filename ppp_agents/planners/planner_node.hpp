@@ -35,8 +35,9 @@ struct PlannerNodeOptions {
 /// `move_base_simple/goal` with a nav_msgs/Path on `plan` once it holds a map at least as new as the goal and
 /// the robot's pose (tf, map frame -> base frame) at the goal's stamp (waiting at most 1 s for them), and,
 /// with replan_on_map, plans again on every new map. A plan is stamped with the stamp of the pose it starts
-/// from (the goal's; a re-plan's map's); no path gives an empty Path. Callbacks run on a spinner thread while
-/// run() plans.
+/// from (the goal's; a re-plan's map's); no path gives an empty Path. A request the last plan still answers
+/// (the same state, or the robot further along it on an unchanged map: a lockstep bridge asks every step) is
+/// answered with that plan again, not a new one. Callbacks run on a spinner thread while run() plans.
 class PlannerNode {
  public:
   /// Subscribes and advertises in the node's namespace; plans with `plan`.
@@ -64,6 +65,7 @@ class PlannerNode {
   bool replanDue() const;
   bool nextRequest(Request* request);
   void serve(const Request& request);
+  bool keepsLastPlan(const Request& request, const GridMap& map, Cell robot, Cell target) const;
   void publish(const std::vector<MapPoint>& waypoints, const ros::Time& stamp);
 
   PlannerNodeOptions options_;
@@ -75,6 +77,15 @@ class PlannerNode {
   ros::Subscriber odom_subscriber_;  // only as the signal that the tf of a stamp has been sent
   ros::Subscriber goal_subscriber_;
   bool plan_time_logged_ = false;
+  // The last plan (used by run()'s thread only): what a request for the same state, or a step along it on the
+  // same map, is answered with again.
+  struct LastPlan {
+    std::vector<MapPoint> waypoints;
+    Cell from{-1, -1};
+    Cell target{-1, -1};
+    ros::Time stamp;
+    nav_msgs::OccupancyGrid::ConstPtr map;
+  } last_plan_;
 
   std::mutex mutex_;  // guards the members below, shared with the callbacks
   std::condition_variable changed_;

@@ -147,7 +147,7 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
                       +[](A& a) -> std::string& { return a.host; })
             .notAffectingResults(),
     };
-    for (OptionSpec<A>& spec : nestedOptions(selectOptions(bridgeOptionSpecs(), {"plan_timeout", "cells_per_ppp_cell"}),
+    for (OptionSpec<A>& spec : nestedOptions(selectOptions(bridgeOptionSpecs(), {"plan_timeout", "lockstep", "cells_per_ppp_cell"}),
                                              +[](A& a) -> BridgeOptions& { return a.bridge; })) {
       spec.doc = "planner agents: " + spec.doc;
       list.insert(list.end() - 1, spec);

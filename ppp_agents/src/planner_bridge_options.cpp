@@ -30,6 +30,10 @@ const std::vector<OptionSpec<BridgeOptions>>& bridgeOptionSpecs() {
                     +[](B& b) -> double& { return b.robot_radius; }, Bounds{0, kMaxRobotRadius}),
       declareOption("plan_timeout", "seconds the planner has to answer a plan request",
                     +[](B& b) -> double& { return b.plan_timeout; }, Bounds{1e-3, 86400}),
+      declareOption("lockstep",
+                    "send a plan request every step and move only on the answer to it, so a run does not depend on "
+                    "timing (false: free-running, the robot follows the newest path; not reproducible)",
+                    +[](B& b) -> bool& { return b.lockstep; }),
       declareOption("connect_timeout", "seconds to wait at start-up for the planner's topics",
                     +[](B& b) -> double& { return b.connect_timeout; }, Bounds{1e-3, 86400})
           .notAffectingResults(),

@@ -143,7 +143,7 @@ TEST(AgentConfigTest, ReadsConfigurationsWithDefaults) {
 
 TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, colour: red}\n"),
-            "agents.yaml:2: agents[0].colour: unknown key; valid keys: cells_per_ppp_cell, host, memory, name, "
+            "agents.yaml:2: agents[0].colour: unknown key; valid keys: cells_per_ppp_cell, host, lockstep, memory, name, "
             "plan_timeout, planner_args, planner_node, prior_map, runs, sensor_noise, type");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),
             std::string("agents.yaml:3: agents[1].type: missing; valid: ") + kTypes);

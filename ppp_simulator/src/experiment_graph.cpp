@@ -97,7 +97,8 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, 
   options.connect_timeout = type.empty() ? 300.0 : 20.0;
   options.robot_radius = robot_radius;
   static const std::vector<OptionSpec<agents::BridgeOptions>> written =
-      selectOptions(agents::bridgeOptionSpecs(), {"plan_timeout", "connect_timeout", "cells_per_ppp_cell", "robot_radius"});
+      selectOptions(agents::bridgeOptionSpecs(),
+                    {"plan_timeout", "lockstep", "connect_timeout", "cells_per_ppp_cell", "robot_radius"});
   addParams(written, options, &bridge);
   if (type.empty()) return {bridge};
   ppp_msgs::GraphNode planner{package, type, ppp_msgs::nodes::kPlanner};

@@ -284,7 +284,7 @@ TEST_F(ExperimentYaml, PlannerAgentsKeepTheirOwnRunsAndMapChoiceInTheFingerprint
   EXPECT_EQ(c.runsFor(c.agents[1]), 3);
   const std::string fingerprint = experimentFingerprint(c);
   EXPECT_NE(fingerprint.find("  - {type: planner, name: ompl, memory: full, sensor_noise: 0, runs: 3, prior_map: true, "
-                             "planner_node: '', planner_args: '', plan_timeout: 5, cells_per_ppp_cell: 1}"),
+                             "planner_node: '', planner_args: '', plan_timeout: 5, lockstep: true, cells_per_ppp_cell: 1}"),
             std::string::npos)
       << fingerprint;
   c.agents[1].runs = 4;  // a change of the planner's runs is a different experiment

@@ -19,6 +19,7 @@ struct BridgeOptions {
   int cells_per_ppp_cell = 1;                      ///< Map cells per PPP cell side in the published map.
   double robot_radius = 0;                         ///< The robot's radius in PPP cells (published for the planner).
   double plan_timeout = 5.0;                       ///< Seconds the planner has to answer a plan request.
+  bool lockstep = true;                            ///< Ask every step and wait for the answer (reproducible).
   double connect_timeout = 20.0;                   ///< Seconds to wait at start-up for the planner's topics.
   std::string map_frame = ppp_msgs::frames::kMap;  ///< Frame of the map, poses and goal.
   std::string base_frame;  ///< The robot's frame (tf child, odom child, scan frame); "": defaultBridgeBaseFrame.

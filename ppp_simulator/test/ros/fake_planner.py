@@ -3,6 +3,7 @@
 
 ~mode  silent    subscribes to the goal and advertises the plan, but never publishes a path
        straight  answers every goal with the straight line from the robot to the goal (through any wall)
+       unstamped answers every goal with simple_planner.py's path, but leaves the path's stamp 0
        die_once  a breadth-first planner (simple_planner.py's search), except that the first instance ever (no
                  ~marker file yet) SIGKILLs itself on its second goal: a planner killed mid-episode
 ~marker  file that records the death in die_once mode (required there)
@@ -23,8 +24,8 @@ from simple_planner import shortest_path  # noqa: E402 (the example planner's se
 class FakePlanner:
     def __init__(self):
         self.mode = rospy.get_param("~mode")
-        if self.mode not in ("silent", "straight", "die_once"):
-            raise SystemExit("~mode: expected silent, straight or die_once, got %r" % self.mode)
+        if self.mode not in ("silent", "straight", "unstamped", "die_once"):
+            raise SystemExit("~mode: expected silent, straight, unstamped or die_once, got %r" % self.mode)
         self.marker = rospy.get_param("~marker", "")
         if self.mode == "die_once" and not self.marker:
             raise SystemExit("~marker: required in die_once mode")
@@ -68,6 +69,8 @@ class FakePlanner:
                 waypoint = PoseStamped(header=goal.header)
                 waypoint.pose.position.x, waypoint.pose.position.y = column + 0.5, row + 0.5
                 path.poses.append(waypoint)
+        if self.mode == "unstamped":
+            path.header.stamp = rospy.Time(0)
         self.answered += 1
         self.plan.publish(path)
 

@@ -44,7 +44,7 @@ std::map<std::string, std::map<std::string, std::map<std::string, int>>> reasons
 TEST(PlannerExperimentTest, ExamplePlannersPassAndFaultyPlannersFailWithTheirReasons) {
   std::string out;
   const auto rows = runExperiment("planners", "planner_experiment.yaml", &out);
-  ASSERT_EQ(rows.size(), 3u * 2 + 3u * 2 + 3u + 3u);
+  ASSERT_EQ(rows.size(), 3u * 2 + 3u * 2 + 3u + 3u + 3u + 3u);
   auto r = reasons(rows);
   for (const char* map : {"open", "wall", "hidden"}) {
     // OMPL plans on the true map; the optimistic re-planner starts blind and must find the route behind the
@@ -52,6 +52,9 @@ TEST(PlannerExperimentTest, ExamplePlannersPassAndFaultyPlannersFailWithTheirRea
     EXPECT_EQ(r["ompl"][map]["goal_reached"], 2) << map;
     EXPECT_EQ(r["optimistic"][map]["goal_reached"], 2) << map;
     EXPECT_EQ(r["silent_planner"][map]["planner_timeout"], 1) << map;
+    // A lockstep bridge moves only on an answer stamped with its request; a free-running one takes any path.
+    EXPECT_EQ(r["unstamped_lockstep"][map]["planner_timeout"], 1) << map;
+    EXPECT_EQ(r["unstamped_free"][map]["goal_reached"], 1) << map;
   }
   EXPECT_EQ(r["straight_planner"]["open"]["goal_reached"], 1);
   EXPECT_EQ(r["straight_planner"]["wall"]["invalid_path"], 1);
