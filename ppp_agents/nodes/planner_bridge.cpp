@@ -95,15 +95,16 @@ PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch)
   if (link_.gone()) return fail(reason::kPlannerLost, "the planner's process is gone");
 
   std::vector<MapPoint> points;
-  const std::optional<nav_msgs::Path> unasked = link_.takeUnasked();
   std::optional<Action> action;
   if (!parameters_.lockstep) {
     // Free-running: a path the planner published on its own (re-planning on the new map) replaces the current
     // one if usable, whenever it arrives; without one the robot follows the path it has.
+    const std::optional<nav_msgs::Path> unasked = link_.takeUnasked();
     if (unasked && pathPoints(*unasked, parameters_.map_frame, &points).empty()) episode_.offer(points, robot);
     action = episode_.next(robot);
   }
-  // Lockstep: every step is a request, and only the answer to this step's state moves the robot.
+  // Lockstep: every step is a request, and only the answer to this step's state moves the robot (a re-plan on
+  // this step's map that arrived already is that answer).
   if (!action) {
     link_.publishGoal(stamp, episode_);
     const std::optional<nav_msgs::Path> path = link_.waitForPath(

@@ -6,23 +6,28 @@ unknown cells as free, and publishes the centre of every cell of it on `plan` (a
 there is none). Start it in the robot's namespace, e.g. `rosrun ppp_agents simple_planner.py __ns:=/G/robot`.
 """
 from collections import deque
-import time
+import threading
 
 import rospy
 from geometry_msgs.msg import PoseStamped
 from nav_msgs.msg import OccupancyGrid, Odometry, Path
 
 newest = {"map": None, "odom": None}  # the last message of each kind
+arrived = threading.Condition()  # notified when a map or odometry arrives (each subscription has its own thread)
+
+
+def keep(kind, message):
+    """Stores the newest message of a kind and wakes a goal waiting for it."""
+    with arrived:
+        newest[kind] = message
+        arrived.notify_all()
 
 
 def wait_for(kind, stamp):
     """The newest message of a kind once it is stamped no earlier than `stamp` (or after 1 s, the newest)."""
-    deadline = time.monotonic() + 1.0
-    while time.monotonic() < deadline and not rospy.is_shutdown():
-        if newest[kind] is not None and newest[kind].header.stamp >= stamp:
-            break
-        time.sleep(0.01)  # each subscription has its own thread, so the map and odom still arrive
-    return newest[kind]
+    with arrived:
+        arrived.wait_for(lambda: newest[kind] is not None and newest[kind].header.stamp >= stamp, timeout=1.0)
+        return newest[kind]
 
 
 def path_to(came_from, cell):
@@ -89,8 +94,8 @@ def serve(name, search=shortest_path, read_parameters=lambda: None):
     read_parameters()
     plan_publisher = rospy.Publisher("plan", Path, queue_size=1)
     # tcp_nodelay: without it TCP may hold each small message back for 40 ms.
-    rospy.Subscriber("map", OccupancyGrid, lambda message: newest.update(map=message), tcp_nodelay=True)
-    rospy.Subscriber("odom", Odometry, lambda message: newest.update(odom=message), tcp_nodelay=True)
+    rospy.Subscriber("map", OccupancyGrid, lambda message: keep("map", message), tcp_nodelay=True)
+    rospy.Subscriber("odom", Odometry, lambda message: keep("odom", message), tcp_nodelay=True)
     rospy.Subscriber("move_base_simple/goal", PoseStamped, lambda goal: on_goal(goal, search), tcp_nodelay=True)
     rospy.spin()
 
