@@ -1,5 +1,7 @@
 #include "planner_bridge.hpp"
 
+#include <algorithm>
+
 #include "planner_bridge_messages.hpp"
 #include "ppp_agents/protocol/batch_codec.hpp"
 #include "ppp_agents/protocol/batch_responder.hpp"
@@ -9,6 +11,16 @@
 
 namespace ppp {
 namespace agents {
+
+namespace {
+
+/// True when two paths have the same poses.
+bool samePoints(const std::vector<MapPoint>& a, const std::vector<MapPoint>& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                    [](const MapPoint& p, const MapPoint& q) { return p.x == q.x && p.y == q.y; });
+}
+
+}  // namespace
 
 PlannerBridge::PlannerBridge(ros::NodeHandle& nh, const BridgeParameters& parameters)
     : parameters_(parameters), link_(nh, parameters) {
@@ -59,6 +71,7 @@ void PlannerBridge::start(const ppp_msgs::EpisodeStart& s) {
     episode_.start(protocol::episodeInfo(decoded, nullptr), prior.get(), parameters_.config.memory_window,
                    parameters_.resolution);
     link_.newEpisode();
+    following_.clear();
     active_ = true;
   } catch (const InvalidArgument& e) {
     warnOnce(e.name(), "rejected the start of episode " + std::to_string(s.episode) + ": " + e.what());
@@ -120,12 +133,18 @@ PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch)
     }
     const std::string frame_problem = pathPoints(*path, parameters_.map_frame, &points);
     if (!frame_problem.empty()) return fail(reason::kInvalidPath, frame_problem);
-    const Answer answer = episode_.answer(points, robot);
-    if (answer.verdict == AnswerVerdict::NoPath) return fail(reason::kNoPath, answer.detail);
-    if (answer.verdict == AnswerVerdict::InvalidPath) {
-      return fail(reason::kInvalidPath, answer.detail);
+    // The plan kept (the poses of the path being followed, sent again): the robot goes on from where it is along
+    // it, rather than from the first place the path passes its cell (a path may pass a cell twice).
+    if (!points.empty() && samePoints(points, following_)) action = episode_.next(robot);
+    if (!action) {
+      const Answer answer = episode_.answer(points, robot);
+      if (answer.verdict == AnswerVerdict::NoPath) return fail(reason::kNoPath, answer.detail);
+      if (answer.verdict == AnswerVerdict::InvalidPath) {
+        return fail(reason::kInvalidPath, answer.detail);
+      }
+      following_ = points;
+      action = answer.action;
     }
-    action = answer.action;
   }
   return StepOutcome{static_cast<std::uint8_t>(*action), nullptr};
 }

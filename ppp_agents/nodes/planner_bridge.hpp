@@ -52,6 +52,7 @@ class PlannerBridge {
   bool active_ = false;
   std::uint32_t episode_id_ = 0;
   PlannerEpisode episode_;
+  std::vector<MapPoint> following_;  // the poses of the path the robot follows (a lockstep answer may keep it)
 
   std::map<std::string, long> warnings_;
 };

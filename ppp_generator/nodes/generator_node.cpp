@@ -113,7 +113,7 @@ class GeneratorNode {
           const std::string line = meter.update(done, total, steadySeconds(), "best fitness " + formatGeneral(best, 4));
           if (!line.empty()) ROS_INFO("%s", line.c_str());
         },
-        1, [] { return !ros::ok(); });
+        std::max(1L, options.matings / 1000), [] { return !ros::ok(); });  // the meter paces the lines
     ROS_INFO("%s", evolved.summary.c_str());
     if (!parameters_.output_dir.empty()) {
       writeProblemSetDirectory(parameters_.output_dir, evolved.set, options, evolved.extra_files);
