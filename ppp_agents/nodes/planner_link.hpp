@@ -41,9 +41,9 @@ class PlannerLink {
   /// The newest path the planner published on its own since the last look, if any.
   std::optional<nav_msgs::Path> takeUnasked();
   /// Waits up to plan_timeout for a path stamped at or after `request` (or unstamped, unless lockstep) that
-  /// `fits`; a path that
-  /// does not fit is kept and returned when no better one comes. `resend(stamp)` sends the request again every
-  /// second (a restarted planner missed it). Marks the planner as having answered when a path is returned.
+  /// `fits`; a path that does not fit is kept and returned when no better one comes. `resend(stamp)` sends the
+  /// request again every second (a restarted planner missed it). Marks the planner as having answered when a path
+  /// is returned.
   std::optional<nav_msgs::Path> waitForPath(const ros::Time& request,
                                             const std::function<bool(const nav_msgs::Path&)>& fits,
                                             const std::function<void(const ros::Time&)>& resend);
