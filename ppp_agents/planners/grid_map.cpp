@@ -48,6 +48,15 @@ Cell GridMap::cellOf(MapPoint p) const { return walkMapSegment(frame_, p.x, p.y,
 
 bool GridMap::segmentPassable(MapPoint a, MapPoint b) const { return walkPassable(a, b) && walkPassable(b, a); }
 
+bool GridMap::pathPasses(const std::vector<MapPoint>& path, Cell cell) const {
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    for (const Cell passed : walkMapSegment(frame_, path[i - 1].x, path[i - 1].y, path[i].x, path[i].y)) {
+      if (passed == cell) return true;
+    }
+  }
+  return false;
+}
+
 bool GridMap::walkPassable(MapPoint from, MapPoint to) const {
   for (const Cell cell : walkMapSegment(frame_, from.x, from.y, to.x, to.y)) {
     if (!passable(cell)) return false;

@@ -41,6 +41,10 @@ class GridMap {
   /// and from b to a (they differ only where the segment passes exactly through a cell corner) is passable.
   /// @throws InvalidArgument for a coordinate that is not finite or absurdly far from the map.
   bool segmentPassable(MapPoint a, MapPoint b) const;
+  /// True when the path (map-frame waypoints joined by straight segments) passes through `cell`, walked as
+  /// ppp::walkMapSegment walks each segment. A path of fewer than two waypoints passes nowhere.
+  /// @throws InvalidArgument for a coordinate that is not finite or absurdly far from the map.
+  bool pathPasses(const std::vector<MapPoint>& path, Cell cell) const;
 
  private:
   int index(Cell c) const { return c.y * frame_.width + c.x; }

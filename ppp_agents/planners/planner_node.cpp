@@ -8,7 +8,6 @@
 #include <utility>
 
 #include "ppp_core/error.hpp"
-#include "ppp_core/segment_walk.hpp"
 #include "ppp_msgs/graph_names.h"
 
 namespace ppp {
@@ -181,14 +180,7 @@ bool PlannerNode::keepsLastPlan(const Request& request, const GridMap& map, Cell
   // The robot moved on along the plan and the map says nothing new (a new run of the same PPP starts where the
   // plan did, and gets a new plan).
   if (robot == last.from || (last.map != request.map && last.map->data != request.map->data)) return false;
-  for (std::size_t i = 1; i < last.waypoints.size(); ++i) {
-    const MapPoint& a = last.waypoints[i - 1];
-    const MapPoint& b = last.waypoints[i];
-    for (const Cell cell : walkMapSegment(map.frame(), a.x, a.y, b.x, b.y)) {
-      if (cell == robot) return true;
-    }
-  }
-  return false;
+  return map.pathPasses(last.waypoints, robot);
 }
 
 void PlannerNode::publish(const std::vector<MapPoint>& waypoints, const ros::Time& stamp) {

@@ -89,6 +89,19 @@ TEST(GridMapTest, ASegmentMustBePassableBothWays) {
   EXPECT_FALSE(open.segmentPassable(a, MapPoint{2.5, 1.5}));
 }
 
+TEST(GridMapTest, APathPassesTheCellsOfItsSegments) {
+  // An L through the centres of (0,0), (3,0) and (3,2) of a 4x3 map: it passes the top row and the right column,
+  // and no other cell; a path of one waypoint passes nowhere, not even its own cell.
+  const GridMap map = test::mapPicture({"....", "....", "...."});
+  const std::vector<MapPoint> path{map.centre(Cell{0, 0}), map.centre(Cell{3, 0}), map.centre(Cell{3, 2})};
+  for (int y = 0; y < 3; ++y) {
+    for (int x = 0; x < 4; ++x) EXPECT_EQ(map.pathPasses(path, Cell{x, y}), y == 0 || x == 3) << x << "," << y;
+  }
+  EXPECT_FALSE(map.pathPasses({map.centre(Cell{1, 1})}, Cell{1, 1}));
+  EXPECT_FALSE(map.pathPasses({}, Cell{0, 0}));
+  EXPECT_THROW(map.pathPasses({MapPoint{0.5, 0.5}, MapPoint{1e300, 0.5}}, Cell{0, 0}), InvalidArgument);
+}
+
 }  // namespace
 }  // namespace planners
 }  // namespace ppp
