@@ -5,6 +5,7 @@
 #include <charconv>
 #include <map>
 #include <sstream>
+#include <thread>
 
 #include "ppp_agents/agent_registry.hpp"
 #include "ppp_core/error.hpp"
@@ -23,6 +24,12 @@ constexpr int kMaxMemoryWindow = 2 * kMaxGridSide - 1;
 std::string priorMapProblem(const AgentConfig& config) {
   if (!config.prior_map || config.type == kPlannerType) return "";
   return "only planner agents take prior_map (astar always has the map; the other agents never do)";
+}
+
+/// What is wrong with the instances asked for, or "" when nothing is.
+std::string instancesProblem(const AgentConfig& config) {
+  if (config.instances == 0 || config.type == kPlannerType) return "";
+  return "only planner agents run as several instances (the other agents' nodes play batches of runs)";
 }
 
 /// Whether `name` is a legal ROS package or executable name: letters, digits, '_', '-' and '.', not empty.
@@ -117,6 +124,7 @@ void AgentConfig::validate() const {
   if (!priorMapProblem(*this).empty()) throw InvalidArgument("prior_map", priorMapProblem(*this));
   if (!plannerNodeProblem(*this).empty()) throw InvalidArgument("planner_node", plannerNodeProblem(*this));
   if (!plannerArgsProblem(*this).empty()) throw InvalidArgument("planner_args", plannerArgsProblem(*this));
+  if (!instancesProblem(*this).empty()) throw InvalidArgument("instances", instancesProblem(*this));
   if (!hostProblem(host).empty()) throw InvalidArgument("host", hostProblem(host));
 }
 
@@ -143,6 +151,12 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
                       "planner agents: private parameters of the planner_node, as _name:=value words (e.g. "
                       "_planning_time:=0.005)",
                       +[](A& a) -> std::string& { return a.planner_args; }),
+        declareOption("instances",
+                      "planner agents: bridge and planner pairs playing its runs in parallel, results identical "
+                      "whatever their number (0: this machine's cores when the experiment starts the planner, "
+                      "else 1)",
+                      +[](A& a) -> int& { return a.instances; }, Bounds{0, kMaxInstances})
+            .notAffectingResults(),
         declareOption("host", "through ROS: the machine the agent's nodes run on ('': the simulator's)",
                       +[](A& a) -> std::string& { return a.host; })
             .notAffectingResults(),
@@ -171,6 +185,18 @@ const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs() {
 }
 
 bool isPlanner(const AgentConfig& config) { return config.type == kPlannerType; }
+
+int instanceCount(const AgentConfig& config) {
+  if (!isPlanner(config)) return 1;
+  if (config.instances > 0) return config.instances;
+  if (config.planner_node.empty()) return 1;
+  return std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, kMaxInstances);
+}
+
+std::string instanceGraphName(const AgentConfig& config, int instance) {
+  const std::string name = agentGraphName(config.name);
+  return instanceCount(config) == 1 ? name : name + "/instance_" + std::to_string(instance + 1);
+}
 
 const std::vector<std::string>& agentTypeNames() {
   static const std::vector<std::string> names = [] {

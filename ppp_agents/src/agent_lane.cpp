@@ -12,7 +12,7 @@ namespace agents {
 
 AgentLane::AgentLane(const AgentConfig& config, const EpisodeOptions& options,
                      const std::vector<PreparedSet>& sets, SeedFunction seed_of, int runs, int batch_size,
-                     const SkipFunction& skip)
+                     const SkipFunction& skip, LaneShare share)
     : config_((config.validate(), config)),
       options_((options.validate(), options)),
       sets_(sets),
@@ -23,10 +23,15 @@ AgentLane::AgentLane(const AgentConfig& config, const EpisodeOptions& options,
       keeps_actions_(isPlanner(config)),
       sensor_(SensorOptions{options.sensor_range, config.sensor_noise}) {
   if (batch_size < 1) throw InvalidArgument("batch_size", "expected at least 1, got " + std::to_string(batch_size));
+  if (share.count < 1 || share.index < 0 || share.index >= share.count) {
+    throw InvalidArgument("share", "expected instance " + std::to_string(share.index) + " of " +
+                                       std::to_string(share.count) + " to be in [0, " + std::to_string(share.count) + ")");
+  }
+  long position = 0;  // in the lane's order over every run, played or skipped: a share does not depend on `skip`
   for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
     for (int p = 0; p < static_cast<int>(sets[s].set.ids.size()); ++p) {
-      for (int run = 0; run < runs; ++run) {
-        if (!skip || !skip(s, p, run)) queue_.push_back({s, p, run});
+      for (int run = 0; run < runs; ++run, ++position) {
+        if (position % share.count == share.index && (!skip || !skip(s, p, run))) queue_.push_back({s, p, run});
       }
     }
   }

@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "ppp_core/error.hpp"
@@ -143,8 +145,8 @@ TEST(AgentConfigTest, ReadsConfigurationsWithDefaults) {
 
 TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, colour: red}\n"),
-            "agents.yaml:2: agents[0].colour: unknown key; valid keys: cells_per_ppp_cell, host, lockstep, memory, name, "
-            "plan_timeout, planner_args, planner_node, prior_map, runs, sensor_noise, type");
+            "agents.yaml:2: agents[0].colour: unknown key; valid keys: cells_per_ppp_cell, host, instances, lockstep, memory, "
+            "name, plan_timeout, planner_args, planner_node, prior_map, runs, sensor_noise, type");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),
             std::string("agents.yaml:3: agents[1].type: missing; valid: ") + kTypes);
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - name: x\n    type: robot\n"),
@@ -228,6 +230,29 @@ TEST(AgentConfigTest, PlannerAgentsAreReadButNeverBuiltInProcess) {
   astar.prior_map = true;
   EXPECT_EQ(invalidArgument([&] { astar.validate(); }),
             "prior_map: only planner agents take prior_map (astar always has the map; the other agents never do)");
+}
+
+TEST(AgentConfigTest, APlannerRunsAsInstancesEachInANamespaceOfItsOwn) {
+  const auto configs = read(
+      "agents:\n"
+      "  - {name: mine.v2, type: planner, instances: 3}\n"
+      "  - {name: started, type: planner, planner_node: ppp_agents/optimistic_planner_node}\n"
+      "  - {name: by_hand, type: planner}\n"
+      "  - {name: one, type: planner, planner_node: ppp_agents/optimistic_planner_node, instances: 1}\n"
+      "  - {type: explorer}\n");
+  EXPECT_EQ(instanceCount(configs[0]), 3);
+  EXPECT_EQ(instanceGraphName(configs[0], 0), "mine_v2/instance_1");
+  EXPECT_EQ(instanceGraphName(configs[0], 2), "mine_v2/instance_3");
+  // A planner the experiment starts: one per core; one the user starts: one; 1 alone keeps the agent's namespace.
+  EXPECT_EQ(instanceCount(configs[1]), std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, kMaxInstances));
+  EXPECT_EQ(instanceCount(configs[2]), 1);
+  EXPECT_EQ(instanceGraphName(configs[2], 0), "by_hand");
+  EXPECT_EQ(instanceGraphName(configs[3], 0), "one");
+  EXPECT_EQ(instanceCount(configs[4]), 1);
+  EXPECT_EQ(parseError("agents:\n  - {type: planner, instances: 65}\n").find("agents.yaml:2: agents[0].instances: "), 0u);
+  EXPECT_EQ(parseError("agents:\n  - {type: astar, instances: 2}\n"),
+            "agents.yaml:2: agents[0].instances: only planner agents run as several instances (the other agents' nodes "
+            "play batches of runs)");
 }
 
 TEST(AgentConfigTest, LoadRejectsUnknownTopLevelKeysAndMissingFiles) {

@@ -25,11 +25,16 @@ inline AgentConfig caseBase() {
 /// The cases of the options in `specs` (a source's selection of agentOptionSpecs()).
 inline std::vector<OptionCase> agentOptionCases(const std::vector<OptionSpec<AgentConfig>>& specs) {
   std::vector<OptionCase> cases = declaredOptionCases(specs, caseBase());
+  // An explorer refuses every instances value but 0 (only planner agents run as several instances).
+  cases.erase(std::remove_if(cases.begin(), cases.end(),
+                             [](const OptionCase& c) { return c.option == "instances" && c.accepted && c.value != "0"; }),
+              cases.end());
   const std::vector<OptionCase> more = {
       {"type", "astar", true},          {"type", "robot", false},        {"memory", "5x5", true},
       {"memory", "4x4", false},         {"memory", "5x3", false},        {"memory", "5", false},
       {"name", "''", false},            {"prior_map", "true", false},    {"planner_node", "a/b", false},
       {"host", "robot-2.lab", true},    {"host", "'two words'", false},  {"planner_args", "_a:=1", false},
+      {"instances", "2", false},
   };
   for (const OptionCase& c : more) {
     const bool declared =

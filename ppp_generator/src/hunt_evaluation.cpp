@@ -33,12 +33,15 @@ HuntEvaluation::HuntEvaluation(const std::vector<Problem>& problems, const std::
   for (const Grid& grid : sets_[0].grids) hashes.push_back(grid.hash());
   for (std::size_t a = 0; a < panel.size(); ++a) {
     agent_index_[panel[a].name] = static_cast<int>(a);
-    lanes_.push_back(std::make_unique<agents::AgentLane>(
-        panel[a], episode, sets_,
-        [hashes, generator_seed, name = panel[a].name](int, int problem, int run) {
-          return failureRunSeed(generator_seed, hashes[static_cast<std::size_t>(problem)], name, run);
-        },
-        runs, batch_size));
+    const int instances = agents::instanceCount(panel[a]);
+    for (int instance = 0; instance < instances; ++instance) {
+      lanes_.push_back(std::make_unique<agents::AgentLane>(
+          panel[a], episode, sets_,
+          [hashes, generator_seed, name = panel[a].name](int, int problem, int run) {
+            return failureRunSeed(generator_seed, hashes[static_cast<std::size_t>(problem)], name, run);
+          },
+          runs, batch_size, agents::AgentLane::SkipFunction{}, agents::LaneShare{instance, instances}));
+    }
   }
   tallies_.assign(problems.size(), PanelTally(panel.size()));
   evaluations_.assign(problems.size(), PanelEvaluation{});

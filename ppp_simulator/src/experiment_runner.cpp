@@ -53,7 +53,7 @@ std::uint64_t runSeed(std::uint64_t experiment_seed, const std::string& set, con
 
 agents::AgentLane experimentLane(const agents::AgentConfig& config, const EpisodeOptions& options,
                                  const std::vector<agents::PreparedSet>& sets, std::uint64_t experiment_seed, int runs,
-                                 const std::set<RunKey>& done, int batch_size) {
+                                 const std::set<RunKey>& done, int batch_size, agents::LaneShare share) {
   return agents::AgentLane(
       config, options, sets,
       [&sets, experiment_seed, name = config.name](int set, int problem, int run) {
@@ -62,7 +62,8 @@ agents::AgentLane experimentLane(const agents::AgentConfig& config, const Episod
       runs, batch_size,
       [&sets, &done, name = config.name](int set, int problem, int run) {
         return done.count(RunKey{sets[set].name, sets[set].set.ids[problem], name, run}) > 0;
-      });
+      },
+      share);
 }
 
 void checkExperimentDirectory(const ExperimentConfig& config, const std::string& dir) {

@@ -222,6 +222,30 @@ TEST(AgentLaneTest, ASilentAgentIsGivenUpAfterSomeUnansweredBatches) {
   EXPECT_TRUE(lane.finished());
 }
 
+TEST(AgentLaneTest, InstancesShareTheRunsAndTogetherPlayThemAsOneLane) {
+  // Three lanes, each every third run of the lane's order, with one run done: disjoint shares of 8 or 7 runs
+  // whose results together are the one lane's, row for row.
+  const agents::AgentConfig c = config("explorer", 5);
+  const std::set<RunKey> done{{"turns", smallSets()[0].set.ids[1], c.name, 0}};  // position 3: instance 0's
+  agents::AgentLane whole = experimentLane(c, EpisodeOptions{}, smallSets(), 5, 3, done, 4);
+  auto expected = playLane(whole);
+  sortRows(&expected);
+  ASSERT_EQ(expected.size(), static_cast<std::size_t>(2 * 4 * 3 - 1));
+  std::vector<agents::EpisodeResult> together;
+  for (int instance = 0; instance < 3; ++instance) {
+    agents::AgentLane share = experimentLane(c, EpisodeOptions{}, smallSets(), 5, 3, done, 4, {instance, 3});
+    EXPECT_EQ(share.remaining(), instance == 0 ? 7 : 8) << instance;
+    for (agents::EpisodeResult& r : playLane(share)) together.push_back(std::move(r));
+  }
+  sortRows(&together);
+  ASSERT_EQ(together.size(), expected.size());
+  for (std::size_t i = 0; i < together.size(); ++i) {
+    EXPECT_EQ(agents::toCsvFields(together[i]), agents::toCsvFields(expected[i])) << "row " << i;
+  }
+  EXPECT_THROW(experimentLane(c, EpisodeOptions{}, smallSets(), 5, 3, {}, 4, {3, 3}), InvalidArgument);
+  EXPECT_THROW(experimentLane(c, EpisodeOptions{}, smallSets(), 5, 3, {}, 4, {0, 0}), InvalidArgument);
+}
+
 TEST(AgentLaneTest, DoneRunsAreSkippedAndBadBatchSizeRefused) {
   std::set<RunKey> done{{"turns", smallSets()[0].set.ids[0], "random_0", 0}};
   agents::AgentLane lane = experimentLane(config("random"), EpisodeOptions{}, smallSets(), 5, 2, done, 3);

@@ -14,6 +14,8 @@ namespace agents {
 
 /// Most runs per PPP of one agent in an experiment.
 constexpr int kMaxRuns = 100000000;
+/// Most instances (bridge and planner process pairs) of one planner agent.
+constexpr int kMaxInstances = 64;
 
 /// One agent configuration of an experiment: a type plus handicaps, under a name of its own.
 struct AgentConfig {
@@ -26,10 +28,11 @@ struct AgentConfig {
   std::string planner_node;    ///< Planner agents only: "package/executable" of the planner to start ("" = the user's).
   std::string planner_args;    ///< Planner agents only: arguments of planner_node ("_planning_time:=0.005 ...").
   BridgeOptions bridge;        ///< Planner agents only: its bridge's plan_timeout and cells_per_ppp_cell.
+  int instances = 0;           ///< Planner agents only: bridge and planner pairs sharing its runs; 0 = instanceCount's.
   std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
   /// @throws InvalidArgument naming "type" (listing the valid ones), "name", "memory", "sensor_noise", "runs",
-  /// "prior_map", "planner_node", "planner_args", "plan_timeout", "cells_per_ppp_cell" or "host" (other agents have
-  /// no planner: their bridge options are unused).
+  /// "prior_map", "planner_node", "planner_args", "plan_timeout", "cells_per_ppp_cell", "instances" or "host"
+  /// (other agents have no planner: their bridge options are unused).
   void validate() const;
 };
 
@@ -49,6 +52,15 @@ constexpr const char* kPlannerType = "planner";
 
 /// True for an external planner agent (type kPlannerType), which cannot be built in-process.
 bool isPlanner(const AgentConfig& config);
+
+/// How many bridge and planner pairs play a planner agent's runs in parallel, each its share (every n-th run):
+/// `instances` when given; else as many as this machine has cores for a planner the experiment starts
+/// (planner_node), and 1 for one the user starts. 1 for every other agent (its node plays batches).
+int instanceCount(const AgentConfig& config);
+
+/// The namespace of instance `instance` (0-based) of an agent as a ROS graph name: agentGraphName(name) for an
+/// agent of one instance, else agentGraphName(name) + "/instance_K" with K = instance + 1.
+std::string instanceGraphName(const AgentConfig& config, int instance);
 
 /// The built-in agent types of agentRegistry(), in its order (configurations may also name kPlannerType).
 const std::vector<std::string>& agentTypeNames();

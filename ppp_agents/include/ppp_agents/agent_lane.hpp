@@ -23,6 +23,13 @@ using protocol::EpisodeStart;
 using protocol::MoveReply;
 using protocol::ScanRequest;
 
+/// Which of an agent's runs a lane plays when several instances share them: every `count`-th run of the lane's
+/// order (set, PPP, run), starting at run `index`.
+struct LaneShare {
+  int index = 0;  ///< This lane's instance, in [0, count).
+  int count = 1;  ///< Instances sharing the runs.
+};
+
 /// All the runs of one agent configuration in an experiment, played in lockstep batches: up to `batch_size`
 /// episodes are active at once; each round the lane hands out one scan per active episode and takes one move
 /// per episode back. Episodes that finish are replaced from the queue of remaining runs. The moves applied
@@ -33,10 +40,10 @@ class AgentLane {
   using SeedFunction = std::function<std::uint64_t(int set, int problem, int run)>;
   /// Whether run `run` on PPP `problem` of set `set` is already done and is not played (a resumed experiment).
   using SkipFunction = std::function<bool(int set, int problem, int run)>;
-  /// Queues `runs` runs of `config` on every PPP of `sets`, seeded by `seed_of`, except those `skip` says are
-  /// done. @throws InvalidArgument.
+  /// Queues `runs` runs of `config` on every PPP of `sets` (those of `share`), seeded by `seed_of`, except those
+  /// `skip` says are done. @throws InvalidArgument.
   AgentLane(const AgentConfig& config, const EpisodeOptions& options, const std::vector<PreparedSet>& sets,
-            SeedFunction seed_of, int runs, int batch_size, const SkipFunction& skip = {});
+            SeedFunction seed_of, int runs, int batch_size, const SkipFunction& skip = {}, LaneShare share = {});
   /// True when no run is waiting or active.
   bool finished() const { return queue_.empty() && active_.empty(); }
   /// Runs not yet finished (active or queued).

@@ -27,17 +27,17 @@ struct PanelEvaluation {
   std::map<std::string, int> reasons;   ///< Failed runs per reason (budget_exhausted, soft_failure, ...).
 };
 
-/// One evaluation request of a hunt, played through agent lanes (the simulator node's ~evaluate): one lane per
-/// panel agent with `runs` runs on every candidate, seeded by failureRunSeed() exactly as the in-process failure
+/// One evaluation request of a hunt, played through agent lanes (the simulator node's ~evaluate): per panel agent
+/// one lane per instance (agents::instanceCount, each its share) of `runs` runs on every candidate, seeded by failureRunSeed() exactly as the in-process failure
 /// fitness, so built-in agents give the same estimates through ROS as in process. Lanes may be played on
 /// separate threads; record() is thread-safe.
 class HuntEvaluation {
  public:
-  /// Prepares the candidates (each must be solvable) and one lane per panel agent.
+  /// Prepares the candidates (each must be solvable) and the lanes of every panel agent.
   /// @throws InvalidArgument naming "problems" (an unsolvable or invalid PPP), "runs" or the lane's options.
   HuntEvaluation(const std::vector<Problem>& problems, const std::vector<agents::AgentConfig>& panel,
                  const EpisodeOptions& episode, int runs, std::uint64_t generator_seed, int batch_size);
-  /// The lanes, one per panel agent in panel order.
+  /// The lanes in panel order, agents::instanceCount(agent) consecutive ones per panel agent.
   std::vector<std::unique_ptr<agents::AgentLane>>& lanes() { return lanes_; }
   /// Takes finished episodes of any lane.
   void record(const std::vector<agents::EpisodeResult>& ended);

@@ -26,11 +26,12 @@ namespace simulator {
 std::uint64_t runSeed(std::uint64_t experiment_seed, const std::string& set, const std::string& problem,
                       const std::string& agent, int run);
 
-/// The lane of every run of `config` on every PPP of `sets` not in `done`, seeded by runSeed() with
-/// `experiment_seed`. @throws InvalidArgument.
+/// The lane of every run of `config` on every PPP of `sets` not in `done` (of them, `share`'s), seeded by
+/// runSeed() with `experiment_seed`. @throws InvalidArgument.
 agents::AgentLane experimentLane(const agents::AgentConfig& config, const EpisodeOptions& options,
                                  const std::vector<agents::PreparedSet>& sets, std::uint64_t experiment_seed, int runs,
-                                 const std::set<RunKey>& done, int batch_size);
+                                 const std::set<RunKey>& done, int batch_size,
+                                 agents::LaneShare share = {});
 
 /// Generates (or reads) every set of the experiment into `dir`/sets/<name>/, reusing sets already there; a set
 /// being generated when `stop` says stop is not written. @throws IoError, ParseError, InvalidArgument, Interrupted.

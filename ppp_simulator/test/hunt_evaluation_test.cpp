@@ -1,0 +1,95 @@
+// A hunt's evaluation request as the simulator node plays it: lanes per agent instance, results per candidate.
+
+#include "ppp_generator/hunt_evaluation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <numeric>
+
+#include "ppp_agents/protocol/batch_codec.hpp"
+#include "ppp_agents/protocol/batch_responder.hpp"
+#include "ppp_generator/failure_fitness.hpp"
+
+namespace ppp {
+namespace generator {
+namespace {
+
+agents::AgentConfig agent(const std::string& type, int instances = 0) {
+  agents::AgentConfig c;
+  c.name = type + "_agent";
+  c.type = type;
+  c.instances = instances;
+  return c;
+}
+
+/// Three open 8x8 candidates, start top-left, goals 3, 6 and 14 moves away.
+std::vector<Problem> candidates() {
+  std::vector<Problem> problems;
+  for (const Cell goal : {Cell{2, 1}, Cell{3, 3}, Cell{7, 7}}) {
+    Problem p = Problem::empty(8, 8, 1);
+    p.goal = goal;
+    problems.push_back(p);
+  }
+  return problems;
+}
+
+/// Plays a built-in agent's lane through the batch protocol; returns its results.
+std::vector<agents::EpisodeResult> play(agents::AgentLane& lane) {
+  protocol::BatchResponder responder(lane.config());
+  std::vector<agents::EpisodeResult> results;
+  std::vector<protocol::ScanRequest> scans;
+  ppp_msgs::ScanBatch message;
+  for (std::uint32_t batch = 1; !lane.finished(); ++batch) {
+    lane.scans(&scans);
+    protocol::encodeScans(scans, &message);
+    message.batch = batch;
+    const protocol::DecodedMoves moves = protocol::decodeMoves(responder.answer(message));
+    for (agents::EpisodeResult& r : lane.answer(moves.moves, moves.missing_reason)) results.push_back(std::move(r));
+  }
+  return results;
+}
+
+TEST(HuntEvaluationTest, APlannerHasALanePerInstanceSharingItsRuns) {
+  // The random agent: one lane; the planner of 3 instances: three, of 4 runs each (3 candidates x 4 runs).
+  HuntEvaluation evaluation(candidates(), {agent("random"), agent("planner", 3)}, EpisodeOptions{}, 4, 7, 16);
+  ASSERT_EQ(evaluation.lanes().size(), 4u);
+  EXPECT_EQ(evaluation.lanes()[0]->config().type, "random");
+  EXPECT_EQ(evaluation.lanes()[0]->remaining(), 12);
+  for (std::size_t i = 1; i < 4; ++i) {
+    EXPECT_EQ(evaluation.lanes()[i]->config().name, "planner_agent");
+    EXPECT_EQ(evaluation.lanes()[i]->remaining(), 4) << i;
+  }
+}
+
+TEST(HuntEvaluationTest, EstimatesEqualTheInProcessFailureFitness) {
+  // The random agent in 20 moves, 10 runs per candidate: the estimates through lanes are the in-process
+  // fitness's, run for run (the same seeds), and they differ between the near and the far goal.
+  EpisodeOptions episode;
+  episode.budget = 20;
+  const std::vector<Problem> problems = candidates();
+  HuntEvaluation evaluation(problems, {agent("random")}, episode, 10, 7, 16);
+  evaluation.record(play(*evaluation.lanes()[0]));
+  const std::vector<PanelEvaluation> got = evaluation.evaluations();
+  ASSERT_EQ(got.size(), 3u);
+  FailurePanel panel;
+  panel.agents = {agent("random")};
+  panel.episode = episode;
+  panel.runs_per_eval = 10;
+  panel.seed = 7;
+  panel.threads = 1;
+  std::vector<Grid> grids;
+  for (const Problem& p : problems) grids.push_back(decodeGrid(p));
+  const std::vector<FailureEstimate> expected =
+      estimateFailures(panel, {&problems[0], &problems[1], &problems[2]}, {&grids[0], &grids[1], &grids[2]});
+  for (std::size_t p = 0; p < problems.size(); ++p) {
+    EXPECT_EQ(got[p].episodes, 10);
+    EXPECT_DOUBLE_EQ(got[p].estimate.failure_rate, expected[p].failure_rate) << p;
+    EXPECT_DOUBLE_EQ(got[p].estimate.budget_used, expected[p].budget_used) << p;
+    EXPECT_EQ(got[p].failed, static_cast<int>(expected[p].failure_rate * 10 + 0.5)) << p;
+  }
+  EXPECT_LT(got[0].estimate.failure_rate, got[2].estimate.failure_rate);
+}
+
+}  // namespace
+}  // namespace generator
+}  // namespace ppp
