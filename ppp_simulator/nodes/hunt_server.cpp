@@ -23,14 +23,16 @@ bool HuntServer::evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs
     for (const ppp_msgs::Problem& m : request.problems) problems.push_back(ppp_msgs::fromMessage(m));
     generator::HuntEvaluation evaluation(problems, panel, config_.episode, static_cast<int>(request.runs), request.seed,
                               parameters_.batch_size);
-    std::vector<LaneRunner*> runners;
-    for (const agents::AgentConfig& agent : panel) runners.push_back(&runnerFor(agent));
+    std::vector<LaneRunner*> runners;  // one per lane: the panel's agents' instances, in panel order
+    for (const agents::AgentConfig& agent : panel) {
+      for (const auto& runner : runnersFor(agent)) runners.push_back(runner.get());
+    }
     target_ = &evaluation;  // the runners' sink
-    std::vector<std::exception_ptr> failures(panel.size());
+    std::vector<std::exception_ptr> failures(runners.size());
     std::vector<std::thread> threads;
-    for (std::size_t a = 0; a < panel.size(); ++a) {
-      agents::AgentLane* lane = evaluation.lanes()[a].get();
-      threads.emplace_back([runner = runners[a], lane, failure = &failures[a]] {
+    for (std::size_t i = 0; i < runners.size(); ++i) {
+      agents::AgentLane* lane = evaluation.lanes().at(i).get();
+      threads.emplace_back([runner = runners[i], lane, failure = &failures[i]] {
         try {
           runner->run(lane);
         } catch (...) {
@@ -78,13 +80,15 @@ ppp_msgs::ProblemEvaluation HuntServer::toMessage(const generator::PanelEvaluati
   return m;
 }
 
-LaneRunner& HuntServer::runnerFor(const agents::AgentConfig& agent) {
-  auto found = runners_.find(agent.name);
-  if (found != runners_.end()) return *found->second;
-  auto runner = std::make_unique<LaneRunner>(
-      nh_, parameters_, agent, [this](const std::vector<agents::EpisodeResult>& ended) { target_->record(ended); },
-      LaneRunner::ScanObserver{}, false);
-  return *runners_.emplace(agent.name, std::move(runner)).first->second;
+const std::vector<std::unique_ptr<LaneRunner>>& HuntServer::runnersFor(const agents::AgentConfig& agent) {
+  std::vector<std::unique_ptr<LaneRunner>>& runners = runners_[agent.name];
+  for (int instance = static_cast<int>(runners.size()); instance < agents::instanceCount(agent); ++instance) {
+    runners.push_back(std::make_unique<LaneRunner>(
+        nh_, parameters_, agent, instance,
+        [this](const std::vector<agents::EpisodeResult>& ended) { target_->record(ended); }, LaneRunner::ScanObserver{},
+        false));
+  }
+  return runners;
 }
 
 int runHuntServer(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const SimulatorParameters& parameters) {

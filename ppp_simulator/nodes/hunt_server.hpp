@@ -4,6 +4,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include <ros/ros.h>
 
@@ -34,13 +35,14 @@ class HuntServer {
 
  private:
   static ppp_msgs::ProblemEvaluation toMessage(const generator::PanelEvaluation& e);
-  LaneRunner& runnerFor(const agents::AgentConfig& agent);
+  /// The runners of the agent's instances (agents::instanceCount), made on first use.
+  const std::vector<std::unique_ptr<LaneRunner>>& runnersFor(const agents::AgentConfig& agent);
 
   ros::NodeHandle& nh_;
   SimulatorParameters parameters_;
   ExperimentConfig config_;
   std::mutex serving_;
-  std::map<std::string, std::unique_ptr<LaneRunner>> runners_;
+  std::map<std::string, std::vector<std::unique_ptr<LaneRunner>>> runners_;
   generator::HuntEvaluation* target_ = nullptr;  // the request in flight, where the runners' results go
   long requests_ = 0;
   long episodes_ = 0;

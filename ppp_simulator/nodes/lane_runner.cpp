@@ -17,14 +17,16 @@ const ros::WallDuration kShutdownCheck(0.1);  // a lane waiting for a reply noti
 }  // namespace
 
 LaneRunner::LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameters, const agents::AgentConfig& agent,
-                       ResultSink sink, ScanObserver observer, bool log_rates)
+                       int instance, ResultSink sink, ScanObserver observer, bool log_rates)
     : parameters_(parameters),
       agent_(agent),
+      label_("agent '" + agent.name + "'" +
+             (agents::instanceCount(agent) > 1 ? " instance " + std::to_string(instance + 1) : std::string())),
       sink_(std::move(sink)),
       observer_(std::move(observer)),
       log_rates_(log_rates),
       step_timeout_(agents::isPlanner(agent) ? parameters.planner_step_timeout : parameters.step_timeout) {
-  const std::string graph_name = agents::agentGraphName(agent.name);
+  const std::string graph_name = agents::instanceGraphName(agent, instance);
   message_.agent = agent.name;
   scans_ = nh.advertise<ppp_msgs::ScanBatch>(ppp_msgs::topics::under(graph_name, ppp_msgs::topics::kScans), 2);
   moves_ = ppp_msgs::subscribeInline<ppp_msgs::MoveBatch>(
@@ -33,15 +35,15 @@ LaneRunner::LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameter
 }
 
 void LaneRunner::run(agents::AgentLane* lane) {
-  const std::string& name = agent_.name;
+  const char* name = label_.c_str();
   if (!connected_ && !waitForAgent()) {
-    ROS_ERROR("agent '%s' never connected within %.0f s: its %ld runs fail as agent_lost", name.c_str(),
+    ROS_ERROR("%s never connected within %.0f s: its %ld runs fail as agent_lost", name,
               parameters_.connect_timeout, lane->remaining());
     report(lane->failAll(reason::kAgentLost));
     return;
   }
   if (suspect_ && !agentAlive()) {  // lost in an earlier lane: fail at once instead of after a timeout
-    ROS_ERROR("agent '%s' is still gone: its %ld runs fail as agent_lost", name.c_str(), lane->remaining());
+    ROS_ERROR("%s is still gone: its %ld runs fail as agent_lost", name, lane->remaining());
     report(lane->failAll(reason::kAgentLost));
     return;
   }
@@ -72,7 +74,7 @@ void LaneRunner::run(agents::AgentLane* lane) {
   lock.unlock();
   const double seconds = (ros::WallTime::now() - started).toSec();
   if (log_rates_) {
-    ROS_INFO("agent '%s': %ld episodes in %.1f s (%.1f episodes/s)", name.c_str(), episodes, seconds,
+    ROS_INFO("%s: %ld episodes in %.1f s (%.1f episodes/s)", name, episodes, seconds,
              seconds > 0 ? episodes / seconds : 0.0);
   }
 }
@@ -90,21 +92,21 @@ void LaneRunner::sendBatch() {
 }
 
 void LaneRunner::answerSilence() {
-  const std::string& name = agent_.name;
+  const char* name = label_.c_str();
   const std::uint32_t batch = expected_batch_;
   expected_batch_ = 0;  // a late reply to it is dropped
   if (!agentAlive()) {
-    ROS_ERROR("agent '%s' is gone: its %ld unfinished runs fail as agent_lost", name.c_str(), lane_->remaining());
+    ROS_ERROR("%s is gone: its %ld unfinished runs fail as agent_lost", name, lane_->remaining());
     report(lane_->failAll(reason::kAgentLost));
     suspect_ = true;
     return;
   }
   const auto ended = lane_->unanswered(reason::kTimeout, parameters_.timeouts_before_giving_up);
   if (lane_->finished() && lane_->silentBatches() >= parameters_.timeouts_before_giving_up) {
-    ROS_ERROR("agent '%s' did not answer %d batches in a row: its unfinished runs fail as timeout", name.c_str(),
+    ROS_ERROR("%s did not answer %d batches in a row: its unfinished runs fail as timeout", name,
               lane_->silentBatches());
   } else {
-    ROS_WARN("agent '%s' did not answer batch %u within %.1f s: its episodes fail as timeout", name.c_str(), batch,
+    ROS_WARN("%s did not answer batch %u within %.1f s: its episodes fail as timeout", name, batch,
              step_timeout_);
   }
   report(ended);
@@ -127,7 +129,7 @@ void LaneRunner::onMoves(const ppp_msgs::MoveBatch::ConstPtr& message) {
   if (lane_ == nullptr || failure_ || message->batch != expected_batch_) return;  // late or unexpected
   expected_batch_ = 0;
   protocol::DecodedMoves decoded = protocol::decodeMoves(*message);
-  if (!decoded.fault.empty()) ROS_WARN_ONCE("agent '%s': %s", agent_.name.c_str(), decoded.fault.c_str());
+  if (!decoded.fault.empty()) ROS_WARN_ONCE("%s: %s", label_.c_str(), decoded.fault.c_str());
   try {
     report(lane_->answer(decoded.moves, decoded.missing_reason));
     if (!lane_->finished()) sendBatch();

@@ -5,6 +5,7 @@
 #include <exception>
 #include <functional>
 #include <mutex>
+#include <string>
 #include <vector>
 
 #include <ros/ros.h>
@@ -32,10 +33,10 @@ class LaneRunner {
   /// What sees each batch of scans (may be empty).
   using ScanObserver = std::function<void(const std::string& agent, const std::vector<protocol::ScanRequest>&)>;
 
-  /// Advertises /NAME/scans and subscribes to /NAME/moves for agent configuration `agent`; `log_rates` logs
-  /// each lane's episodes per second when it is done.
+  /// Advertises /NS/scans and subscribes to /NS/moves for instance `instance` of agent configuration `agent`
+  /// (NS = agents::instanceGraphName); `log_rates` logs each lane's episodes per second when it is done.
   LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameters, const agents::AgentConfig& agent,
-             ResultSink sink, ScanObserver observer = {}, bool log_rates = true);
+             int instance, ResultSink sink, ScanObserver observer = {}, bool log_rates = true);
   /// Plays every run of `lane` (whose agent is this runner's); returns when it is finished or ROS shuts down.
   /// @throws what the result sink threw (an unwritable results file, say).
   void run(agents::AgentLane* lane);
@@ -50,6 +51,7 @@ class LaneRunner {
 
   SimulatorParameters parameters_;
   agents::AgentConfig agent_;
+  std::string label_;  // "agent 'NAME'", with the instance when there are several
   ResultSink sink_;
   ScanObserver observer_;
   bool log_rates_;

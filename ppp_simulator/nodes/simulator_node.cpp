@@ -72,22 +72,27 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
   long remaining = 0;
   std::atomic<long> ended_runs{0};
   for (const auto& agent : config.agents) {
-    lanes.push_back(std::make_unique<agents::AgentLane>(experimentLane(
-        agent, config.episode, sets, config.seed, config.runsFor(agent), results.done(), parameters.batch_size)));
-    remaining += lanes.back()->remaining();
-    runners.push_back(std::make_unique<LaneRunner>(
-        nh, parameters, agent,
-        [&results, &recorder, &ended_runs](const std::vector<agents::EpisodeResult>& ended) {
-          results.append(ended);
-          recorder.recordResults(ended);
-          ended_runs += static_cast<long>(ended.size());
-        },
-        [&recorder](const std::string& name, const std::vector<protocol::ScanRequest>& scans) {
-          recorder.recordScans(name, scans);
-        }));
+    const int instances = agents::instanceCount(agent);  // a planner's instances share its runs
+    for (int instance = 0; instance < instances; ++instance) {
+      lanes.push_back(std::make_unique<agents::AgentLane>(experimentLane(agent, config.episode, sets, config.seed,
+                                                                         config.runsFor(agent), results.done(),
+                                                                         parameters.batch_size, {instance, instances})));
+      remaining += lanes.back()->remaining();
+      runners.push_back(std::make_unique<LaneRunner>(
+          nh, parameters, agent, instance,
+          [&results, &recorder, &ended_runs](const std::vector<agents::EpisodeResult>& ended) {
+            results.append(ended);
+            recorder.recordResults(ended);
+            ended_runs += static_cast<long>(ended.size());
+          },
+          [&recorder](const std::string& name, const std::vector<protocol::ScanRequest>& scans) {
+            recorder.recordScans(name, scans);
+          }));
+    }
   }
-  ROS_INFO("running %ld episodes (%zu already done, %zu lost to the agent link played again) with %zu agent nodes, "
-           "batches of %d", remaining, results.done().size(), results.lostRuns(), lanes.size(), parameters.batch_size);
+  ROS_INFO("running %ld episodes (%zu already done, %zu lost to the agent link played again) with %zu agent nodes and "
+           "planner instances, batches of %d", remaining, results.done().size(), results.lostRuns(), lanes.size(),
+           parameters.batch_size);
   std::atomic<bool> failed{false};
   {
     const ProgressReporter progress("episodes", "episodes", remaining, [&ended_runs] { return ended_runs.load(); });

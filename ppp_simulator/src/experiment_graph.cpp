@@ -80,34 +80,40 @@ ppp_msgs::GraphNode agentNode(const agents::AgentConfig& agent) {
   return node;
 }
 
-/// The bridge of a planner agent (told the robot's radius) and, when the config names it, its planner, in the agent's
-/// namespace.
+/// The bridge of each instance of a planner agent (told the robot's radius) and, when the config names it, its
+/// planner, in the instance's namespace (agents::instanceGraphName).
 std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, double robot_radius) {
   const std::size_t slash = agent.planner_node.find('/');
   const std::string package = agent.planner_node.substr(0, slash);
   const std::string type = slash == std::string::npos ? "" : agent.planner_node.substr(slash + 1);
-  ppp_msgs::GraphNode bridge{"ppp_agents", "planner_bridge_node", ppp_msgs::nodes::kBridge};
-  bridge.group = agents::agentGraphName(agent.name);
-  bridge.machine = machineOf(agent);
-  bridge.agent = agent.name;
-  static const std::vector<OptionSpec<agents::AgentConfig>> memory = selectOptions(agents::agentNodeOptionSpecs(), {"memory"});
-  addParams(memory, agent, &bridge);
   // A planner the user starts by hand gets five minutes to appear; one started here, 20 s.
   agents::BridgeOptions options = agent.bridge;
   options.connect_timeout = type.empty() ? 300.0 : 20.0;
   options.robot_radius = robot_radius;
+  static const std::vector<OptionSpec<agents::AgentConfig>> named =
+      selectOptions(agents::agentNodeOptionSpecs(), {"name", "memory"});
   static const std::vector<OptionSpec<agents::BridgeOptions>> written =
       selectOptions(agents::bridgeOptionSpecs(),
                     {"plan_timeout", "lockstep", "connect_timeout", "cells_per_ppp_cell", "robot_radius"});
-  addParams(written, options, &bridge);
-  if (type.empty()) return {bridge};
-  ppp_msgs::GraphNode planner{package, type, ppp_msgs::nodes::kPlanner};
-  planner.group = bridge.group;
-  planner.ns = ppp_msgs::topics::kRobotNamespace;
-  planner.machine = bridge.machine;
-  planner.agent = agent.name;
-  planner.args = agent.planner_args;
-  return {bridge, planner};
+  std::vector<ppp_msgs::GraphNode> nodes;
+  for (int instance = 0; instance < agents::instanceCount(agent); ++instance) {
+    ppp_msgs::GraphNode bridge{"ppp_agents", "planner_bridge_node", ppp_msgs::nodes::kBridge};
+    bridge.group = agents::instanceGraphName(agent, instance);
+    bridge.machine = machineOf(agent);
+    bridge.agent = agent.name;
+    addParams(named, agent, &bridge);
+    addParams(written, options, &bridge);
+    nodes.push_back(bridge);
+    if (type.empty()) continue;
+    ppp_msgs::GraphNode planner{package, type, ppp_msgs::nodes::kPlanner};
+    planner.group = bridge.group;
+    planner.ns = ppp_msgs::topics::kRobotNamespace;
+    planner.machine = bridge.machine;
+    planner.agent = agent.name;
+    planner.args = agent.planner_args;
+    nodes.push_back(planner);
+  }
+  return nodes;
 }
 
 /// The set a hunt graph evolves. @throws InvalidArgument naming "hunt" unless it is a set of `config` evolved with a

@@ -4,7 +4,8 @@
 launch/experiment.launch starts one node, ppp_simulator/experiment_launcher, with absolute paths and the
 arguments. The graph of config/experiment.yaml holds one agent node per built-in agent of config/agents.yaml
 (node name = the agent's ROS name, ~type/~memory/~sensor_noise as in the file, topics /NAME/scans and
-/NAME/moves), a bridge and its planner per planner agent, one generator node per set with that set's options,
+/NAME/moves), a bridge and its planner per instance of a planner agent (one per core for a planner the
+experiment starts, each in /NAME/instance_K when there are several), one generator node per set with that set's options,
 and the simulator taking the sets from them; a small config's graph holds only its own nodes, on the hosts it
 names. launch/inspect.launch must load with and without a bag. A hunt's graph holds its set's generator node,
 the simulator in hunt mode and the nodes of the panel's agents only.
@@ -30,6 +31,17 @@ def graph_name(name):
     """ppp::agents::agentGraphName: the agent name as a legal ROS name."""
     prefixed = name if re.match('[A-Za-z]', name) else 'agent_' + name
     return re.sub('[^A-Za-z0-9_]', '_', prefixed)
+
+
+def instance_namespaces(name, count):
+    """The namespaces of a planner agent's instances (ppp::agents::instanceGraphName)."""
+    if count == 1:
+        return ['/%s/' % graph_name(name)]
+    return ['/%s/instance_%d/' % (graph_name(name), k) for k in range(1, count + 1)]
+
+
+# Instances of a planner the experiment starts, when the config does not say (ppp::agents::instanceCount).
+CORES = min(max(os.cpu_count() or 1, 1), 64)
 
 
 def load(launch, *args):
@@ -145,16 +157,17 @@ class DefaultGraphTest(unittest.TestCase):
             self.assertEqual(self.params[prefix + 'sensor_noise'], agent.get('sensor_noise', 0.0), node_name)
             self.assertEqual(self.params[prefix + 'name'], agent['name'], node_name)
 
-    def test_one_bridge_and_its_planner_per_planner_agent(self):
+    def test_one_bridge_and_its_planner_per_instance_of_a_planner_agent(self):
         planners = [a for a in self.agents if a['type'] == 'planner']
         self.assertEqual(len(planners), 3)
         bridges = sorted(n.namespace for n in self.config.nodes if n.type == 'planner_bridge_node')
-        self.assertEqual(bridges, sorted('/%s/' % graph_name(a['name']) for a in planners))
+        self.assertEqual(bridges, sorted(ns for a in planners for ns in instance_namespaces(a['name'], CORES)))
         for agent in planners:
-            namespace = '/%s/' % graph_name(agent['name'])
-            self.assertEqual(self.params[namespace + 'bridge/memory'], agent.get('memory', 'full'))
-            planner_nodes = [n for n in self.config.nodes if n.namespace == namespace + 'robot/']
-            self.assertEqual(['%s/%s' % (n.package, n.type) for n in planner_nodes], [agent['planner_node']])
+            for namespace in instance_namespaces(agent['name'], CORES):
+                self.assertEqual(self.params[namespace + 'bridge/memory'], agent.get('memory', 'full'))
+                self.assertEqual(self.params[namespace + 'bridge/name'], agent['name'])
+                planner_nodes = [n for n in self.config.nodes if n.namespace == namespace + 'robot/']
+                self.assertEqual(['%s/%s' % (n.package, n.type) for n in planner_nodes], [agent['planner_node']])
 
     def test_one_generator_node_per_set_with_its_options(self):
         with open(os.path.join(ROOT, 'config', 'generator.yaml')) as f:
@@ -194,7 +207,8 @@ class DefaultGraphTest(unittest.TestCase):
         config, _ = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--planner',
                                'optimistic=ppp_agents/simple_planner.py', '--planner', 'ompl=')
         robots = sorted((n.namespace, n.type) for n in config.nodes if n.namespace.endswith('/robot/'))
-        self.assertEqual(robots, [('/mrpt/robot/', 'mrpt_planner_node'), ('/optimistic/robot/', 'simple_planner.py')])
+        self.assertEqual(robots, [(ns + 'robot/', 'mrpt_planner_node') for ns in instance_namespaces('mrpt', CORES)] +
+                         [(ns + 'robot/', 'simple_planner.py') for ns in instance_namespaces('optimistic', CORES)])
 
     def test_your_own_planner_gets_a_bridge_and_optionally_its_node(self):
         config_path = os.path.join(ROOT, 'config', 'planner_experiment.yaml')
@@ -202,8 +216,9 @@ class DefaultGraphTest(unittest.TestCase):
         mine = [(n.namespace, n.name, n.type) for n in bridge_only.nodes if n.namespace.startswith('/mine/')]
         self.assertEqual(mine, [('/mine/', 'bridge', 'planner_bridge_node')])
         started, _ = load_graph(config_path, '--planner', 'mine=ppp_agents/simple_planner.py')
-        planner = [(n.name, n.package, n.type) for n in started.nodes if n.namespace == '/mine/robot/']
-        self.assertEqual(planner, [('planner', 'ppp_agents', 'simple_planner.py')])
+        planner = sorted((n.namespace, n.name, n.package, n.type) for n in started.nodes if n.namespace.endswith('/robot/'))
+        self.assertEqual(planner, [(ns + 'robot/', 'planner', 'ppp_agents', 'simple_planner.py')
+                                   for ns in instance_namespaces('mine', CORES)])
 
 
 class SmallGraphTest(unittest.TestCase):
@@ -237,18 +252,23 @@ sets:
         path = write_config(directory, """
 agents:
   - {name: fast, type: planner, prior_map: true, planner_node: ppp_agents/ompl_planner_node,
-     planner_args: "_planning_time:=0.005 _planner:=RRTConnect", plan_timeout: 0.5, cells_per_ppp_cell: 4}
+     planner_args: "_planning_time:=0.005 _planner:=RRTConnect", plan_timeout: 0.5, cells_per_ppp_cell: 4,
+     instances: 3}
 robot_radius: 1.5
 sets:
   - name: mine
     generator: {fitness: advances, population: 6, matings: 50, seed: 4, start: [2, 2], goal: [17, 17]}
 """)
         config, _ = load_graph(path)
-        planner = [n for n in config.nodes if n.namespace == '/fast/robot/'][0]
-        self.assertEqual(planner.args, '_planning_time:=0.005 _planner:=RRTConnect')
-        self.assertEqual(config.params['/fast/bridge/plan_timeout'].value, 0.5)
-        self.assertEqual(config.params['/fast/bridge/cells_per_ppp_cell'].value, 4)
-        self.assertEqual(config.params['/fast/bridge/robot_radius'].value, 1.5)
+        for k in (1, 2, 3):
+            namespace = '/fast/instance_%d/' % k
+            planner = [n for n in config.nodes if n.namespace == namespace + 'robot/'][0]
+            self.assertEqual(planner.args, '_planning_time:=0.005 _planner:=RRTConnect')
+            self.assertEqual(config.params[namespace + 'bridge/plan_timeout'].value, 0.5)
+            self.assertEqual(config.params[namespace + 'bridge/cells_per_ppp_cell'].value, 4)
+            self.assertEqual(config.params[namespace + 'bridge/robot_radius'].value, 1.5)
+            self.assertEqual(config.params[namespace + 'bridge/name'].value, 'fast')
+        self.assertEqual(len([n for n in config.nodes if n.type == 'planner_bridge_node']), 3)
 
     def test_a_set_that_starts_from_another_waits_for_its_generator(self):
         directory = tempfile.mkdtemp()
@@ -333,8 +353,9 @@ class HuntLaunchTest(unittest.TestCase):
         config, _ = load_graph(os.path.join(ROOT, 'config', 'planner_hunt.yaml'), '--hunt', 'hunted_mine',
                                '--planner', 'mine=ppp_agents/simple_planner.py')
         started = sorted((n.namespace, n.name, n.type) for n in config.nodes if n.namespace.startswith('/mine/'))
-        self.assertEqual(started, [('/mine/', 'bridge', 'planner_bridge_node'),
-                                   ('/mine/robot/', 'planner', 'simple_planner.py')])
+        self.assertEqual(started, sorted([(ns, 'bridge', 'planner_bridge_node') for ns in instance_namespaces('mine', CORES)] +
+                                         [(ns + 'robot/', 'planner', 'simple_planner.py')
+                                          for ns in instance_namespaces('mine', CORES)]))
         self.assertEqual([n for n in config.nodes if n.type == 'agent_node'], [])
 
     def test_only_failure_sets_can_be_hunted(self):
