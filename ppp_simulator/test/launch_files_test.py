@@ -168,6 +168,11 @@ class DefaultGraphTest(unittest.TestCase):
                 self.assertEqual(self.params[namespace + 'bridge/name'], agent['name'])
                 planner_nodes = [n for n in self.config.nodes if n.namespace == namespace + 'robot/']
                 self.assertEqual(['%s/%s' % (n.package, n.type) for n in planner_nodes], [agent['planner_node']])
+                # Each instance's bridge and planner talk tf in their namespace, not on the global /tf.
+                bridge = [n for n in self.config.nodes if n.namespace == namespace and n.type == 'planner_bridge_node']
+                for node in bridge + planner_nodes:
+                    self.assertIn(['/tf', namespace + 'tf'], [list(r) for r in node.remap_args])
+                    self.assertIn(['/tf_static', namespace + 'tf_static'], [list(r) for r in node.remap_args])
 
     def test_one_generator_node_per_set_with_its_options(self):
         with open(os.path.join(ROOT, 'config', 'generator.yaml')) as f:
@@ -215,6 +220,9 @@ class DefaultGraphTest(unittest.TestCase):
         bridge_only, _ = load_graph(config_path)
         mine = [(n.namespace, n.name, n.type) for n in bridge_only.nodes if n.namespace.startswith('/mine/')]
         self.assertEqual(mine, [('/mine/', 'bridge', 'planner_bridge_node')])
+        # A planner started by hand listens on the global /tf: its bridge broadcasts there.
+        bridge = [n for n in bridge_only.nodes if n.namespace == '/mine/'][0]
+        self.assertEqual(bridge.remap_args, [])
         started, _ = load_graph(config_path, '--planner', 'mine=ppp_agents/simple_planner.py')
         planner = sorted((n.namespace, n.name, n.package, n.type) for n in started.nodes if n.namespace.endswith('/robot/'))
         self.assertEqual(planner, [(ns + 'robot/', 'planner', 'ppp_agents', 'simple_planner.py')

@@ -1,7 +1,8 @@
 // Planner agents end to end: simulator_node (started here) plays the bridges and planners of
-// planner_experiment.test. The example planners pass their maps; a silent planner, one publishing a path
-// through a wall and one killed mid-episode fail with their reasons while the next episode runs; a bridge
-// without a planner, or with a plan topic of the wrong type, exits naming the topics.
+// planner_experiment.test. The example planners pass their maps, the optimistic one as two instances sharing its
+// runs as it plays them alone; a silent planner, one publishing a path through a wall and one killed mid-episode
+// fail with their reasons while the next episode runs; a bridge without a planner, or with a plan topic of the
+// wrong type, exits naming the topics.
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "ppp_core/text_file.hpp"
+#include "ppp_simulator/planner_moves.hpp"
 #include "ppp_simulator/results_file.hpp"
 #include "ros_test_support.hpp"
 
@@ -43,8 +45,9 @@ std::map<std::string, std::map<std::string, std::map<std::string, int>>> reasons
 
 TEST(PlannerExperimentTest, ExamplePlannersPassAndFaultyPlannersFailWithTheirReasons) {
   std::string out;
-  const auto rows = runExperiment("planners", "planner_experiment.yaml", &out);
-  ASSERT_EQ(rows.size(), 3u * 2 + 3u * 2 + 3u + 3u + 3u + 3u);
+  auto rows = runExperiment("planners", "planner_experiment.yaml", &out);
+  attachPlannerMoves(out + "/" + kPlannerMovesFile, &rows);
+  ASSERT_EQ(rows.size(), 3u * 2 + 3u * 2 + 3u * 2 + 3u + 3u + 3u + 3u);
   auto r = reasons(rows);
   for (const char* map : {"open", "wall", "hidden"}) {
     // OMPL plans on the true map; the optimistic re-planner starts blind and must find the route behind the
@@ -62,6 +65,25 @@ TEST(PlannerExperimentTest, ExamplePlannersPassAndFaultyPlannersFailWithTheirRea
   for (const agents::EpisodeResult& row : rows) {
     if (row.agent == "ompl") EXPECT_EQ(row.bumps, 0) << row.problem;
   }
+  // Two instances sharing the runs play each run as one does: the same moves (the seeds differ with the name, and
+  // this planner draws nothing at random).
+  std::map<std::pair<std::string, int>, const agents::EpisodeResult*> alone;
+  for (const agents::EpisodeResult& row : rows) {
+    if (row.agent == "optimistic") alone[{row.problem, row.run}] = &row;
+  }
+  int shared = 0;
+  for (const agents::EpisodeResult& row : rows) {
+    if (row.agent != "optimistic_pair") continue;
+    ++shared;
+    const agents::EpisodeResult& one = *alone.at({row.problem, row.run});
+    EXPECT_EQ(row.passed, one.passed) << row.problem << " run " << row.run;
+    EXPECT_EQ(row.steps, one.steps) << row.problem << " run " << row.run;
+    EXPECT_EQ(row.bumps, one.bumps) << row.problem << " run " << row.run;
+    EXPECT_EQ(row.reason, one.reason) << row.problem << " run " << row.run;
+    EXPECT_EQ(row.actions, one.actions) << row.problem << " run " << row.run;
+    EXPECT_EQ(row.actions.size(), static_cast<std::size_t>(row.steps)) << row.problem << " run " << row.run;
+  }
+  EXPECT_EQ(shared, 6);
   // The planners' results are in the report beside any other agent's.
   const std::string report = readTextFile(out + "/report.md", 1u << 24);
   for (const char* agent : {"ompl", "optimistic", "silent_planner", "straight_planner"}) {
