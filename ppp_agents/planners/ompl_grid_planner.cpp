@@ -2,6 +2,7 @@
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/geometric/PathSimplifier.h>
 #include <ompl/geometric/SimpleSetup.h>
 #include <ompl/geometric/planners/prm/PRM.h>
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
@@ -14,6 +15,7 @@
 
 #include "grid_motion_validator.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/rng.hpp"
 
 namespace ppp {
 namespace planners {
@@ -22,6 +24,36 @@ namespace ob = ompl::base;
 namespace og = ompl::geometric;
 
 namespace {
+
+/// OMPL's uniform sampler of a real vector space, its random numbers seeded (not drawn from OMPL's global stream).
+class SeededSampler : public ob::RealVectorStateSampler {
+ public:
+  SeededSampler(const ob::StateSpace* space, std::uint_fast32_t seed) : ob::RealVectorStateSampler(space) {
+    rng_.setLocalSeed(seed);
+  }
+};
+
+/// OMPL's path simplifier, its random shortcuts seeded.
+class SeededSimplifier : public og::PathSimplifier {
+ public:
+  SeededSimplifier(const ob::SpaceInformationPtr& si, std::uint_fast32_t seed) : og::PathSimplifier(si) {
+    rng_.setLocalSeed(seed);
+  }
+};
+
+/// The seed of a plan: the options' seed, the start, the goal and every passable cell of the map.
+std::uint_fast32_t planSeed(int seed, const GridMap& map, Cell start, Cell goal) {
+  std::uint64_t cells = 14695981039346656037ULL;  // FNV-1a over the passable flags
+  for (int y = 0; y < map.frame().height; ++y) {
+    for (int x = 0; x < map.frame().width; ++x) {
+      cells = (cells ^ (map.passable(Cell{x, y}) ? 1u : 0u)) * 1099511628211ULL;
+    }
+  }
+  const std::uint64_t derived =
+      deriveSeed(static_cast<std::uint64_t>(seed), {static_cast<std::uint64_t>(start.x), static_cast<std::uint64_t>(start.y),
+                                                    static_cast<std::uint64_t>(goal.x), static_cast<std::uint64_t>(goal.y), cells});
+  return static_cast<std::uint_fast32_t>(derived & 0xffffffffu) | 1u;  // OMPL takes any non-zero seed
+}
 
 ob::PlannerPtr makePlanner(const std::string& name, const ob::SpaceInformationPtr& si) {
   if (name == "RRTstar") return std::make_shared<og::RRTstar>(si);
@@ -55,7 +87,10 @@ std::vector<MapPoint> OmplGridPlanner::plan(const GridMap& map, Cell start, Cell
   if (!map.passable(start) || !map.passable(goal)) return {};
   if (start == goal) return {map.centre(start)};
 
+  const std::uint_fast32_t seed = planSeed(options_.seed, map, start, goal);
   auto space = std::make_shared<ob::RealVectorStateSpace>(2);
+  space->setStateSamplerAllocator(
+      [seed](const ob::StateSpace* s) -> ob::StateSamplerPtr { return std::make_shared<SeededSampler>(s, seed); });
   ob::RealVectorBounds bounds(2);
   bounds.setLow(0.0);
   bounds.setHigh(0, map.frame().width * map.frame().resolution);
@@ -79,9 +114,10 @@ std::vector<MapPoint> OmplGridPlanner::plan(const GridMap& map, Cell start, Cell
   setup.setStartAndGoalStates(from, to);
 
   if (setup.solve(options_.planning_time) != ob::PlannerStatus::EXACT_SOLUTION) return {};
-  setup.simplifySolution();
+  og::PathGeometric& path = setup.getSolutionPath();
+  SeededSimplifier(si, seed).simplifyMax(path);
   std::vector<MapPoint> waypoints;
-  for (const ob::State* state : setup.getSolutionPath().getStates()) waypoints.push_back(pointOf(state));
+  for (const ob::State* state : path.getStates()) waypoints.push_back(pointOf(state));
   return waypoints;
 }
 

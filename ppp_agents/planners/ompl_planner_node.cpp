@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
   try {
     namespace planners = ppp::planners;
     const planners::OmplNodeParameters parameters = planners::readOmplNodeParameters(private_nh);
-    ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(parameters.seed));
+    ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(parameters.planner.seed));  // OMPL's streams besides a plan's
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     planners::PlannerNodeOptions options;
     options.frames = planners::readPlannerFrames(private_nh, ros::this_node::getNamespace());
@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
       return planner.plan(map, robot, goal);
     });
     ROS_INFO("OMPL planner %s (%.3f s per plan, seed %d, unknown cells %s): %s", parameters.planner.planner.c_str(),
-             parameters.planner.planning_time, parameters.seed, parameters.unknown_is_free ? "free" : "blocked",
+             parameters.planner.planning_time, parameters.planner.seed, parameters.unknown_is_free ? "free" : "blocked",
              node.topics().c_str());
     node.run();
   } catch (const ppp::Error& e) {

@@ -57,8 +57,8 @@ const std::vector<OptionSpec<OmplNodeParameters>>& omplNodeOptionSpecs() {
             .withChoices("OMPL planner", planners),
         declareOption("planning_time", "seconds OMPL may plan per request",
                       +[](O& o) -> double& { return o.planner.planning_time; }, Bounds{1e-6, 3600}),
-        declareOption("seed", "seed of OMPL's random numbers (ompl::RNG::setSeed)",
-                      +[](O& o) -> int& { return o.seed; }, Bounds{1, 2147483647}),
+        declareOption("seed", "seed each plan's random numbers derive from, with what the plan is asked",
+                      +[](O& o) -> int& { return o.planner.seed; }, Bounds{1, 2147483647}),
         declareOption("unknown_is_free", "plan through unknown map cells",
                       +[](O& o) -> bool& { return o.unknown_is_free; }),
     };

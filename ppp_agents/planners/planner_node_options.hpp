@@ -33,8 +33,7 @@ const std::vector<OptionSpec<PlannerBody>>& plannerBodySpecs();
 
 /// What the OMPL planner node reads besides its frames.
 struct OmplNodeParameters {
-  OmplPlannerOptions planner;   ///< ~planner and ~planning_time.
-  int seed = 1;                 ///< ~seed, for ompl::RNG::setSeed.
+  OmplPlannerOptions planner;   ///< ~planner, ~planning_time and ~seed.
   bool unknown_is_free = true;  ///< ~unknown_is_free: plan through unknown map cells.
   /// @throws InvalidArgument naming the parameter out of its declared range.
   void validate() const;

@@ -83,6 +83,28 @@ TEST(OmplGridPlannerTest, FailsCleanlyWhenTheGoalIsWalledOff) {
   EXPECT_EQ(planner.plan(map, Cell{3, 4}, Cell{3, 4}).size(), 1u);
 }
 
+TEST(OmplGridPlannerTest, TheSameRequestGetsTheSamePlanWhateverWasPlannedBefore) {
+  // A plan's random numbers come from the seed and the request: a fresh planner, and one that planned on another
+  // map in between, give the same waypoints (each instance of a planner agent plays its own share of the runs).
+  const GridMap wall = test::mapPicture(kWall);
+  const GridMap open = test::mapPicture(kOpen);
+  const Cell start = test::markedCell(kWall, 'S');
+  const Cell goal = test::markedCell(kWall, 'G');
+  const OmplGridPlanner planner{OmplPlannerOptions{}};
+  const std::vector<MapPoint> first = planner.plan(wall, start, goal);
+  ASSERT_GE(first.size(), 2u);
+  for (int i = 0; i < 3; ++i) planner.plan(open, start, test::markedCell(kOpen, 'G'));
+  const std::vector<MapPoint> again = planner.plan(wall, start, goal);
+  const std::vector<MapPoint> fresh = OmplGridPlanner(OmplPlannerOptions{}).plan(wall, start, goal);
+  for (const std::vector<MapPoint>* other : {&again, &fresh}) {
+    ASSERT_EQ(other->size(), first.size());
+    for (std::size_t i = 0; i < first.size(); ++i) {
+      EXPECT_EQ((*other)[i].x, first[i].x) << i;
+      EXPECT_EQ((*other)[i].y, first[i].y) << i;
+    }
+  }
+}
+
 TEST(OmplGridPlannerTest, RefusesBadOptions) {
   EXPECT_THROW(OmplGridPlanner(OmplPlannerOptions{"RRT", 1.0}), InvalidArgument);
   EXPECT_THROW(OmplGridPlanner(OmplPlannerOptions{"PRM", 0.0}), InvalidArgument);
