@@ -23,7 +23,7 @@ Fitness makeRemoteFailureFitness(ros::NodeHandle& nh, const GeneratorOptions& op
   Fitness fitness;
   fitness.name = options.fitness;
   fitness.maximise = true;
-  fitness.batch_size = kFailureBatchSize;
+  fitness.batch_size = options.round_size;
   fitness.batch = [client, options, service](const std::vector<const Problem*>& problems,
                                              const std::vector<const Grid*>&) {
     ppp_msgs::EvaluateProblems call;

@@ -12,7 +12,7 @@ namespace generator {
 
 /// The panel fitness (failure or regret) of a hunt through ROS: each batch of candidate PPPs goes to the simulator
 /// node's `service` (ppp_msgs/EvaluateProblems) with the panel options.agents, options.runs_per_eval runs and the
-/// generator seed, and comes back as failure rates and regrets; scores by panelScore(), batches of kFailureBatchSize,
+/// generator seed, and comes back as failure rates and regrets; scores by panelScore(), batches of the options' round_size,
 /// so built-in agents give the set an in-process hunt gives. Waits up to `wait_seconds` for the service.
 /// @throws IoError when the service does not come, a call fails or the simulator refuses the request (its
 /// message, naming the field, is passed on).

@@ -135,6 +135,10 @@ Fitness makeFailureFitness(const FailurePanel& panel) {
     throw InvalidArgument("runs_per_eval", "expected runs in [1, " + std::to_string(generator::kMaxRunsPerEval) +
                                                "], got " + std::to_string(panel.runs_per_eval));
   }
+  if (panel.round_size < 1 || panel.round_size > generator::kMaxRoundSize) {
+    throw InvalidArgument("round_size", "expected matings per round in [1, " + std::to_string(generator::kMaxRoundSize) +
+                                            "], got " + std::to_string(panel.round_size));
+  }
   if (panel.threads < 0 || panel.threads > kMaxThreads) {
     throw InvalidArgument("threads", "expected 0 (every core) or a count up to " + std::to_string(kMaxThreads) +
                                          ", got " + std::to_string(panel.threads));
@@ -146,7 +150,7 @@ Fitness makeFailureFitness(const FailurePanel& panel) {
   Fitness fitness;
   fitness.name = panel.fitness;
   fitness.maximise = true;
-  fitness.batch_size = kFailureBatchSize;
+  fitness.batch_size = panel.round_size;
   fitness.batch = [panel](const std::vector<const Problem*>& problems, const std::vector<const Grid*>& grids) {
     std::vector<generator::FitnessScore> scores;
     for (const FailureEstimate& e : estimateFailures(panel, problems, grids)) scores.push_back(panelScore(panel.fitness, e));
@@ -166,6 +170,7 @@ Fitness fitnessFor(const GeneratorOptions& options, const std::vector<agents::Ag
   panel.episode = episode;
   panel.episode.robot_radius = options.robot_radius;  // the robot its PPPs are solvable for
   panel.runs_per_eval = options.runs_per_eval;
+  panel.round_size = options.round_size;
   panel.seed = options.seed;
   panel.threads = threads;
   return makeFailureFitness(panel);

@@ -149,6 +149,10 @@ const std::vector<OptionSpec<GeneratorOptions>>& generatorOptionSpecs() {
                     +[](O& o) -> std::string& { return o.agents_file; }),
       declareOption("runs_per_eval", "failure: episodes per agent per evaluated PPP",
                     +[](O& o) -> int& { return o.runs_per_eval; }, Bounds{1, kMaxRunsPerEval}),
+      declareOption("round_size",
+                    "failure, regret: matings per round, whose children are scored together (through ROS, one "
+                    "evaluation call: larger rounds, fewer round trips)",
+                    +[](O& o) -> int& { return o.round_size; }, Bounds{1, kMaxRoundSize}),
       declareOption("archive", "what the set is", +[](O& o) -> std::string& { return o.archive; })
           .withChoices("archive", {{kNoArchive, "the final pool"},
                                    {kMapElitesArchive, "the elites of an archive binned over features"}}),

@@ -65,6 +65,27 @@ TEST(FailureFitnessTest, HandWorkedFiguresOnTheIsland) {
   EXPECT_EQ(fitness.batch_size, kFailureBatchSize);
 }
 
+TEST(FailureFitnessTest, TheRoundSizeIsTheBatchOfCandidatesScoredTogether) {
+  // A generator's round_size becomes the fitness's batch (the genetic algorithm's matings per round); outside
+  // [1, kMaxRoundSize] it is refused by name.
+  GeneratorOptions options;
+  options.fitness = kFailureFitness;
+  options.agents = {"explorer"};
+  options.round_size = 64;
+  EXPECT_EQ(fitnessFor(options, {}, EpisodeOptions{}, 1).batch_size, 64);
+  options.round_size = 1;
+  EXPECT_EQ(fitnessFor(options, {}, EpisodeOptions{}, 1).batch_size, 1);
+  for (const int bad : {0, kMaxRoundSize + 1}) {
+    options.round_size = bad;
+    try {
+      fitnessFor(options, {}, EpisodeOptions{}, 1);
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(e.name(), "round_size") << bad;
+    }
+  }
+}
+
 TEST(FailureFitnessTest, RegretHandWorkedOnTheIslandUnderBothBudgets) {
   // astar's 38 moves are the optimum (regret 0); wall_follower_left fails, using its whole budget.
   // Budget 300: its regret is (300 - 38) / 38 per run; the panel's mean (262/38 + 0) / 2 = 131/38.

@@ -23,6 +23,7 @@ struct FailurePanel {
   std::vector<agents::AgentConfig> agents;  ///< The panel, each run `runs_per_eval` times per PPP.
   EpisodeOptions episode;                   ///< Budget and sensor range of the episodes.
   int runs_per_eval = 20;                   ///< Episodes per agent per PPP.
+  int round_size = kFailureBatchSize;       ///< PPPs scored per call (matings per round of the generator).
   std::uint64_t seed = 1;                   ///< The generator seed the run seeds derive from.
   int threads = 0;                          ///< Worker threads; 0 = every core.
 };
@@ -63,8 +64,8 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
                                               const std::vector<const Grid*>& grids);
 
 /// The panel's fitness, maximised: for `failure`, value = the failure rate, score = failureScore(); for
-/// `regret`, value = the mean regret, score = regretScore(). Scores kFailureBatchSize PPPs per call.
-/// @throws InvalidArgument naming "fitness", "agents" (an empty panel or a planner agent), "runs_per_eval",
+/// `regret`, value = the mean regret, score = regretScore(). Scores round_size PPPs per call.
+/// @throws InvalidArgument naming "fitness", "agents" (an empty panel or a planner agent), "runs_per_eval", "round_size",
 /// "threads" or an episode option.
 Fitness makeFailureFitness(const FailurePanel& panel);
 

@@ -71,7 +71,8 @@ constexpr const char* kRegretFitness = "regret";
 /// True for the fitnesses that play episodes of an agent panel (kFailureFitness, kRegretFitness).
 bool isPanelFitness(const std::string& name);
 
-/// PPPs a failure fitness scores per batch (and matings per round of a hunt), in process and through ROS.
+/// PPPs a panel fitness scores per batch (and matings per round of a hunt), in process and through ROS, unless the
+/// generator's round_size says otherwise.
 constexpr int kFailureBatchSize = 16;
 
 /// The failure fitness's score of a PPP: its failure rate plus 0.001 x the mean share of the move budget the

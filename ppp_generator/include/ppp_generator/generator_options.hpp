@@ -10,6 +10,7 @@
 #include "ppp_core/option_spec.hpp"
 #include "ppp_core/random_problem.hpp"
 #include "ppp_core/yaml_reader.hpp"
+#include "ppp_generator/fitness.hpp"
 
 namespace ppp {
 namespace generator {
@@ -26,6 +27,8 @@ constexpr const char* kMapElitesArchive = "map_elites";
 constexpr int kMaxCrowdingWindow = 100000;
 /// Most runs per evaluation of the failure fitness.
 constexpr int kMaxRunsPerEval = 10000;
+/// Most matings per round of a panel fitness (candidates scored in one call).
+constexpr int kMaxRoundSize = 1024;
 /// Most bins per feature of a MAP-Elites archive.
 constexpr int kMaxBins = 100;
 /// Most cells of a MAP-Elites archive in all (bins to the power of the features).
@@ -60,6 +63,7 @@ struct GeneratorOptions {
   std::vector<std::string> agents;  ///< Failure fitness: the panel's agent names.
   std::string agents_file;          ///< Failure fitness: agents file the names resolve in ("": built-in types).
   int runs_per_eval = 20;           ///< Failure fitness: episodes per agent per evaluated PPP.
+  int round_size = kFailureBatchSize;  ///< Panel fitness: matings per round, their children scored together.
   std::string archive = kNoArchive; ///< kNoArchive or kMapElitesArchive.
   std::vector<std::string> features{"turns", "obstacles"};  ///< MAP-Elites: characters binned (two or more).
   int bins = 8;                     ///< MAP-Elites: bins per feature.
