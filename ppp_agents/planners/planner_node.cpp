@@ -9,6 +9,7 @@
 
 #include "ppp_core/error.hpp"
 #include "ppp_msgs/graph_names.h"
+#include "ppp_msgs/inline_callback_queue.h"
 
 namespace ppp {
 namespace planners {
@@ -17,6 +18,8 @@ namespace {
 
 /// How long a request waits for its map and pose.
 constexpr std::chrono::seconds kRequestWait{1};
+/// Odometry messages kept to find a request's pose by its stamp (a free-running bridge may be a few steps ahead).
+constexpr std::size_t kPosesKept = 64;
 /// How often run() looks at ros::ok() while idle.
 constexpr std::chrono::milliseconds kIdlePoll{100};
 
@@ -36,13 +39,15 @@ GridMap gridMapOf(const nav_msgs::OccupancyGrid& map, bool unknown_is_free, doub
 PlannerNode::PlannerNode(ros::NodeHandle& nh, PlannerNodeOptions options, PlanFunction plan)
     : options_(std::move(options)),
       plan_(std::move(plan)),
-      // No Nagle delay on any input: a message held back 40 ms is a plan 40 ms late.
-      tf_listener_(tf_buffer_, true, ros::TransportHints().tcpNoDelay()),
       plan_publisher_(nh.advertise<nav_msgs::Path>(ppp_msgs::topics::kPlannerPath, 1, true)),
-      map_subscriber_(nh.subscribe(ppp_msgs::topics::kPlannerMap, 1, &PlannerNode::onMap, this, ros::TransportHints().tcpNoDelay())),
-      odom_subscriber_(nh.subscribe(ppp_msgs::topics::kPlannerOdom, 1, &PlannerNode::onOdom, this, ros::TransportHints().tcpNoDelay())),
-      goal_subscriber_(
-          nh.subscribe(ppp_msgs::topics::kPlannerGoal, 1, &PlannerNode::onGoal, this, ros::TransportHints().tcpNoDelay())) {}
+      map_subscriber_(ppp_msgs::subscribeInline<nav_msgs::OccupancyGrid>(
+          nh, ppp_msgs::topics::kPlannerMap, 1, [this](const nav_msgs::OccupancyGrid::ConstPtr& m) { onMap(m); },
+          &inline_)),
+      odom_subscriber_(ppp_msgs::subscribeInline<nav_msgs::Odometry>(
+          nh, ppp_msgs::topics::kPlannerOdom, 1, [this](const nav_msgs::Odometry::ConstPtr& o) { onOdom(o); }, &inline_)),
+      goal_subscriber_(ppp_msgs::subscribeInline<geometry_msgs::PoseStamped>(
+          nh, ppp_msgs::topics::kPlannerGoal, 1, [this](const geometry_msgs::PoseStamped::ConstPtr& g) { onGoal(g); },
+          &inline_)) {}
 
 std::string PlannerNode::topics() const {
   return map_subscriber_.getTopic() + ", " + goal_subscriber_.getTopic() + " -> " + plan_publisher_.getTopic() +
@@ -60,9 +65,18 @@ void PlannerNode::onMap(const nav_msgs::OccupancyGrid::ConstPtr& map) {
 void PlannerNode::onOdom(const nav_msgs::Odometry::ConstPtr& odom) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    odom_stamp_ = odom->header.stamp;
+    poses_.push_back(odom);
+    if (poses_.size() > kPosesKept) poses_.pop_front();
   }
   changed_.notify_all();
+}
+
+nav_msgs::Odometry::ConstPtr PlannerNode::poseAt(const ros::Time& stamp) const {
+  nav_msgs::Odometry::ConstPtr found;
+  for (const nav_msgs::Odometry::ConstPtr& odom : poses_) {
+    if (odom->header.stamp <= stamp) found = odom;  // the newest not newer than the stamp
+  }
+  return found;
 }
 
 void PlannerNode::onGoal(const geometry_msgs::PoseStamped::ConstPtr& goal) {
@@ -98,10 +112,11 @@ bool PlannerNode::nextRequest(Request* request) {
   request->map = map_;
   request->pose_stamp = request->replan ? map_->header.stamp : goal_->header.stamp;
   planned_map_ = map_;
-  // The bridge sends the pose as tf, then as odometry, with the step's stamp: once that odometry is here, the
-  // transform is too, and the tf lookup needs no polling (tf2's timed lookup sleeps in 10 ms steps).
+  // The bridge sends the pose as odometry (and tf) with the step's stamp: wait for it.
   const ros::Time pose_stamp = request->pose_stamp;
-  changed_.wait_until(lock, request->deadline, [this, pose_stamp] { return odom_stamp_ >= pose_stamp; });
+  changed_.wait_until(lock, request->deadline,
+                      [this, pose_stamp] { return !poses_.empty() && poses_.back()->header.stamp >= pose_stamp; });
+  request->pose = poseAt(pose_stamp);
   return true;
 }
 
@@ -130,18 +145,20 @@ void PlannerNode::serve(const Request& request) {
     ROS_WARN("goal stamped %.3f: planning on the older map stamped %.3f", goal.header.stamp.toSec(),
              request.map->header.stamp.toSec());
   }
-  geometry_msgs::TransformStamped pose;
-  try {
-    const double wait = std::chrono::duration<double>(request.deadline - std::chrono::steady_clock::now()).count();
-    pose = tf_buffer_.lookupTransform(options_.frames.map_frame, options_.frames.base_frame, request.pose_stamp,
-                                      ros::Duration(std::max(wait, 0.0)));
-  } catch (const tf2::TransformException& e) {
-    ROS_WARN("no robot pose at %.3f: %s; not planning", request.pose_stamp.toSec(), e.what());
+  if (!request.pose) {
+    ROS_WARN("no robot pose (odometry) stamped %.3f or earlier within %lld s; not planning", request.pose_stamp.toSec(),
+             static_cast<long long>(kRequestWait.count()));
+    return;
+  }
+  const nav_msgs::Odometry& pose = *request.pose;
+  if (pose.header.frame_id != options_.frames.map_frame || pose.child_frame_id != options_.frames.base_frame) {
+    ROS_WARN("odometry of frame '%s' in frame '%s', expected '%s' in '%s'; not planning", pose.child_frame_id.c_str(),
+             pose.header.frame_id.c_str(), options_.frames.base_frame.c_str(), options_.frames.map_frame.c_str());
     return;
   }
   try {
     const GridMap map = gridMapOf(*request.map, options_.unknown_is_free, options_.body.inflation);
-    const Cell robot = map.cellOf(MapPoint{pose.transform.translation.x, pose.transform.translation.y});
+    const Cell robot = map.cellOf(MapPoint{pose.pose.pose.position.x, pose.pose.pose.position.y});
     const Cell target = map.cellOf(MapPoint{goal.pose.position.x, goal.pose.position.y});
     if (request.replan && robot == target) {
       std::lock_guard<std::mutex> lock(mutex_);

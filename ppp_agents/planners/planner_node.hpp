@@ -4,17 +4,17 @@
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
-#include <tf2_ros/buffer.h>
-#include <tf2_ros/transform_listener.h>
 
 #include <chrono>
 #include <condition_variable>
+#include <deque>
 #include <functional>
 #include <mutex>
 #include <string>
 #include <vector>
 
 #include "grid_map.hpp"
+#include "ppp_msgs/inline_callback_queue.h"
 #include "planner_node_parameters.hpp"
 
 namespace ppp {
@@ -33,11 +33,11 @@ struct PlannerNodeOptions {
 
 /// The ROS side of the example planners (docs/planner-interface.md): keeps the newest `map`, answers every
 /// `move_base_simple/goal` with a nav_msgs/Path on `plan` once it holds a map at least as new as the goal and
-/// the robot's pose (tf, map frame -> base frame) at the goal's stamp (waiting at most 1 s for them), and,
-/// with replan_on_map, plans again on every new map. A plan is stamped with the stamp of the pose it starts
+/// the robot's pose at the goal's stamp (`odom`, frame map_frame, child base_frame; waiting at most 1 s for them),
+/// and, with replan_on_map, plans again on every new map. A plan is stamped with the stamp of the pose it starts
 /// from (the goal's; a re-plan's map's); no path gives an empty Path. A request the last plan still answers
 /// (the same state, or the robot further along it on an unchanged map: a lockstep bridge asks every step) is
-/// answered with that plan again, not a new one. Callbacks run on a spinner thread while run() plans.
+/// answered with that plan again, not a new one. The inputs' callbacks run in roscpp's network thread while run() plans.
 class PlannerNode {
  public:
   /// Subscribes and advertises in the node's namespace; plans with `plan`.
@@ -50,11 +50,12 @@ class PlannerNode {
   std::string topics() const;
 
  private:
-  /// One planning job: the goal, the newest map, and the stamp to look the pose up at.
+  /// One planning job: the goal, the newest map, the stamp of the pose, and the pose (null when none came).
   struct Request {
     geometry_msgs::PoseStamped::ConstPtr goal;
     nav_msgs::OccupancyGrid::ConstPtr map;
     ros::Time pose_stamp;
+    nav_msgs::Odometry::ConstPtr pose;
     bool replan = false;
     std::chrono::steady_clock::time_point deadline;
   };
@@ -62,6 +63,8 @@ class PlannerNode {
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& map);
   void onOdom(const nav_msgs::Odometry::ConstPtr& odom);
   void onGoal(const geometry_msgs::PoseStamped::ConstPtr& goal);
+  /// The newest odometry stamped no later than `stamp`, or null (mutex_ held).
+  nav_msgs::Odometry::ConstPtr poseAt(const ros::Time& stamp) const;
   bool replanDue() const;
   bool nextRequest(Request* request);
   void serve(const Request& request);
@@ -70,11 +73,10 @@ class PlannerNode {
 
   PlannerNodeOptions options_;
   PlanFunction plan_;
-  tf2_ros::Buffer tf_buffer_;
-  tf2_ros::TransformListener tf_listener_;
   ros::Publisher plan_publisher_;
+  ppp_msgs::InlineCallbackQueue inline_;  // the inputs' callbacks run as they are read: each only stores and signals
   ros::Subscriber map_subscriber_;
-  ros::Subscriber odom_subscriber_;  // only as the signal that the tf of a stamp has been sent
+  ros::Subscriber odom_subscriber_;
   ros::Subscriber goal_subscriber_;
   bool plan_time_logged_ = false;
   // The last plan (used by run()'s thread only): what a request for the same state, or a step along it on the
@@ -94,7 +96,7 @@ class PlannerNode {
   bool goal_pending_ = false;                      // goal_ has not been planned for yet
   bool goal_reached_ = false;                      // a re-plan found the robot on goal_
   nav_msgs::OccupancyGrid::ConstPtr planned_map_;  // the newest map when the last request was taken
-  ros::Time odom_stamp_;                           // stamp of the newest odometry
+  std::deque<nav_msgs::Odometry::ConstPtr> poses_;  // the newest odometry messages, oldest first
 };
 
 }  // namespace planners
