@@ -33,15 +33,14 @@ std::string advertisedType(const std::string& topic) {
 }  // namespace
 
 PlannerLink::PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters)
-    : parameters_(parameters), nh_(nh, ppp_msgs::topics::kRobotNamespace), spinner_(1, &queue_) {
+    : parameters_(parameters), nh_(nh, ppp_msgs::topics::kRobotNamespace) {
   map_ = nh_.advertise<nav_msgs::OccupancyGrid>(ppp_msgs::topics::kPlannerMap, 1, true);
   odom_ = nh_.advertise<nav_msgs::Odometry>(ppp_msgs::topics::kPlannerOdom, 10);
   scan_ = nh_.advertise<sensor_msgs::LaserScan>(ppp_msgs::topics::kPlannerScan, 10);
   goal_ = nh_.advertise<geometry_msgs::PoseStamped>(ppp_msgs::topics::kPlannerGoal, 10);
-  ros::SubscribeOptions options = ros::SubscribeOptions::create<nav_msgs::Path>(
-      ppp_msgs::topics::kPlannerPath, 10, [this](const nav_msgs::Path::ConstPtr& path) { onPlan(path); }, ros::VoidPtr(), &queue_);
-  options.transport_hints = ros::TransportHints().tcpNoDelay();  // Nagle would hold each path back 40 ms
-  plan_ = nh_.subscribe(options);
+  // Without Nagle's algorithm (it would hold each path back 40 ms), in the network thread (no hand-over to a spinner).
+  plan_ = ppp_msgs::subscribeInline<nav_msgs::Path>(
+      nh_, ppp_msgs::topics::kPlannerPath, 10, [this](const nav_msgs::Path::ConstPtr& path) { onPlan(path); }, &queue_);
   // The robot's body as costmaps read it, in metres, for planners that plan with a footprint.
   const double radius = parameters_.robot_radius * parameters_.resolution;
   nh_.setParam(ppp_msgs::topics::kPlannerRobotRadius, radius);
@@ -55,10 +54,7 @@ PlannerLink::PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters
     }
     nh_.setParam(ppp_msgs::topics::kPlannerFootprint, footprint);
   }
-  spinner_.start();
 }
-
-PlannerLink::~PlannerLink() { spinner_.stop(); }
 
 std::string PlannerLink::topics() const {
   return map_.getTopic() + ", " + odom_.getTopic() + ", " + scan_.getTopic() + ", " + goal_.getTopic() + " -> " +
@@ -194,6 +190,7 @@ void PlannerLink::publishState(const ros::Time& stamp, const PlannerEpisode& epi
   odom.pose.pose.orientation.w = 1.0;
   odom_.publish(odom);
 
+  if (scan_.getNumSubscribers() == 0) return;  // rays cost a cast each: only for a planner that reads them
   sensor_msgs::LaserScan laser = ppp_msgs::toLaserScan(window, range, parameters_.resolution, parameters_.base_frame);
   laser.header.stamp = stamp;
   scan_.publish(laser);

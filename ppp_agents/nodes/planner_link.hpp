@@ -1,6 +1,5 @@
 #pragma once
 
-#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <tf2_ros/transform_broadcaster.h>
 
@@ -14,6 +13,7 @@
 #include "nav_msgs/Path.h"
 #include "planner_bridge_parameters.hpp"
 #include "ppp_agents/planner_episode.hpp"
+#include "ppp_msgs/inline_callback_queue.h"
 
 namespace ppp {
 namespace agents {
@@ -25,7 +25,6 @@ class PlannerLink {
  public:
   /// Advertises and subscribes in `nh`'s robot/ namespace.
   PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters);
-  ~PlannerLink();
   /// Waits up to connect_timeout for the planner to subscribe to the goal and publish the plan topic.
   /// @throws InvalidArgument naming each topic that is missing or has the wrong type.
   void waitForPlanner();
@@ -58,9 +57,8 @@ class PlannerLink {
   bool connected() const { return plan_.getNumPublishers() > 0; }
 
   BridgeParameters parameters_;
-  ros::NodeHandle nh_;  // robot/..., its plan subscription on queue_
-  ros::CallbackQueue queue_;
-  ros::AsyncSpinner spinner_;
+  ros::NodeHandle nh_;  // robot/...
+  ppp_msgs::InlineCallbackQueue queue_;  // the plan subscription's: onPlan runs in roscpp's network thread
   ros::Publisher map_, odom_, scan_, goal_;
   ros::Subscriber plan_;
   tf2_ros::TransformBroadcaster tf_;
