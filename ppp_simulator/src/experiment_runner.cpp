@@ -155,7 +155,12 @@ void finishExperiment(const ExperimentConfig& config, const std::string& config_
   stopIfAsked(stop);
   if (moved || rows.size() != read) results->rewrite(rows, stop);  // else the file holds these rows, in this order
   stopIfAsked(stop);
-  attachPlannerMoves((fs::path(dir) / kPlannerMovesFile).string(), &rows, stop);
+  const std::string moves = (fs::path(dir) / kPlannerMovesFile).string();
+  if (fs::exists(moves)) {
+    // In results.csv's order, the standing line of each run: the same bytes whatever the order runs finished in.
+    attachPlannerMoves(moves, &rows, stop);
+    writePlannerMoves(moves, rows, stop);
+  }
   say(log, "writing the report");
   writeExperimentReport(dir, config, config_text, sets, rows, stop);
 }

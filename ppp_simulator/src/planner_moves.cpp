@@ -5,6 +5,7 @@
 
 #include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/stop.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_simulator/results_file.hpp"
 
@@ -79,6 +80,15 @@ void attachPlannerMoves(const std::string& path, std::vector<agents::EpisodeResu
     const auto it = moves.find(runKey(row));
     if (it != moves.end() && static_cast<int>(it->second.size()) == row.steps) row.actions = it->second;
   }
+}
+
+void writePlannerMoves(const std::string& path, const std::vector<agents::EpisodeResult>& rows, const StopCheck& stop) {
+  std::string text = plannerMovesHeader() + '\n';
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (i % 4096 == 0) stopIfAsked(stop);
+    if (!rows[i].actions.empty()) text += plannerMovesLine(rows[i]);
+  }
+  writeFileAtomically(path, text);
 }
 
 }  // namespace simulator

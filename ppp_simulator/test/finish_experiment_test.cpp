@@ -1,5 +1,5 @@
 // finishExperiment puts results.csv in canonical order (set, PPP, agent, run as the config lists them) whatever
-// order the rows were appended in, and leaves a file already in that order as it is.
+// order the rows were appended in, and leaves a file already in that order as it is; planner_moves.csv follows it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,6 +8,7 @@
 #include "ppp_core/rng.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
+#include "ppp_simulator/planner_moves.hpp"
 #include "ppp_simulator/results_file.hpp"
 #include "small_sets.hpp"
 
@@ -110,6 +111,28 @@ TEST_F(FinishExperimentTest, ALostRunPlayedAgainIsReplacedByItsReplay) {
   rows[1] = lost;
   rows.push_back(replay);
   EXPECT_EQ(finishedText(rows), textOf(canonical_));
+}
+
+TEST_F(FinishExperimentTest, PlannerMovesFollowTheCanonicalOrderWhateverTheOrderRunsFinished) {
+  // The bumper's runs carry actions (as a planner's do): appended in reverse order, with a stale line of a run
+  // played again, planner_moves.csv ends with one line per run in results.csv's order.
+  std::vector<agents::EpisodeResult> rows = canonical_;
+  std::string expected = plannerMovesHeader() + "\n";
+  for (agents::EpisodeResult& r : rows) {
+    if (r.agent != "bumper") continue;
+    r.actions.assign(static_cast<std::size_t>(r.steps), static_cast<Action>(1 + r.run % 4));
+    expected += plannerMovesLine(r);
+  }
+  std::vector<agents::EpisodeResult> reversed(rows.rbegin(), rows.rend());
+  agents::EpisodeResult stale = reversed.front();
+  stale.actions.pop_back();  // a line shorter than the run's steps: not the run that stands
+  const std::string moves = (fs::path(dir_) / kPlannerMovesFile).string();
+  fs::remove(resultsPath(dir_));
+  writeFileAtomically(moves, plannerMovesHeader() + "\n" + plannerMovesLine(stale));
+  ResultsFile results(resultsPath(dir_));
+  results.append(reversed);
+  finishExperiment(config_, "test", dir_, sets_, &results);
+  EXPECT_EQ(readTextFile(moves, 1u << 24), expected);
 }
 
 }  // namespace

@@ -27,5 +27,11 @@ std::string plannerMovesLine(const agents::EpisodeResult& row);
 /// @throws IoError, ParseError naming the file, line and field; Interrupted when `stop` says stop.
 void attachPlannerMoves(const std::string& path, std::vector<agents::EpisodeResult>* rows, const StopCheck& stop = {});
 
+/// Rewrites the planner moves file at `path` atomically with the actions of the rows that carry any, in the rows'
+/// order (a finished experiment's: results.csv's canonical order), one line per run.
+/// @throws IoError naming the file; Interrupted when `stop` says stop (the file is then as before).
+void writePlannerMoves(const std::string& path, const std::vector<agents::EpisodeResult>& rows,
+                       const StopCheck& stop = {});
+
 }  // namespace simulator
 }  // namespace ppp
