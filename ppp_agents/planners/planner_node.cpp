@@ -114,9 +114,9 @@ bool PlannerNode::nextRequest(Request* request) {
   planned_map_ = map_;
   // The bridge sends the pose as odometry (and tf) with the step's stamp: wait for it.
   const ros::Time pose_stamp = request->pose_stamp;
-  changed_.wait_until(lock, request->deadline,
-                      [this, pose_stamp] { return !poses_.empty() && poses_.back()->header.stamp >= pose_stamp; });
-  request->pose = poseAt(pose_stamp);
+  const bool arrived = changed_.wait_until(
+      lock, request->deadline, [this, pose_stamp] { return !poses_.empty() && poses_.back()->header.stamp >= pose_stamp; });
+  request->pose = arrived ? poseAt(pose_stamp) : nullptr;  // never an older pose than the request's
   return true;
 }
 
@@ -146,7 +146,7 @@ void PlannerNode::serve(const Request& request) {
              request.map->header.stamp.toSec());
   }
   if (!request.pose) {
-    ROS_WARN("no robot pose (odometry) stamped %.3f or earlier within %lld s; not planning", request.pose_stamp.toSec(),
+    ROS_WARN("no robot pose (odometry) as new as %.3f within %lld s; not planning", request.pose_stamp.toSec(),
              static_cast<long long>(kRequestWait.count()));
     return;
   }
