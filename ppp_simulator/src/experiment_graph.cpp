@@ -103,14 +103,15 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, 
     bridge.agent = agent.name;
     addParams(named, agent, &bridge);
     addParams(written, options, &bridge);
-    if (!type.empty()) {
-      // The bridge and the planner it started talk tf in their own namespace: on the global /tf every planner
-      // would take every instance's and every other planner's poses, a cost per step growing with their number.
-      const std::string ns = "/" + bridge.group + "/";
-      bridge.remaps = {{"/tf", ns + "tf"}, {"/tf_static", ns + "tf_static"}};
+    if (type.empty()) {  // the user starts the planner, on the global /tf
+      nodes.push_back(bridge);
+      continue;
     }
+    // The bridge and the planner it started talk tf in their own namespace: on the global /tf every planner would
+    // take every instance's and every other planner's poses, a cost per step growing with their number.
+    const std::string ns = "/" + bridge.group + "/";
+    bridge.remaps = {{"/tf", ns + "tf"}, {"/tf_static", ns + "tf_static"}};
     nodes.push_back(bridge);
-    if (type.empty()) continue;
     ppp_msgs::GraphNode planner{package, type, ppp_msgs::nodes::kPlanner};
     planner.group = bridge.group;
     planner.ns = ppp_msgs::topics::kRobotNamespace;
