@@ -72,8 +72,9 @@ constexpr const char* kRegretFitness = "regret";
 bool isPanelFitness(const std::string& name);
 
 /// PPPs a panel fitness scores per batch (and matings per round of a hunt), in process and through ROS, unless the
-/// generator's round_size says otherwise.
-constexpr int kFailureBatchSize = 16;
+/// generator's round_size says otherwise. 64: through ROS a round is one evaluation call of up to 300 lockstep
+/// steps, and over four seeds rounds of 64 searched as well as rounds of 16 (BENCHMARKS.md).
+constexpr int kFailureBatchSize = 64;
 
 /// The failure fitness's score of a PPP: its failure rate plus 0.001 x the mean share of the move budget the
 /// panel used, so that among PPPs failed equally often the one that kept the panel busy longest wins (a
