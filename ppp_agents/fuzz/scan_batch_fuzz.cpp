@@ -40,7 +40,7 @@ bool walkScanBatch(ppp::fuzz::WireWalker* w) {
   for (std::uint32_t i = 0; i < starts; ++i) {
     if (!w->fixed(4 + 4 + 4 + 8 + 8 + 8) || !w->array(1) || !w->fixed(1)) return false;
   }
-  return w->array(4) && w->array(4) && w->array(8) && w->array(1) && w->array(1);
+  return w->array(4) && w->array(4) && w->array(8) && w->array(1) && w->array(8) && w->array(8);
 }
 
 /// decodeScans returns or throws InvalidArgument, agreeing with checkScanBatch.

@@ -1,12 +1,14 @@
 #include "planner_bridge.hpp"
 
 #include <algorithm>
+#include <array>
 
 #include "planner_bridge_messages.hpp"
 #include "ppp_agents/protocol/batch_codec.hpp"
 #include "ppp_agents/protocol/batch_responder.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/sensor.hpp"
+#include "ppp_core/window_mask.hpp"
 #include "ppp_msgs/graph_names.h"
 
 namespace ppp {
@@ -87,10 +89,12 @@ PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch)
   }
   const Cell robot = protocol::toCell(batch.positions[0]);
   const int range = batch.range;
+  std::array<std::int8_t, kMaxScanCells> cells;  // the window, which the planner's LaserScan shows too
   try {
     protocol::requireOnGrid(robot, episode_.frame().width, episode_.frame().height, "position");
-    episode_.observe(Scan(range, batch.cells.data(), protocol::windowCells(range), robot, episode_.goal(), batch.bumped[0] != 0,
-                          static_cast<int>(batch.steps[0])));
+    unpackWindow(batch.free_cells.data(), batch.obstacle_cells.data(), range, cells.data());
+    episode_.observe(Scan(range, cells.data(), protocol::windowCells(range), robot, episode_.goal(),
+                          batch.bumped[0] != 0, static_cast<int>(batch.steps[0])));
   } catch (const InvalidArgument& e) {
     warnOnce(e.name(), std::string("rejected a scan: ") + e.what());
     active_ = false;
@@ -104,7 +108,7 @@ PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch)
     return StepOutcome{0, reason};
   };
   const ros::Time stamp = ros::Time::now();
-  link_.publishState(stamp, episode_, robot, batch.cells.data(), range);
+  link_.publishState(stamp, episode_, robot, cells.data(), range);
   if (link_.gone()) return fail(reason::kPlannerLost, "the planner's process is gone");
 
   std::vector<MapPoint> points;
@@ -123,7 +127,7 @@ PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch)
     const std::optional<nav_msgs::Path> path = link_.waitForPath(
         stamp, [&](const nav_msgs::Path& p) { return answers(p, robot); },
         [&](const ros::Time& again) {
-          link_.publishState(again, episode_, robot, batch.cells.data(), range);
+          link_.publishState(again, episode_, robot, cells.data(), range);
           link_.publishGoal(again, episode_);
         });
     if (!path) {

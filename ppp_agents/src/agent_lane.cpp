@@ -6,6 +6,7 @@
 #include "ppp_agents/episode_runner.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/footprint.hpp"
+#include "ppp_core/window_mask.hpp"
 
 namespace ppp {
 namespace agents {
@@ -64,11 +65,14 @@ void AgentLane::scans(std::vector<ScanRequest>* requests) {
     r.set = a.work.set;
     r.problem = a.work.problem;
     r.run = a.work.run;
+    r.window = reads_window_;
     if (reads_window_) {
-      const int cells = (2 * r.range + 1) * (2 * r.range + 1);
-      r.cells.assign(scan.cells(), scan.cells() + cells);
-    } else {
-      r.cells.clear();
+      WindowBits bits;
+      if (scan.bits(&bits)) {  // the atlas's masks, noise included: no cell is built
+        packWindow(bits, &r.free_cells[0], &r.obstacle_cells[0]);
+      } else {
+        packWindow(scan.cells(), r.range, r.free_cells.data(), r.obstacle_cells.data());
+      }
     }
     if (!a.started) {
       const PreparedSet& set = sets_[a.work.set];

@@ -15,6 +15,7 @@
 #include "ppp_agents/protocol/batch_responder.hpp"
 #include "ppp_msgs/node_parameters.h"
 #include "ppp_core/sensor.hpp"
+#include "ppp_core/window_mask.hpp"
 #include "ppp_msgs/MoveBatch.h"
 #include "ppp_msgs/ScanBatch.h"
 #include "scan_batch_builder.hpp"
@@ -71,7 +72,9 @@ test::TestScan cornerScan(std::uint32_t episode, bool prior_map) {
   s.step = 0;
   s.position = Cell{0, 0};
   const std::int8_t o = kScanOutOfBounds;
-  s.cells = {o, o, o, o, kScanFree, kScanObstacle, o, kScanFree, kScanFree};
+  const std::int8_t cells[] = {o, o, o, o, kScanFree, kScanObstacle, o, kScanFree, kScanFree};
+  s.window = true;
+  packWindow(cells, 1, s.free_cells.data(), s.obstacle_cells.data());
   protocol::EpisodeStart start;
   start.width = 2;
   start.height = 2;

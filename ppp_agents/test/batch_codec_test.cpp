@@ -20,8 +20,9 @@ ScanRequest scan(std::uint32_t id, int step, bool starting, bool prior_map) {
   s.goal = Cell{3, 4};
   s.bumped = step % 2 == 1;
   s.range = 1;
-  s.cells = {kScanOutOfBounds, kScanFree, kScanObstacle, kScanUnknown, kScanFree,
-             kScanFree,        kScanFree, kScanFree,     static_cast<std::int8_t>(id)};
+  s.window = true;
+  s.free_cells[0] = 0x1F2 | (id & 1);      // cells 1 and 4-8 free; cell 3 unknown
+  s.obstacle_cells[0] = 0x004 | (id & 1);  // cell 2 an obstacle; cell 0 off the map (both bits) for odd ids
   if (starting) {
     EpisodeStart start{4, 5, Cell{0, 1}, Cell{3, 4}, 0x123456789abcdefULL + id, {}, id % 2 == 1 ? Connectivity::Eight : Connectivity::Four};
     if (prior_map) {
@@ -39,7 +40,9 @@ void expectSameScan(const ScanRequest& got, const ScanRequest& sent, bool window
   EXPECT_EQ(got.position, sent.position);
   EXPECT_EQ(got.bumped, sent.bumped);
   EXPECT_EQ(got.range, sent.range);
-  EXPECT_EQ(got.cells, window ? sent.cells : std::vector<std::int8_t>{});
+  EXPECT_EQ(got.window, window);
+  EXPECT_EQ(got.free_cells, window ? sent.free_cells : decltype(sent.free_cells){});
+  EXPECT_EQ(got.obstacle_cells, window ? sent.obstacle_cells : decltype(sent.obstacle_cells){});
   ASSERT_EQ(got.start.has_value(), sent.start.has_value());
   if (!sent.start) return;
   EXPECT_EQ(got.goal, sent.goal);  // the goal travels with the start
@@ -74,6 +77,8 @@ TEST(BatchCodecTest, ScansSurviveTheRoundTripWithEveryField) {
   encodeScans(sent, &message);
   EXPECT_EQ(message.range, 1u);
   EXPECT_EQ(message.starts.size(), 2u);
+  EXPECT_EQ(message.free_cells, (std::vector<std::uint64_t>{0x1F3, 0x1F2, 0x1F3}));  // a word per 3x3 window
+  EXPECT_EQ(message.obstacle_cells, (std::vector<std::uint64_t>{5, 4, 5}));
   const std::vector<ScanRequest> got = decodeScans(message, true);
   ASSERT_EQ(got.size(), sent.size());
   for (std::size_t i = 0; i < got.size(); ++i) expectSameScan(got[i], sent[i], true);
@@ -87,16 +92,16 @@ TEST(BatchCodecTest, ScansSurviveTheRoundTripWithEveryField) {
 
 TEST(BatchCodecTest, WindowlessAndEmptyBatchesRoundTrip) {
   std::vector<ScanRequest> sent{scan(1, 0, true, false), scan(2, 5, false, false)};
-  for (ScanRequest& s : sent) s.cells.clear();  // an agent that reads no window gets none
+  for (ScanRequest& s : sent) s.window = false;  // an agent that reads no window gets none
   ppp_msgs::ScanBatch message;
   encodeScans(sent, &message);
-  EXPECT_TRUE(message.cells.empty());
+  EXPECT_TRUE(message.free_cells.empty() && message.obstacle_cells.empty());
   const std::vector<ScanRequest> got = decodeScans(message, false);
   for (std::size_t i = 0; i < got.size(); ++i) expectSameScan(got[i], sent[i], false);
   EXPECT_THROW(decodeScans(message, true), InvalidArgument);  // a windowed agent needs its windows
 
   encodeScans({}, &message);  // buffers are reused: nothing of the last batch stays
-  EXPECT_TRUE(message.episodes.empty() && message.starts.empty() && message.cells.empty());
+  EXPECT_TRUE(message.episodes.empty() && message.starts.empty() && message.free_cells.empty());
   EXPECT_TRUE(decodeScans(message, true).empty());
   std::string what;
   EXPECT_EQ(checkScanBatch(message, true, &what), "");
@@ -125,7 +130,11 @@ TEST(BatchCodecTest, MalformedScanBatchesAreRefusedNamingTheField) {
   EXPECT_EQ(broken([](auto& m) { m.bumped.push_back(0); }), "batch");
   EXPECT_EQ(broken([](auto& m) { m.range = 0; }), "range");
   EXPECT_EQ(broken([](auto& m) { m.range = kMaxSensorRange + 1; }), "range");
-  EXPECT_EQ(broken([](auto& m) { m.cells.pop_back(); }), "cells");
+  EXPECT_EQ(broken([](auto& m) { m.free_cells.pop_back(); }), "cells");
+  EXPECT_EQ(broken([](auto& m) { m.obstacle_cells.push_back(0); }), "cells");
+  EXPECT_EQ(broken([](auto& m) { m.free_cells[0] |= 1u << 9; }), "cells");     // a 3x3 window has no cell 9
+  EXPECT_EQ(broken([](auto& m) { m.obstacle_cells[1] |= 1ull << 63; }), "cells");
+  EXPECT_EQ(broken([](auto& m) { m.range = 4; }), "cells");  // 81 cells: two words per window
   EXPECT_EQ(broken([](auto& m) { m.starts[0].width = 0; }), "size");
   EXPECT_EQ(broken([](auto& m) { m.starts[0].height = kMaxGridSide + 1; }), "size");
   EXPECT_EQ(broken([](auto& m) { m.starts[0].start.x = 4; }), "start");

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ppp_core/rng.hpp"
+#include "ppp_core/window_mask.hpp"
 #include "scan_batch_builder.hpp"
 #include "test_world.hpp"
 
@@ -47,8 +48,10 @@ test::TestScan scanOf(const Played& p, const SensorModel& sensor, bool prior_map
   m.step = p.steps;
   m.position = p.position;
   m.bumped = p.bumped;
-  m.cells.resize(static_cast<std::size_t>(sensor.side() * sensor.side()));
-  sensor.scan(kWorld.grid, p.position, deriveSeed(p.seed, {1}), p.steps, m.cells.data());
+  std::vector<std::int8_t> cells(static_cast<std::size_t>(sensor.side() * sensor.side()));
+  sensor.scan(kWorld.grid, p.position, deriveSeed(p.seed, {1}), p.steps, cells.data());
+  m.window = true;
+  packWindow(cells.data(), sensor.options().range, m.free_cells.data(), m.obstacle_cells.data());
   if (p.steps == 0) {
     protocol::EpisodeStart start;
     start.width = kWorld.grid.width();
@@ -87,7 +90,7 @@ std::vector<test::Outcome> playBatched(const AgentConfig& c, int count, std::siz
       if (p.done) continue;
       scans.push_back(scanOf(p, sensor, c.type == "astar"));
       // The simulator sends no window to agents that never read it.
-      if (!readsScanWindow(c)) scans.back().cells.clear();
+      if (!readsScanWindow(c)) scans.back().window = false;
       in_batch.push_back(&p);
     }
     ppp_msgs::ScanBatch batch = test::packBatch(batch_number, sensor.options().range, scans);
@@ -210,7 +213,7 @@ TEST(BatchResponderTest, AMalformedBatchIsRejectedWhole) {
   const test::TestScan two = startScan(2);
 
   ppp_msgs::ScanBatch short_cells = batchOf({one, two});
-  short_cells.cells.pop_back();
+  short_cells.free_cells.pop_back();
   ppp_msgs::ScanBatch short_steps = batchOf({one, two});
   short_steps.steps.pop_back();
   const ppp_msgs::ScanBatch bad_range = batchOf({one, two}, 0);
@@ -228,7 +231,8 @@ TEST(BatchResponderTest, AMalformedBatchIsRejectedWhole) {
   // A random agent reads no window, so a batch without cells is well formed for it (and only for it).
   BatchResponder random(config("random"));
   ppp_msgs::ScanBatch windowless = batchOf({one, two});
-  windowless.cells.clear();
+  windowless.free_cells.clear();
+  windowless.obstacle_cells.clear();
   const auto moves = random.answer(windowless);
   EXPECT_TRUE(isAction(moves.actions[0]) && isAction(moves.actions[1]));
   EXPECT_TRUE(random.rejections().empty());

@@ -2,6 +2,7 @@
 #include "ppp_msgs/graph_names.h"
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 
 #include <sensor_msgs/LaserScan.h>
@@ -11,6 +12,7 @@
 #include "ppp_agents/agent_config.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/map_frame.hpp"
+#include "ppp_core/window_mask.hpp"
 #include "ppp_msgs/conversions.h"
 
 namespace ppp {
@@ -166,8 +168,10 @@ void EpisodeRecorder::recordScans(const std::string& agent, const std::vector<pr
       write("/" + agents::agentGraphName(agent) + "/path", stamp, path);
     }
 
-    if (s.cells.empty()) continue;  // an agent that reads no window (random) is sent none: no scan to show
-    sensor_msgs::LaserScan laser = ppp_msgs::toLaserScan(s.cells.data(), s.range, parameters_.resolution, base_link);
+    if (!s.window) continue;  // an agent that reads no window (random) is sent none: no scan to show
+    std::array<std::int8_t, kMaxScanCells> cells;
+    unpackWindow(s.free_cells.data(), s.obstacle_cells.data(), s.range, cells.data());
+    sensor_msgs::LaserScan laser = ppp_msgs::toLaserScan(cells.data(), s.range, parameters_.resolution, base_link);
     laser.header.stamp = stamp;
     scan_publishers_.at(agent).publish(laser);
     write("/" + agents::agentGraphName(agent) + "/scan", stamp, laser);

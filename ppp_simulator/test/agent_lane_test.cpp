@@ -42,7 +42,7 @@ std::vector<agents::EpisodeResult> playLane(agents::AgentLane& lane) {
     lane.scans(&scans);
     protocol::encodeScans(scans, &message);
     message.batch = batch;
-    EXPECT_EQ(message.cells.empty(), !agents::readsScanWindow(lane.config()) || scans.empty());
+    EXPECT_EQ(message.free_cells.empty(), !agents::readsScanWindow(lane.config()) || scans.empty());
     const protocol::DecodedMoves moves = protocol::decodeMoves(responder.answer(message));
     EXPECT_EQ(moves.fault, "");
     for (agents::EpisodeResult& r : lane.answer(moves.moves, moves.missing_reason)) results.push_back(std::move(r));

@@ -169,6 +169,21 @@ Scan::Scan(int range, const std::int8_t* cells, std::size_t count, Cell position
   std::copy(cells, cells + count, cells_.begin());
 }
 
+Scan::Scan(int range, WindowBits bits, Cell position, Cell goal, bool bumped, int step)
+    : received_bits_(true),
+      bits_(bits),
+      position_(position),
+      goal_(goal),
+      bumped_(bumped),
+      step_(step),
+      range_(range) {
+  if (range < 1 || range > kMaxSensorRange) throw InvalidArgument("range", "outside [1, 7]: " + std::to_string(range));
+  if ((2 * range + 1) * (2 * range + 1) > kMaxBitWindowCells) {
+    throw InvalidArgument("range", "a window of range " + std::to_string(range) + " has more than " +
+                                       std::to_string(kMaxBitWindowCells) + " cells: give its cells, not one mask");
+  }
+}
+
 std::int8_t Scan::atCell(Cell c) const {
   const int dx = c.x - position_.x;
   const int dy = c.y - position_.y;
@@ -185,6 +200,10 @@ std::uint64_t Scan::flips() const {
 }
 
 bool Scan::bits(WindowBits* out) const {
+  if (received_bits_) {
+    *out = bits_;
+    return true;
+  }
   if (windows_ == nullptr) return false;
   const WindowBits* seen = windows_->bits(position_);
   if (seen == nullptr) return false;
@@ -194,7 +213,15 @@ bool Scan::bits(WindowBits* out) const {
 }
 
 void Scan::fill() const {
-  if (windows_ != nullptr) {
+  if (received_bits_) {
+    for (int i = 0; i < (2 * range_ + 1) * (2 * range_ + 1); ++i) {
+      const std::uint64_t bit = std::uint64_t{1} << i;
+      cells_[i] = (bits_.free & bit) != 0       ? kScanFree
+                  : (bits_.obstacle & bit) != 0 ? kScanObstacle
+                  : (bits_.off_map & bit) != 0  ? kScanOutOfBounds
+                                                : kScanUnknown;
+    }
+  } else if (windows_ != nullptr) {
     const std::int8_t* seen = windows_->window(position_);
     std::copy(seen, seen + windows_->cells(), cells_.begin());
     if (windows_->bits(position_) != nullptr) {

@@ -16,6 +16,7 @@ WindowAtlas::WindowAtlas(const Grid& grid, int range)
     for (int i = 0; i < cells_; ++i) {
       bits_[c].free |= static_cast<std::uint64_t>(window[i] == kScanFree) << i;
       bits_[c].obstacle |= static_cast<std::uint64_t>(window[i] == kScanObstacle) << i;
+      bits_[c].off_map |= static_cast<std::uint64_t>(window[i] == kScanOutOfBounds) << i;
     }
   }
 }

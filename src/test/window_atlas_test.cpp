@@ -73,9 +73,11 @@ TEST(WindowAtlasTest, ScanBitsAreItsCellsAsMasksWithTheSameNoise) {
         for (int c = 0; c < cells; ++c) {
           expected.free |= static_cast<std::uint64_t>(scan.cells()[c] == kScanFree) << c;
           expected.obstacle |= static_cast<std::uint64_t>(scan.cells()[c] == kScanObstacle) << c;
+          expected.off_map |= static_cast<std::uint64_t>(scan.cells()[c] == kScanOutOfBounds) << c;
         }
         ASSERT_EQ(bits.free, expected.free) << "range " << range << " noise " << noise << " cell " << i;
         ASSERT_EQ(bits.obstacle, expected.obstacle) << "range " << range << " noise " << noise << " cell " << i;
+        ASSERT_EQ(bits.off_map, expected.off_map) << "range " << range << " noise " << noise << " cell " << i;
         // Read in the other order, the cells agree with the masks too (the noise is drawn once per scan).
         const Scan masks_first(sensor, g, g.cellAt(i), Cell{8, 8}, false, i, 1234, &atlas);
         ASSERT_TRUE(masks_first.bits(&bits));
@@ -87,9 +89,9 @@ TEST(WindowAtlasTest, ScanBitsAreItsCellsAsMasksWithTheSameNoise) {
 }
 
 TEST(WindowAtlasTest, SizeIsOneWindowPerCellAndItsMasks) {
-  // Windows of up to 64 cells (range 3) are kept as bytes and as two 8-byte masks.
-  EXPECT_EQ(WindowAtlas::bytes(Grid(20, 20), 2), 20u * 20 * (25 + 16));
-  EXPECT_EQ(WindowAtlas::bytes(Grid(200, 200), 2), 200u * 200 * (25 + 16));
+  // Windows of up to 64 cells (range 3) are kept as bytes and as three 8-byte masks.
+  EXPECT_EQ(WindowAtlas::bytes(Grid(20, 20), 2), 20u * 20 * (25 + 24));
+  EXPECT_EQ(WindowAtlas::bytes(Grid(200, 200), 2), 200u * 200 * (25 + 24));
   EXPECT_EQ(WindowAtlas::bytes(Grid(20, 20), 4), 20u * 20 * 81);
   EXPECT_LE(WindowAtlas::bytes(Grid(200, 200), 2), kMaxWindowAtlasBytes);
   EXPECT_GT(WindowAtlas::bytes(Grid(300, 300), 2), kMaxWindowAtlasBytes);  // scanned step by step instead

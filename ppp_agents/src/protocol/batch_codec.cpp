@@ -1,5 +1,7 @@
 #include "ppp_agents/protocol/batch_codec.hpp"
 
+#include <algorithm>
+
 #include "ppp_core/error.hpp"
 #include "ppp_core/sensor.hpp"
 
@@ -18,10 +20,6 @@ static_assert(ppp_msgs::MoveBatch::SOUTH_EAST == static_cast<int>(Action::SouthE
 static_assert(ppp_msgs::MoveBatch::SOUTH_WEST == static_cast<int>(Action::SouthWest), "MoveBatch SOUTH_WEST");
 static_assert(ppp_msgs::MoveBatch::NORTH_WEST == static_cast<int>(Action::NorthWest), "MoveBatch NORTH_WEST");
 static_assert(ppp_msgs::MoveBatch::NORTH_WEST + 1 == kOctileActionCount, "MoveBatch: one constant per action");
-static_assert(ppp_msgs::ScanBatch::UNKNOWN == kScanUnknown, "ScanBatch UNKNOWN");
-static_assert(ppp_msgs::ScanBatch::FREE == kScanFree, "ScanBatch FREE");
-static_assert(ppp_msgs::ScanBatch::OBSTACLE == kScanObstacle, "ScanBatch OBSTACLE");
-static_assert(ppp_msgs::ScanBatch::OUT_OF_BOUNDS == kScanOutOfBounds, "ScanBatch OUT_OF_BOUNDS");
 
 ppp_msgs::GridCell toGridCell(Cell cell) {
   ppp_msgs::GridCell m;
@@ -39,14 +37,17 @@ void encodeScans(const std::vector<ScanRequest>& scans, ppp_msgs::ScanBatch* mes
   m.steps.resize(n);
   m.positions.resize(n);
   m.bumped.resize(n);
-  m.cells.clear();
+  const std::size_t words = n == 0 || !scans[0].window ? 0 : static_cast<std::size_t>(windowWords(scans[0].range));
+  m.free_cells.resize(n * words);
+  m.obstacle_cells.resize(n * words);
   for (std::size_t i = 0; i < n; ++i) {
     const ScanRequest& r = scans[i];
     m.episodes[i] = r.episode;
     m.steps[i] = static_cast<std::uint32_t>(r.step);
     m.positions[i] = toGridCell(r.position);
     m.bumped[i] = r.bumped ? 1 : 0;
-    m.cells.insert(m.cells.end(), r.cells.begin(), r.cells.end());
+    std::copy(r.free_cells.begin(), r.free_cells.begin() + words, m.free_cells.begin() + i * words);
+    std::copy(r.obstacle_cells.begin(), r.obstacle_cells.begin() + words, m.obstacle_cells.begin() + i * words);
     if (!r.start) continue;
     ppp_msgs::EpisodeStart start;
     start.episode = r.episode;
@@ -73,10 +74,21 @@ std::string checkScanBatch(const ppp_msgs::ScanBatch& batch, bool reads_window, 
     *what = "range " + std::to_string(batch.range) + " is outside [1, " + std::to_string(kMaxSensorRange) + "]";
     return "range";
   }
-  if (reads_window && batch.cells.size() != n * windowCells(batch.range)) {
-    *what = "expected " + std::to_string(n) + " windows of " + std::to_string(windowCells(batch.range)) +
-            " cells, got " + std::to_string(batch.cells.size()) + " cells";
+  if (!reads_window) return "";
+  const std::size_t words = n == 0 ? 0 : static_cast<std::size_t>(windowWords(batch.range));
+  if (batch.free_cells.size() != n * words || batch.obstacle_cells.size() != n * words) {
+    *what = "expected " + std::to_string(n) + " windows of " + std::to_string(words) + " mask words, got " +
+            std::to_string(batch.free_cells.size()) + " free and " + std::to_string(batch.obstacle_cells.size()) +
+            " obstacle words";
     return "cells";
+  }
+  const std::size_t cells = n == 0 ? 0 : windowCells(batch.range);
+  const std::uint64_t past = cells % 64 == 0 ? 0 : ~std::uint64_t{0} << (cells % 64);  // bits past the window
+  for (std::size_t k = words - 1; k < n * words; k += words) {
+    if (((batch.free_cells[k] | batch.obstacle_cells[k]) & past) != 0) {
+      *what = "the window of scan " + std::to_string(k / words) + " has bits past its last cell";
+      return "cells";
+    }
   }
   return "";
 }
@@ -111,7 +123,7 @@ std::vector<ScanRequest> decodeScans(const ppp_msgs::ScanBatch& batch, bool read
   const std::string fault = checkScanBatch(batch, reads_window, &what);
   if (!fault.empty()) throw InvalidArgument(fault, what);
   std::vector<ScanRequest> scans(batch.episodes.size());
-  const std::size_t window = windowCells(batch.range);
+  const std::size_t words = scans.empty() ? 0 : static_cast<std::size_t>(windowWords(batch.range));
   for (std::size_t i = 0; i < scans.size(); ++i) {
     ScanRequest& s = scans[i];
     s.episode = batch.episodes[i];
@@ -119,7 +131,10 @@ std::vector<ScanRequest> decodeScans(const ppp_msgs::ScanBatch& batch, bool read
     s.position = toCell(batch.positions[i]);
     s.bumped = batch.bumped[i] != 0;
     s.range = batch.range;
-    if (reads_window) s.cells.assign(batch.cells.begin() + i * window, batch.cells.begin() + (i + 1) * window);
+    s.window = reads_window;
+    if (!reads_window) continue;
+    std::copy_n(batch.free_cells.begin() + i * words, words, s.free_cells.begin());
+    std::copy_n(batch.obstacle_cells.begin() + i * words, words, s.obstacle_cells.begin());
   }
   for (const ppp_msgs::EpisodeStart& m : batch.starts) {
     bool found = false;

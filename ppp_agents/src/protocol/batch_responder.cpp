@@ -3,10 +3,12 @@
 #include <ros/console.h>
 
 #include <algorithm>
+#include <array>
 #include <exception>
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/sensor.hpp"
+#include "ppp_core/window_mask.hpp"
 
 namespace ppp {
 namespace protocol {
@@ -42,8 +44,7 @@ ppp_msgs::MoveBatch BatchResponder::answer(const ppp_msgs::ScanBatch& batch) {
       failed_starts_.emplace(s.episode, e);  // rejected with the episode's scan
     }
   }
-  const std::size_t window = windowCells(batch.range);
-  if (!reads_window_) unknown_window_.assign(window, kScanUnknown);
+  if (!reads_window_) unknown_window_.assign(windowCells(batch.range), kScanUnknown);
   next_ = 0;
   for (std::size_t i = 0; i < n; ++i) {
     // Scans come in id order, so the agents acted on a few scans from now are known: their state is fetched
@@ -52,9 +53,8 @@ ppp_msgs::MoveBatch BatchResponder::answer(const ppp_msgs::ScanBatch& batch) {
     if (next_ + kPrefetchAhead < episodes_.size() && i + kPrefetchAhead < n) {
       episodes_[next_ + kPrefetchAhead].agent->prefetch(toCell(batch.positions[i + kPrefetchAhead]));
     }
-    const std::int8_t* cells = reads_window_ ? batch.cells.data() + i * window : unknown_window_.data();
     try {
-      replies_[i].action = act(batch, i, cells);
+      replies_[i].action = act(batch, i);
     } catch (const InvalidArgument& e) {
       reject(batch.episodes[i], batch.steps[i], e.name(), e.what());
     } catch (const std::exception& e) {
@@ -78,7 +78,7 @@ BatchResponder::Episode* BatchResponder::find(std::uint32_t id) {
   return &*it;
 }
 
-std::uint8_t BatchResponder::act(const ppp_msgs::ScanBatch& batch, std::size_t i, const std::int8_t* window) {
+std::uint8_t BatchResponder::act(const ppp_msgs::ScanBatch& batch, std::size_t i) {
   const std::uint32_t id = batch.episodes[i];
   const std::uint32_t step = batch.steps[i];
   if (!failed_starts_.empty()) {
@@ -96,7 +96,24 @@ std::uint8_t BatchResponder::act(const ppp_msgs::ScanBatch& batch, std::size_t i
   episode->round = round_;
   const Cell position = toCell(batch.positions[i]);
   requireOnGrid(position, episode->width, episode->height, "position");
-  const Scan view(batch.range, window, windowCells(batch.range), position, episode->goal, batch.bumped[i] != 0, static_cast<int>(step));
+  const bool bumped = batch.bumped[i] != 0;
+  if (!reads_window_) {
+    const Scan view(batch.range, unknown_window_.data(), unknown_window_.size(), position, episode->goal, bumped,
+                    static_cast<int>(step));
+    return static_cast<std::uint8_t>(episode->agent->act(view));
+  }
+  const int words = windowWords(batch.range);
+  const std::uint64_t* free = batch.free_cells.data() + i * words;
+  const std::uint64_t* obstacle = batch.obstacle_cells.data() + i * words;
+  if (words == 1) {  // the agent reads the masks as they came, as it reads an atlas's in process
+    const Scan view(batch.range, unpackWindow(*free, *obstacle), position, episode->goal, bumped,
+                    static_cast<int>(step));
+    return static_cast<std::uint8_t>(episode->agent->act(view));
+  }
+  std::array<std::int8_t, kMaxScanCells> cells;
+  unpackWindow(free, obstacle, batch.range, cells.data());
+  const Scan view(batch.range, cells.data(), windowCells(batch.range), position, episode->goal, bumped,
+                  static_cast<int>(step));
   return static_cast<std::uint8_t>(episode->agent->act(view));
 }
 

@@ -24,11 +24,12 @@ constexpr int kMaxScanCells = (2 * kMaxSensorRange + 1) * (2 * kMaxSensorRange +
 /// Most window cells kept as bit masks (WindowBits): windows of sensor range 3 or less.
 constexpr int kMaxBitWindowCells = 64;
 
-/// A scan window of at most kMaxBitWindowCells cells as two masks, bit i for window cell i (row-major): reported
-/// free, reported obstacle; a cell in neither is unknown or off the map.
+/// A scan window of at most kMaxBitWindowCells cells as masks, bit i for window cell i (row-major): reported free,
+/// reported obstacle, reported off the map; a cell in none is unknown.
 struct WindowBits {
   std::uint64_t free = 0;      ///< Cells reported free.
   std::uint64_t obstacle = 0;  ///< Cells reported obstacles.
+  std::uint64_t off_map = 0;   ///< Cells reported off the map (kScanOutOfBounds).
 };
 
 /// The robot's range sensor: which cells it reports and how reliably.
@@ -91,6 +92,9 @@ class Scan {
   Scan(int range, const std::vector<std::int8_t>& cells, Cell position, Cell goal, bool bumped, int step);
   /// A scan from `count` received window cells at `cells`. @throws InvalidArgument as above.
   Scan(int range, const std::int8_t* cells, std::size_t count, Cell position, Cell goal, bool bumped, int step);
+  /// A scan from a received window of at most kMaxBitWindowCells cells as masks. @throws InvalidArgument for a
+  /// range whose window is larger.
+  Scan(int range, WindowBits bits, Cell position, Cell goal, bool bumped, int step);
 
   Cell position() const { return position_; }  ///< The agent's cell (grid coordinates, y down).
   Cell goal() const { return goal_; }          ///< The goal cell.
@@ -110,7 +114,7 @@ class Scan {
     if (!filled_) fill();
     return cells_.data();
   }
-  /// The window as bit masks, when the scan comes from an atlas that keeps them (windows of at most
+  /// The window as bit masks, when the scan came as masks or from an atlas that keeps them (windows of at most
   /// kMaxBitWindowCells cells): the same values as cells(), without building the cells. False otherwise.
   bool bits(WindowBits* out) const;
 
@@ -122,6 +126,8 @@ class Scan {
   const SensorModel* sensor_ = nullptr;
   const Grid* grid_ = nullptr;
   const WindowAtlas* windows_ = nullptr;
+  bool received_bits_ = false;  // the window came as masks (bits_)
+  WindowBits bits_;
   std::uint64_t noise_seed_ = 0;
   Cell position_;
   Cell goal_;

@@ -9,7 +9,7 @@
 
 namespace ppp {
 
-/// Largest atlas worth keeping for one map (at range 2 a 20x20 map takes 16 KB, 200x200 1.6 MB); larger maps
+/// Largest atlas worth keeping for one map (at range 2 a 20x20 map takes 20 KB, 200x200 2 MB); larger maps
 /// or ranges are scanned step by step.
 constexpr std::size_t kMaxWindowAtlasBytes = std::size_t{2} << 20;
 

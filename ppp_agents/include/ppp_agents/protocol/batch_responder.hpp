@@ -46,7 +46,7 @@ class BatchResponder {
   void start(std::uint32_t id, const EpisodeStart& start);
   std::vector<Episode>::iterator firstNotBefore(std::uint32_t id);  // in episodes_, by id
   Episode* find(std::uint32_t id);
-  std::uint8_t act(const ppp_msgs::ScanBatch& batch, std::size_t i, const std::int8_t* window);
+  std::uint8_t act(const ppp_msgs::ScanBatch& batch, std::size_t i);
   void reject(std::uint32_t episode, std::uint32_t step, const std::string& kind, const std::string& what);
   void finishAbsent();
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -9,6 +10,7 @@
 #include "ppp_agents/agent.hpp"
 #include "ppp_core/episode_reason.hpp"
 #include "ppp_core/grid.hpp"
+#include "ppp_core/window_mask.hpp"
 
 namespace ppp {
 namespace protocol {
@@ -36,7 +38,9 @@ struct ScanRequest {
   Cell goal;                          ///< The goal cell (on the wire only in the start).
   bool bumped = false;                ///< The last move bumped.
   int range = 0;                      ///< Window radius.
-  std::vector<std::int8_t> cells;     ///< The window, row-major; empty for agents that never read it (random).
+  bool window = false;                ///< False for agents that never read the window (random): no masks.
+  std::array<std::uint64_t, kMaxWindowWords> free_cells{};      ///< The window's free cells (window_mask.hpp).
+  std::array<std::uint64_t, kMaxWindowWords> obstacle_cells{};  ///< Its obstacle cells, in the same words.
   std::optional<EpisodeStart> start;  ///< Set on the episode's first scan.
   int set = 0;                        ///< Index of the PPP's set (the simulator's own; not sent).
   int problem = 0;                    ///< Index of the PPP in its set (not sent).
