@@ -4,6 +4,7 @@ set(PPP_REPORT_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/report/pass_rates.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/report/statistics.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/report/detours.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/report/reference.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/report/svg_plot.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/report/episode_animation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/report/report.cpp

@@ -42,7 +42,7 @@ std::string optionsReference() {
       << "experiment's fingerprint (its `experiment.yaml`): a rerun on the same directory resumes only when\n"
       << "every such option is unchanged, and otherwise names the first one that differs.\n\n"
       << "## Experiment\n\n"
-      << "Top-level keys of an experiment YAML (`config/experiment.yaml`) besides `sets` and `agents`;\n"
+      << "Top-level keys of an experiment YAML (`config/experiment.yaml`) besides `sets`, `agents` and `reference` (README);\n"
       << "`ppp experiment --threads` overrides `threads`.\n\n"
       << optionsMarkdownTable(simulator::experimentOptionSpecs(), simulator::ExperimentConfig{}, &key)
       << "\n## Agents\n\n"

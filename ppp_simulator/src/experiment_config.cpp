@@ -59,6 +59,34 @@ std::vector<SetSpec> readSets(YamlMapReader& reader, const fs::path& base) {
   return sets;
 }
 
+/// `reference: {SET: {AGENT: PERCENT, ...}, ...}`; the names are checked by validate().
+std::vector<ReferenceRate> readReference(YamlMapReader& reader) {
+  const YAML::Node node = reader.lookup("reference");
+  if (!node) return {};
+  if (!node.IsMap()) reader.fail(node, "reference", "expected {set: {agent: pass rate in percent, ...}, ...}");
+  std::vector<ReferenceRate> reference;
+  for (const auto& set : node) {
+    const std::string set_name = set.first.Scalar();
+    if (!set.second.IsMap()) {
+      reader.fail(set.second, "reference." + set_name, "expected {agent: pass rate in percent, ...}");
+    }
+    for (const auto& agent : set.second) {
+      const std::string key = "reference." + set_name + "." + agent.first.Scalar();
+      double percent = 0;
+      try {
+        percent = agent.second.as<double>();
+      } catch (const YAML::Exception&) {
+        reader.fail(agent.second, key, "expected a pass rate in percent, got '" + YAML::Dump(agent.second) + "'");
+      }
+      if (!(percent >= 0 && percent <= 100)) {
+        reader.fail(agent.second, key, "expected a pass rate in percent in [0, 100], got " + formatShortest(percent));
+      }
+      reference.push_back({set_name, agent.first.Scalar(), percent});
+    }
+  }
+  return reference;
+}
+
 }  // namespace
 
 void ExperimentConfig::validate() const {
@@ -97,6 +125,16 @@ void ExperimentConfig::validate() const {
   for (const agents::AgentConfig& a : agents) {
     a.validate();
     if (!names.insert(a.name).second) throw InvalidArgument("agents", "duplicate agent name '" + a.name + "'");
+  }
+  std::set<std::pair<std::string, std::string>> referenced;
+  for (const ReferenceRate& r : reference) {
+    const std::string field = "reference." + r.set + "." + r.agent;
+    if (!findSet(*this, r.set)) throw InvalidArgument(field, "this experiment has no set '" + r.set + "'");
+    if (!names.count(r.agent)) throw InvalidArgument(field, "this experiment has no agent '" + r.agent + "'");
+    if (!(r.percent >= 0 && r.percent <= 100)) {
+      throw InvalidArgument(field, "expected a pass rate in percent in [0, 100], got " + formatShortest(r.percent));
+    }
+    if (!referenced.insert({r.set, r.agent}).second) throw InvalidArgument(field, "given twice");
   }
 }
 
@@ -152,6 +190,7 @@ ExperimentConfig parseExperimentConfig(const std::string& yaml, const std::strin
   } else if (agents) {
     config.agents = agents::readAgentConfigs(reader, "agents");
   }
+  config.reference = readReference(reader);
   reader.rejectUnknownKeys();
   try {
     config.validate();

@@ -132,6 +132,32 @@ TEST_F(ExperimentYaml, BadInputNamesKeyAndLine) {
   EXPECT_EQ(errorOf(agent + "planner, planner_node: p/e, host: robot-2.lab}\n" + sets), "no error");
 }
 
+TEST_F(ExperimentYaml, ReferenceRatesAreReadCheckedAndLeftOutOfTheFingerprint) {
+  const std::string base = "agents: agents.yaml\nsets:\n  - {name: a, directory: s}\n";
+  const std::string path = (dir_ / "never_written.yaml").string();
+  const ExperimentConfig with = parseExperimentConfig(base + "reference:\n  a: {random: 4.4}\n", path);
+  ASSERT_EQ(with.reference.size(), 1u);
+  EXPECT_EQ(with.reference[0].set, "a");
+  EXPECT_EQ(with.reference[0].agent, "random");
+  EXPECT_DOUBLE_EQ(with.reference[0].percent, 4.4);
+  // A reference changes no result: an experiment run without one resumes with one.
+  EXPECT_EQ(experimentFingerprint(with), experimentFingerprint(parseExperimentConfig(base, path)));
+
+  EXPECT_EQ(errorOf(base + "reference:\n  b: {random: 4.4}\n"), " reference.b.random: this experiment has no set 'b'");
+  EXPECT_EQ(errorOf(base + "reference:\n  a: {astar: 4.4}\n"), " reference.a.astar: this experiment has no agent 'astar'");
+  EXPECT_EQ(errorOf(base + "reference:\n  a: {random: 101}\n"),
+            "5: reference.a.random: expected a pass rate in percent in [0, 100], got 101");
+  EXPECT_EQ(errorOf(base + "reference:\n  a: {random: -1}\n"),
+            "5: reference.a.random: expected a pass rate in percent in [0, 100], got -1");
+  EXPECT_EQ(errorOf(base + "reference:\n  a: {random: lots}\n"),
+            "5: reference.a.random: expected a pass rate in percent, got 'lots'");
+  EXPECT_EQ(errorOf(base + "reference:\n  a: {random: .nan}\n"),
+            "5: reference.a.random: expected a pass rate in percent in [0, 100], got nan");
+  EXPECT_EQ(errorOf(base + "reference: [1, 2]\n"),
+            "4: reference: expected {set: {agent: pass rate in percent, ...}, ...}");
+  EXPECT_EQ(errorOf(base + "reference:\n  a: 5\n"), "5: reference.a: expected {agent: pass rate in percent, ...}");
+}
+
 TEST_F(ExperimentYaml, TextIsReadAsTheFileItNames) {
   const std::string path = (dir_ / "never_written.yaml").string();
   const ExperimentConfig c = parseExperimentConfig("agents: agents.yaml\nsets:\n  - {name: a, directory: s}\n", path);

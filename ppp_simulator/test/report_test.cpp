@@ -97,6 +97,23 @@ ReportInput handMadeInput() {
   return input;
 }
 
+TEST_F(ReportTest, ReferenceRatesStandBesideTheMeasuredOnes) {
+  writeReport(dir_, handMadeInput());
+  EXPECT_EQ(read("report.md").find("## Reference"), std::string::npos);  // none given, no section
+  ReportInput input = handMadeInput();
+  input.references = compareWithReference(input.rates, {{"alpha", "explorer", 85}, {"beta", "random", 10}});
+  writeReport(dir_, input);
+  const std::string md = read("report.md");
+  // alpha/explorer: per-PPP 3/4 and 2/4, mean 0.625, sample sd 0.176777, half-width 1.959964 x 0.176777 / sqrt 2
+  // = 0.245: 38.00 % to 87.00 %, and 85 % is in it. beta/random passed nothing: no spread, 10 % is out.
+  EXPECT_NE(md.find("| `alpha` | `explorer` | 62.50% | 85.00% | -22.50 | 38.00% \xE2\x80\x93 87.00% | yes |"),
+            std::string::npos) << md;
+  EXPECT_NE(md.find("| `beta` | `random` | 0.00% | 10.00% | -10.00 | 0.00% \xE2\x80\x93 0.00% | **no** |"),
+            std::string::npos) << md;
+  EXPECT_LT(md.find("## Reference"), md.find("## Mann"));  // right after the pass rates
+  EXPECT_NE(read("report.html").find("<h2>Reference</h2>"), std::string::npos);
+}
+
 TEST_F(ReportTest, WritesEveryFile) {
   writeReport(dir_, handMadeInput());
   for (const char* file : {"report.md", "report.html", "plots/pass_rate_by_agent.svg",

@@ -8,6 +8,7 @@
 #include "ppp_agents/agent_config.hpp"
 #include "ppp_generator/generator_options.hpp"
 #include "ppp_agents/episode_runner.hpp"
+#include "ppp_simulator/report/reference.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -29,6 +30,8 @@ struct ExperimentConfig {
   int animation_frames = 301;  ///< Most frames of a failing run's animation in the report (default: budget 300 whole).
   std::vector<SetSpec> sets;   ///< The PPP sets, in report order.
   std::vector<agents::AgentConfig> agents;  ///< The agent configurations, in report order.
+  std::vector<ReferenceRate> reference;     ///< Published pass rates shown beside the measured ones, in YAML order
+                                            ///< (not in the fingerprint: they change no result).
   /// @throws InvalidArgument naming the field.
   void validate() const;
   /// Runs per PPP of `agent`: its own `runs`, or the experiment's.

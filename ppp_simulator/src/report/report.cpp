@@ -480,6 +480,44 @@ void passRateSection(const ReportInput& input, Text* out) {
   out->md += "\n";
 }
 
+void referenceSection(const ReportInput& input, Text* out) {
+  if (input.references.empty()) return;
+  out->md += "## Reference\n\n";
+  out->html += "<h2>Reference</h2>\n";
+  const std::string method =
+      "Published pass rates (the configuration's reference) beside the measured mean over each set's PPPs: the "
+      "difference in percentage points, and whether the reference lies within the 95 % interval of the measured "
+      "mean (mean \xC2\xB1 1.96 \xC3\x97 the standard deviation of the per-PPP rates / \xE2\x88\x9APPPs), "
+      "that is whether another set of as many PPPs like this one could have given it.";
+  out->md += mdText(method) + "\n\n";
+  out->html += "<p>" + escapeMarkup(method) + "</p>\n";
+  out->md += "| Set | Agent | measured | reference | difference | 95 % interval | within |\n"
+             "|:---|:---|---:|---:|---:|---:|:---:|\n";
+  out->html += "<table>\n<thead><tr><th>Set</th><th>Agent</th><th class=\"num\">measured</th>"
+               "<th class=\"num\">reference</th><th class=\"num\">difference</th>"
+               "<th class=\"num\">95 % interval</th><th>within</th></tr></thead>\n<tbody>\n";
+  for (const ReferenceComparison& row : input.references) {
+    const std::string points = row.measured ? formatFixed((row.mean - row.reference) * 100, 2) : "\xE2\x80\x94";
+    const std::vector<std::string> cells = {
+        row.measured ? percent(row.mean) : "not run", percent(row.reference),
+        row.measured && row.mean >= row.reference ? "+" + points : points,
+        row.measured ? percent(std::max(0.0, row.mean - row.margin)) + " \xE2\x80\x93 " +
+                           percent(std::min(1.0, row.mean + row.margin))
+                     : "\xE2\x80\x94"};
+    out->md += "| " + mdCode(row.set, true) + " | " + mdCode(row.agent, true) + " |";
+    out->html += "<tr><td><code>" + escapeMarkup(row.set) + "</code></td><td><code>" + escapeMarkup(row.agent) +
+                 "</code></td>";
+    for (const std::string& cell : cells) {
+      out->md += " " + cell + " |";
+      out->html += "<td class=\"num\">" + escapeMarkup(cell) + "</td>";
+    }
+    out->md += row.within() ? " yes |\n" : " **no** |\n";
+    out->html += row.within() ? "<td>yes</td></tr>\n" : "<td class=\"sig\">no</td></tr>\n";
+  }
+  out->md += "\n";
+  out->html += "</tbody>\n</table>\n";
+}
+
 void comparisonSection(const ReportInput& input, Text* out) {
   out->md += "## Mann\xE2\x80\x93Whitney U tests\n\n";
   out->html += "<h2>Mann\xE2\x80\x93Whitney U tests</h2>\n";
@@ -737,6 +775,7 @@ void writeReport(const std::string& dir, const ReportInput& input, const StopChe
               "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n<h1>" + escapeMarkup(title) +
               "</h1>\n<p class=\"guide\">" + escapeMarkup(guide) + "</p>\n";
   passRateSection(input, &text);
+  referenceSection(input, &text);
   comparisonSection(input, &text);
   faultSection(input, worst_pictures, &text);
   detourSection(input, detour_pictures, &text);

@@ -10,6 +10,7 @@
 #include "ppp_core/stop.hpp"
 #include "ppp_simulator/report/detours.hpp"
 #include "ppp_simulator/report/pass_rates.hpp"
+#include "ppp_simulator/report/reference.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -54,6 +55,7 @@ struct ReportInput {
   std::vector<DetourStats> detours;   ///< Path / optimal of passed runs per set and agent ("Detours").
   std::vector<FailureExample> detour_examples;  ///< Per agent, its longest run on its worst-detour PPP.
   std::vector<SetInfo> sets;          ///< Diversity and archive of each set (may be empty).
+  std::vector<ReferenceComparison> references;  ///< Published rates beside the measured ones ("Reference").
 };
 
 /// Writes the experiment report into `dir` (created if missing), replacing files of the same names (the
