@@ -394,6 +394,12 @@ struct Text {
   std::string html;
 };
 
+/// Opens a report section: its heading, then `intro` as a paragraph.
+void openSection(const std::string& title, const std::string& intro, Text* out) {
+  out->md += "## " + title + "\n\n" + mdText(intro) + "\n\n";
+  out->html += "<h2>" + escapeMarkup(title) + "</h2>\n<p>" + escapeMarkup(intro) + "</p>\n";
+}
+
 /// One cell of an agent x set table: its text, and for the HTML its pass-rate shading and tooltip.
 struct TableCell {
   bool present = false;  ///< False: the agent has no results on the set (drawn as a dash).
@@ -440,13 +446,10 @@ void agentSetTable(const PassRateTable& rates, const std::string& html_class,
 
 void passRateSection(const ReportInput& input, Text* out) {
   const PassRateTable& rates = input.rates;
-  out->md += "## Pass rates\n\n";
-  out->html += "<h2>Pass rates</h2>\n";
-  const std::string caption =
-      "Mean pass rate over each set's PPPs (rows: agents, columns: PPP sets); \xE2\x80\x94 marks an agent "
-      "without results on a set.";
-  out->md += mdText(caption) + "\n\n";
-  out->html += "<p>" + escapeMarkup(caption) + "</p>\n";
+  openSection("Pass rates",
+              "Mean pass rate over each set's PPPs (rows: agents, columns: PPP sets); \xE2\x80\x94 marks an agent "
+              "without results on a set.",
+              out);
 
   agentSetTable(rates, "rates", [&](const std::string& set, const std::string& agent) {
     const SetPassRate* row = rates.find(set, agent);
@@ -482,15 +485,12 @@ void passRateSection(const ReportInput& input, Text* out) {
 
 void referenceSection(const ReportInput& input, Text* out) {
   if (input.references.empty()) return;
-  out->md += "## Reference\n\n";
-  out->html += "<h2>Reference</h2>\n";
-  const std::string method =
-      "Published pass rates (the configuration's reference) beside the measured mean over each set's PPPs: the "
-      "difference in percentage points, and whether the reference lies within the 95 % interval of the measured "
-      "mean (mean \xC2\xB1 1.96 \xC3\x97 the standard deviation of the per-PPP rates / \xE2\x88\x9APPPs), "
-      "that is whether another set of as many PPPs like this one could have given it.";
-  out->md += mdText(method) + "\n\n";
-  out->html += "<p>" + escapeMarkup(method) + "</p>\n";
+  openSection("Reference",
+              "Published pass rates (the configuration's reference) beside the measured mean over each set's PPPs: "
+              "the difference in percentage points, and whether the reference lies within the 95 % interval of the "
+              "measured mean (mean \xC2\xB1 1.96 \xC3\x97 the standard deviation of the per-PPP rates / "
+              "\xE2\x88\x9APPPs), that is whether another set of as many PPPs like this one could have given it.",
+              out);
   out->md += "| Set | Agent | measured | reference | difference | 95 % interval | within |\n"
              "|:---|:---|---:|---:|---:|---:|:---:|\n";
   out->html += "<table>\n<thead><tr><th>Set</th><th>Agent</th><th class=\"num\">measured</th>"
@@ -519,14 +519,11 @@ void referenceSection(const ReportInput& input, Text* out) {
 }
 
 void comparisonSection(const ReportInput& input, Text* out) {
-  out->md += "## Mann\xE2\x80\x93Whitney U tests\n\n";
-  out->html += "<h2>Mann\xE2\x80\x93Whitney U tests</h2>\n";
-  const std::string method =
-      "Per agent, the per-PPP pass rates on set A against those on set B: two-sided test, normal approximation "
-      "with the tie-corrected variance and no continuity correction; U is the smaller of U_A and U_B; z > 0 means "
-      "higher pass rates on A.";
-  out->md += mdText(method) + "\n\n";
-  out->html += "<p>" + escapeMarkup(method) + "</p>\n";
+  openSection("Mann\xE2\x80\x93Whitney U tests",
+              "Per agent, the per-PPP pass rates on set A against those on set B: two-sided test, normal "
+              "approximation with the tie-corrected variance and no continuity correction; U is the smaller of U_A "
+              "and U_B; z > 0 means higher pass rates on A.",
+              out);
   if (input.comparisons.empty()) {
     out->md += "No set pairs were compared.\n\n";
     out->html += "<p class=\"muted\">No set pairs were compared.</p>\n";
@@ -691,16 +688,12 @@ void faultSection(const ReportInput& input, const std::vector<Picture>& pictures
 /// each agent's longest detour.
 void detourSection(const ReportInput& input, const std::vector<Picture>& pictures, Text* out) {
   if (input.detours.empty()) return;
-  out->md += "## Detours\n\n";
-  out->html += "<h2>Detours</h2>\n";
-  const std::string intro =
-      "Per agent and set, path length / optimal length of the passed runs: the median, the 95th percentile and "
-      "the largest, then the soft failures (passed runs longer than the configured soft_failure_ratio allows). "
-      "The box plot under Plots shows the whole spread. Below, per agent, its longest run on the PPP where its "
-      "passed runs were longest on average.";
-  const std::string text = intro + animationGuide(input.detour_examples);
-  out->md += mdText(text) + "\n\n";
-  out->html += "<p>" + escapeMarkup(text) + "</p>\n";
+  openSection("Detours",
+              "Per agent and set, path length / optimal length of the passed runs: the median, the 95th percentile "
+              "and the largest, then the soft failures (passed runs longer than the configured soft_failure_ratio "
+              "allows). The box plot under Plots shows the whole spread. Below, per agent, its longest run on the PPP "
+              "where its passed runs were longest on average." + animationGuide(input.detour_examples),
+              out);
   agentSetTable(input.rates, "", [&](const std::string& set, const std::string& agent) {
     for (const DetourStats& d : input.detours) {
       if (d.set != set || d.agent != agent) continue;
