@@ -7,6 +7,7 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/visibility.hpp"
 #include "ppp_core/window_atlas.hpp"
+#include "ppp_core/window_mask.hpp"
 
 namespace ppp {
 
@@ -214,13 +215,9 @@ bool Scan::bits(WindowBits* out) const {
 
 void Scan::fill() const {
   if (received_bits_) {
-    for (int i = 0; i < (2 * range_ + 1) * (2 * range_ + 1); ++i) {
-      const std::uint64_t bit = std::uint64_t{1} << i;
-      cells_[i] = (bits_.free & bit) != 0       ? kScanFree
-                  : (bits_.obstacle & bit) != 0 ? kScanObstacle
-                  : (bits_.off_map & bit) != 0  ? kScanOutOfBounds
-                                                : kScanUnknown;
-    }
+    std::uint64_t free = 0, obstacle = 0;
+    packWindow(bits_, &free, &obstacle);  // the wire's two masks, which unpackWindow reads
+    unpackWindow(&free, &obstacle, range_, cells_.data());
   } else if (windows_ != nullptr) {
     const std::int8_t* seen = windows_->window(position_);
     std::copy(seen, seen + windows_->cells(), cells_.begin());
