@@ -26,6 +26,14 @@ std::string priorMapProblem(const AgentConfig& config) {
   return "only planner agents take prior_map (astar always has the map; the other agents never do)";
 }
 
+/// What is wrong with the goal seeking asked for, or "" when nothing is.
+std::string goalSeekingProblem(const AgentConfig& config) {
+  if (config.goal_seeking == kGoalSeekingByType) return "";
+  if (config.type == "astar") return "astar plans its route to the goal from the start; goal seeking does not apply";
+  if (config.type == kPlannerType) return "a planner agent's planner is given the goal; goal seeking does not apply";
+  return "";
+}
+
 /// What is wrong with the instances asked for, or "" when nothing is.
 std::string instancesProblem(const AgentConfig& config) {
   if (config.instances == 0 || config.type == kPlannerType) return "";
@@ -121,6 +129,7 @@ void AgentConfig::validate() const {
     throw InvalidArgument("memory", "expected an odd window side in [1, " + std::to_string(kMaxMemoryWindow) +
                                         "] (5 for 5x5) or 0 for full memory, got " + std::to_string(memory_window));
   }
+  if (!goalSeekingProblem(*this).empty()) throw InvalidArgument("goal_seeking", goalSeekingProblem(*this));
   if (!priorMapProblem(*this).empty()) throw InvalidArgument("prior_map", priorMapProblem(*this));
   if (!plannerNodeProblem(*this).empty()) throw InvalidArgument("planner_node", plannerNodeProblem(*this));
   if (!plannerArgsProblem(*this).empty()) throw InvalidArgument("planner_args", plannerArgsProblem(*this));
@@ -141,6 +150,12 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
                           {"full", "5x5", "3x3"}),
         declareOption("sensor_noise", "probability that a sensed cell is reported flipped",
                       +[](A& a) -> double& { return a.sensor_noise; }, Bounds{0, 1}),
+        declareOption("goal_seeking", "what the agent does once it has seen the goal",
+                      +[](A& a) -> std::string& { return a.goal_seeking; })
+            .withChoices("goal seeking",
+                         {{kGoalSeekingByType, "as its type's design: every type but random heads for it"},
+                          {kGoalSeekingOn, "it takes a shortest path to the goal on its memory"},
+                          {kGoalSeekingOff, "it plays its strategy as if it had not seen it"}}),
         declareOption("runs", "runs per PPP for this agent (0: the experiment's runs)",
                       +[](A& a) -> int& { return a.runs; }, Bounds{0, kMaxRuns}),
         declareOption("prior_map", "planner agents: the planner is given the true map instead of the memory",
@@ -174,13 +189,13 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
 
 const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs() {
   static const std::vector<OptionSpec<AgentConfig>> specs =
-      selectOptions(agentOptionSpecs(), {"type", "name", "memory", "sensor_noise"});
+      selectOptions(agentOptionSpecs(), {"type", "name", "memory", "sensor_noise", "goal_seeking"});
   return specs;
 }
 
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs() {
   static const std::vector<OptionSpec<AgentConfig>> specs =
-      selectOptions(agentOptionSpecs(), {"type", "memory", "sensor_noise"});
+      selectOptions(agentOptionSpecs(), {"type", "memory", "sensor_noise", "goal_seeking"});
   return specs;
 }
 

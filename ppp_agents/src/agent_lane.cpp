@@ -46,7 +46,8 @@ void AgentLane::scans(std::vector<ScanRequest>* requests) {
     const std::uint64_t seed = seed_of_(work.set, work.problem, work.run);
     active_.push_back({next_id_++, work, seed,
                        Episode(set.set.problems[work.problem], set.grids[work.problem], sensor_, seed,
-                               set.budgets[work.problem], options_.connectivity, false, windowsOf(set, work.problem),
+                               options_.budgetRule(set.budgets[work.problem]), options_.connectivity, false,
+                               windowsOf(set, work.problem),
                                motionOf(set, work.problem)),
                        false, {}});
   }

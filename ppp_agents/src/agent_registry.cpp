@@ -17,28 +17,32 @@ const std::vector<AgentType>& agentRegistry() {
   static const std::vector<AgentType> registry = {
       {"astar", "A* on the true map, follows the plan (the control)",
        AgentTrait::ReadsScanWindow | AgentTrait::NeedsPriorMap | AgentTrait::Control,
-       [](int window) -> std::unique_ptr<Agent> { return std::make_unique<AstarAgent>(window); }},
-      {"random", "uniform over the five actions (the baseline)", AgentTrait::Baseline,
-       [](int window) -> std::unique_ptr<Agent> { return std::make_unique<RandomAgent>(window); }},
+       [](const AgentBehaviour& b) -> std::unique_ptr<Agent> { return std::make_unique<AstarAgent>(b); }},
+      {"random", "uniform over the five actions (the baseline); by design it never looks for the goal",
+       AgentTrait::Baseline,
+       [](const AgentBehaviour& b) -> std::unique_ptr<Agent> { return std::make_unique<RandomAgent>(b); }},
       {"wall_follower_left", "heads for the goal, then keeps the first wall met on its left",
-       AgentTrait::ReadsScanWindow,
-       [](int window) -> std::unique_ptr<Agent> {
-         return std::make_unique<WallFollowerAgent>(WallFollowerAgent::Side::Left, window);
+       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal,
+       [](const AgentBehaviour& b) -> std::unique_ptr<Agent> {
+         return std::make_unique<WallFollowerAgent>(WallFollowerAgent::Side::Left, b);
        }},
       {"wall_follower_right", "heads for the goal, then keeps the first wall met on its right",
-       AgentTrait::ReadsScanWindow,
-       [](int window) -> std::unique_ptr<Agent> {
-         return std::make_unique<WallFollowerAgent>(WallFollowerAgent::Side::Right, window);
+       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal,
+       [](const AgentBehaviour& b) -> std::unique_ptr<Agent> {
+         return std::make_unique<WallFollowerAgent>(WallFollowerAgent::Side::Right, b);
        }},
-      {"explorer", "moves to the neighbour revealing most unknown cells", AgentTrait::ReadsScanWindow,
-       [](int window) -> std::unique_ptr<Agent> { return std::make_unique<ExplorerAgent>(false, window); }},
+      {"explorer", "moves to the neighbour revealing most unknown cells",
+       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal,
+       [](const AgentBehaviour& b) -> std::unique_ptr<Agent> { return std::make_unique<ExplorerAgent>(false, b); }},
       {"long_term_explorer", "the explorer, walking to the nearest frontier when nothing is new nearby",
-       AgentTrait::ReadsScanWindow,
-       [](int window) -> std::unique_ptr<Agent> { return std::make_unique<ExplorerAgent>(true, window); }},
-      {"bumper", "straight until a bump, then a random new direction", AgentTrait::ReadsScanWindow,
-       [](int window) -> std::unique_ptr<Agent> { return std::make_unique<BumperAgent>(false, window); }},
-      {"decision_bumper", "the bumper, trying untried directions at each bump cell first", AgentTrait::ReadsScanWindow,
-       [](int window) -> std::unique_ptr<Agent> { return std::make_unique<BumperAgent>(true, window); }},
+       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal,
+       [](const AgentBehaviour& b) -> std::unique_ptr<Agent> { return std::make_unique<ExplorerAgent>(true, b); }},
+      {"bumper", "straight until a bump, then a random new direction",
+       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal,
+       [](const AgentBehaviour& b) -> std::unique_ptr<Agent> { return std::make_unique<BumperAgent>(false, b); }},
+      {"decision_bumper", "the bumper, trying untried directions at each bump cell first",
+       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal,
+       [](const AgentBehaviour& b) -> std::unique_ptr<Agent> { return std::make_unique<BumperAgent>(true, b); }},
       {kPlannerType, "an external ROS planner played through planner_bridge_node", AgentTrait::ReadsScanWindow,
        nullptr},
   };
@@ -71,10 +75,24 @@ std::unique_ptr<Agent> makeAgent(const AgentConfig& config) {
     throw InvalidArgument("type", "'" + config.name + "' is a planner agent: an external ROS planner played through "
                                   "planner_bridge_node (docs/planner-interface.md), never built in-process");
   }
-  return type.make(config.memory_window);
+  return type.make(agentBehaviour(config));
 }
 
-bool readsScanWindow(const AgentConfig& config) { return agentType(config.type).has(AgentTrait::ReadsScanWindow); }
+bool seeksGoal(const AgentConfig& config) {
+  if (config.goal_seeking == kGoalSeekingByType) return agentType(config.type).has(AgentTrait::SeeksGoal);
+  return config.goal_seeking == kGoalSeekingOn;
+}
+
+AgentBehaviour agentBehaviour(const AgentConfig& config) {
+  AgentBehaviour behaviour;
+  behaviour.memory_window = config.memory_window;
+  behaviour.seek_goal = seeksGoal(config);
+  return behaviour;
+}
+
+bool readsScanWindow(const AgentConfig& config) {
+  return agentType(config.type).has(AgentTrait::ReadsScanWindow) || seeksGoal(config);
+}
 
 bool givenPriorMap(const AgentConfig& config) {
   return agentType(config.type).has(AgentTrait::NeedsPriorMap) || (isPlanner(config) && config.prior_map);

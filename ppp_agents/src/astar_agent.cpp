@@ -11,7 +11,7 @@
 namespace ppp {
 namespace agents {
 
-AstarAgent::AstarAgent(int /*memory_window*/) {}
+AstarAgent::AstarAgent(const AgentBehaviour& /*behaviour*/) {}
 
 void AstarAgent::reset(const EpisodeInfo& info) {
   if (info.prior_map == nullptr) throw InvalidArgument("prior_map", "the astar agent needs the prior map");

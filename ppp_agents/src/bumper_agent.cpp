@@ -9,11 +9,11 @@ int moveIndex(Action action) { return static_cast<int>(action) - 1; }
 
 }  // namespace
 
-BumperAgent::BumperAgent(bool decision, int memory_window) : decision_(decision), memory_window_(memory_window) {}
+BumperAgent::BumperAgent(bool decision, const AgentBehaviour& behaviour) : decision_(decision), behaviour_(behaviour) {}
 
 void BumperAgent::reset(const EpisodeInfo& info) {
   width_ = info.width;
-  memory_.reset(info.width, info.height, memory_window_);
+  memory_.reset(info.width, info.height, behaviour_.memory_window);
   navigator_.reset(info.width, info.height);
   rng_ = Rng(info.seed);
   goal_seen_ = false;
@@ -49,7 +49,7 @@ int BumperAgent::turn(Cell position, int bumped) {
 
 Action BumperAgent::act(const Scan& scan) {
   const Cell position = scan.position();
-  if (goal_seen_ || goalInWindow(scan)) {
+  if (behaviour_.seek_goal && (goal_seen_ || goalInWindow(scan))) {
     memory_.update(scan);
     Action action;
     if (navigator_.towardsSeenGoal(scan, memory_, &goal_seen_, &action)) {

@@ -29,7 +29,8 @@ EpisodeOutcome EpisodeRunner::run(const Problem& problem, const Grid& grid, Agen
   Grid space;
   const Grid* motion = &motionGrid(grid, options_.robot_radius, &space);
   agent.reset(episodeInfo(problem, grid, config_, run_seed, options_.connectivity, motion));
-  Episode episode(problem, grid, sensor_, run_seed, episodeBudget(options_, problem, grid), options_.connectivity,
+  Episode episode(problem, grid, sensor_, run_seed, options_.budgetRule(episodeBudget(options_, problem, grid)),
+                  options_.connectivity,
                   record_path, windows, motion);
   while (!episode.done()) episode.apply(agent.act(episode.scan()));
   return episode.outcome();

@@ -8,11 +8,11 @@
 namespace ppp {
 namespace agents {
 
-ExplorerAgent::ExplorerAgent(bool long_term, int memory_window)
-    : long_term_(long_term), memory_window_(memory_window) {}
+ExplorerAgent::ExplorerAgent(bool long_term, const AgentBehaviour& behaviour)
+    : long_term_(long_term), behaviour_(behaviour) {}
 
 void ExplorerAgent::reset(const EpisodeInfo& info) {
-  memory_.reset(info.width, info.height, memory_window_);
+  memory_.reset(info.width, info.height, behaviour_.memory_window);
   navigator_.reset(info.width, info.height);
   rng_ = Rng(info.seed);
   goal_seen_ = false;
@@ -62,7 +62,7 @@ Action ExplorerAgent::act(const Scan& scan) {
   const Cell position = scan.position();
   memory_.update(scan);
   Action action;
-  if (navigator_.towardsSeenGoal(scan, memory_, &goal_seen_, &action)) return action;
+  if (behaviour_.seek_goal && navigator_.towardsSeenGoal(scan, memory_, &goal_seen_, &action)) return action;
   range_ = scan.range();
   std::array<bool, 4> open{};
   for (int i = 0; i < 4; ++i) open[i] = memory_.isFree(target(position, kMoves[i]));

@@ -30,12 +30,12 @@ EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::stri
   return r;
 }
 
-int largestBudget(const std::vector<PreparedSet>& sets) {
-  int largest = 0;
+int largestActionLimit(const std::vector<PreparedSet>& sets) {
+  long largest = 0;
   for (const PreparedSet& set : sets) {
-    for (const int budget : set.budgets) largest = std::max(largest, budget);
+    for (const int budget : set.budgets) largest = std::max(largest, set.episode.budgetRule(budget).actionLimit());
   }
-  return largest;
+  return static_cast<int>(largest);
 }
 
 PreparedSet prepareSet(const std::string& name, ProblemSet set, const EpisodeOptions& episode) {

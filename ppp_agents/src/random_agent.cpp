@@ -3,11 +3,25 @@
 namespace ppp {
 namespace agents {
 
-RandomAgent::RandomAgent(int /*memory_window*/) {}
+RandomAgent::RandomAgent(const AgentBehaviour& behaviour) : behaviour_(behaviour) {}
 
-void RandomAgent::reset(const EpisodeInfo& info) { rng_ = Rng(info.seed); }
+void RandomAgent::reset(const EpisodeInfo& info) {
+  rng_ = Rng(info.seed);
+  goal_seen_ = false;
+  if (behaviour_.seek_goal) {
+    memory_.reset(info.width, info.height, behaviour_.memory_window);
+    navigator_.reset(info.width, info.height);
+  }
+}
 
-Action RandomAgent::act(const Scan& /*scan*/) { return static_cast<Action>(rng_.below(kActionCount)); }
+Action RandomAgent::act(const Scan& scan) {
+  if (behaviour_.seek_goal) {
+    memory_.update(scan);
+    Action action;
+    if (navigator_.towardsSeenGoal(scan, memory_, &goal_seen_, &action)) return action;
+  }
+  return static_cast<Action>(rng_.below(kActionCount));
+}
 
 }  // namespace agents
 }  // namespace ppp

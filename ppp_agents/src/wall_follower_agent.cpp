@@ -5,11 +5,13 @@
 namespace ppp {
 namespace agents {
 
-WallFollowerAgent::WallFollowerAgent(Side side, int memory_window) : side_(side), memory_window_(memory_window) {}
+WallFollowerAgent::WallFollowerAgent(Side side, const AgentBehaviour& behaviour) : side_(side), behaviour_(behaviour) {}
 
 void WallFollowerAgent::reset(const EpisodeInfo& info) {
-  memory_.reset(info.width, info.height, memory_window_);
-  navigator_.reset(info.width, info.height);
+  if (behaviour_.seek_goal) {
+    memory_.reset(info.width, info.height, behaviour_.memory_window);
+    navigator_.reset(info.width, info.height);
+  }
   goal_seen_ = false;
   engaged_ = false;
   goal_ = info.goal;
@@ -24,9 +26,11 @@ int WallFollowerAgent::headingTowards(Cell from, Cell goal) {
 }
 
 Action WallFollowerAgent::act(const Scan& scan) {
-  memory_.update(scan);
-  Action action;
-  if (navigator_.towardsSeenGoal(scan, memory_, &goal_seen_, &action)) return action;
+  if (behaviour_.seek_goal) {
+    memory_.update(scan);
+    Action action;
+    if (navigator_.towardsSeenGoal(scan, memory_, &goal_seen_, &action)) return action;
+  }
   // The four neighbours are always in line of sight, so the scan reports them (noise may misreport them).
   const auto wall = [&](int direction) {
     const Cell n = target(Cell{0, 0}, kMoves[direction]);

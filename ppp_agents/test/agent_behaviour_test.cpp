@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <set>
 #include <string>
 #include <vector>
@@ -54,7 +56,7 @@ TEST(AgentBehaviourTest, RandomIgnoresTheScanAndUsesAllFiveActions) {
 }
 
 TEST(AgentBehaviourTest, BumperGoesStraightUntilABumpThenTurnsToAnotherDirection) {
-  BumperAgent bumper(false, 0);
+  BumperAgent bumper(false, AgentBehaviour{});
   for (std::uint64_t seed = 0; seed < 30; ++seed) {
     bumper.reset(info(50, 50, Cell{25, 25}, Cell{0, 0}, seed));
     const Action first = bumper.act(uniformScan(kScanFree, Cell{25, 25}, Cell{0, 0}, false, 0));
@@ -75,7 +77,7 @@ TEST(AgentBehaviourTest, DecisionBumperTriesEveryDirectionAtACellBeforeRepeating
   // the plain bumper only avoids the direction it just bumped in, so some seeds repeat one.
   int bumper_repeats = 0;
   for (bool decision : {true, false}) {
-    BumperAgent agent(decision, 0);
+    BumperAgent agent(decision, AgentBehaviour{});
     for (std::uint64_t seed = 0; seed < 100; ++seed) {
       agent.reset(info(9, 9, Cell{4, 4}, Cell{0, 0}, seed));
       std::vector<Action> directions;
@@ -109,13 +111,13 @@ TEST(AgentBehaviourTest, WallFollowersKeepTheWallOnTheirSide) {
   });
   // Heading east (the goal's larger difference) until the wall at x = 4, then the left follower turns right
   // to keep it on its left: down its west face, round its end and up its east face, then east along the edge.
-  WallFollowerAgent left(WallFollowerAgent::Side::Left, 0);
+  WallFollowerAgent left(WallFollowerAgent::Side::Left, AgentBehaviour{});
   const auto l = test::runEpisode(left, w, 0, 0.0, 13);
   const std::vector<Cell> expected_left = {{1, 1}, {2, 1}, {3, 1}, {3, 2}, {3, 3}, {3, 4}, {4, 4},
                                            {5, 4}, {5, 3}, {5, 2}, {5, 1}, {5, 0}, {6, 0}, {7, 0}};
   EXPECT_EQ(l.path, expected_left);
   // The right follower turns left at the wall: up to the top edge, west along it, down the west edge.
-  WallFollowerAgent right(WallFollowerAgent::Side::Right, 0);
+  WallFollowerAgent right(WallFollowerAgent::Side::Right, AgentBehaviour{});
   const auto r = test::runEpisode(right, w, 0, 0.0, 9);
   const std::vector<Cell> expected_right = {{1, 1}, {2, 1}, {3, 1}, {3, 0}, {2, 0},
                                             {1, 0}, {0, 0}, {0, 1}, {0, 2}, {0, 3}};
@@ -134,7 +136,7 @@ TEST(AgentBehaviourTest, ExplorerMovesTowardsTheUnknown) {
   });
   for (std::uint64_t seed = 0; seed < 10; ++seed) {
     for (bool long_term : {false, true}) {
-      ExplorerAgent agent(long_term, 0);
+      ExplorerAgent agent(long_term, AgentBehaviour{});
       const auto out = test::runEpisode(agent, w, seed);
       EXPECT_TRUE(out.passed);
       EXPECT_EQ(out.moves, 13) << long_term;
@@ -155,10 +157,60 @@ TEST(AgentBehaviourTest, LongTermExplorerGoesBackForTheNearestFrontier) {
       "#G##########",
   });
   for (std::uint64_t seed = 0; seed < 20; ++seed) {
-    ExplorerAgent agent(true, 0);
+    ExplorerAgent agent(true, AgentBehaviour{});
     const auto out = test::runEpisode(agent, w, seed);
     EXPECT_TRUE(out.passed) << seed;
     EXPECT_LE(out.moves, 2 * 9 + 4) << seed;  // at worst: east to the end and back, then down the branch
+  }
+}
+
+TEST(AgentBehaviourTest, GoalSeekingChangesNothingBeforeTheGoalComesIntoView) {
+  // Each seeking type with goal seeking off, and random with it on, against its type's design on the same seeds:
+  // the walks agree until the agent first stands within sensor range of the goal (a necessary condition for
+  // seeing it), and seeking passes more runs in all.
+  for (const std::string& type : {"random", "wall_follower_left", "wall_follower_right", "explorer",
+                                  "long_term_explorer", "bumper", "decision_bumper"}) {
+    AgentConfig changed = test::config(type);
+    changed.goal_seeking = type == std::string("random") ? kGoalSeekingOn : kGoalSeekingOff;
+    auto by_type = makeAgent(test::config(type));
+    auto other = makeAgent(changed);
+    int seeker_passes = 0;
+    int strategy_passes = 0;
+    Rng rng(deriveSeed(31, {nameHash(type)}));
+    for (int i = 0; i < 150; ++i) {
+      const Problem problem = randomProblem(rng, Problem::empty(12, 12, 6), 6);
+      const test::World w{decodeGrid(problem), problem.start, problem.goal};
+      const std::uint64_t seed = rng.next();
+      const auto a = test::runEpisode(*by_type, w, seed, 0.0, 150);
+      const auto b = test::runEpisode(*other, w, seed, 0.0, 150);
+      std::size_t first_in_range = 0;
+      while (first_in_range < a.path.size() && std::max(std::abs(a.path[first_in_range].x - w.goal.x),
+                                                        std::abs(a.path[first_in_range].y - w.goal.y)) > 2) {
+        ++first_in_range;
+      }
+      for (std::size_t k = 0; k <= first_in_range && k < a.path.size() && k < b.path.size(); ++k) {
+        ASSERT_EQ(a.path[k], b.path[k]) << type << " run " << i << " cell " << k;
+      }
+      const bool seeker_is_a = type != std::string("random");
+      seeker_passes += (seeker_is_a ? a : b).passed ? 1 : 0;
+      strategy_passes += (seeker_is_a ? b : a).passed ? 1 : 0;
+    }
+    std::printf("[ measured ] %s: %d of 150 passed seeking the goal, %d without\n", type.c_str(), seeker_passes,
+                strategy_passes);
+    EXPECT_GT(seeker_passes, strategy_passes) << type;
+  }
+}
+
+TEST(AgentBehaviourTest, AGoalSeekingRandomAgentWalksStraightToAGoalInView) {
+  // On an empty 5x5 map from (2,2) the goal (4,4) is in the window at once: four moves, whatever the seed.
+  AgentConfig random = test::config("random");
+  random.goal_seeking = kGoalSeekingOn;
+  auto agent = makeAgent(random);
+  test::World w = test::world({".....", ".....", "..S..", ".....", "....G"});
+  for (std::uint64_t seed = 0; seed < 20; ++seed) {
+    const auto out = test::runEpisode(*agent, w, seed);
+    EXPECT_TRUE(out.passed);
+    EXPECT_EQ(out.steps, 4) << seed;
   }
 }
 

@@ -145,8 +145,9 @@ TEST(AgentConfigTest, ReadsConfigurationsWithDefaults) {
 
 TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, colour: red}\n"),
-            "agents.yaml:2: agents[0].colour: unknown key; valid keys: cells_per_ppp_cell, host, instances, lockstep, memory, "
-            "name, plan_timeout, planner_args, planner_node, prior_map, runs, sensor_noise, type");
+            "agents.yaml:2: agents[0].colour: unknown key; valid keys: cells_per_ppp_cell, goal_seeking, host, "
+            "instances, lockstep, memory, name, plan_timeout, planner_args, planner_node, prior_map, runs, "
+            "sensor_noise, type");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),
             std::string("agents.yaml:3: agents[1].type: missing; valid: ") + kTypes);
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - name: x\n    type: robot\n"),
@@ -182,6 +183,30 @@ TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, prior_map: true}\n"),
             "agents.yaml:2: agents[0].prior_map: only planner agents take prior_map (astar always has the map; the "
             "other agents never do)");
+}
+
+TEST(AgentConfigTest, GoalSeekingIsEachTypesDesignUnlessGiven) {
+  for (const std::string& type : agentTypeNames()) {
+    EXPECT_EQ(seeksGoal(config(type)), type != "random" && type != "astar") << type;
+    EXPECT_EQ(agentBehaviour(config(type)).seek_goal, seeksGoal(config(type))) << type;
+  }
+  AgentConfig random = config("random");
+  EXPECT_FALSE(readsScanWindow(random));  // the plain walker is sent no window
+  random.goal_seeking = kGoalSeekingOn;
+  EXPECT_TRUE(seeksGoal(random));
+  EXPECT_TRUE(readsScanWindow(random));  // a seeker needs the window to see the goal
+  AgentConfig explorer = config("explorer", 5);
+  explorer.goal_seeking = kGoalSeekingOff;
+  EXPECT_FALSE(agentBehaviour(explorer).seek_goal);
+  EXPECT_EQ(agentBehaviour(explorer).memory_window, 5);
+  EXPECT_EQ(parseError("agents:\n  - {type: explorer, goal_seeking: sometimes}\n"),
+            "agents.yaml:2: agents[0].goal_seeking: unknown goal seeking 'sometimes'; valid: by_type, on, off");
+  EXPECT_EQ(parseError("agents:\n  - {type: astar, goal_seeking: off}\n"),
+            "agents.yaml:2: agents[0].goal_seeking: astar plans its route to the goal from the start; goal seeking "
+            "does not apply");
+  EXPECT_EQ(parseError("agents:\n  - {type: planner, goal_seeking: on}\n"),
+            "agents.yaml:2: agents[0].goal_seeking: a planner agent's planner is given the goal; goal seeking does "
+            "not apply");
 }
 
 TEST(AgentConfigTest, YamlAcceptsAndRefusesWhatEverySourceDoes) {

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/random_problem.hpp"
@@ -21,60 +23,131 @@ agents::AgentConfig config(const std::string& type) {
   return c;
 }
 
+/// The rules of a random walk on an empty map, for the exact chain: whether it heads for the goal once the goal
+/// is in its sensor window, and which of its actions use the budget.
+struct WalkRules {
+  bool seek_goal = false;    ///< Once the goal is within `range` (Chebyshev) it walks straight to it.
+  int range = 2;             ///< The sensor range.
+  bool stays_count = true;   ///< A stay uses one of the budget.
+  bool bumps_count = true;   ///< A move off the grid uses one of the budget.
+};
+
 /// Exact probability that a uniform random walk over {stay, N, E, S, W} on an empty W x H grid, where moves off
-/// the grid leave it in place, stands on the goal within `budget` actions: the distribution over cells is
-/// pushed forward one action at a time with the goal absorbing.
-double exactRandomPassProbability(int width, int height, Cell start, Cell goal, int budget) {
+/// the grid leave it in place, stands on the goal within `budget` counted actions. The distribution over cells
+/// is pushed forward one counted action at a time, the goal absorbing. A free action (a stay or a bump the rules
+/// do not count) leaves the budget as it was, so per counted action the walk picks uniformly among the counted
+/// ones. A goal seeker is absorbed when the goal enters its window, passing if its Manhattan distance to the goal
+/// fits in the budget left. (The episode's action limit of 4 x budget is never reached here: it would take
+/// fewer than 300 counted actions in 1,200 where each counts with probability at least 2/5.)
+double exactRandomPassProbability(int width, int height, Cell start, Cell goal, int budget, const WalkRules& rules) {
   std::vector<double> p(static_cast<std::size_t>(width) * height, 0.0), next;
   p[start.y * width + start.x] = 1.0;
   double absorbed = 0.0;
-  const int dx[5] = {0, 0, 1, 0, -1};
-  const int dy[5] = {0, -1, 0, 1, 0};
-  for (int step = 0; step < budget; ++step) {
+  const int dx[4] = {0, 1, 0, -1};
+  const int dy[4] = {-1, 0, 1, 0};
+  for (int used = 0;; ++used) {
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        const int distance = std::abs(goal.x - x) + std::abs(goal.y - y);
+        const bool in_window = std::max(std::abs(goal.x - x), std::abs(goal.y - y)) <= rules.range;
+        if (distance == 0 || (rules.seek_goal && in_window)) {
+          if (used + distance <= budget) absorbed += p[y * width + x];
+          p[y * width + x] = 0.0;
+        }
+      }
+    }
+    if (used == budget) break;
     next.assign(p.size(), 0.0);
     for (int y = 0; y < height; ++y) {
       for (int x = 0; x < width; ++x) {
         const double mass = p[y * width + x];
         if (mass == 0.0) continue;
-        for (int a = 0; a < 5; ++a) {
-          int nx = x + dx[a], ny = y + dy[a];
-          if (nx < 0 || ny < 0 || nx >= width || ny >= height) nx = x, ny = y;
-          next[ny * width + nx] += mass / 5.0;
+        int moves = 0;
+        for (int a = 0; a < 4; ++a) {
+          const int nx = x + dx[a], ny = y + dy[a];
+          moves += nx >= 0 && ny >= 0 && nx < width && ny < height ? 1 : 0;
         }
+        const int counted = moves + (rules.stays_count ? 1 : 0) + (rules.bumps_count ? 4 - moves : 0);
+        for (int a = 0; a < 4; ++a) {
+          const int nx = x + dx[a], ny = y + dy[a];
+          if (nx >= 0 && ny >= 0 && nx < width && ny < height) next[ny * width + nx] += mass / counted;
+        }
+        next[y * width + x] += mass * (counted - moves) / counted;
       }
     }
-    absorbed += next[goal.y * width + goal.x];
-    next[goal.y * width + goal.x] = 0.0;
     p.swap(next);
   }
   return absorbed;
 }
 
-/// Pass rate of the random agent over `runs` runs, with its standard error.
-void expectRandomMatchesExact(int width, int height, int budget, int runs) {
+/// Expects the random agent's pass rate over `runs` runs on an empty map, under `rules`, within three standard
+/// errors of the exact chain's.
+void expectRandomMatchesExact(int width, int height, int budget, int runs, const WalkRules& rules = {}) {
   const Problem problem = Problem::empty(width, height, 0);
   const Grid grid = decodeGrid(problem);
   EpisodeOptions options;
   options.budget = budget;
-  EpisodeRunner runner(config("random"), options);
-  auto agent = agents::makeAgent(config("random"));
+  options.sensor_range = rules.range;
+  options.stays_use_budget = rules.stays_count;
+  options.bumps_use_budget = rules.bumps_count;
+  agents::AgentConfig random = config("random");
+  random.goal_seeking = rules.seek_goal ? kGoalSeekingOn : kGoalSeekingByType;
+  EpisodeRunner runner(random, options);
+  auto agent = agents::makeAgent(random);
   int passes = 0;
   for (int run = 0; run < runs; ++run) {
     const auto outcome = runner.run(problem, grid, *agent, deriveSeed(2024, {static_cast<std::uint64_t>(run)}));
     passes += outcome.passed ? 1 : 0;
-    if (outcome.passed) EXPECT_LE(outcome.steps, budget);
+    if (rules.stays_count && rules.bumps_count) EXPECT_LE(outcome.steps, budget);
+    EXPECT_NE(std::string(outcome.reason), reason::kActionLimit);
   }
-  const double exact = exactRandomPassProbability(width, height, problem.start, problem.goal, budget);
+  const double exact = exactRandomPassProbability(width, height, problem.start, problem.goal, budget, rules);
   const double observed = static_cast<double>(passes) / runs;
   const double standard_error = std::sqrt(exact * (1 - exact) / runs);
-  std::printf("random on empty %dx%d, budget %d: exact %.5f, observed %.5f over %d runs (SE %.5f)\n", width, height,
-              budget, exact, observed, runs, standard_error);
+  std::printf("random (goal seeking %s, stays %s, bumps %s) on empty %dx%d, budget %d: exact %.5f, observed %.5f "
+              "over %d runs (SE %.5f)\n",
+              rules.seek_goal ? "on" : "off", rules.stays_count ? "counted" : "free",
+              rules.bumps_count ? "counted" : "free", width, height, budget, exact, observed, runs, standard_error);
   EXPECT_NEAR(observed, exact, 3 * standard_error);
 }
 
 TEST(EpisodeTest, RandomAgentMatchesTheExactMarkovChainOn20x20) { expectRandomMatchesExact(20, 20, 300, 40000); }
 
 TEST(EpisodeTest, RandomAgentMatchesTheExactMarkovChainOn5x5) { expectRandomMatchesExact(5, 5, 40, 20000); }
+
+TEST(EpisodeTest, GoalSeekingRandomAgentWithFreeBumpsMatchesTheExactChain) {
+  WalkRules rules;
+  rules.seek_goal = true;
+  rules.bumps_count = false;
+  // The chain's value by hand would be tedious; its independent check is the plain walk above, and here that
+  // seeking and free bumps each raise it (0.975 % without either on 20x20).
+  EXPECT_GT(exactRandomPassProbability(20, 20, Cell{0, 0}, Cell{19, 19}, 300, rules),
+            exactRandomPassProbability(20, 20, Cell{0, 0}, Cell{19, 19}, 300, WalkRules{true, 2, true, true}));
+  expectRandomMatchesExact(20, 20, 300, 20000, rules);
+}
+
+TEST(EpisodeTest, RandomAgentWithFreeStaysAndBumpsMatchesTheExactChain) {
+  WalkRules rules;
+  rules.stays_count = false;
+  rules.bumps_count = false;
+  expectRandomMatchesExact(20, 20, 300, 20000, rules);
+  expectRandomMatchesExact(5, 5, 40, 20000, rules);
+}
+
+TEST(EpisodeTest, ChainOfAGoalSeekerBesideTheGoalIsExact) {
+  // On a 3x3 grid with range 2 the goal is in the window from the start: it passes iff its 4 moves fit.
+  WalkRules rules;
+  rules.seek_goal = true;
+  EXPECT_DOUBLE_EQ(exactRandomPassProbability(3, 3, Cell{0, 0}, Cell{2, 2}, 4, rules), 1.0);
+  EXPECT_DOUBLE_EQ(exactRandomPassProbability(3, 3, Cell{0, 0}, Cell{2, 2}, 3, rules), 0.0);
+  // Without seeking, a 2x1 corridor: each action reaches the goal with probability 1/5 (East), so within 2 actions
+  // 1 - (4/5)^2; with free stays and bumps only East counts there, so 1.
+  EXPECT_DOUBLE_EQ(exactRandomPassProbability(2, 1, Cell{0, 0}, Cell{1, 0}, 2, WalkRules{}), 1 - 0.8 * 0.8);
+  WalkRules free_actions;
+  free_actions.stays_count = false;
+  free_actions.bumps_count = false;
+  EXPECT_DOUBLE_EQ(exactRandomPassProbability(2, 1, Cell{0, 0}, Cell{1, 0}, 1, free_actions), 1.0);
+}
 
 TEST(EpisodeTest, AstarPassesInTheFewestMovesAndCountsAreConsistent) {
   Rng rng(11);
@@ -111,6 +184,55 @@ TEST(EpisodeTest, BudgetEndsAnEpisodeAndBumpsAreCounted) {
   EXPECT_EQ(outcome.steps, 25);
   EXPECT_GT(outcome.bumps, 0);
   EXPECT_LE(outcome.bumps + outcome.path_length, outcome.steps);
+}
+
+TEST(EpisodeTest, FreeStaysAndBumpsDoNotUseTheBudgetUpToTheActionLimit) {
+  const Problem open = Problem::empty(5, 5, 0);
+  const Grid grid = decodeGrid(open);
+  const SensorModel sensor(SensorOptions{2, 0.0});
+  // Stays free: stay, stay, east, stay, east spend a budget of 2 in 5 actions.
+  Episode stays(open, grid, sensor, 1, BudgetRule(2, false, true), Connectivity::Four);
+  for (Action a : {Action::Stay, Action::Stay, Action::East, Action::Stay}) {
+    stays.apply(a);
+    EXPECT_FALSE(stays.done());
+  }
+  stays.apply(Action::East);
+  EXPECT_TRUE(stays.done());
+  EXPECT_STREQ(stays.outcome().reason, reason::kBudgetExhausted);
+  EXPECT_EQ(stays.outcome().steps, 5);
+  EXPECT_EQ(stays.outcome().path_length, 2);
+  // Stays free, bumps counted: two bumps off the top edge spend a budget of 2.
+  Episode bumps_counted(open, grid, sensor, 1, BudgetRule(2, false, true), Connectivity::Four);
+  bumps_counted.apply(Action::North);
+  EXPECT_FALSE(bumps_counted.done());
+  bumps_counted.apply(Action::North);
+  EXPECT_STREQ(bumps_counted.outcome().reason, reason::kBudgetExhausted);
+  EXPECT_EQ(bumps_counted.outcome().bumps, 2);
+  // Bumps free: bumping forever ends at the action limit, 4 x the budget of 3.
+  Episode bumps_free(open, grid, sensor, 1, BudgetRule(3, true, false), Connectivity::Four);
+  EXPECT_EQ(BudgetRule(3, true, false).actionLimit(), 12);
+  for (int i = 0; i < 11; ++i) bumps_free.apply(Action::West);
+  EXPECT_FALSE(bumps_free.done());
+  bumps_free.apply(Action::West);
+  EXPECT_TRUE(bumps_free.done());
+  EXPECT_FALSE(bumps_free.outcome().passed);
+  EXPECT_STREQ(bumps_free.outcome().reason, reason::kActionLimit);
+  EXPECT_EQ(bumps_free.outcome().steps, 12);
+  EXPECT_EQ(bumps_free.outcome().bumps, 12);
+  // By default every action counts: three stays spend a budget of 3, and the limit is the budget.
+  Episode plain(open, grid, sensor, 1, 3, Connectivity::Four);
+  EXPECT_EQ(BudgetRule(3).actionLimit(), 3);
+  for (int i = 0; i < 3; ++i) plain.apply(Action::Stay);
+  EXPECT_STREQ(plain.outcome().reason, reason::kBudgetExhausted);
+  EXPECT_EQ(plain.outcome().steps, 3);
+  // The goal reached with the last counted action passes.
+  Episode last(open, grid, sensor, 1, BudgetRule(8, false, false), Connectivity::Four);
+  for (Action a : {Action::East, Action::East, Action::East, Action::East, Action::South, Action::South,
+                   Action::South, Action::Stay, Action::South}) {
+    last.apply(a);
+  }
+  EXPECT_TRUE(last.outcome().passed);
+  EXPECT_EQ(last.outcome().steps, 9);
 }
 
 TEST(EpisodeTest, SameSeedSameEpisode) {

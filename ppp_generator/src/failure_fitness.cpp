@@ -41,9 +41,11 @@ std::uint64_t failureRunSeed(std::uint64_t generator_seed, std::uint64_t grid_ha
 
 void PanelTally::add(std::size_t agent, bool passed, int run_steps, int budget, int optimal_moves) {
   failures[agent] += passed ? 0 : 1;
-  // A run that ended before its budget without reaching the goal (timeout, lost agent) used its whole budget.
-  steps[agent] += passed ? run_steps : budget;
-  regret[agent] += runRegret(passed, run_steps, budget, optimal_moves);
+  // A run that ended before its budget without reaching the goal (timeout, lost agent) used its whole budget; a
+  // passed run with free stays or bumps (more actions than the budget) uses no more than all of it.
+  const int used = std::min(run_steps, budget);
+  steps[agent] += passed ? used : budget;
+  regret[agent] += runRegret(passed, used, budget, optimal_moves);
 }
 
 FailureEstimate estimateOf(const PanelTally& tally, int runs, int budget) {

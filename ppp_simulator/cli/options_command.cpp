@@ -47,9 +47,10 @@ std::string optionsReference() {
       << optionsMarkdownTable(simulator::experimentOptionSpecs(), simulator::ExperimentConfig{}, &key)
       << "\n## Agents\n\n"
       << "Keys of each entry of an `agents` list (`config/agents.yaml`).\n"
-      << "`agent_node` reads `~type`, `~name`, `~memory` and `~sensor_noise`; `planner_bridge_node` reads `~name`,\n"
-      << "`~memory` and `~sensor_noise`; `ppp simulate` and `ppp replay` take `--agent` (the type), `--memory` and\n"
-      << "`--sensor-noise`, with the episode's `--budget` and `--sensor-range`.\n\n"
+      << "`agent_node` reads `~type`, `~name`, `~memory`, `~sensor_noise` and `~goal_seeking`; `planner_bridge_node`\n"
+      << "reads `~name`, `~memory` and `~sensor_noise`; `ppp simulate` and `ppp replay` take `--agent` (the type),\n"
+      << "`--memory`, `--sensor-noise` and `--goal-seeking`, with the episode's options (`--budget`,\n"
+      << "`--sensor-range`, ...).\n\n"
       << optionsMarkdownTable(agents::agentOptionSpecs(), agents::AgentConfig{}, &key)
       << "\n## Generator\n\n"
       << "Keys of `config/generator.yaml` and of a set's `generator` mapping, `generator_node` `~` parameters and\n"

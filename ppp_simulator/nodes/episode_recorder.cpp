@@ -51,8 +51,8 @@ visualization_msgs::Marker cellMarker(const MapFrame& frame, Cell cell, int id, 
 
 EpisodeRecorder::EpisodeRecorder(ros::NodeHandle& nh, const SimulatorParameters& parameters,
                                  const std::vector<agents::PreparedSet>& sets, const std::vector<std::string>& agent_names,
-                                 int budget)
-    : parameters_(parameters), sets_(sets), budget_(budget) {
+                                 int action_limit)
+    : parameters_(parameters), sets_(sets), action_limit_(action_limit) {
   map_publisher_ = nh.advertise<nav_msgs::OccupancyGrid>(ppp_msgs::topics::kRecordedMap, 1, true);
   markers_publisher_ = nh.advertise<visualization_msgs::MarkerArray>(ppp_msgs::topics::kMarkers, 1, true);
   results_publisher_ = nh.advertise<ppp_msgs::EpisodeResults>(ppp_msgs::topics::kResults, 100);
@@ -100,7 +100,7 @@ bool EpisodeRecorder::sampled(const protocol::ScanRequest& scan) const {
 }
 
 ros::Time EpisodeRecorder::slotTime(int slot, int step) const {
-  const double slot_seconds = (budget_ + 10) * kSecondsPerStep;
+  const double slot_seconds = (action_limit_ + 10) * kSecondsPerStep;
   return bag_start_ + ros::Duration(slot * slot_seconds + step * kSecondsPerStep);
 }
 

@@ -30,7 +30,7 @@ class EpisodeRecorder {
  public:
   /// Opens the bag (when recording) and advertises the topics. @throws IoError when the bag cannot be opened.
   EpisodeRecorder(ros::NodeHandle& nh, const SimulatorParameters& parameters, const std::vector<agents::PreparedSet>& sets,
-                  const std::vector<std::string>& agent_names, int budget);
+                  const std::vector<std::string>& agent_names, int action_limit);
   /// Publishes and records the PPP sets (latched /ppp/sets/<name>).
   void recordSets(const std::vector<ppp_msgs::ProblemSet>& sets);
   /// Publishes and records the sampled episodes among a batch of scans of `agent`.
@@ -71,7 +71,7 @@ class EpisodeRecorder {
   std::map<std::string, Recording> recordings_;    // per agent: the episode being (or last) recorded
   std::map<std::string, int> slots_used_;          // per agent: recorded episodes started so far
   int maps_written_ = 0;                           // slots whose map is in the bag
-  int budget_;
+  int action_limit_;  // the most actions of one episode: the length of a slot
   ros::Time bag_start_;
   ros::Time latest_stamp_;  // the latest time written to the bag
   ppp_msgs::EpisodeResults pending_results_;  // not yet published

@@ -64,7 +64,7 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
   ResultsFile& results = *opened;
   std::vector<std::string> agent_names;
   for (const auto& a : config.agents) agent_names.push_back(a.name);
-  EpisodeRecorder recorder(nh, parameters, sets, agent_names, agents::largestBudget(sets));
+  EpisodeRecorder recorder(nh, parameters, sets, agent_names, agents::largestActionLimit(sets));
   recorder.recordSets(received.messages);
 
   std::vector<std::unique_ptr<agents::AgentLane>> lanes;

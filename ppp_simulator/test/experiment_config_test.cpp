@@ -309,7 +309,8 @@ TEST_F(ExperimentYaml, PlannerAgentsKeepTheirOwnRunsAndMapChoiceInTheFingerprint
   EXPECT_EQ(c.runsFor(c.agents[0]), 7);
   EXPECT_EQ(c.runsFor(c.agents[1]), 3);
   const std::string fingerprint = experimentFingerprint(c);
-  EXPECT_NE(fingerprint.find("  - {type: planner, name: ompl, memory: full, sensor_noise: 0, runs: 3, prior_map: true, "
+  EXPECT_NE(fingerprint.find("  - {type: planner, name: ompl, memory: full, sensor_noise: 0, goal_seeking: by_type, "
+                             "runs: 3, prior_map: true, "
                              "planner_node: '', planner_args: '', plan_timeout: 5, lockstep: true, cells_per_ppp_cell: 1}"),
             std::string::npos)
       << fingerprint;

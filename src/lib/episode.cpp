@@ -18,7 +18,7 @@ std::uint64_t agentSeed(std::uint64_t run_seed) { return deriveSeed(run_seed, {1
 std::uint64_t noiseSeed(std::uint64_t run_seed) { return deriveSeed(run_seed, {2}); }
 
 Episode::Episode(const Problem& problem, const Grid& grid, const SensorModel& sensor, std::uint64_t run_seed,
-                 int budget, Connectivity connectivity, bool record_path, const WindowAtlas* windows,
+                 BudgetRule budget, Connectivity connectivity, bool record_path, const WindowAtlas* windows,
                  const Grid* motion)
     : problem_(&problem),
       grid_(&grid),
@@ -41,6 +41,7 @@ void Episode::apply(Action action) {
   if (done_) return;
   ++outcome_.steps;
   bumped_ = false;
+  bool counts = action != Action::Stay || budget_.stays_count;
   const bool diagonal = isDiagonal(action);
   if (diagonal && connectivity_ != Connectivity::Eight) {
     fail(reason::kInvalidAction);
@@ -58,14 +59,19 @@ void Episode::apply(Action action) {
     } else {
       bumped_ = true;
       ++outcome_.bumps;
+      counts = budget_.bumps_count;
     }
   }
+  if (counts) ++counted_;
   if (position_ == problem_->goal) {
     outcome_.passed = true;
     outcome_.reason = reason::kGoalReached;
     done_ = true;
-  } else if (outcome_.steps >= budget_) {
+  } else if (counted_ >= budget_.budget) {
     outcome_.reason = reason::kBudgetExhausted;
+    done_ = true;
+  } else if (outcome_.steps >= budget_.actionLimit()) {
+    outcome_.reason = reason::kActionLimit;
     done_ = true;
   }
 }

@@ -10,6 +10,10 @@
 
 namespace ppp {
 
+long BudgetRule::actionLimit() const {
+  return stays_count && bumps_count ? budget : static_cast<long>(kFreeActionFactor) * budget;
+}
+
 void EpisodeOptions::validate() const {
   checkOptionRanges(episodeOptionSpecs(), *this);
   if (soft_failure_ratio != 0 && soft_failure_ratio < 1) {
@@ -42,6 +46,15 @@ const std::vector<OptionSpec<EpisodeOptions>>& episodeOptionSpecs() {
                     "the robot as a disc of this radius in cells; a move that would put it over an obstacle or off "
                     "the map bumps (0: a point)",
                     +[](E& e) -> double& { return e.robot_radius; }, Bounds{0, kMaxRobotRadius}),
+      declareOption("stays_use_budget",
+                    "a stay uses one move of the budget (false: stays are free; an episode then also ends after " +
+                        std::to_string(kFreeActionFactor) + " x budget actions, as action_limit)",
+                    +[](E& e) -> bool& { return e.stays_use_budget; }),
+      declareOption("bumps_use_budget",
+                    "a move into an obstacle or off the map uses one move of the budget (false: bumps are free; "
+                    "an episode then also ends after " +
+                        std::to_string(kFreeActionFactor) + " x budget actions, as action_limit)",
+                    +[](E& e) -> bool& { return e.bumps_use_budget; }),
   };
   return specs;
 }

@@ -21,7 +21,7 @@ const char* reason::agentReportedReason(const std::string& text) {
 }
 
 const char* reason::reasonNamed(const std::string& text) {
-  return reasonAmong(text, {kGoalReached, kBudgetExhausted, kTimeout, kAgentLost, kInvalidAction, kNoPath,
+  return reasonAmong(text, {kGoalReached, kBudgetExhausted, kActionLimit, kTimeout, kAgentLost, kInvalidAction, kNoPath,
                             kInvalidPath, kPlannerTimeout, kPlannerLost, kCollision});
 }
 

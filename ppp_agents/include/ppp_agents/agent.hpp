@@ -23,6 +23,12 @@ struct EpisodeInfo {
   Connectivity connectivity = Connectivity::Four;  ///< Move model; only astar takes diagonal moves under Eight.
 };
 
+/// How a built-in agent plays besides its type: the options of its configuration it reads (AgentConfig names them).
+struct AgentBehaviour {
+  int memory_window = 0;  ///< Limited memory: only a k x k window around the agent is kept (odd k); 0 = full.
+  bool seek_goal = true;  ///< Once it has seen the goal it takes a shortest path to it on its memory.
+};
+
 /// A test agent: each step it gets a scan (its cell, the goal, a bump flag and the window of cells) and returns
 /// an action. One instance runs one episode at a time; reset() starts the next.
 class Agent {

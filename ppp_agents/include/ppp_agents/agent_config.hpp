@@ -17,12 +17,20 @@ constexpr int kMaxRuns = 100000000;
 /// Most instances (bridge and planner process pairs) of one planner agent.
 constexpr int kMaxInstances = 64;
 
+/// goal_seeking: as the agent type's design (every built-in type but random heads for the goal once seen).
+constexpr const char* kGoalSeekingByType = "by_type";
+/// goal_seeking: once it has seen the goal, the agent takes a shortest path to it on its memory.
+constexpr const char* kGoalSeekingOn = "on";
+/// goal_seeking: the agent plays its strategy whether it has seen the goal or not.
+constexpr const char* kGoalSeekingOff = "off";
+
 /// One agent configuration of an experiment: a type plus handicaps, under a name of its own.
 struct AgentConfig {
   std::string name;            ///< Name in results and reports (e.g. "explorer_memory_5x5"); defaults to type.
   std::string type;            ///< One of agentTypeNames().
   int memory_window = 0;       ///< Limited memory: keep only a k x k window around the agent (odd k); 0 = full.
   double sensor_noise = 0.0;   ///< Probability that a sensed cell is reported flipped (applied by the sensor).
+  std::string goal_seeking = kGoalSeekingByType;  ///< kGoalSeekingByType, kGoalSeekingOn or kGoalSeekingOff.
   int runs = 0;                ///< Runs per PPP for this agent; 0 = the experiment's `runs`.
   bool prior_map = false;      ///< Planner agents only: the planner is given the true map instead of the memory.
   std::string planner_node;    ///< Planner agents only: "package/executable" of the planner to start ("" = the user's).
@@ -30,7 +38,8 @@ struct AgentConfig {
   BridgeOptions bridge;        ///< Planner agents only: its bridge's plan_timeout and cells_per_ppp_cell.
   int instances = 0;           ///< Planner agents only: bridge and planner pairs sharing its runs; 0 = instanceCount's.
   std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
-  /// @throws InvalidArgument naming "type" (listing the valid ones), "name", "memory", "sensor_noise", "runs",
+  /// @throws InvalidArgument naming "type" (listing the valid ones), "name", "memory", "sensor_noise",
+  /// "goal_seeking", "runs",
   /// "prior_map", "planner_node", "planner_args", "plan_timeout", "cells_per_ppp_cell", "instances" or "host"
   /// (other agents have no planner: their bridge options are unused).
   void validate() const;
@@ -43,7 +52,8 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs();
 /// The agent options an agent node reads as `~` parameters (and the experiment's graph writes for it).
 const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs();
 
-/// The agent options that decide how one run plays (type, memory, sensor_noise): the flags of `ppp simulate` and
+/// The agent options that decide how one run plays (type, memory, sensor_noise, goal_seeking): the flags of `ppp
+/// simulate` and
 /// `ppp replay`, and of the replay commands a report gives.
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs();
 
@@ -68,8 +78,15 @@ const std::vector<std::string>& agentTypeNames();
 /// Builds an agent for a configuration (validated first). @throws InvalidArgument (also for planners).
 std::unique_ptr<Agent> makeAgent(const AgentConfig& config);
 
-/// False for agent types that never look at their scan window (random): the simulator node sends them none.
+/// False for agents that never look at their scan window (random, unless it seeks the goal): the simulator node
+/// sends them none.
 bool readsScanWindow(const AgentConfig& config);
+
+/// Whether the agent heads for the goal once it has seen it: its goal_seeking, or its type's design.
+bool seeksGoal(const AgentConfig& config);
+
+/// The options of `config` a built-in agent plays with.
+AgentBehaviour agentBehaviour(const AgentConfig& config);
 
 /// True when the agent is given the true map at the start of each episode (astar, planners with prior_map).
 bool givenPriorMap(const AgentConfig& config);

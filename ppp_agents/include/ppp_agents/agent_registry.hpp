@@ -16,6 +16,7 @@ enum class AgentTrait : unsigned {
   NeedsPriorMap = 1u << 1,   ///< It is given the true map at the start of each episode.
   Control = 1u << 2,         ///< The control: passes every valid PPP (left out when ranking PPPs).
   Baseline = 1u << 3,        ///< No strategy to find faults in (left out of the report's worst PPPs).
+  SeeksGoal = 1u << 4,       ///< By design it heads for the goal once it has seen it (goal_seeking: by_type).
 };
 
 /// Both traits.
@@ -28,8 +29,9 @@ struct AgentType {
   const char* name;                 ///< The type as configurations name it ("explorer").
   const char* description;          ///< One line for help texts.
   AgentTrait traits;                ///< What the simulator and the report need to know of it.
-  /// Builds one agent with a memory window (0: full); null for planner agents, which are external ROS planners.
-  std::unique_ptr<Agent> (*make)(int memory_window);
+  /// Builds one agent of this type playing with `behaviour`; null for planner agents, which are external ROS
+  /// planners.
+  std::unique_ptr<Agent> (*make)(const AgentBehaviour& behaviour);
   /// Whether the type has `trait`.
   bool has(AgentTrait trait) const { return (static_cast<unsigned>(traits) & static_cast<unsigned>(trait)) != 0; }
 };

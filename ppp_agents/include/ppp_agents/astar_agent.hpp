@@ -17,8 +17,8 @@ namespace agents {
 /// moves (shortestOctileRoute), the only built-in agent that takes them.
 class AstarAgent final : public Agent {
  public:
-  /// The memory window is accepted for uniformity and unused: the prior map is the agent's knowledge.
-  explicit AstarAgent(int memory_window = 0);
+  /// The behaviour is accepted for uniformity and unused: the prior map is the agent's knowledge.
+  explicit AstarAgent(const AgentBehaviour& behaviour = {});
   /// Plans from the start. @throws InvalidArgument("prior_map", ...) when the info carries no prior map or
   /// one of another size.
   void reset(const EpisodeInfo& info) override;

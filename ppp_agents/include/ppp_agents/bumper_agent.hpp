@@ -18,12 +18,13 @@ namespace agents {
 ///   bumped one.
 /// Both steer by the bump flag alone: they read the scan window only while the goal is within the window
 /// (Chebyshev distance <= range), remembering those scans; once the goal is seen they take a shortest path to
-/// it on that memory (unknown cells passable). Fault: straight lines and random turns leave them trapped in
+/// it on that memory (unknown cells passable); with goal seeking off they never read it. Fault: straight lines
+/// and random turns leave them trapped in
 /// pockets whose exit they rarely line up with.
 class BumperAgent final : public Agent {
  public:
   /// A bumper; `decision` selects the variant that remembers tried directions.
-  BumperAgent(bool decision, int memory_window);
+  BumperAgent(bool decision, const AgentBehaviour& behaviour);
   /// Forgets everything, reseeds and draws the first direction.
   void reset(const EpisodeInfo& info) override;
   /// Straight on, a new direction after a bump, or towards the goal once seen.
@@ -34,7 +35,7 @@ class BumperAgent final : public Agent {
   int turn(Cell position, int bumped);
 
   bool decision_;
-  int memory_window_;
+  AgentBehaviour behaviour_;
   int width_ = 0;
   AgentMemory memory_;
   Navigator navigator_;

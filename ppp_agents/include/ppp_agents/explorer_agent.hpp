@@ -19,11 +19,12 @@ namespace agents {
 /// - long_term_explorer: then it follows a shortest path on its memory (known-free cells) to the nearest
 ///   frontier (a known-free cell with an unknown 4-neighbour), re-planning when a cell of the path turns out
 ///   blocked or the frontier is gone; fault: it may travel far for single unknown cells.
-/// Once either has seen the goal it takes a shortest path to it on its memory (unknown cells passable).
+/// Once either has seen the goal it takes a shortest path to it on its memory (unknown cells passable), unless its
+/// behaviour has goal seeking off.
 class ExplorerAgent final : public Agent {
  public:
-  /// An explorer; `long_term` selects the frontier-seeking variant; `memory_window` 0 is full memory.
-  ExplorerAgent(bool long_term, int memory_window);
+  /// An explorer; `long_term` selects the frontier-seeking variant.
+  ExplorerAgent(bool long_term, const AgentBehaviour& behaviour);
   /// Forgets the map and reseeds the tie-breaking generator.
   void reset(const EpisodeInfo& info) override;
   /// One greedy (or frontier, or goal) step.
@@ -38,7 +39,7 @@ class ExplorerAgent final : public Agent {
   bool frontierStep(Cell position, Action* action);
 
   bool long_term_;
-  int memory_window_;
+  AgentBehaviour behaviour_;
   AgentMemory memory_;
   Navigator navigator_;
   Rng rng_{0};

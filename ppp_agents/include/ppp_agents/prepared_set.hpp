@@ -30,8 +30,8 @@ struct PreparedSet {
   std::vector<std::optional<WindowAtlas>> windows;
 };
 
-/// The most moves any episode of `sets` may take.
-int largestBudget(const std::vector<PreparedSet>& sets);
+/// The most actions any episode of `sets` may take (its budget, or its action limit when stays or bumps are free).
+int largestActionLimit(const std::vector<PreparedSet>& sets);
 
 /// The grid the robot moves on in PPP `problem` of `set`: its configuration space, or nullptr for a point robot
 /// (which moves on the PPP's grid).

@@ -14,13 +14,14 @@ namespace agents {
 /// corner), until that move is blocked; then it turns so the wall is on its side and never lets go of it.
 /// Fault: the first obstacle met from the default corner start is usually an island (a free-standing cycle of
 /// walls); it circles it forever when the goal is not in sight from that loop.
-/// Once it sees the goal it leaves the wall and takes a shortest path on its memory (kept for this alone).
+/// Once it sees the goal it leaves the wall and takes a shortest path on its memory (kept for this alone), unless
+/// its behaviour has goal seeking off.
 class WallFollowerAgent final : public Agent {
  public:
   /// Which hand stays on the wall.
   enum class Side { Left, Right };
-  /// A follower keeping the wall on `side`, with a memory of `memory_window` (0: full) for the goal.
-  WallFollowerAgent(Side side, int memory_window);
+  /// A follower keeping the wall on `side`, with the behaviour's memory window for the goal.
+  WallFollowerAgent(Side side, const AgentBehaviour& behaviour);
   /// Forgets the map and the wall; sets the initial heading towards the goal.
   void reset(const EpisodeInfo& info) override;
   /// One step of the hand-on-wall rule, or towards the goal once seen.
@@ -31,7 +32,7 @@ class WallFollowerAgent final : public Agent {
   static int headingTowards(Cell from, Cell goal);
 
   Side side_;
-  int memory_window_;
+  AgentBehaviour behaviour_;
   AgentMemory memory_;
   Navigator navigator_;
   bool goal_seen_ = false;

@@ -197,8 +197,8 @@ EpisodeAnimation drawEpisode(const Problem& problem, const Grid& grid, const age
   Grid space;
   const Grid* motion = &motionGrid(grid, options.robot_radius, &space);
   const agents::EpisodeInfo info = agents::episodeInfo(problem, grid, config, run_seed, options.connectivity, motion);
-  Episode episode(problem, grid, runner.sensor(), run_seed, episodeBudget(options, problem, grid), options.connectivity,
-                  true, nullptr, motion);
+  Episode episode(problem, grid, runner.sensor(), run_seed, options.budgetRule(episodeBudget(options, problem, grid)),
+                  options.connectivity, true, nullptr, motion);
   std::unique_ptr<agents::AgentMemory> memory;
   if (info.prior_map == nullptr) {
     memory = std::make_unique<agents::AgentMemory>();
@@ -272,8 +272,11 @@ EpisodeAnimation animateRecordedEpisode(const Problem& problem, const Grid& grid
   animation.validate();
   const char* end_reason = reason::reasonNamed(reason);
   if (end_reason == nullptr) throw InvalidArgument("reason", "not a reason an episode ends for: '" + reason + "'");
-  // The world ends a run on the goal or at the budget: the actions must take the replay there by themselves.
-  if (reason == reason::kGoalReached || reason == reason::kBudgetExhausted) end_reason = nullptr;
+  // The world ends a run on the goal, at the budget or at the action limit: the actions must take the replay
+  // there by themselves.
+  if (reason == reason::kGoalReached || reason == reason::kBudgetExhausted || reason == reason::kActionLimit) {
+    end_reason = nullptr;
+  }
   std::size_t next = 0;
   return drawEpisode(problem, grid, config, options, run_seed, static_cast<int>(actions.size()),
                      [&](const Scan&) {

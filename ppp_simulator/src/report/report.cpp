@@ -305,6 +305,9 @@ std::vector<Picture> makePictures(const std::vector<FailureExample>& failures, c
 std::string reasonText(const std::string& reason) {
   if (reason == reason::kGoalReached) return "the agent reached the goal";
   if (reason == reason::kBudgetExhausted) return "the move budget ran out before the agent reached the goal";
+  if (reason == reason::kActionLimit) {
+    return "the agent took the most actions an episode allows while stays or bumps are free";
+  }
   if (reason == reason::kTimeout) return "the agent did not answer in time";
   if (reason == reason::kAgentLost) return "the agent process went away";
   if (reason == reason::kInvalidAction) return "the agent sent an unusable action";

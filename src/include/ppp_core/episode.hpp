@@ -16,11 +16,11 @@ namespace ppp {
 /// How one episode went.
 struct EpisodeOutcome {
   bool passed = false;      ///< The agent stood on the goal within the budget.
-  int steps = 0;            ///< Actions taken.
+  int steps = 0;            ///< Actions taken (counted against the budget or not).
   int bumps = 0;            ///< Actions that hit an obstacle or the edge.
   int path_length = 0;      ///< Cells actually moved.
   int diagonal_moves = 0;   ///< Of them, diagonal moves (connectivity 8).
-  const char* reason = "";  ///< reason::kGoalReached or reason::kBudgetExhausted.
+  const char* reason = "";  ///< reason::kGoalReached, kBudgetExhausted or kActionLimit (or a failure's).
   std::vector<Cell> path;   ///< Cells visited, start first (only when asked for).
 };
 
@@ -41,8 +41,8 @@ class Episode {
   /// Starts at the problem's start. `grid`, `sensor`, `windows` (the grid's atlas at the sensor's range, when
   /// there is one: scans become lookups) and `motion` (the robot's configuration space when it has a body:
   /// configurationSpace(); moves are checked against it, scans against `grid`) must outlive the episode.
-  Episode(const Problem& problem, const Grid& grid, const SensorModel& sensor, std::uint64_t run_seed, int budget,
-          Connectivity connectivity, bool record_path = false, const WindowAtlas* windows = nullptr,
+  Episode(const Problem& problem, const Grid& grid, const SensorModel& sensor, std::uint64_t run_seed,
+          BudgetRule budget, Connectivity connectivity, bool record_path = false, const WindowAtlas* windows = nullptr,
           const Grid* motion = nullptr);
   /// True once the agent stood on the goal, the budget was spent or fail() was called.
   bool done() const { return done_; }
@@ -64,7 +64,8 @@ class Episode {
   const SensorModel* sensor_;
   const WindowAtlas* windows_;
   std::uint64_t noise_seed_;
-  int budget_;
+  BudgetRule budget_;
+  int counted_ = 0;  // actions that used the budget
   Connectivity connectivity_;
   bool record_path_;
   Cell position_;

@@ -8,6 +8,8 @@ namespace ppp {
 namespace reason {
 constexpr const char* kGoalReached = "goal_reached";          ///< Pass: the agent stands on the goal.
 constexpr const char* kBudgetExhausted = "budget_exhausted";  ///< Fail: the move budget is spent.
+/// Fail: the action limit of an episode whose stays or bumps are free (BudgetRule::actionLimit()) is reached.
+constexpr const char* kActionLimit = "action_limit";
 constexpr const char* kTimeout = "timeout";                   ///< Fail (ROS): the agent did not answer in time.
 constexpr const char* kAgentLost = "agent_lost";              ///< Fail (ROS): the agent process went away.
 constexpr const char* kInvalidAction = "invalid_action";      ///< Fail (ROS): the agent sent something unusable.
