@@ -30,7 +30,8 @@ Breeder::Breeder(const GeneratorOptions& options, const Fitness& fitness, Rng* r
 
 Problem Breeder::randomChromosome() {
   Problem problem = shape_;
-  const int count = options_.max_obstacles == 0 ? 0 : static_cast<int>(rng_->uniformInt(1, options_.max_obstacles));
+  const int most = options_.max_obstacles;
+  const int count = most == 0 ? 0 : static_cast<int>(rng_->uniformInt(std::min(options_.min_obstacles, most), most));
   for (int i = 0; i < count; ++i) {
     problem.obstacles.push_back(randomObstacle(*rng_, shape_.width, shape_.height, options_.obstacle_shapes));
   }

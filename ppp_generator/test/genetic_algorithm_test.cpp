@@ -220,6 +220,35 @@ TEST(GeneticAlgorithmTest, ZeroMatingsReturnsTheInitialPool) {
   EXPECT_EQ(ga.stats().matings, 0);
 }
 
+TEST(GeneticAlgorithmTest, TheInitialPoolTakesTheShapesCountsAndLengthsAsked) {
+  GeneratorOptions o = smallRun("turns", 4, 0);
+  o.min_obstacles = 7;
+  o.max_obstacles = 9;
+  o.obstacle_shapes.shapes = {Shape::VerticalBar, Shape::Block};
+  o.obstacle_shapes.min_bar_length = 5;
+  o.obstacle_shapes.max_bar_length = 6;
+  GeneticAlgorithm ga(o);
+  int vertical = 0;
+  int blocks = 0;
+  for (const Individual& i : ga.run()) {
+    // Pruning may redraw a chromosome, never shorten it: 7 to 9 descriptors each.
+    EXPECT_GE(i.problem.obstacles.size(), 7u);
+    EXPECT_LE(i.problem.obstacles.size(), 9u);
+    for (const Obstacle& obstacle : i.problem.obstacles) {
+      ASSERT_TRUE(obstacle.shape == Shape::VerticalBar || obstacle.shape == Shape::Block) << shapeName(obstacle.shape);
+      if (obstacle.shape == Shape::VerticalBar) {
+        ++vertical;
+        EXPECT_GE(obstacle.length, 5);
+        EXPECT_LE(obstacle.length, 6);
+      } else {
+        ++blocks;
+      }
+    }
+  }
+  EXPECT_GT(vertical, 0);
+  EXPECT_GT(blocks, 0);
+}
+
 }  // namespace
 }  // namespace generator
 }  // namespace ppp

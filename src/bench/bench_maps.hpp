@@ -27,7 +27,7 @@ constexpr int kSmallMapObstacles = 10;
 /// Fraction of cells the cluttered maps cover with obstacles.
 constexpr double kClutteredDensity = 0.22;
 /// Size limits of the cluttered maps' descriptors: bars up to 60 cells, blocks up to 15x15.
-constexpr RandomObstacleOptions kClutteredOptions{60, 15};
+inline const RandomObstacleOptions kClutteredOptions{60, 15};
 /// Distance in cells around a new descriptor within which the free cells must stay connected to each other.
 constexpr int kClutteredMargin = 4;
 

@@ -9,18 +9,44 @@
 
 namespace ppp {
 
+std::string shapeListText(std::vector<Shape> shapes) {
+  std::string text;
+  for (const Shape shape : shapes) text += (text.empty() ? "" : ",") + std::string(shapeName(shape));
+  return text;
+}
+
+std::string shapeListProblem(const std::string& text, std::vector<Shape>* shapes) {
+  shapes->clear();
+  std::string item;
+  for (const char c : text + ",") {
+    if (c != ',') {
+      if (c != ' ') item += c;
+      continue;
+    }
+    Shape shape;
+    if (!parseShape(item, &shape)) {
+      return "unknown shape '" + item + "' in '" + text + "'; expected keywords among hbar, vbar, diag_down, "
+             "diag_up, block separated by commas";
+    }
+    shapes->push_back(shape);
+    item.clear();
+  }
+  return "";
+}
+
 Obstacle randomObstacle(Rng& rng, int width, int height, const RandomObstacleOptions& options) {
   const int bar = options.max_bar_length > 0 ? options.max_bar_length : std::max(1, std::max(width, height) / 2);
   const int side = options.max_block_side > 0 ? options.max_block_side : std::max(1, std::min(width, height) / 4);
   Obstacle o;
-  o.shape = kAllShapes[rng.below(std::size(kAllShapes))];
+  o.shape = options.shapes[rng.below(options.shapes.size())];
   o.x = static_cast<int>(rng.below(static_cast<std::uint64_t>(width)));
   o.y = static_cast<int>(rng.below(static_cast<std::uint64_t>(height)));
   if (o.shape == Shape::Block) {
     o.length = static_cast<int>(rng.uniformInt(1, std::min(side, width)));
     o.height = static_cast<int>(rng.uniformInt(1, std::min(side, height)));
   } else {
-    o.length = static_cast<int>(rng.uniformInt(1, std::min(bar, std::max(width, height))));
+    const int longest = std::min(bar, std::max(width, height));
+    o.length = static_cast<int>(rng.uniformInt(std::min(options.min_bar_length, longest), longest));
     o.height = 1;
   }
   return o;

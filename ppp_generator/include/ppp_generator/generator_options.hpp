@@ -55,7 +55,8 @@ struct GeneratorOptions {
   std::optional<Cell> goal;         ///< Goal cell; default bottom-right.
   double robot_radius = 0;          ///< The robot as a disc of this radius in cells: PPPs are solvable for it.
   int max_obstacles = 10;           ///< Obstacle budget: most descriptors per chromosome, >= 0.
-  RandomObstacleOptions obstacle_shapes;  ///< Size limits of random descriptors.
+  int min_obstacles = 1;            ///< Fewest descriptors of a random initial chromosome (capped at max_obstacles).
+  RandomObstacleOptions obstacle_shapes;  ///< Shapes and size limits of random descriptors.
   std::uint64_t seed = 1;           ///< Seed of every random choice of the run.
   std::string characters = "extended";  ///< Character set of the taxonomy (wei, extended or barn).
   std::string replacement = kCrowdingReplacement;  ///< kCrowdingReplacement or kTournamentReplacement.

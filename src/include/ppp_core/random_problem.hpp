@@ -1,5 +1,8 @@
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "ppp_core/problem.hpp"
 #include "ppp_core/rng.hpp"
 
@@ -9,7 +12,16 @@ namespace ppp {
 struct RandomObstacleOptions {
   int max_bar_length = 0;  ///< Longest bar drawn; 0 means half the longer grid side.
   int max_block_side = 0;  ///< Longest block side drawn; 0 means a quarter of the shorter grid side.
+  int min_bar_length = 1;  ///< Shortest bar drawn (capped at the longest).
+  /// The shapes drawn, each entry equally likely (a shape listed twice is drawn twice as often); not empty.
+  std::vector<Shape> shapes{std::begin(kAllShapes), std::end(kAllShapes)};
 };
+
+/// A shape mix as options write it: shape keywords separated by commas ("hbar,vbar,block").
+std::string shapeListText(std::vector<Shape> shapes);
+
+/// Parses a shape mix into `shapes`; returns what is wrong ("" when nothing is).
+std::string shapeListProblem(const std::string& text, std::vector<Shape>* shapes);
 
 /// A descriptor with a uniformly chosen shape, an anchor anywhere on the grid and a size within the limits.
 Obstacle randomObstacle(Rng& rng, int width, int height, const RandomObstacleOptions& options = {});
