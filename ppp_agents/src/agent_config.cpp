@@ -34,6 +34,16 @@ std::string goalSeekingProblem(const AgentConfig& config) {
   return "";
 }
 
+/// What is wrong with the memory model and wall start asked for, or "" when nothing is (as "name: problem").
+std::string behaviourProblem(const AgentConfig& config) {
+  if (config.memory_model != kMemoryModelWindow && config.type == kPlannerType) {
+    return "memory_model: a planner agent's memory is a window (the bridge's)";
+  }
+  const bool wall_follower = config.type == "wall_follower_left" || config.type == "wall_follower_right";
+  if (config.wall_start != kWallStartGoal && !wall_follower) return "wall_start: only wall followers take it";
+  return "";
+}
+
 /// What is wrong with the instances asked for, or "" when nothing is.
 std::string instancesProblem(const AgentConfig& config) {
   if (config.instances == 0 || config.type == kPlannerType) return "";
@@ -130,6 +140,11 @@ void AgentConfig::validate() const {
                                         "] (5 for 5x5) or 0 for full memory, got " + std::to_string(memory_window));
   }
   if (!goalSeekingProblem(*this).empty()) throw InvalidArgument("goal_seeking", goalSeekingProblem(*this));
+  const std::string behaviour = behaviourProblem(*this);
+  if (!behaviour.empty()) {
+    const std::size_t colon = behaviour.find(": ");
+    throw InvalidArgument(behaviour.substr(0, colon), behaviour.substr(colon + 2));
+  }
   if (!priorMapProblem(*this).empty()) throw InvalidArgument("prior_map", priorMapProblem(*this));
   if (!plannerNodeProblem(*this).empty()) throw InvalidArgument("planner_node", plannerNodeProblem(*this));
   if (!plannerArgsProblem(*this).empty()) throw InvalidArgument("planner_args", plannerArgsProblem(*this));
@@ -156,6 +171,15 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
                          {{kGoalSeekingByType, "as its type's design: every type but random heads for it"},
                           {kGoalSeekingOn, "it takes a shortest path to the goal on its memory"},
                           {kGoalSeekingOff, "it plays its strategy as if it had not seen it"}}),
+        declareOption("memory_model", "what a limited memory KxK keeps",
+                      +[](A& a) -> std::string& { return a.memory_model; })
+            .withChoices("memory model",
+                         {{kMemoryModelWindow, "the KxK cells around the agent"},
+                          {kMemoryModelScans, "what its last K x K scans saw, older sightings forgotten"}}),
+        declareOption("wall_start", "wall followers: what they do before touching a wall",
+                      +[](A& a) -> std::string& { return a.wall_start; })
+            .withChoices("wall start", {{kWallStartGoal, "head for the goal"},
+                                        {kWallStartRandom, "go straight on in a heading drawn at random"}}),
         declareOption("runs", "runs per PPP for this agent (0: the experiment's runs)",
                       +[](A& a) -> int& { return a.runs; }, Bounds{0, kMaxRuns}),
         declareOption("prior_map", "planner agents: the planner is given the true map instead of the memory",
@@ -189,13 +213,14 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
 
 const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs() {
   static const std::vector<OptionSpec<AgentConfig>> specs =
-      selectOptions(agentOptionSpecs(), {"type", "name", "memory", "sensor_noise", "goal_seeking"});
+      selectOptions(agentOptionSpecs(),
+                    {"type", "name", "memory", "sensor_noise", "goal_seeking", "memory_model", "wall_start"});
   return specs;
 }
 
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs() {
   static const std::vector<OptionSpec<AgentConfig>> specs =
-      selectOptions(agentOptionSpecs(), {"type", "memory", "sensor_noise", "goal_seeking"});
+      selectOptions(agentOptionSpecs(), {"type", "memory", "sensor_noise", "goal_seeking", "memory_model", "wall_start"});
   return specs;
 }
 

@@ -44,10 +44,16 @@ void rowMasks(const std::int8_t* row, int offset, int count, std::uint64_t* free
 
 }  // namespace
 
-void AgentMemory::reset(int width, int height, int window) {
+void AgentMemory::reset(int width, int height, int window, int recent_scans) {
   width_ = width;
   height_ = height;
   window_ = window;
+  recent_scans_ = recent_scans;
+  scans_ = 0;
+  if (recent_scans > 0) {
+    seen_at_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), -1);
+    recent_.assign(static_cast<std::size_t>(recent_scans), Written{0, 0, -1, -1});
+  }
   words_per_row_ = (width + 63) / 64;
   last_position_ = Cell{-1, -1};
   const std::size_t words = static_cast<std::size_t>(words_per_row_) * static_cast<std::size_t>(height);
@@ -60,6 +66,24 @@ void AgentMemory::forget(int y, int x0, int x1) {
     const int count = std::min(x1 - x + 1, 64);
     writeBits(y, x, count, lowBits(count), 0, 0);
   }
+}
+
+void AgentMemory::stamp(int y, int x0, std::uint64_t seen) {
+  for (; seen != 0; seen &= seen - 1) {
+    seen_at_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + x0 + __builtin_ctzll(seen)] = scans_;
+  }
+}
+
+void AgentMemory::expire(const Written& written) {
+  Written& oldest = recent_[static_cast<std::size_t>(scans_ % recent_scans_)];
+  const long expired = scans_ - recent_scans_;
+  for (int y = oldest.y0; y <= oldest.y1; ++y) {
+    for (int x = oldest.x0; x <= oldest.x1; ++x) {
+      if (seen_at_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + x] == expired) forget(y, x, x);
+    }
+  }
+  oldest = written;
+  ++scans_;
 }
 
 void AgentMemory::update(const Scan& scan) {
@@ -88,7 +112,9 @@ void AgentMemory::update(const Scan& scan) {
       rowMasks(window + offset, offset, count, &seen_free, &seen_obstacle);
     }
     writeBits(y, x0, count, seen_free | seen_obstacle, seen_free, seen_obstacle);
+    if (recent_scans_ > 0) stamp(y, x0, seen_free | seen_obstacle);
   }
+  if (recent_scans_ > 0) expire(Written{x0, y0, x1, y1});
   if (window_ > 0) {
     const Cell last = last_position_;
     if (last.x >= 0 && last != p) {

@@ -85,8 +85,11 @@ bool seeksGoal(const AgentConfig& config) {
 
 AgentBehaviour agentBehaviour(const AgentConfig& config) {
   AgentBehaviour behaviour;
-  behaviour.memory_window = config.memory_window;
+  const bool scans = config.memory_model == kMemoryModelScans;
+  behaviour.memory_window = scans ? 0 : config.memory_window;
+  behaviour.memory_scans = scans ? config.memory_window * config.memory_window : 0;
   behaviour.seek_goal = seeksGoal(config);
+  behaviour.random_wall_start = config.wall_start == kWallStartRandom;
   return behaviour;
 }
 

@@ -13,7 +13,7 @@ BumperAgent::BumperAgent(bool decision, const AgentBehaviour& behaviour) : decis
 
 void BumperAgent::reset(const EpisodeInfo& info) {
   width_ = info.width;
-  memory_.reset(info.width, info.height, behaviour_.memory_window);
+  memory_.reset(info.width, info.height, behaviour_.memory_window, behaviour_.memory_scans);
   navigator_.reset(info.width, info.height);
   rng_ = Rng(info.seed);
   goal_seen_ = false;

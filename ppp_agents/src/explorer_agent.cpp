@@ -12,7 +12,7 @@ ExplorerAgent::ExplorerAgent(bool long_term, const AgentBehaviour& behaviour)
     : long_term_(long_term), behaviour_(behaviour) {}
 
 void ExplorerAgent::reset(const EpisodeInfo& info) {
-  memory_.reset(info.width, info.height, behaviour_.memory_window);
+  memory_.reset(info.width, info.height, behaviour_.memory_window, behaviour_.memory_scans);
   navigator_.reset(info.width, info.height);
   rng_ = Rng(info.seed);
   goal_seen_ = false;

@@ -3,13 +3,15 @@
 namespace ppp {
 namespace agents {
 
+RandomAgent::RandomAgent() { behaviour_.seek_goal = false; }
+
 RandomAgent::RandomAgent(const AgentBehaviour& behaviour) : behaviour_(behaviour) {}
 
 void RandomAgent::reset(const EpisodeInfo& info) {
   rng_ = Rng(info.seed);
   goal_seen_ = false;
   if (behaviour_.seek_goal) {
-    memory_.reset(info.width, info.height, behaviour_.memory_window);
+    memory_.reset(info.width, info.height, behaviour_.memory_window, behaviour_.memory_scans);
     navigator_.reset(info.width, info.height);
   }
 }

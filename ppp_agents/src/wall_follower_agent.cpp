@@ -9,13 +9,14 @@ WallFollowerAgent::WallFollowerAgent(Side side, const AgentBehaviour& behaviour)
 
 void WallFollowerAgent::reset(const EpisodeInfo& info) {
   if (behaviour_.seek_goal) {
-    memory_.reset(info.width, info.height, behaviour_.memory_window);
+    memory_.reset(info.width, info.height, behaviour_.memory_window, behaviour_.memory_scans);
     navigator_.reset(info.width, info.height);
   }
   goal_seen_ = false;
   engaged_ = false;
   goal_ = info.goal;
-  heading_ = headingTowards(info.start, info.goal);
+  rng_ = Rng(info.seed);
+  heading_ = behaviour_.random_wall_start ? static_cast<int>(rng_.below(4)) : headingTowards(info.start, info.goal);
 }
 
 int WallFollowerAgent::headingTowards(Cell from, Cell goal) {
@@ -40,7 +41,7 @@ Action WallFollowerAgent::act(const Scan& scan) {
   const int towards_wall = side_ == Side::Left ? 3 : 1;  // quarter turns clockwise: left = 3, right = 1
   const int away_from_wall = 4 - towards_wall;
   if (!engaged_) {
-    heading_ = headingTowards(scan.position(), goal_);
+    if (!behaviour_.random_wall_start) heading_ = headingTowards(scan.position(), goal_);
     if (!wall(heading_)) return kMoves[heading_];
     engaged_ = true;
     heading_ = (heading_ + away_from_wall) % 4;  // the wall just hit is now on the agent's side

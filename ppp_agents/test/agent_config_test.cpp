@@ -146,8 +146,8 @@ TEST(AgentConfigTest, ReadsConfigurationsWithDefaults) {
 TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, colour: red}\n"),
             "agents.yaml:2: agents[0].colour: unknown key; valid keys: cells_per_ppp_cell, goal_seeking, host, "
-            "instances, lockstep, memory, name, plan_timeout, planner_args, planner_node, prior_map, runs, "
-            "sensor_noise, type");
+            "instances, lockstep, memory, memory_model, name, plan_timeout, planner_args, planner_node, prior_map, "
+            "runs, sensor_noise, type, wall_start");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),
             std::string("agents.yaml:3: agents[1].type: missing; valid: ") + kTypes);
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - name: x\n    type: robot\n"),
@@ -185,7 +185,7 @@ TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
             "other agents never do)");
 }
 
-TEST(AgentConfigTest, GoalSeekingIsEachTypesDesignUnlessGiven) {
+TEST(AgentConfigTest, BehaviourOptionsMapToTheAgentsBehaviourAndOnlyWhereTheyApply) {
   for (const std::string& type : agentTypeNames()) {
     EXPECT_EQ(seeksGoal(config(type)), type != "random" && type != "astar") << type;
     EXPECT_EQ(agentBehaviour(config(type)).seek_goal, seeksGoal(config(type))) << type;
@@ -204,6 +204,19 @@ TEST(AgentConfigTest, GoalSeekingIsEachTypesDesignUnlessGiven) {
   EXPECT_EQ(parseError("agents:\n  - {type: astar, goal_seeking: off}\n"),
             "agents.yaml:2: agents[0].goal_seeking: astar plans its route to the goal from the start; goal seeking "
             "does not apply");
+  EXPECT_EQ(parseError("agents:\n  - {type: explorer, wall_start: random}\n"),
+            "agents.yaml:2: agents[0].wall_start: only wall followers take it");
+  EXPECT_EQ(parseError("agents:\n  - {type: planner, memory_model: scans}\n"),
+            "agents.yaml:2: agents[0].memory_model: a planner agent's memory is a window (the bridge's)");
+  AgentConfig scans = config("explorer", 5);
+  scans.memory_model = kMemoryModelScans;
+  EXPECT_EQ(agentBehaviour(scans).memory_window, 0);
+  EXPECT_EQ(agentBehaviour(scans).memory_scans, 25);
+  EXPECT_EQ(agentBehaviour(config("explorer", 5)).memory_scans, 0);
+  AgentConfig follower = config("wall_follower_right");
+  EXPECT_FALSE(agentBehaviour(follower).random_wall_start);
+  follower.wall_start = kWallStartRandom;
+  EXPECT_TRUE(agentBehaviour(follower).random_wall_start);
   EXPECT_EQ(parseError("agents:\n  - {type: planner, goal_seeking: on}\n"),
             "agents.yaml:2: agents[0].goal_seeking: a planner agent's planner is given the goal; goal seeking does "
             "not apply");

@@ -240,6 +240,33 @@ TEST(AgentMemoryTest, IncrementalForgettingMatchesForgettingEverythingOutsideThe
   }
 }
 
+TEST(AgentMemoryTest, ALimitOfRecentScansForgetsWhatOnlyOlderScansSaw) {
+  // An open 9x5 map, scans of range 2 at x = 2, 4, 6 on row 2, keeping the last two scans.
+  AgentMemory memory;
+  memory.reset(9, 5, 0, 2);
+  memory.update(openScan(Cell{2, 2}, 9, 5, Cell{0, 0}));  // columns 0-4, (0,0) an obstacle
+  EXPECT_EQ(draw(memory), (std::vector<std::string>{"#....????", ".....????", ".....????", ".....????",
+                                                    ".....????"}));
+  memory.update(openScan(Cell{4, 2}, 9, 5, Cell{-1, -1}));  // columns 2-6
+  EXPECT_EQ(draw(memory), (std::vector<std::string>{"#......??", ".......??", ".......??", ".......??",
+                                                    ".......??"}));
+  // The third scan (columns 4-8) pushes the first out: columns 0-1 only it saw are forgotten; 2-3 the second
+  // scan saw too, and stay.
+  memory.update(openScan(Cell{6, 2}, 9, 5, Cell{-1, -1}));
+  EXPECT_EQ(draw(memory), (std::vector<std::string>{"??.......", "??.......", "??.......", "??.......",
+                                                    "??......."}));
+  // Standing still, the fourth scan pushes the second out: columns 2-3 go, what the third and fourth saw stays.
+  memory.update(openScan(Cell{6, 2}, 9, 5, Cell{-1, -1}));
+  EXPECT_EQ(draw(memory), (std::vector<std::string>{"????.....", "????.....", "????.....", "????.....",
+                                                    "????....."}));
+  // A limit of one scan keeps the current scan only.
+  memory.reset(9, 5, 0, 1);
+  memory.update(openScan(Cell{2, 2}, 9, 5, Cell{0, 0}));
+  memory.update(openScan(Cell{3, 2}, 9, 5, Cell{-1, -1}));
+  EXPECT_EQ(draw(memory), (std::vector<std::string>{"?.....???", "?.....???", "?.....???", "?.....???",
+                                                    "?.....???"}));
+}
+
 TEST(AgentMemoryTest, ResetForgetsEverything) {
   AgentMemory memory;
   memory.reset(3, 3, 0);

@@ -26,7 +26,9 @@ struct EpisodeInfo {
 /// How a built-in agent plays besides its type: the options of its configuration it reads (AgentConfig names them).
 struct AgentBehaviour {
   int memory_window = 0;  ///< Limited memory: only a k x k window around the agent is kept (odd k); 0 = full.
+  int memory_scans = 0;   ///< Limited memory: only what the last n scans saw is kept; 0 = every scan's.
   bool seek_goal = true;  ///< Once it has seen the goal it takes a shortest path to it on its memory.
+  bool random_wall_start = false;  ///< Wall followers: first straight on in a random heading, not towards the goal.
 };
 
 /// A test agent: each step it gets a scan (its cell, the goal, a bump flag and the window of cells) and returns

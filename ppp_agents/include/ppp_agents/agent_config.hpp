@@ -24,6 +24,15 @@ constexpr const char* kGoalSeekingOn = "on";
 /// goal_seeking: the agent plays its strategy whether it has seen the goal or not.
 constexpr const char* kGoalSeekingOff = "off";
 
+/// memory_model: the memory window is a k x k window around the agent.
+constexpr const char* kMemoryModelWindow = "window";
+/// memory_model: the memory keeps what the last k x k scans saw.
+constexpr const char* kMemoryModelScans = "scans";
+/// wall_start: before touching a wall, head for the goal.
+constexpr const char* kWallStartGoal = "goal";
+/// wall_start: before touching a wall, go straight on in a heading drawn at random.
+constexpr const char* kWallStartRandom = "random";
+
 /// One agent configuration of an experiment: a type plus handicaps, under a name of its own.
 struct AgentConfig {
   std::string name;            ///< Name in results and reports (e.g. "explorer_memory_5x5"); defaults to type.
@@ -31,6 +40,8 @@ struct AgentConfig {
   int memory_window = 0;       ///< Limited memory: keep only a k x k window around the agent (odd k); 0 = full.
   double sensor_noise = 0.0;   ///< Probability that a sensed cell is reported flipped (applied by the sensor).
   std::string goal_seeking = kGoalSeekingByType;  ///< kGoalSeekingByType, kGoalSeekingOn or kGoalSeekingOff.
+  std::string memory_model = kMemoryModelWindow;  ///< What memory KxK limits: kMemoryModelWindow or kMemoryModelScans.
+  std::string wall_start = kWallStartGoal;        ///< Wall followers: kWallStartGoal or kWallStartRandom.
   int runs = 0;                ///< Runs per PPP for this agent; 0 = the experiment's `runs`.
   bool prior_map = false;      ///< Planner agents only: the planner is given the true map instead of the memory.
   std::string planner_node;    ///< Planner agents only: "package/executable" of the planner to start ("" = the user's).
@@ -39,7 +50,7 @@ struct AgentConfig {
   int instances = 0;           ///< Planner agents only: bridge and planner pairs sharing its runs; 0 = instanceCount's.
   std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
   /// @throws InvalidArgument naming "type" (listing the valid ones), "name", "memory", "sensor_noise",
-  /// "goal_seeking", "runs",
+  /// "goal_seeking", "memory_model", "wall_start", "runs",
   /// "prior_map", "planner_node", "planner_args", "plan_timeout", "cells_per_ppp_cell", "instances" or "host"
   /// (other agents have no planner: their bridge options are unused).
   void validate() const;
@@ -52,8 +63,8 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs();
 /// The agent options an agent node reads as `~` parameters (and the experiment's graph writes for it).
 const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs();
 
-/// The agent options that decide how one run plays (type, memory, sensor_noise, goal_seeking): the flags of `ppp
-/// simulate` and
+/// The agent options that decide how one run plays (type, memory, sensor_noise, goal_seeking, memory_model,
+/// wall_start): the flags of `ppp simulate` and
 /// `ppp replay`, and of the replay commands a report gives.
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs();
 

@@ -12,12 +12,13 @@ namespace agents {
 
 /// The occupancy grid an agent builds from its scans: each cell unknown, free or obstacle (kScan* values).
 /// With a window k > 0 only the k x k cells centred on the agent are kept; cells leaving it are forgotten.
+/// With a limit of n recent scans only what the last n scans saw is kept: a cell none of them saw is forgotten.
 /// Stored as two bit planes (free, obstacle; a cell in neither is unknown), rows of whole 64-bit words, so
 /// that a scan is merged and a neighbourhood read a row of bits at a time.
 class AgentMemory {
  public:
-  /// Forgets everything; `window` 0 keeps the whole map.
-  void reset(int width, int height, int window);
+  /// Forgets everything; `window` 0 keeps the whole map, `recent_scans` 0 every scan's sightings.
+  void reset(int width, int height, int window, int recent_scans = 0);
   /// Writes the scan's known cells (free, obstacle) into memory, then forgets what is outside the window.
   void update(const Scan& scan);
   /// The remembered value of a cell (kScanOutOfBounds off the map).
@@ -79,12 +80,25 @@ class AgentMemory {
   }
   /// Forgets columns [x0, x1] of row `y`.
   void forget(int y, int x0, int x1);
+  /// The cells a scan wrote: rows y0..y1, columns x0..x1.
+  struct Written {
+    int x0, y0, x1, y1;
+  };
+  /// With a limit of recent scans: stamps the cells of row `y` from `x0` that this scan saw (bits of `seen`).
+  void stamp(int y, int x0, std::uint64_t seen);
+  /// With a limit of recent scans: forgets what the scan that just fell out of the limit saw and no later one did,
+  /// and keeps `written` in its place.
+  void expire(const Written& written);
 
   int width_ = 0;
   int height_ = 0;
   int window_ = 0;
   int words_per_row_ = 0;
   Cell last_position_{-1, -1};
+  int recent_scans_ = 0;             // 0: no limit of scans
+  long scans_ = 0;                   // scans merged since reset
+  std::vector<long> seen_at_;        // with a limit of scans: per cell, the scan that last saw it
+  std::vector<Written> recent_;      // with a limit of scans: what each of the last recent_scans_ wrote
   std::vector<std::uint64_t> free_;      // bit x & 63 of word y * words_per_row_ + x / 64: remembered free
   std::vector<std::uint64_t> obstacle_;  // the same for remembered obstacles
 };

@@ -14,8 +14,10 @@ namespace agents {
 /// shortest path to it on that memory.
 class RandomAgent final : public Agent {
  public:
-  /// A random walker; the memory window is used only when it seeks the goal.
-  explicit RandomAgent(const AgentBehaviour& behaviour = AgentBehaviour{0, false});
+  /// A random walker as its type's design: it never seeks the goal.
+  RandomAgent();
+  /// A random walker playing with `behaviour` (its memory is used only when it seeks the goal).
+  explicit RandomAgent(const AgentBehaviour& behaviour);
   /// Reseeds the generator.
   void reset(const EpisodeInfo& info) override;
   /// A uniformly random action, or a step towards the goal once seen when seeking it.

@@ -3,6 +3,7 @@
 #include "ppp_agents/agent.hpp"
 #include "ppp_agents/agent_memory.hpp"
 #include "ppp_agents/navigation.hpp"
+#include "ppp_core/rng.hpp"
 
 namespace ppp {
 namespace agents {
@@ -11,7 +12,8 @@ namespace agents {
 /// the four neighbours) on one side with the hand-on-wall rule: with an internal heading, it turns towards the
 /// wall side if it can, else goes straight, else turns away, else turns back. Before touching any wall it heads
 /// for the goal, each step along the axis with the larger distance left (a staircase along the diagonal from a
-/// corner), until that move is blocked; then it turns so the wall is on its side and never lets go of it.
+/// corner), until that move is blocked (or, with a random wall start, straight on in a heading drawn from its
+/// seed); then it turns so the wall is on its side and never lets go of it.
 /// Fault: the first obstacle met from the default corner start is usually an island (a free-standing cycle of
 /// walls); it circles it forever when the goal is not in sight from that loop.
 /// Once it sees the goal it leaves the wall and takes a shortest path on its memory (kept for this alone), unless
@@ -39,6 +41,7 @@ class WallFollowerAgent final : public Agent {
   bool engaged_ = false;  // touched a wall: the hand-on-wall rule is in force
   int heading_ = 0;       // index into kMoves
   Cell goal_;
+  Rng rng_{0};
 };
 
 }  // namespace agents

@@ -202,7 +202,8 @@ EpisodeAnimation drawEpisode(const Problem& problem, const Grid& grid, const age
   std::unique_ptr<agents::AgentMemory> memory;
   if (info.prior_map == nullptr) {
     memory = std::make_unique<agents::AgentMemory>();
-    memory->reset(problem.width, problem.height, config.memory_window);
+    const agents::AgentBehaviour behaviour = agents::agentBehaviour(config);
+    memory->reset(problem.width, problem.height, behaviour.memory_window, behaviour.memory_scans);
   }
   GifAnimation gif(painter.width(), painter.height(), kPalette);
   const std::size_t keys = static_cast<std::size_t>(problem.width) * problem.height * 9;
