@@ -220,7 +220,8 @@ const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs() {
 
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs() {
   static const std::vector<OptionSpec<AgentConfig>> specs =
-      selectOptions(agentOptionSpecs(), {"type", "memory", "sensor_noise", "goal_seeking", "memory_model", "wall_start"});
+      selectOptions(agentOptionSpecs(), {"type", "memory", "sensor_noise", "goal_seeking", "memory_model",
+                                         "wall_start"});
   return specs;
 }
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -71,6 +73,47 @@ TEST(ExperimentConfigTest, ShippedPlannerExperimentLoads) {
   EXPECT_EQ(c.agents[1].type, "planner");
   EXPECT_EQ(c.agents[1].planner_node, "");  // the user starts their planner
   EXPECT_EQ(c.sets.size(), 2u);
+}
+
+TEST(ExperimentConfigTest, ShippedSeedReproductionIsTheDissertationsExperiment) {
+  const ExperimentConfig c = loadExperimentConfig(PPP_CONFIG_DIR "/seed_reproduction.yaml");
+  // What the dissertation states: 1,000 runs, budget 300, sensor range 2, two sets of 60 PPPs evolved for 10,000
+  // matings with tournament replacement, Wei's `turns` and `difficulty`.
+  EXPECT_EQ(c.runs, 1000);
+  EXPECT_EQ(c.episode.budget, 300);
+  EXPECT_EQ(c.episode.sensor_range, 2);
+  ASSERT_EQ(c.sets.size(), 2u);
+  EXPECT_EQ(c.sets[0].name, "turns");
+  EXPECT_EQ(c.sets[1].name, "difficulty");
+  for (const SetSpec& set : c.sets) {
+    ASSERT_TRUE(set.generator.has_value());
+    EXPECT_EQ(set.generator->fitness, set.name);
+    EXPECT_EQ(set.generator->population, 60);
+    EXPECT_EQ(set.generator->matings, 10000);
+    EXPECT_EQ(set.generator->replacement, generator::kTournamentReplacement);
+  }
+  // Its agents are configurations of config/agents.yaml under the same names, with the same handicaps.
+  const std::vector<agents::AgentConfig> shipped = agents::loadAgentConfigs(PPP_CONFIG_DIR "/agents.yaml");
+  ASSERT_EQ(c.agents.size(), 9u);
+  for (const agents::AgentConfig& agent : c.agents) {
+    const auto same = std::find_if(shipped.begin(), shipped.end(),
+                                   [&](const agents::AgentConfig& a) { return a.name == agent.name; });
+    ASSERT_NE(same, shipped.end()) << agent.name;
+    EXPECT_EQ(same->type, agent.type) << agent.name;
+    EXPECT_EQ(same->memory_window, agent.memory_window) << agent.name;
+    EXPECT_EQ(same->sensor_noise, agent.sensor_noise) << agent.name;
+  }
+  // Table 5.1 as the reference of the `turns` set, every figure as published.
+  const std::vector<std::pair<std::string, double>> table = {
+      {"wall_follower_left", 74.50}, {"wall_follower_right", 78.33}, {"explorer", 76.82},
+      {"explorer_memory_5x5", 16.55}, {"explorer_noise_0.1", 65.93}, {"long_term_explorer", 97.01},
+      {"bumper", 32.19}, {"decision_bumper", 32.86}};
+  ASSERT_EQ(c.reference.size(), table.size());
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    EXPECT_EQ(c.reference[i].set, "turns");
+    EXPECT_EQ(c.reference[i].agent, table[i].first);
+    EXPECT_DOUBLE_EQ(c.reference[i].percent, table[i].second);
+  }
 }
 
 class ExperimentYaml : public ::testing::Test {
