@@ -8,6 +8,9 @@ pass rate of each of the eight configurations, averaged over the seeds, is compa
 fixed by a fact of their own are not searched: the random agent seeks the goal once seen and bumps are free,
 the only combination whose exact pass rate on an empty 20x20 map (ppp_agents/test/episode_test.cpp) lies in
 4.4 % +- 1 (3.41 %). Candidates are ranked by their largest gap in points, then by the root mean square gap.
+Beside them it reports the dissertation's per-PPP facts, which the ranking does not weigh: the set's mean
+optimal turns (its example PPP has 10), the PPPs both bumpers never pass (29 of 60), those each wall follower
+never passes (14 and 13, both 7) and the explorer's lowest per-PPP rate (28.8 %), each averaged over the seeds.
 
 Prints one line per candidate as it finishes and the ranking at the end; writes every candidate's rates to
 WORK/calibration.csv. Exit status 0, or 2 on bad usage.
@@ -76,15 +79,34 @@ def experiment_yaml(candidate, seed, runs):
     return '\n'.join(lines) + '\n'
 
 
+FACTS = ['turns', 'bumpers_zero', 'left_zero', 'right_zero', 'walls_zero', 'explorer_min']
+
+
 def set_pass_rates(directory):
     """The set-level pass rates (%) per agent of a finished experiment."""
     with open(os.path.join(directory, 'summary.csv')) as summary:
         return {row['agent']: 100 * float(row['pass_rate']) for row in csv.DictReader(summary) if row['level'] == 'set'}
 
 
+def per_ppp_facts(directory):
+    """The per-PPP facts of a finished experiment's set: mean optimal turns, PPPs never passed, explorer minimum."""
+    rates = {}
+    with open(os.path.join(directory, 'summary.csv')) as summary:
+        for row in csv.DictReader(summary):
+            if row['level'] == 'problem':
+                rates.setdefault(row['agent'], []).append(100 * float(row['pass_rate']))
+    never = lambda *agents: sum(1 for values in zip(*(rates[a] for a in agents)) if max(values) == 0)
+    with open(os.path.join(directory, 'sets', 'turns', 'set.csv')) as characters:
+        turns = [float(row['turns']) for row in csv.DictReader(characters)]
+    return {'turns': sum(turns) / len(turns), 'bumpers_zero': never('bumper', 'decision_bumper'),
+            'left_zero': never('wall_follower_left'), 'right_zero': never('wall_follower_right'),
+            'walls_zero': never('wall_follower_left', 'wall_follower_right'), 'explorer_min': min(rates['explorer'])}
+
+
 def play(candidate, seeds, runs, work):
-    """Mean pass rates (%) of a candidate over the seeds."""
+    """Mean pass rates (%) and per-PPP facts of a candidate over the seeds."""
     total = {}
+    facts = {}
     for seed in seeds:
         name = '_'.join('%s' % candidate[k] for k in sorted(candidate)).replace(',', '-') + '_s%d' % seed
         directory = os.path.join(work, name)
@@ -97,7 +119,9 @@ def play(candidate, seeds, runs, work):
             sys.exit('calibrate: ppp experiment failed on %s.yaml: %s' % (directory, done.stderr.strip()[-500:]))
         for agent, rate in set_pass_rates(directory).items():
             total[agent] = total.get(agent, 0.0) + rate / len(seeds)
-    return total
+        for fact, value in per_ppp_facts(directory).items():
+            facts[fact] = facts.get(fact, 0.0) + value / len(seeds)
+    return total, facts
 
 
 def main():
@@ -120,26 +144,27 @@ def main():
     ranked = []
     with open(os.path.join(args.work, 'calibration.csv'), 'w', newline='') as out:
         writer = csv.writer(out)
-        writer.writerow(keys + ['worst_gap', 'rms_gap', 'random'] + list(TABLE_5_1))
+        writer.writerow(keys + ['worst_gap', 'rms_gap', 'random'] + list(TABLE_5_1) + FACTS)
         for values in itertools.product(*(space[k] for k in keys)):
             candidate = dict(zip(keys, values))
-            rates = play(candidate, seeds, args.runs, args.work)
+            rates, facts = play(candidate, seeds, args.runs, args.work)
             gaps = [rates[a] - TABLE_5_1[a] for a in TABLE_5_1]
             worst = max(abs(g) for g in gaps)
             rms = (sum(g * g for g in gaps) / len(gaps)) ** 0.5
             writer.writerow(list(values) + ['%.2f' % worst, '%.2f' % rms, '%.2f' % rates['random']] +
-                            ['%.2f' % rates[a] for a in TABLE_5_1])
+                            ['%.2f' % rates[a] for a in TABLE_5_1] + ['%.2f' % facts[f] for f in FACTS])
             out.flush()
-            ranked.append((worst, rms, candidate, rates))
+            ranked.append((worst, rms, candidate, rates, facts))
             print('worst %5.1f rms %5.1f  %s' % (worst, rms, ' '.join('%s=%s' % kv for kv in candidate.items())),
                   flush=True)
     ranked.sort(key=lambda r: (r[0], r[1]))
     print('\nBest candidates (mean over seeds %s, %d runs per PPP; gaps in points against Table 5.1):' %
           (args.seeds, args.runs))
-    for worst, rms, candidate, rates in ranked[:5]:
+    for worst, rms, candidate, rates, facts in ranked[:5]:
         print('  worst %.1f, rms %.1f: %s' % (worst, rms, ', '.join('%s: %s' % kv for kv in candidate.items())))
         print('    ' + ', '.join('%s %.1f (%+.1f)' % (a, rates[a], rates[a] - TABLE_5_1[a]) for a in TABLE_5_1) +
               ', random %.2f' % rates['random'])
+        print('    facts: ' + ', '.join('%s %.1f' % (f, facts[f]) for f in FACTS))
     return 0
 
 
