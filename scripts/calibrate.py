@@ -60,6 +60,7 @@ MAP_OPTIONS = {
 AGENT_OPTIONS = {
     'memory_model': ['window', 'scans'],   # explorer_memory_5x5 only: what its 5x5 limits
     'wall_start': ['goal', 'random'],      # wall followers only
+    'explorer_idle': ['random', 'least_visited'],  # explorer and long_term_explorer
 }
 
 
@@ -72,6 +73,8 @@ def experiment_yaml(candidate, seed, runs):
             entry['memory_model'] = candidate['memory_model']
         if agent_type.startswith('wall_follower'):
             entry['wall_start'] = candidate['wall_start']
+        if agent_type in ('explorer', 'long_term_explorer'):
+            entry['explorer_idle'] = candidate['explorer_idle']
         lines.append('  - ' + json.dumps(entry))
     generator = dict(fitness='turns', matings=10000, seed=seed, replacement='tournament')
     generator.update({k: candidate[k] for k in MAP_OPTIONS})

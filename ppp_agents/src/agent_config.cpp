@@ -41,6 +41,8 @@ std::string behaviourProblem(const AgentConfig& config) {
   }
   const bool wall_follower = config.type == "wall_follower_left" || config.type == "wall_follower_right";
   if (config.wall_start != kWallStartGoal && !wall_follower) return "wall_start: only wall followers take it";
+  const bool explorer = config.type == "explorer" || config.type == "long_term_explorer";
+  if (config.explorer_idle != kExplorerIdleRandom && !explorer) return "explorer_idle: only explorers take it";
   return "";
 }
 
@@ -180,6 +182,11 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
                       +[](A& a) -> std::string& { return a.wall_start; })
             .withChoices("wall start", {{kWallStartGoal, "head for the goal"},
                                         {kWallStartRandom, "go straight on in a heading drawn at random"}}),
+        declareOption("explorer_idle", "explorers: where they move when no neighbour would reveal anything",
+                      +[](A& a) -> std::string& { return a.explorer_idle; })
+            .withChoices("explorer idle",
+                         {{kExplorerIdleRandom, "to a random free neighbour"},
+                          {kExplorerIdleLeastVisited, "to the free neighbour stood on least often, ties at random"}}),
         declareOption("runs", "runs per PPP for this agent (0: the experiment's runs)",
                       +[](A& a) -> int& { return a.runs; }, Bounds{0, kMaxRuns}),
         declareOption("prior_map", "planner agents: the planner is given the true map instead of the memory",
@@ -214,14 +221,15 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
 const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs() {
   static const std::vector<OptionSpec<AgentConfig>> specs =
       selectOptions(agentOptionSpecs(),
-                    {"type", "name", "memory", "sensor_noise", "goal_seeking", "memory_model", "wall_start"});
+                    {"type", "name", "memory", "sensor_noise", "goal_seeking", "memory_model", "wall_start",
+                     "explorer_idle"});
   return specs;
 }
 
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs() {
   static const std::vector<OptionSpec<AgentConfig>> specs =
       selectOptions(agentOptionSpecs(), {"type", "memory", "sensor_noise", "goal_seeking", "memory_model",
-                                         "wall_start"});
+                                         "wall_start", "explorer_idle"});
   return specs;
 }
 

@@ -90,6 +90,7 @@ AgentBehaviour agentBehaviour(const AgentConfig& config) {
   behaviour.memory_scans = scans ? config.memory_window * config.memory_window : 0;
   behaviour.seek_goal = seeksGoal(config);
   behaviour.random_wall_start = config.wall_start == kWallStartRandom;
+  behaviour.idle_least_visited = config.explorer_idle == kExplorerIdleLeastVisited;
   return behaviour;
 }
 

@@ -1,5 +1,6 @@
 #include "ppp_agents/explorer_agent.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdlib>
 
@@ -16,6 +17,10 @@ void ExplorerAgent::reset(const EpisodeInfo& info) {
   navigator_.reset(info.width, info.height);
   rng_ = Rng(info.seed);
   goal_seen_ = false;
+  width_ = info.width;
+  if (behaviour_.idle_least_visited) {
+    visits_.assign(static_cast<std::size_t>(info.width) * static_cast<std::size_t>(info.height), 0);
+  }
   path_.clear();
   path_next_ = 0;
 }
@@ -61,6 +66,10 @@ bool ExplorerAgent::frontierStep(Cell position, Action* action) {
 Action ExplorerAgent::act(const Scan& scan) {
   const Cell position = scan.position();
   memory_.update(scan);
+  if (behaviour_.idle_least_visited) {
+    std::uint16_t& visits = visits_[static_cast<std::size_t>(position.y) * width_ + position.x];
+    if (visits < UINT16_MAX) ++visits;
+  }
   Action action;
   if (behaviour_.seek_goal && navigator_.towardsSeenGoal(scan, memory_, &goal_seen_, &action)) return action;
   range_ = scan.range();
@@ -88,6 +97,20 @@ Action ExplorerAgent::act(const Scan& scan) {
     return best[best_count == 1 ? 0 : rng_.below(static_cast<std::uint64_t>(best_count))];
   }
   if (long_term_ && frontierStep(position, &action)) return action;
+  if (behaviour_.idle_least_visited && free_count > 1) {
+    // Keep only the free neighbours stood on least often.
+    const auto visits = [&](Action move) {
+      const Cell c = target(position, move);
+      return visits_[static_cast<std::size_t>(c.y) * width_ + c.x];
+    };
+    std::uint16_t fewest = UINT16_MAX;
+    for (int i = 0; i < free_count; ++i) fewest = std::min(fewest, visits(free[i]));
+    int kept = 0;
+    for (int i = 0; i < free_count; ++i) {
+      if (visits(free[i]) == fewest) free[kept++] = free[i];
+    }
+    free_count = kept;
+  }
   if (free_count > 0) return free[free_count == 1 ? 0 : rng_.below(static_cast<std::uint64_t>(free_count))];
   return kMoves[rng_.below(4)];
 }

@@ -225,6 +225,39 @@ TEST(AgentBehaviourTest, ARandomWallStartDrawsTheFirstHeadingFromTheSeed) {
   }
 }
 
+TEST(AgentBehaviourTest, AnIdleExplorerGoesWhereItStoodLeastOften) {
+  // An open 5x2 map that a scan from x = 2 shows whole, goal seeking off: from then on nothing is new, so every move
+  // is idle. Fed scans on row 0 at x = 1, 2, 1, 2 (two visits each), at (2, 0) the least-visited explorer goes
+  // to one of the free neighbours never stood on, East or South, never West; the random one goes all three ways.
+  const test::World w = test::world({"..S.G", "....."});
+  const SensorModel sensor(SensorOptions{2, 0.0});
+  for (const std::string& idle : {kExplorerIdleLeastVisited, kExplorerIdleRandom}) {
+    AgentConfig config = test::config("explorer");
+    config.goal_seeking = kGoalSeekingOff;
+    config.explorer_idle = idle;
+    auto agent = makeAgent(config);
+    std::set<Action> chosen;
+    for (std::uint64_t seed = 0; seed < 40; ++seed) {
+      EpisodeInfo start;
+      start.width = 5;
+      start.height = 2;
+      start.start = w.start;
+      start.goal = w.goal;
+      start.seed = seed;
+      agent->reset(start);
+      Action last = Action::Stay;
+      int step = 0;
+      for (const int x : {1, 2, 1, 2}) last = agent->act(Scan(sensor, w.grid, Cell{x, 0}, w.goal, false, step++, 0));
+      chosen.insert(last);
+    }
+    if (idle == std::string(kExplorerIdleLeastVisited)) {
+      EXPECT_EQ(chosen, (std::set<Action>{Action::East, Action::South}));
+    } else {
+      EXPECT_EQ(chosen, (std::set<Action>{Action::East, Action::South, Action::West}));
+    }
+  }
+}
+
 TEST(AgentBehaviourTest, AGoalSeekingRandomAgentWalksStraightToAGoalInView) {
   // On an empty 5x5 map from (2,2) the goal (4,4) is in the window at once: four moves, whatever the seed.
   AgentConfig random = test::config("random");

@@ -145,9 +145,9 @@ TEST(AgentConfigTest, ReadsConfigurationsWithDefaults) {
 
 TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, colour: red}\n"),
-            "agents.yaml:2: agents[0].colour: unknown key; valid keys: cells_per_ppp_cell, goal_seeking, host, "
-            "instances, lockstep, memory, memory_model, name, plan_timeout, planner_args, planner_node, prior_map, "
-            "runs, sensor_noise, type, wall_start");
+            "agents.yaml:2: agents[0].colour: unknown key; valid keys: cells_per_ppp_cell, explorer_idle, "
+            "goal_seeking, host, instances, lockstep, memory, memory_model, name, plan_timeout, planner_args, "
+            "planner_node, prior_map, runs, sensor_noise, type, wall_start");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),
             std::string("agents.yaml:3: agents[1].type: missing; valid: ") + kTypes);
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - name: x\n    type: robot\n"),
@@ -206,6 +206,12 @@ TEST(AgentConfigTest, BehaviourOptionsMapToTheAgentsBehaviourAndOnlyWhereTheyApp
             "does not apply");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, wall_start: random}\n"),
             "agents.yaml:2: agents[0].wall_start: only wall followers take it");
+  EXPECT_EQ(parseError("agents:\n  - {type: bumper, explorer_idle: least_visited}\n"),
+            "agents.yaml:2: agents[0].explorer_idle: only explorers take it");
+  AgentConfig explorer_idle = config("long_term_explorer");
+  EXPECT_FALSE(agentBehaviour(explorer_idle).idle_least_visited);
+  explorer_idle.explorer_idle = kExplorerIdleLeastVisited;
+  EXPECT_TRUE(agentBehaviour(explorer_idle).idle_least_visited);
   EXPECT_EQ(parseError("agents:\n  - {type: planner, memory_model: scans}\n"),
             "agents.yaml:2: agents[0].memory_model: a planner agent's memory is a window (the bridge's)");
   AgentConfig scans = config("explorer", 5);

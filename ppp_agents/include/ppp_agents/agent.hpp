@@ -29,6 +29,7 @@ struct AgentBehaviour {
   int memory_scans = 0;   ///< Limited memory: only what the last n scans saw is kept; 0 = every scan's.
   bool seek_goal = true;  ///< Once it has seen the goal it takes a shortest path to it on its memory.
   bool random_wall_start = false;  ///< Wall followers: first straight on in a random heading, not towards the goal.
+  bool idle_least_visited = false; ///< Explorers: with nothing new in reach, to the least visited free neighbour.
 };
 
 /// A test agent: each step it gets a scan (its cell, the goal, a bump flag and the window of cells) and returns

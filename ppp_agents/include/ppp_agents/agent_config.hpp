@@ -33,6 +33,11 @@ constexpr const char* kWallStartGoal = "goal";
 /// wall_start: before touching a wall, go straight on in a heading drawn at random.
 constexpr const char* kWallStartRandom = "random";
 
+/// explorer_idle: with nothing new in reach, the explorer moves to a random free neighbour.
+constexpr const char* kExplorerIdleRandom = "random";
+/// explorer_idle: with nothing new in reach, the explorer moves to the free neighbour it stood on least often.
+constexpr const char* kExplorerIdleLeastVisited = "least_visited";
+
 /// One agent configuration of an experiment: a type plus handicaps, under a name of its own.
 struct AgentConfig {
   std::string name;            ///< Name in results and reports (e.g. "explorer_memory_5x5"); defaults to type.
@@ -42,6 +47,7 @@ struct AgentConfig {
   std::string goal_seeking = kGoalSeekingByType;  ///< kGoalSeekingByType, kGoalSeekingOn or kGoalSeekingOff.
   std::string memory_model = kMemoryModelWindow;  ///< What memory KxK limits: kMemoryModelWindow or kMemoryModelScans.
   std::string wall_start = kWallStartGoal;        ///< Wall followers: kWallStartGoal or kWallStartRandom.
+  std::string explorer_idle = kExplorerIdleRandom;  ///< Explorers: kExplorerIdleRandom or kExplorerIdleLeastVisited.
   int runs = 0;                ///< Runs per PPP for this agent; 0 = the experiment's `runs`.
   bool prior_map = false;      ///< Planner agents only: the planner is given the true map instead of the memory.
   std::string planner_node;    ///< Planner agents only: "package/executable" of the planner to start ("" = the user's).
@@ -50,7 +56,7 @@ struct AgentConfig {
   int instances = 0;           ///< Planner agents only: bridge and planner pairs sharing its runs; 0 = instanceCount's.
   std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
   /// @throws InvalidArgument naming "type" (listing the valid ones), "name", "memory", "sensor_noise",
-  /// "goal_seeking", "memory_model", "wall_start", "runs",
+  /// "goal_seeking", "memory_model", "wall_start", "explorer_idle", "runs",
   /// "prior_map", "planner_node", "planner_args", "plan_timeout", "cells_per_ppp_cell", "instances" or "host"
   /// (other agents have no planner: their bridge options are unused).
   void validate() const;
@@ -64,7 +70,7 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs();
 const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs();
 
 /// The agent options that decide how one run plays (type, memory, sensor_noise, goal_seeking, memory_model,
-/// wall_start): the flags of `ppp simulate` and
+/// wall_start, explorer_idle): the flags of `ppp simulate` and
 /// `ppp replay`, and of the replay commands a report gives.
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs();
 

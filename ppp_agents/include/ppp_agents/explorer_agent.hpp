@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "ppp_agents/agent.hpp"
@@ -14,8 +15,8 @@ namespace agents {
 /// (free in memory) whose sensor window holds the most unknown cells that could be seen from it (cells behind
 /// a remembered obstacle do not count: they stay hidden, and counting them would make the agent shuttle
 /// between two cells forever), ties broken at random.
-/// - explorer: when no neighbour would reveal anything it moves to a random free neighbour; fault: it wanders
-///   in explored areas.
+/// - explorer: when no neighbour would reveal anything it moves to a random free neighbour (with `explorer_idle:
+///   least_visited`, to one it has stood on least often, ties at random); fault: it wanders in explored areas.
 /// - long_term_explorer: then it follows a shortest path on its memory (known-free cells) to the nearest
 ///   frontier (a known-free cell with an unknown 4-neighbour), re-planning when a cell of the path turns out
 ///   blocked or the frontier is gone; fault: it may travel far for single unknown cells.
@@ -44,6 +45,8 @@ class ExplorerAgent final : public Agent {
   Navigator navigator_;
   Rng rng_{0};
   bool goal_seen_ = false;
+  int width_ = 0;
+  std::vector<std::uint16_t> visits_;  // with idle_least_visited: per cell, the steps the agent stood on it
   int range_ = 0;  // of the last scan; 0 before the first
   std::vector<Cell> path_;    // long_term: cells still to visit, the frontier last
   std::size_t path_next_ = 0;
