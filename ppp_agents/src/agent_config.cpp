@@ -34,16 +34,22 @@ std::string goalSeekingProblem(const AgentConfig& config) {
   return "";
 }
 
-/// What is wrong with the memory model and wall start asked for, or "" when nothing is (as "name: problem").
-std::string behaviourProblem(const AgentConfig& config) {
-  if (config.memory_model != kMemoryModelWindow && config.type == kPlannerType) {
-    return "memory_model: a planner agent's memory is a window (the bridge's)";
-  }
+/// What is wrong with the memory model asked for, or "" when nothing is.
+std::string memoryModelProblem(const AgentConfig& config) {
+  if (config.memory_model == kMemoryModelWindow || config.type != kPlannerType) return "";
+  return "a planner agent's memory is a window (the bridge's)";
+}
+
+/// What is wrong with the wall start asked for, or "" when nothing is.
+std::string wallStartProblem(const AgentConfig& config) {
   const bool wall_follower = config.type == "wall_follower_left" || config.type == "wall_follower_right";
-  if (config.wall_start != kWallStartGoal && !wall_follower) return "wall_start: only wall followers take it";
+  return config.wall_start == kWallStartGoal || wall_follower ? "" : "only wall followers take it";
+}
+
+/// What is wrong with the explorers' idle rule asked for, or "" when nothing is.
+std::string explorerIdleProblem(const AgentConfig& config) {
   const bool explorer = config.type == "explorer" || config.type == "long_term_explorer";
-  if (config.explorer_idle != kExplorerIdleRandom && !explorer) return "explorer_idle: only explorers take it";
-  return "";
+  return config.explorer_idle == kExplorerIdleRandom || explorer ? "" : "only explorers take it";
 }
 
 /// What is wrong with the instances asked for, or "" when nothing is.
@@ -142,11 +148,9 @@ void AgentConfig::validate() const {
                                         "] (5 for 5x5) or 0 for full memory, got " + std::to_string(memory_window));
   }
   if (!goalSeekingProblem(*this).empty()) throw InvalidArgument("goal_seeking", goalSeekingProblem(*this));
-  const std::string behaviour = behaviourProblem(*this);
-  if (!behaviour.empty()) {
-    const std::size_t colon = behaviour.find(": ");
-    throw InvalidArgument(behaviour.substr(0, colon), behaviour.substr(colon + 2));
-  }
+  if (!memoryModelProblem(*this).empty()) throw InvalidArgument("memory_model", memoryModelProblem(*this));
+  if (!wallStartProblem(*this).empty()) throw InvalidArgument("wall_start", wallStartProblem(*this));
+  if (!explorerIdleProblem(*this).empty()) throw InvalidArgument("explorer_idle", explorerIdleProblem(*this));
   if (!priorMapProblem(*this).empty()) throw InvalidArgument("prior_map", priorMapProblem(*this));
   if (!plannerNodeProblem(*this).empty()) throw InvalidArgument("planner_node", plannerNodeProblem(*this));
   if (!plannerArgsProblem(*this).empty()) throw InvalidArgument("planner_args", plannerArgsProblem(*this));
