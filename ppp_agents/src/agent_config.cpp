@@ -29,7 +29,9 @@ std::string priorMapProblem(const AgentConfig& config) {
 /// What is wrong with the goal seeking asked for, or "" when nothing is.
 std::string goalSeekingProblem(const AgentConfig& config) {
   if (config.goal_seeking == kGoalSeekingByType) return "";
-  if (config.type == "astar") return "astar plans its route to the goal from the start; goal seeking does not apply";
+  if (agentType(config.type).has(AgentTrait::NeedsPriorMap)) {
+    return config.type + " plans its route to the goal from the start; goal seeking does not apply";
+  }
   if (config.type == kPlannerType) return "a planner agent's planner is given the goal; goal seeking does not apply";
   return "";
 }
@@ -42,13 +44,13 @@ std::string memoryModelProblem(const AgentConfig& config) {
 
 /// What is wrong with the wall start asked for, or "" when nothing is.
 std::string wallStartProblem(const AgentConfig& config) {
-  const bool wall_follower = config.type == "wall_follower_left" || config.type == "wall_follower_right";
+  const bool wall_follower = agentType(config.type).has(AgentTrait::FollowsWalls);
   return config.wall_start == kWallStartGoal || wall_follower ? "" : "only wall followers take it";
 }
 
 /// What is wrong with the explorers' idle rule asked for, or "" when nothing is.
 std::string explorerIdleProblem(const AgentConfig& config) {
-  const bool explorer = config.type == "explorer" || config.type == "long_term_explorer";
+  const bool explorer = agentType(config.type).has(AgentTrait::Explores);
   return config.explorer_idle == kExplorerIdleRandom || explorer ? "" : "only explorers take it";
 }
 

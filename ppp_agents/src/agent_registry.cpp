@@ -22,20 +22,20 @@ const std::vector<AgentType>& agentRegistry() {
        AgentTrait::Baseline,
        [](const AgentBehaviour& b) -> std::unique_ptr<Agent> { return std::make_unique<RandomAgent>(b); }},
       {"wall_follower_left", "heads for the goal, then keeps the first wall met on its left",
-       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal,
+       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal | AgentTrait::FollowsWalls,
        [](const AgentBehaviour& b) -> std::unique_ptr<Agent> {
          return std::make_unique<WallFollowerAgent>(WallFollowerAgent::Side::Left, b);
        }},
       {"wall_follower_right", "heads for the goal, then keeps the first wall met on its right",
-       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal,
+       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal | AgentTrait::FollowsWalls,
        [](const AgentBehaviour& b) -> std::unique_ptr<Agent> {
          return std::make_unique<WallFollowerAgent>(WallFollowerAgent::Side::Right, b);
        }},
       {"explorer", "moves to the neighbour revealing most unknown cells",
-       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal,
+       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal | AgentTrait::Explores,
        [](const AgentBehaviour& b) -> std::unique_ptr<Agent> { return std::make_unique<ExplorerAgent>(false, b); }},
       {"long_term_explorer", "the explorer, walking to the nearest frontier when nothing is new nearby",
-       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal,
+       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal | AgentTrait::Explores,
        [](const AgentBehaviour& b) -> std::unique_ptr<Agent> { return std::make_unique<ExplorerAgent>(true, b); }},
       {"bumper", "straight until a bump, then a random new direction",
        AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal,

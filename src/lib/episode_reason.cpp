@@ -21,8 +21,8 @@ const char* reason::agentReportedReason(const std::string& text) {
 }
 
 const char* reason::reasonNamed(const std::string& text) {
-  return reasonAmong(text, {kGoalReached, kBudgetExhausted, kActionLimit, kTimeout, kAgentLost, kInvalidAction, kNoPath,
-                            kInvalidPath, kPlannerTimeout, kPlannerLost, kCollision});
+  return reasonAmong(text, {kGoalReached, kBudgetExhausted, kActionLimit, kTimeout, kAgentLost, kInvalidAction,
+                            kNoPath, kInvalidPath, kPlannerTimeout, kPlannerLost, kCollision});
 }
 
 }  // namespace ppp
