@@ -74,6 +74,7 @@ void PlannerBridge::start(const ppp_msgs::EpisodeStart& s) {
                    parameters_.resolution);
     link_.newEpisode();
     following_.clear();
+    previous_ = Cell{-1, -1};
     active_ = true;
   } catch (const InvalidArgument& e) {
     warnOnce(e.name(), "rejected the start of episode " + std::to_string(s.episode) + ": " + e.what());
@@ -90,11 +91,12 @@ PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch)
   const Cell robot = protocol::toCell(batch.positions[0]);
   const int range = batch.range;
   std::array<std::int8_t, kMaxScanCells> cells;  // the window, which the planner's LaserScan shows too
+  bool map_changed = false;
   try {
     protocol::requireOnGrid(robot, episode_.frame().width, episode_.frame().height, "position");
     unpackWindow(batch.free_cells.data(), batch.obstacle_cells.data(), range, cells.data());
-    episode_.observe(Scan(range, cells.data(), protocol::windowCells(range), robot, episode_.goal(),
-                          batch.bumped[0] != 0, static_cast<int>(batch.steps[0])));
+    map_changed = episode_.observe(Scan(range, cells.data(), protocol::windowCells(range), robot, episode_.goal(),
+                                        batch.bumped[0] != 0, static_cast<int>(batch.steps[0])));
   } catch (const InvalidArgument& e) {
     warnOnce(e.name(), std::string("rejected a scan: ") + e.what());
     active_ = false;
@@ -108,6 +110,17 @@ PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch)
     return StepOutcome{0, reason};
   };
   const ros::Time stamp = ros::Time::now();
+  const bool moved = robot != previous_;
+  previous_ = robot;
+  if (parameters_.lockstep && !asksEveryStep(parameters_) && moved && !(map_changed && asksOnChange(parameters_))) {
+    // The robot moved on along the plan, and the map did not change (or changes are not asked about): it goes on
+    // without a request (docs/planner-interface.md, "plan_requests").
+    if (const std::optional<Action> along = episode_.next(robot)) {
+      link_.publishPose(stamp, episode_, robot, cells.data(), range);
+      if (link_.gone()) return fail(reason::kPlannerLost, "the planner's process is gone");
+      return StepOutcome{static_cast<std::uint8_t>(*along), nullptr};
+    }
+  }
   link_.publishState(stamp, episode_, robot, cells.data(), range);
   if (link_.gone()) return fail(reason::kPlannerLost, "the planner's process is gone");
 
@@ -120,7 +133,7 @@ PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch)
     if (unasked && pathPoints(*unasked, parameters_.map_frame, &points).empty()) episode_.offer(points, robot);
     action = episode_.next(robot);
   }
-  // Lockstep: every step is a request, and only the answer to this step's state moves the robot (a re-plan on
+  // Lockstep: this step is a request, and only the answer to this step's state moves the robot (a re-plan on
   // this step's map that arrived already is that answer).
   if (!action) {
     link_.publishGoal(stamp, episode_);

@@ -176,7 +176,12 @@ void PlannerLink::publishState(const ros::Time& stamp, const PlannerEpisode& epi
   map.header.stamp = stamp;
   map.info.map_load_time = stamp;
   map_.publish(map);
+  publishPose(stamp, episode, robot, window, range);
+}
 
+void PlannerLink::publishPose(const ros::Time& stamp, const PlannerEpisode& episode, Cell robot,
+                              const std::int8_t* window, int range) {
+  const MapFrame& frame = episode.frame();
   geometry_msgs::TransformStamped transform =
       ppp_msgs::cellTransform(frame, robot, parameters_.map_frame, parameters_.base_frame);
   transform.header.stamp = stamp;

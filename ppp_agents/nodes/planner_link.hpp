@@ -30,9 +30,12 @@ class PlannerLink {
   void waitForPlanner();
   /// The planner-side topic names, for the log.
   std::string topics() const;
-  /// Publishes the robot's world at `stamp`: the episode's known map, the robot's pose (tf and odom) and scan.
+  /// Publishes the robot's world at `stamp`: the episode's known map, then publishPose's messages.
   void publishState(const ros::Time& stamp, const PlannerEpisode& episode, Cell robot, const std::int8_t* window,
                     int range);
+  /// Publishes the robot's pose at `stamp` (tf and odom) and its scan.
+  void publishPose(const ros::Time& stamp, const PlannerEpisode& episode, Cell robot, const std::int8_t* window,
+                   int range);
   /// Publishes a plan request: the episode's goal, stamped `stamp`.
   void publishGoal(const ros::Time& stamp, const PlannerEpisode& episode);
   /// A new episode: paths sent so far answer an earlier one, and the planner has not answered in this one.

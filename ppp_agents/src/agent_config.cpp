@@ -157,6 +157,12 @@ void AgentConfig::validate() const {
   if (!plannerNodeProblem(*this).empty()) throw InvalidArgument("planner_node", plannerNodeProblem(*this));
   if (!plannerArgsProblem(*this).empty()) throw InvalidArgument("planner_args", plannerArgsProblem(*this));
   if (!instancesProblem(*this).empty()) throw InvalidArgument("instances", instancesProblem(*this));
+  if (type != kPlannerType && !asksEveryStep(bridge)) {
+    throw InvalidArgument("plan_requests", "only planner agents ask a planner for plans");
+  }
+  if (!planRequestsProblem(bridge).empty()) {
+    throw InvalidArgument("plan_requests", planRequestsProblem(bridge));
+  }
   if (!hostProblem(host).empty()) throw InvalidArgument("host", hostProblem(host));
 }
 
@@ -213,8 +219,9 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
                       +[](A& a) -> std::string& { return a.host; })
             .notAffectingResults(),
     };
-    for (OptionSpec<A>& spec : nestedOptions(selectOptions(bridgeOptionSpecs(), {"plan_timeout", "lockstep", "cells_per_ppp_cell"}),
-                                             +[](A& a) -> BridgeOptions& { return a.bridge; })) {
+    const std::vector<OptionSpec<BridgeOptions>> per_agent =
+        selectOptions(bridgeOptionSpecs(), {"plan_timeout", "lockstep", "plan_requests", "cells_per_ppp_cell"});
+    for (OptionSpec<A>& spec : nestedOptions(per_agent, +[](A& a) -> BridgeOptions& { return a.bridge; })) {
       spec.doc = "planner agents: " + spec.doc;
       list.insert(list.end() - 1, spec);
     }

@@ -11,8 +11,15 @@ namespace agents {
 
 void BridgeOptions::validate() const {
   checkOptionRanges(bridgeOptionSpecs(), *this);
+  if (!planRequestsProblem(*this).empty()) throw InvalidArgument("plan_requests", planRequestsProblem(*this));
   if (map_frame.empty()) throw InvalidArgument("map_frame", "expected a non-empty frame name");
   if (base_frame.empty()) throw InvalidArgument("base_frame", "expected a non-empty frame name");
+}
+
+std::string planRequestsProblem(const BridgeOptions& options) {
+  if (options.lockstep || asksEveryStep(options)) return "";
+  return "a free-running bridge (lockstep: false) asks only when the robot's path is blocked; " +
+         options.plan_requests + " needs lockstep: true";
 }
 
 const std::vector<OptionSpec<BridgeOptions>>& bridgeOptionSpecs() {
@@ -31,9 +38,19 @@ const std::vector<OptionSpec<BridgeOptions>>& bridgeOptionSpecs() {
       declareOption("plan_timeout", "seconds the planner has to answer a plan request",
                     +[](B& b) -> double& { return b.plan_timeout; }, Bounds{1e-3, 86400}),
       declareOption("lockstep",
-                    "send a plan request every step and move only on the answer to it, so a run does not depend on "
-                    "timing (false: free-running, the robot follows the newest path; not reproducible)",
+                    "move only on the planner's answer to a plan request, so a run does not depend on timing "
+                    "(false: free-running, the robot follows the newest path; not reproducible)",
                     +[](B& b) -> bool& { return b.lockstep; }),
+      declareOption("plan_requests", "in lockstep, the steps at which the bridge asks the planner for a plan",
+                    +[](B& b) -> std::string& { return b.plan_requests; })
+          .withChoices("plan request rule",
+                       {{kPlanRequestsEveryStep, "every step"},
+                        {kPlanRequestsOnChange,
+                         "when the robot's map changed, the robot did not move or its path gives it no move; "
+                         "otherwise it moves on along the plan"},
+                        {kPlanRequestsOnBlocked,
+                         "only when the robot did not move or its path gives it no move (blocked by a known "
+                         "obstacle, or the robot off it), as a navigation stack re-plans when its path is blocked"}}),
       declareOption("connect_timeout", "seconds to wait at start-up for the planner's topics",
                     +[](B& b) -> double& { return b.connect_timeout; }, Bounds{1e-3, 86400})
           .notAffectingResults(),

@@ -21,12 +21,19 @@ void PlannerEpisode::start(const EpisodeInfo& info, const Grid* prior, int memor
   follower_.setConnectivity(info.connectivity);
 }
 
-void PlannerEpisode::observe(const Scan& scan) {
-  if (has_prior_) return;
+bool PlannerEpisode::observe(const Scan& scan) {
+  if (has_prior_) return false;
   memory_.update(scan);
+  bool changed = false;
   for (int y = 0; y < frame_.height; ++y) {
-    for (int x = 0; x < frame_.width; ++x) known_.cells[y * frame_.width + x] = memory_.at(Cell{x, y});
+    for (int x = 0; x < frame_.width; ++x) {
+      std::int8_t& known = known_.cells[y * frame_.width + x];
+      const std::int8_t now = memory_.at(Cell{x, y});
+      changed = changed || known != now;
+      known = now;
+    }
   }
+  return changed;
 }
 
 void PlannerEpisode::offer(const std::vector<MapPoint>& points, Cell robot) {

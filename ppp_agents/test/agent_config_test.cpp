@@ -146,8 +146,8 @@ TEST(AgentConfigTest, ReadsConfigurationsWithDefaults) {
 TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, colour: red}\n"),
             "agents.yaml:2: agents[0].colour: unknown key; valid keys: cells_per_ppp_cell, explorer_idle, "
-            "goal_seeking, host, instances, lockstep, memory, memory_model, name, plan_timeout, planner_args, "
-            "planner_node, prior_map, runs, sensor_noise, type, wall_start");
+            "goal_seeking, host, instances, lockstep, memory, memory_model, name, plan_requests, plan_timeout, "
+            "planner_args, planner_node, prior_map, runs, sensor_noise, type, wall_start");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),
             std::string("agents.yaml:3: agents[1].type: missing; valid: ") + kTypes);
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - name: x\n    type: robot\n"),
@@ -297,6 +297,33 @@ TEST(AgentConfigTest, APlannerRunsAsInstancesEachInANamespaceOfItsOwn) {
   EXPECT_EQ(parseError("agents:\n  - {type: astar, instances: 2}\n"),
             "agents.yaml:2: agents[0].instances: only planner agents run as several instances (the other agents' nodes "
             "play batches of runs)");
+}
+
+TEST(AgentConfigTest, APlannerIsAskedEveryStepUnlessTheAgentSaysOtherwise) {
+  const auto configs = read(
+      "agents:\n"
+      "  - {name: default, type: planner}\n"
+      "  - {name: change, type: planner, plan_requests: on_change}\n"
+      "  - {name: blocked, type: planner, plan_requests: on_blocked}\n"
+      "  - {name: free, type: planner, lockstep: false}\n");
+  EXPECT_EQ(configs[0].bridge.plan_requests, "every_step");
+  EXPECT_TRUE(asksEveryStep(configs[0].bridge));
+  EXPECT_FALSE(asksEveryStep(configs[1].bridge));
+  EXPECT_TRUE(asksOnChange(configs[1].bridge));
+  EXPECT_FALSE(asksEveryStep(configs[2].bridge));
+  EXPECT_FALSE(asksOnChange(configs[2].bridge));
+  EXPECT_FALSE(configs[3].bridge.lockstep);
+  EXPECT_EQ(parseError("agents:\n  - {type: planner, plan_requests: sometimes}\n"),
+            "agents.yaml:2: agents[0].plan_requests: unknown plan request rule 'sometimes'; valid: every_step, "
+            "on_change, on_blocked");
+  for (const char* rule : {"on_change", "on_blocked"}) {
+    EXPECT_EQ(parseError(std::string("agents:\n  - {type: planner, lockstep: false, plan_requests: ") + rule + "}\n"),
+              std::string("agents.yaml:2: agents[0].plan_requests: a free-running bridge (lockstep: false) asks "
+                          "only when the robot's path is blocked; ") +
+                  rule + " needs lockstep: true");
+  }
+  EXPECT_EQ(parseError("agents:\n  - {type: explorer, plan_requests: on_change}\n"),
+            "agents.yaml:2: agents[0].plan_requests: only planner agents ask a planner for plans");
 }
 
 TEST(AgentConfigTest, LoadRejectsUnknownTopLevelKeysAndMissingFiles) {

@@ -76,6 +76,23 @@ TEST(PlannerEpisodeTest, WithoutItTheRobotLearnsFromScansAndReplansWhenAWallAppe
   EXPECT_FALSE(episode.next(Cell{0, 0}));
 }
 
+TEST(PlannerEpisodeTest, ObserveSaysWhetherWhatTheRobotKnowsChanged) {
+  PlannerEpisode episode;
+  episode.start(info(), nullptr, 0, 1.0);
+  EXPECT_TRUE(episode.observe(scanAt(Cell{0, 0})));   // the first scan: (0,0), (1,0), (0,1), (1,1) become known
+  EXPECT_FALSE(episode.observe(scanAt(Cell{0, 0})));  // the same scan again
+  EXPECT_TRUE(episode.observe(scanAt(Cell{0, 1})));   // one row down: row 2 appears
+  EXPECT_FALSE(episode.observe(scanAt(Cell{0, 0})));  // back up: (0,0)'s window is all known already
+  // A 1x1 memory forgets the cells it leaves: the same move changes the map every time.
+  episode.start(info(), nullptr, 1, 1.0);
+  EXPECT_TRUE(episode.observe(scanAt(Cell{0, 0})));
+  EXPECT_TRUE(episode.observe(scanAt(Cell{0, 1})));
+  EXPECT_TRUE(episode.observe(scanAt(Cell{0, 0})));
+  // Given the true map, the robot has nothing to learn.
+  episode.start(info(), &kWorld.grid, 0, 1.0);
+  EXPECT_FALSE(episode.observe(scanAt(Cell{0, 0})));
+}
+
 }  // namespace
 }  // namespace agents
 }  // namespace ppp

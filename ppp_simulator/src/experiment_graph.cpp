@@ -94,7 +94,8 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, 
       selectOptions(agents::agentNodeOptionSpecs(), {"name", "memory"});
   static const std::vector<OptionSpec<agents::BridgeOptions>> written =
       selectOptions(agents::bridgeOptionSpecs(),
-                    {"plan_timeout", "lockstep", "connect_timeout", "cells_per_ppp_cell", "robot_radius"});
+                    {"plan_timeout", "lockstep", "plan_requests", "connect_timeout", "cells_per_ppp_cell",
+                     "robot_radius"});
   std::vector<ppp_msgs::GraphNode> nodes;
   for (int instance = 0; instance < agents::instanceCount(agent); ++instance) {
     ppp_msgs::GraphNode bridge{"ppp_agents", "planner_bridge_node", ppp_msgs::nodes::kBridge};

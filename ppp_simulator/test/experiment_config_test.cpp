@@ -355,7 +355,8 @@ TEST_F(ExperimentYaml, PlannerAgentsKeepTheirOwnRunsAndMapChoiceInTheFingerprint
   EXPECT_NE(fingerprint.find("  - {type: planner, name: ompl, memory: full, sensor_noise: 0, goal_seeking: by_type, "
                              "memory_model: window, wall_start: goal, explorer_idle: random, runs: 3, "
                              "prior_map: true, "
-                             "planner_node: '', planner_args: '', plan_timeout: 5, lockstep: true, cells_per_ppp_cell: 1}"),
+                             "planner_node: '', planner_args: '', plan_timeout: 5, lockstep: true, "
+                             "plan_requests: every_step, cells_per_ppp_cell: 1}"),
             std::string::npos)
       << fingerprint;
   c.agents[1].runs = 4;  // a change of the planner's runs is a different experiment

@@ -261,7 +261,7 @@ sets:
 agents:
   - {name: fast, type: planner, prior_map: true, planner_node: ppp_agents/ompl_planner_node,
      planner_args: "_planning_time:=0.005 _planner:=RRTConnect", plan_timeout: 0.5, cells_per_ppp_cell: 4,
-     instances: 3}
+     plan_requests: on_blocked, instances: 3}
 robot_radius: 1.5
 sets:
   - name: mine
@@ -274,6 +274,7 @@ sets:
             self.assertEqual(planner.args, '_planning_time:=0.005 _planner:=RRTConnect')
             self.assertEqual(config.params[namespace + 'bridge/plan_timeout'].value, 0.5)
             self.assertEqual(config.params[namespace + 'bridge/cells_per_ppp_cell'].value, 4)
+            self.assertEqual(config.params[namespace + 'bridge/plan_requests'].value, 'on_blocked')
             self.assertEqual(config.params[namespace + 'bridge/robot_radius'].value, 1.5)
             self.assertEqual(config.params[namespace + 'bridge/name'].value, 'fast')
         self.assertEqual(len([n for n in config.nodes if n.type == 'planner_bridge_node']), 3)
@@ -313,6 +314,8 @@ sets:
             (agents % ('planner', ', planner_node: p/t, planner_args: "a:=1"') + sets, [],
              "expected private parameters _name:=value separated by spaces (e.g. _planning_time:=0.005), got 'a:=1'"),
             (agents % ('planner', ', plan_timeout: 0') + sets, [], 'plan_timeout: expected a number in [0.001, 86400]'),
+            (agents % ('planner', ', lockstep: false, plan_requests: on_change') + sets, [],
+             'plan_requests: a free-running bridge (lockstep: false) asks only when'),
             (agents % ('planner', '') + sets, ['--planner', 'other=p/t'], "no planner agent named 'other'"),
             (agents % ('planner', '') + sets, ['--planner', 'a'], 'expected NAME=PACKAGE/EXECUTABLE'),
         ]

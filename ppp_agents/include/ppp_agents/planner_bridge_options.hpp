@@ -12,6 +12,13 @@ namespace agents {
 /// Most map cells per PPP cell side in the map the bridge publishes.
 constexpr int kMaxCellsPerPppCell = 16;
 
+/// `plan_requests`: in lockstep, ask every step.
+inline constexpr const char* kPlanRequestsEveryStep = "every_step";
+/// `plan_requests`: in lockstep, ask only when the robot's map changed or its path gives no move.
+inline constexpr const char* kPlanRequestsOnChange = "on_change";
+/// `plan_requests`: in lockstep, ask only when the robot's path gives it no move (or it did not move).
+inline constexpr const char* kPlanRequestsOnBlocked = "on_blocked";
+
 /// The planner bridge's own `~` parameters (besides its agent's name and memory): what it publishes to the
 /// planner and how long it waits for it.
 struct BridgeOptions {
@@ -19,13 +26,23 @@ struct BridgeOptions {
   int cells_per_ppp_cell = 1;                      ///< Map cells per PPP cell side in the published map.
   double robot_radius = 0;                         ///< The robot's radius in PPP cells (published for the planner).
   double plan_timeout = 5.0;                       ///< Seconds the planner has to answer a plan request.
-  bool lockstep = true;                            ///< Ask every step and wait for the answer (reproducible).
+  bool lockstep = true;                            ///< Move only on answers to requests (reproducible).
+  std::string plan_requests = kPlanRequestsEveryStep;  ///< When a lockstep bridge asks (kPlanRequests...).
   double connect_timeout = 20.0;                   ///< Seconds to wait at start-up for the planner's topics.
   std::string map_frame = ppp_msgs::frames::kMap;  ///< Frame of the map, poses and goal.
   std::string base_frame;  ///< The robot's frame (tf child, odom child, scan frame); "": defaultBridgeBaseFrame.
   /// @throws InvalidArgument naming the option out of its declared range, or an empty frame.
   void validate() const;
 };
+
+/// What is wrong with `options`' plan_requests beside its lockstep, or "" when nothing is.
+std::string planRequestsProblem(const BridgeOptions& options);
+
+/// True when a lockstep bridge with `options` asks the planner at every step.
+inline bool asksEveryStep(const BridgeOptions& options) { return options.plan_requests == kPlanRequestsEveryStep; }
+
+/// True when a lockstep bridge with `options` asks the planner at a step whose scan changed the robot's map.
+inline bool asksOnChange(const BridgeOptions& options) { return options.plan_requests != kPlanRequestsOnBlocked; }
 
 /// One declaration per planner bridge parameter (the bridge reads them; the experiment's graph writes them).
 const std::vector<OptionSpec<BridgeOptions>>& bridgeOptionSpecs();

@@ -36,8 +36,9 @@ class PlannerEpisode {
  public:
   /// Starts an episode on a width x height map; `prior` is the true map for agents given it, else null.
   void start(const EpisodeInfo& info, const Grid* prior, int memory_window, double resolution);
-  /// Takes the step's scan into the memory (a robot given the true map has nothing to learn).
-  void observe(const Scan& scan);
+  /// Takes the step's scan into the memory (a robot given the true map has nothing to learn); true when what the
+  /// robot knows changed.
+  bool observe(const Scan& scan);
   /// A path the planner published unasked: followed from now on when usable, ignored otherwise.
   void offer(const std::vector<MapPoint>& points, Cell robot);
   /// The move along the current path, or nothing when the planner must be asked for a path.

@@ -47,13 +47,14 @@ TEST(PlannerExperimentTest, ExamplePlannersPassAndFaultyPlannersFailWithTheirRea
   std::string out;
   auto rows = runExperiment("planners", "planner_experiment.yaml", &out);
   attachPlannerMoves(out + "/" + kPlannerMovesFile, &rows);
-  ASSERT_EQ(rows.size(), 3u * 2 + 3u * 2 + 3u * 2 + 3u + 3u + 3u + 3u);
+  ASSERT_EQ(rows.size(), 3u * 2 * 5 + 3u + 3u + 3u + 3u);
   auto r = reasons(rows);
   for (const char* map : {"open", "wall", "hidden"}) {
     // OMPL plans on the true map; the optimistic re-planner starts blind and must find the route behind the
     // wall of "hidden" (its straight first plan runs into it).
     EXPECT_EQ(r["ompl"][map]["goal_reached"], 2) << map;
     EXPECT_EQ(r["optimistic"][map]["goal_reached"], 2) << map;
+    EXPECT_EQ(r["optimistic_blocked"][map]["goal_reached"], 2) << map;
     EXPECT_EQ(r["silent_planner"][map]["planner_timeout"], 1) << map;
     // A lockstep bridge moves only on an answer stamped with its request; a free-running one takes any path.
     EXPECT_EQ(r["unstamped_lockstep"][map]["planner_timeout"], 1) << map;
@@ -64,26 +65,31 @@ TEST(PlannerExperimentTest, ExamplePlannersPassAndFaultyPlannersFailWithTheirRea
   EXPECT_EQ(r["straight_planner"]["hidden"]["invalid_path"], 1);
   for (const agents::EpisodeResult& row : rows) {
     if (row.agent == "ompl") EXPECT_EQ(row.bumps, 0) << row.problem;
+    // Asked only when blocked, the robot still takes a shortest route where nothing blocks it.
+    if (row.agent == "optimistic_blocked" && row.problem == "open") {
+      EXPECT_EQ(static_cast<double>(row.steps), row.optimal_length);
+    }
   }
-  // Two instances sharing the runs play each run as one does: the same moves (the seeds differ with the name, and
-  // this planner draws nothing at random).
+  // Two instances sharing the runs play each run as one does, and a bridge asking only on a change as one asking
+  // at every step: the same moves (the seeds differ with the name, and this planner draws nothing at random; it
+  // keeps its plan while the robot moves along it on an unchanged map).
   std::map<std::pair<std::string, int>, const agents::EpisodeResult*> alone;
   for (const agents::EpisodeResult& row : rows) {
     if (row.agent == "optimistic") alone[{row.problem, row.run}] = &row;
   }
   int shared = 0;
   for (const agents::EpisodeResult& row : rows) {
-    if (row.agent != "optimistic_pair") continue;
+    if (row.agent != "optimistic_pair" && row.agent != "optimistic_change") continue;
     ++shared;
     const agents::EpisodeResult& one = *alone.at({row.problem, row.run});
-    EXPECT_EQ(row.passed, one.passed) << row.problem << " run " << row.run;
-    EXPECT_EQ(row.steps, one.steps) << row.problem << " run " << row.run;
-    EXPECT_EQ(row.bumps, one.bumps) << row.problem << " run " << row.run;
-    EXPECT_EQ(row.reason, one.reason) << row.problem << " run " << row.run;
-    EXPECT_EQ(row.actions, one.actions) << row.problem << " run " << row.run;
-    EXPECT_EQ(row.actions.size(), static_cast<std::size_t>(row.steps)) << row.problem << " run " << row.run;
+    EXPECT_EQ(row.passed, one.passed) << row.agent << " " << row.problem << " run " << row.run;
+    EXPECT_EQ(row.steps, one.steps) << row.agent << " " << row.problem << " run " << row.run;
+    EXPECT_EQ(row.bumps, one.bumps) << row.agent << " " << row.problem << " run " << row.run;
+    EXPECT_EQ(row.reason, one.reason) << row.agent << " " << row.problem << " run " << row.run;
+    EXPECT_EQ(row.actions, one.actions) << row.agent << " " << row.problem << " run " << row.run;
+    EXPECT_EQ(row.actions.size(), static_cast<std::size_t>(row.steps)) << row.agent << " " << row.problem;
   }
-  EXPECT_EQ(shared, 6);
+  EXPECT_EQ(shared, 12);
   // The planners' results are in the report beside any other agent's.
   const std::string report = readTextFile(out + "/report.md", 1u << 24);
   for (const char* agent : {"ompl", "optimistic", "silent_planner", "straight_planner"}) {
