@@ -22,12 +22,36 @@ bool samePoints(const std::vector<MapPoint>& a, const std::vector<MapPoint>& b) 
                     [](const MapPoint& p, const MapPoint& q) { return p.x == q.x && p.y == q.y; });
 }
 
+/// A reply rejecting every scan of `batch`, for the step's outcome to fill in.
+std::vector<protocol::MoveReply> rejectedReplies(const ppp_msgs::ScanBatch& batch) {
+  std::vector<protocol::MoveReply> replies(batch.episodes.size());
+  for (std::size_t i = 0; i < replies.size(); ++i) {
+    replies[i] = {batch.episodes[i], i < batch.steps.size() ? batch.steps[i] : 0, protocol::kRejectedAction};
+  }
+  return replies;
+}
+
 }  // namespace
 
 PlannerBridge::PlannerBridge(ros::NodeHandle& nh, const BridgeParameters& parameters)
     : parameters_(parameters), link_(nh, parameters) {
   moves_ = nh.advertise<ppp_msgs::MoveBatch>(ppp_msgs::topics::kMoves, 10);
-  scans_ = nh.subscribe(ppp_msgs::topics::kScans, 10, &PlannerBridge::onScans, this, ros::TransportHints().tcpNoDelay());
+}
+
+PlannerBridge::~PlannerBridge() {
+  scans_.shutdown();
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+  }
+  work_.notify_one();
+  if (worker_.joinable()) worker_.join();
+}
+
+void PlannerBridge::serve(ros::NodeHandle& nh) {
+  worker_ = std::thread([this] { askPlanner(); });
+  scans_ = ppp_msgs::subscribeInline<ppp_msgs::ScanBatch>(
+      nh, ppp_msgs::topics::kScans, 10, [this](const ppp_msgs::ScanBatch::ConstPtr& b) { onScans(b); }, &inline_);
 }
 
 void PlannerBridge::warnOnce(const std::string& kind, const std::string& text) {
@@ -38,11 +62,17 @@ void PlannerBridge::warnOnce(const std::string& kind, const std::string& text) {
 }
 
 void PlannerBridge::onScans(const ppp_msgs::ScanBatch::ConstPtr& batch) {
-  const std::size_t n = batch->episodes.size();
-  std::vector<protocol::MoveReply> replies(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    replies[i] = {batch->episodes[i], i < batch->steps.size() ? batch->steps[i] : 0, protocol::kRejectedAction};
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (asking_ || !waiting_.empty()) {
+    waiting_.push_back(batch);  // the worker is asking the planner: it plays this batch next, in order
+    return;
   }
+  play(batch);
+}
+
+void PlannerBridge::play(const ppp_msgs::ScanBatch::ConstPtr& batch) {
+  const std::size_t n = batch->episodes.size();
+  std::vector<protocol::MoveReply> replies = rejectedReplies(*batch);
   std::string what;
   const std::string fault = protocol::checkScanBatch(*batch, true, &what);
   if (!fault.empty()) {
@@ -54,14 +84,45 @@ void PlannerBridge::onScans(const ppp_msgs::ScanBatch::ConstPtr& batch) {
                                  std::to_string(batch->episodes[i]) + " (give the agent type planner)");
     }
     if (n > 0) {
-      const StepOutcome outcome = step(*batch);
-      replies[0].action = outcome.action;
-      replies[0].failure = outcome.failure;
+      const std::optional<StepOutcome> outcome = step(*batch);
+      if (!outcome) {  // a plan request: the worker waits for the answer and replies
+        asking_ = batch;
+        work_.notify_one();
+        return;
+      }
+      replies[0].action = outcome->action;
+      replies[0].failure = outcome->failure;
     }
   }
-  ppp_msgs::MoveBatch moves = protocol::encodeMoves(parameters_.config.name, batch->batch, replies);
+  reply(*batch, replies);
+}
+
+void PlannerBridge::reply(const ppp_msgs::ScanBatch& batch, const std::vector<protocol::MoveReply>& replies) {
+  ppp_msgs::MoveBatch moves = protocol::encodeMoves(parameters_.config.name, batch.batch, replies);
   moves.header.stamp = ros::Time::now();
   moves_.publish(moves);
+}
+
+void PlannerBridge::askPlanner() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (!stopping_) {
+    work_.wait(lock, [&] { return stopping_ || asking_; });
+    if (stopping_) break;
+    const ppp_msgs::ScanBatch::ConstPtr batch = asking_;
+    lock.unlock();  // the network thread goes on reading paths (and queueing scans) meanwhile
+    const StepOutcome outcome = request();
+    std::vector<protocol::MoveReply> replies = rejectedReplies(*batch);
+    replies[0].action = outcome.action;
+    replies[0].failure = outcome.failure;
+    reply(*batch, replies);
+    lock.lock();
+    asking_ = nullptr;
+    while (!asking_ && !waiting_.empty()) {  // batches that came meanwhile, in order, until one asks again
+      const ppp_msgs::ScanBatch::ConstPtr next = waiting_.front();
+      waiting_.pop_front();
+      play(next);
+    }
+  }
 }
 
 void PlannerBridge::start(const ppp_msgs::EpisodeStart& s) {
@@ -81,89 +142,92 @@ void PlannerBridge::start(const ppp_msgs::EpisodeStart& s) {
   }
 }
 
-PlannerBridge::StepOutcome PlannerBridge::step(const ppp_msgs::ScanBatch& batch) {
+std::optional<PlannerBridge::StepOutcome> PlannerBridge::step(const ppp_msgs::ScanBatch& batch) {
   const std::uint32_t id = batch.episodes[0];
   const StepOutcome rejected{protocol::kRejectedAction, nullptr};
   if (!active_ || id != episode_id_) {
     warnOnce("episode", "episode " + std::to_string(id) + " was never started (no EpisodeStart)");
     return rejected;
   }
-  const Cell robot = protocol::toCell(batch.positions[0]);
-  const int range = batch.range;
-  std::array<std::int8_t, kMaxScanCells> cells;  // the window, which the planner's LaserScan shows too
+  Request& r = request_;
+  r.robot = protocol::toCell(batch.positions[0]);
+  r.range = batch.range;
   bool map_changed = false;
   try {
-    protocol::requireOnGrid(robot, episode_.frame().width, episode_.frame().height, "position");
-    unpackWindow(batch.free_cells.data(), batch.obstacle_cells.data(), range, cells.data());
-    map_changed = episode_.observe(Scan(range, cells.data(), protocol::windowCells(range), robot, episode_.goal(),
-                                        batch.bumped[0] != 0, static_cast<int>(batch.steps[0])));
+    protocol::requireOnGrid(r.robot, episode_.frame().width, episode_.frame().height, "position");
+    unpackWindow(batch.free_cells.data(), batch.obstacle_cells.data(), r.range, r.cells.data());
+    map_changed = episode_.observe(Scan(r.range, r.cells.data(), protocol::windowCells(r.range), r.robot,
+                                        episode_.goal(), batch.bumped[0] != 0, static_cast<int>(batch.steps[0])));
   } catch (const InvalidArgument& e) {
     warnOnce(e.name(), std::string("rejected a scan: ") + e.what());
     active_ = false;
     return rejected;
   }
-  const auto fail = [&](const char* reason, const std::string& detail) {
-    // Every reason is in results.csv: the log gets a sample, not a line per failed run of a long hunt.
-    ROS_INFO_THROTTLE(5, "bridge '%s': episode %u fails as %s: %s", parameters_.config.name.c_str(), id, reason,
-                      detail.c_str());
-    active_ = false;
-    return StepOutcome{0, reason};
-  };
-  const ros::Time stamp = ros::Time::now();
-  const bool moved = robot != previous_;
-  previous_ = robot;
+  r.stamp = ros::Time::now();
+  const bool moved = r.robot != previous_;
+  previous_ = r.robot;
   if (parameters_.lockstep && !asksEveryStep(parameters_) && moved && !(map_changed && asksOnChange(parameters_))) {
     // The robot moved on along the plan, and the map did not change (or changes are not asked about): it goes on
     // without a request (docs/planner-interface.md, "plan_requests").
-    if (const std::optional<Action> along = episode_.next(robot)) {
-      link_.publishPose(stamp, episode_, robot, cells.data(), range);
+    if (const std::optional<Action> along = episode_.next(r.robot)) {
+      link_.publishPose(r.stamp, episode_, r.robot, r.cells.data(), r.range);
       if (link_.gone()) return fail(reason::kPlannerLost, "the planner's process is gone");
       return StepOutcome{static_cast<std::uint8_t>(*along), nullptr};
     }
   }
-  link_.publishState(stamp, episode_, robot, cells.data(), range);
+  link_.publishState(r.stamp, episode_, r.robot, r.cells.data(), r.range);
   if (link_.gone()) return fail(reason::kPlannerLost, "the planner's process is gone");
-
-  std::vector<MapPoint> points;
-  std::optional<Action> action;
   if (!parameters_.lockstep) {
     // Free-running: a path the planner published on its own (re-planning on the new map) replaces the current
     // one if usable, whenever it arrives; without one the robot follows the path it has.
+    std::vector<MapPoint> points;
     const std::optional<nav_msgs::Path> unasked = link_.takeUnasked();
-    if (unasked && pathPoints(*unasked, parameters_.map_frame, &points).empty()) episode_.offer(points, robot);
-    action = episode_.next(robot);
+    if (unasked && pathPoints(*unasked, parameters_.map_frame, &points).empty()) episode_.offer(points, r.robot);
+    if (const std::optional<Action> action = episode_.next(r.robot)) {
+      return StepOutcome{static_cast<std::uint8_t>(*action), nullptr};
+    }
   }
+  return std::nullopt;
+}
+
+PlannerBridge::StepOutcome PlannerBridge::request() {
   // Lockstep: this step is a request, and only the answer to this step's state moves the robot (a re-plan on
   // this step's map that arrived already is that answer).
-  if (!action) {
-    link_.publishGoal(stamp, episode_);
-    const std::optional<nav_msgs::Path> path = link_.waitForPath(
-        stamp, [&](const nav_msgs::Path& p) { return answers(p, robot); },
-        [&](const ros::Time& again) {
-          link_.publishState(again, episode_, robot, cells.data(), range);
-          link_.publishGoal(again, episode_);
-        });
-    if (!path) {
-      if (!link_.alive()) return fail(reason::kPlannerLost, "the planner's process is gone");
-      return fail(reason::kPlannerTimeout,
-                  "no path within " + std::to_string(parameters_.plan_timeout) + " s");
-    }
-    const std::string frame_problem = pathPoints(*path, parameters_.map_frame, &points);
-    if (!frame_problem.empty()) return fail(reason::kInvalidPath, frame_problem);
-    // The plan kept (the poses of the path being followed, sent again): the robot goes on from where it is along
-    // it, rather than from the first place the path passes its cell (a path may pass a cell twice).
-    if (!points.empty() && samePoints(points, following_)) action = episode_.next(robot);
-    if (!action) {
-      const Answer answer = episode_.answer(points, robot);
-      if (answer.verdict == AnswerVerdict::NoPath) return fail(reason::kNoPath, answer.detail);
-      if (answer.verdict == AnswerVerdict::InvalidPath) {
-        return fail(reason::kInvalidPath, answer.detail);
-      }
-      following_ = points;
-      action = answer.action;
+  const Request& r = request_;
+  link_.publishGoal(r.stamp, episode_);
+  const std::optional<nav_msgs::Path> path = link_.waitForPath(
+      r.stamp, [&](const nav_msgs::Path& p) { return answers(p, r.robot); },
+      [&](const ros::Time& again) {
+        link_.publishState(again, episode_, r.robot, r.cells.data(), r.range);
+        link_.publishGoal(again, episode_);
+      });
+  if (!path) {
+    if (!link_.alive()) return fail(reason::kPlannerLost, "the planner's process is gone");
+    return fail(reason::kPlannerTimeout, "no path within " + std::to_string(parameters_.plan_timeout) + " s");
+  }
+  std::vector<MapPoint> points;
+  const std::string frame_problem = pathPoints(*path, parameters_.map_frame, &points);
+  if (!frame_problem.empty()) return fail(reason::kInvalidPath, frame_problem);
+  // The plan kept (the poses of the path being followed, sent again): the robot goes on from where it is along
+  // it, rather than from the first place the path passes its cell (a path may pass a cell twice).
+  if (!points.empty() && samePoints(points, following_)) {
+    if (const std::optional<Action> along = episode_.next(r.robot)) {
+      return StepOutcome{static_cast<std::uint8_t>(*along), nullptr};
     }
   }
-  return StepOutcome{static_cast<std::uint8_t>(*action), nullptr};
+  const Answer answer = episode_.answer(points, r.robot);
+  if (answer.verdict == AnswerVerdict::NoPath) return fail(reason::kNoPath, answer.detail);
+  if (answer.verdict == AnswerVerdict::InvalidPath) return fail(reason::kInvalidPath, answer.detail);
+  following_ = points;
+  return StepOutcome{static_cast<std::uint8_t>(answer.action), nullptr};
+}
+
+PlannerBridge::StepOutcome PlannerBridge::fail(const char* reason, const std::string& detail) {
+  // Every reason is in results.csv: the log gets a sample, not a line per failed run of a long hunt.
+  ROS_INFO_THROTTLE(5, "bridge '%s': episode %u fails as %s: %s", parameters_.config.name.c_str(), episode_id_,
+                    reason, detail.c_str());
+  active_ = false;
+  return StepOutcome{0, reason};
 }
 
 bool PlannerBridge::answers(const nav_msgs::Path& path, Cell robot) const {

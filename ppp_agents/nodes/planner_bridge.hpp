@@ -2,31 +2,45 @@
 
 #include <ros/ros.h>
 
+#include <array>
+#include <condition_variable>
 #include <cstdint>
+#include <deque>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "nav_msgs/Path.h"
 #include "planner_bridge_parameters.hpp"
 #include "planner_link.hpp"
 #include "ppp_agents/planner_episode.hpp"
+#include "ppp_agents/protocol/batch_codec.hpp"
+#include "ppp_core/sensor.hpp"
 #include "ppp_msgs/MoveBatch.h"
 #include "ppp_msgs/ScanBatch.h"
+#include "ppp_msgs/inline_callback_queue.h"
 
 namespace ppp {
 namespace agents {
 
 /// Plays one agent of type planner: for each step of the simulator's episode (ScanBatch of one scan) it
 /// publishes the robot's world to an external planner (map, odom, tf, scan, goal; docs/planner-interface.md)
-/// and turns the planner's nav_msgs/Path into the step's move, or into a failure with its reason.
+/// and turns the planner's nav_msgs/Path into the step's move, or into a failure with its reason. A step that
+/// needs no plan request is answered in roscpp's network thread as its scan is read; a plan request is handed to
+/// a worker thread, which waits for the planner's path (read in the network thread) and answers.
 class PlannerBridge {
  public:
-  /// Advertises and subscribes in `nh`'s namespace: scans/moves towards the simulator, robot/... towards the
-  /// planner (PlannerLink).
+  /// Advertises in `nh`'s namespace: moves towards the simulator, robot/... towards the planner (PlannerLink).
   PlannerBridge(ros::NodeHandle& nh, const BridgeParameters& parameters);
+  /// Stops the worker.
+  ~PlannerBridge();
   /// Waits up to connect_timeout for the planner (PlannerLink::waitForPlanner). @throws InvalidArgument.
   void waitForPlanner() { link_.waitForPlanner(); }
+  /// Subscribes to the simulator's scans in `nh`'s namespace and starts answering them.
+  void serve(ros::NodeHandle& nh);
   /// The planner-side topic names, for the log.
   std::string plannerTopics() const { return link_.topics(); }
 
@@ -36,9 +50,26 @@ class PlannerBridge {
     std::uint8_t action = 0;
     const char* failure = nullptr;  // a reason:: constant, or nullptr for a move
   };
+  /// The state a plan request is made for.
+  struct Request {
+    Cell robot;
+    int range = 0;
+    std::array<std::int8_t, kMaxScanCells> cells;  // the window, which the planner's LaserScan shows too
+    ros::Time stamp;
+  };
   void onScans(const ppp_msgs::ScanBatch::ConstPtr& batch);
+  /// Plays a batch (mutex_ held): answers it, or hands its plan request to the worker.
+  void play(const ppp_msgs::ScanBatch::ConstPtr& batch);
+  void reply(const ppp_msgs::ScanBatch& batch, const std::vector<protocol::MoveReply>& replies);
+  /// The worker thread: asks the planner for each step handed over, and replies.
+  void askPlanner();
   void start(const ppp_msgs::EpisodeStart& start);
-  StepOutcome step(const ppp_msgs::ScanBatch& batch);
+  /// The step's outcome, or nothing when it is a plan request (request_ then holds its state).
+  std::optional<StepOutcome> step(const ppp_msgs::ScanBatch& batch);
+  /// Asks the planner for request_'s state and waits for the answer.
+  StepOutcome request();
+  /// Ends the episode as failed for `reason`.
+  StepOutcome fail(const char* reason, const std::string& detail);
   /// True when `path` is a usable answer for the robot at `robot`, or an empty or wrong-frame one (also final).
   bool answers(const nav_msgs::Path& path, Cell robot) const;
   void warnOnce(const std::string& kind, const std::string& text);
@@ -46,7 +77,18 @@ class PlannerBridge {
   BridgeParameters parameters_;
   PlannerLink link_;
   ros::Publisher moves_;
-  ros::Subscriber scans_;
+
+  // Hand-over of plan requests between the network thread and the worker. While asking_ is set only the worker
+  // touches the episode; scans that arrive meanwhile wait, in order.
+  std::mutex mutex_;
+  std::condition_variable work_;
+  ppp_msgs::ScanBatch::ConstPtr asking_;
+  std::deque<ppp_msgs::ScanBatch::ConstPtr> waiting_;
+  bool stopping_ = false;
+  Request request_;
+  std::thread worker_;
+  ppp_msgs::InlineCallbackQueue inline_;  // runs onScans in the network thread
+  ros::Subscriber scans_;                 // after inline_: unsubscribes before the queue goes
 
   // The episode being played.
   bool active_ = false;
