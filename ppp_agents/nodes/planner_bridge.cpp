@@ -36,6 +36,9 @@ std::vector<protocol::MoveReply> rejectedReplies(const ppp_msgs::ScanBatch& batc
 PlannerBridge::PlannerBridge(ros::NodeHandle& nh, const BridgeParameters& parameters)
     : parameters_(parameters), link_(nh, parameters) {
   moves_ = nh.advertise<ppp_msgs::MoveBatch>(ppp_msgs::topics::kMoves, 10);
+  worker_ = std::thread([this] { askPlanner(); });
+  scans_ = ppp_msgs::subscribeInline<ppp_msgs::ScanBatch>(
+      nh, ppp_msgs::topics::kScans, 10, [this](const ppp_msgs::ScanBatch::ConstPtr& b) { onScans(b); }, &inline_);
 }
 
 PlannerBridge::~PlannerBridge() {
@@ -48,10 +51,12 @@ PlannerBridge::~PlannerBridge() {
   if (worker_.joinable()) worker_.join();
 }
 
-void PlannerBridge::serve(ros::NodeHandle& nh) {
-  worker_ = std::thread([this] { askPlanner(); });
-  scans_ = ppp_msgs::subscribeInline<ppp_msgs::ScanBatch>(
-      nh, ppp_msgs::topics::kScans, 10, [this](const ppp_msgs::ScanBatch::ConstPtr& b) { onScans(b); }, &inline_);
+void PlannerBridge::serve() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    serving_ = true;
+  }
+  work_.notify_one();  // scans that came before the planner did
 }
 
 void PlannerBridge::warnOnce(const std::string& kind, const std::string& text) {
@@ -63,8 +68,8 @@ void PlannerBridge::warnOnce(const std::string& kind, const std::string& text) {
 
 void PlannerBridge::onScans(const ppp_msgs::ScanBatch::ConstPtr& batch) {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (asking_ || !waiting_.empty()) {
-    waiting_.push_back(batch);  // the worker is asking the planner: it plays this batch next, in order
+  if (!serving_ || asking_ || !waiting_.empty()) {
+    waiting_.push_back(batch);  // no planner yet, or the worker is asking it: the worker plays this next, in order
     return;
   }
   play(batch);
@@ -105,9 +110,15 @@ void PlannerBridge::reply(const ppp_msgs::ScanBatch& batch, const std::vector<pr
 
 void PlannerBridge::askPlanner() {
   std::unique_lock<std::mutex> lock(mutex_);
-  while (!stopping_) {
-    work_.wait(lock, [&] { return stopping_ || asking_; });
-    if (stopping_) break;
+  while (true) {
+    work_.wait(lock, [&] { return stopping_ || asking_ || (serving_ && !waiting_.empty()); });
+    if (stopping_) return;
+    if (!asking_) {  // a batch that came while the worker asked, or before the planner connected
+      const ppp_msgs::ScanBatch::ConstPtr next = waiting_.front();
+      waiting_.pop_front();
+      play(next);  // may hand over a plan request: the next round asks
+      continue;
+    }
     const ppp_msgs::ScanBatch::ConstPtr batch = asking_;
     lock.unlock();  // the network thread goes on reading paths (and queueing scans) meanwhile
     const StepOutcome outcome = request();
@@ -117,11 +128,6 @@ void PlannerBridge::askPlanner() {
     reply(*batch, replies);
     lock.lock();
     asking_ = nullptr;
-    while (!asking_ && !waiting_.empty()) {  // batches that came meanwhile, in order, until one asks again
-      const ppp_msgs::ScanBatch::ConstPtr next = waiting_.front();
-      waiting_.pop_front();
-      play(next);
-    }
   }
 }
 

@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
              bridge.plannerTopics().c_str());
     bridge.waitForPlanner();
     ROS_INFO("bridge '%s': planner connected", parameters.config.name.c_str());
-    bridge.serve(nh);
+    bridge.serve();
     ros::spin();
   } catch (const ppp::Error& e) {
     ROS_FATAL("%s", e.what());
