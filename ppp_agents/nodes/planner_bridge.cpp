@@ -141,7 +141,6 @@ void PlannerBridge::start(const ppp_msgs::EpisodeStart& s) {
                    parameters_.resolution);
     link_.newEpisode();
     following_.clear();
-    previous_ = Cell{-1, -1};
     active_ = true;
   } catch (const InvalidArgument& e) {
     warnOnce(e.name(), "rejected the start of episode " + std::to_string(s.episode) + ": " + e.what());
@@ -158,28 +157,22 @@ std::optional<PlannerBridge::StepOutcome> PlannerBridge::step(const ppp_msgs::Sc
   Request& r = request_;
   r.robot = protocol::toCell(batch.positions[0]);
   r.range = batch.range;
-  bool map_changed = false;
   try {
     protocol::requireOnGrid(r.robot, episode_.frame().width, episode_.frame().height, "position");
     unpackWindow(batch.free_cells.data(), batch.obstacle_cells.data(), r.range, r.cells.data());
-    map_changed = episode_.observe(Scan(r.range, r.cells.data(), protocol::windowCells(r.range), r.robot,
-                                        episode_.goal(), batch.bumped[0] != 0, static_cast<int>(batch.steps[0])));
+    episode_.observe(Scan(r.range, r.cells.data(), protocol::windowCells(r.range), r.robot, episode_.goal(),
+                          batch.bumped[0] != 0, static_cast<int>(batch.steps[0])));
   } catch (const InvalidArgument& e) {
     warnOnce(e.name(), std::string("rejected a scan: ") + e.what());
     active_ = false;
     return rejected;
   }
   r.stamp = ros::Time::now();
-  const bool moved = r.robot != previous_;
-  previous_ = r.robot;
-  if (parameters_.lockstep && !asksEveryStep(parameters_) && moved && !(map_changed && asksOnChange(parameters_))) {
-    // The robot moved on along the plan, and the map did not change (or changes are not asked about): it goes on
-    // without a request (docs/planner-interface.md, "plan_requests").
-    if (const std::optional<Action> along = episode_.next(r.robot)) {
-      link_.publishPose(r.stamp, episode_, r.robot, r.cells.data(), r.range);
-      if (link_.gone()) return fail(reason::kPlannerLost, "the planner's process is gone");
-      return StepOutcome{static_cast<std::uint8_t>(*along), nullptr};
-    }
+  if (const std::optional<Action> along = episode_.moveWithoutRequest(parameters_)) {
+    // Nothing to ask the planner (plan_requests): the robot goes on along its path; the planner gets the pose.
+    link_.publishPose(r.stamp, episode_, r.robot, r.cells.data(), r.range);
+    if (link_.gone()) return fail(reason::kPlannerLost, "the planner's process is gone");
+    return StepOutcome{static_cast<std::uint8_t>(*along), nullptr};
   }
   link_.publishState(r.stamp, episode_, r.robot, r.cells.data(), r.range);
   if (link_.gone()) return fail(reason::kPlannerLost, "the planner's process is gone");

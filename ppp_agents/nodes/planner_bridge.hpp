@@ -97,7 +97,6 @@ class PlannerBridge {
   std::uint32_t episode_id_ = 0;
   PlannerEpisode episode_;
   std::vector<MapPoint> following_;  // the poses of the path the robot follows (a lockstep answer may keep it)
-  Cell previous_{-1, -1};            // the robot's cell at the previous step (none at the first)
 
   std::map<std::string, long> warnings_;
 };

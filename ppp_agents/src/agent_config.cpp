@@ -54,6 +54,12 @@ std::string explorerIdleProblem(const AgentConfig& config) {
   return config.explorer_idle == kExplorerIdleRandom || explorer ? "" : "only explorers take it";
 }
 
+/// What is wrong with the plan request rule asked for, or "" when nothing is.
+std::string agentPlanRequestsProblem(const AgentConfig& config) {
+  if (config.type == kPlannerType || asksEveryStep(config.bridge)) return planRequestsProblem(config.bridge);
+  return "only planner agents ask a planner for plans";
+}
+
 /// What is wrong with the instances asked for, or "" when nothing is.
 std::string instancesProblem(const AgentConfig& config) {
   if (config.instances == 0 || config.type == kPlannerType) return "";
@@ -157,11 +163,8 @@ void AgentConfig::validate() const {
   if (!plannerNodeProblem(*this).empty()) throw InvalidArgument("planner_node", plannerNodeProblem(*this));
   if (!plannerArgsProblem(*this).empty()) throw InvalidArgument("planner_args", plannerArgsProblem(*this));
   if (!instancesProblem(*this).empty()) throw InvalidArgument("instances", instancesProblem(*this));
-  if (type != kPlannerType && !asksEveryStep(bridge)) {
-    throw InvalidArgument("plan_requests", "only planner agents ask a planner for plans");
-  }
-  if (!planRequestsProblem(bridge).empty()) {
-    throw InvalidArgument("plan_requests", planRequestsProblem(bridge));
+  if (!agentPlanRequestsProblem(*this).empty()) {
+    throw InvalidArgument("plan_requests", agentPlanRequestsProblem(*this));
   }
   if (!hostProblem(host).empty()) throw InvalidArgument("host", hostProblem(host));
 }

@@ -19,21 +19,31 @@ void PlannerEpisode::start(const EpisodeInfo& info, const Grid* prior, int memor
   }
   follower_.clear();
   follower_.setConnectivity(info.connectivity);
+  position_ = previous_ = Cell{-1, -1};
+  changed_ = false;
 }
 
 bool PlannerEpisode::observe(const Scan& scan) {
+  previous_ = position_;
+  position_ = scan.position();
+  changed_ = false;
   if (has_prior_) return false;
   memory_.update(scan);
-  bool changed = false;
   for (int y = 0; y < frame_.height; ++y) {
     for (int x = 0; x < frame_.width; ++x) {
       std::int8_t& known = known_.cells[y * frame_.width + x];
       const std::int8_t now = memory_.at(Cell{x, y});
-      changed = changed || known != now;
+      changed_ = changed_ || known != now;
       known = now;
     }
   }
-  return changed;
+  return changed_;
+}
+
+std::optional<Action> PlannerEpisode::moveWithoutRequest(const BridgeOptions& options) {
+  if (!options.lockstep || asksEveryStep(options) || position_ == previous_) return std::nullopt;
+  if (changed_ && asksOnChange(options)) return std::nullopt;
+  return next(position_);
 }
 
 void PlannerEpisode::offer(const std::vector<MapPoint>& points, Cell robot) {

@@ -93,6 +93,38 @@ TEST(PlannerEpisodeTest, ObserveSaysWhetherWhatTheRobotKnowsChanged) {
   EXPECT_FALSE(episode.observe(scanAt(Cell{0, 0})));
 }
 
+TEST(PlannerEpisodeTest, AStepNeedsNoRequestOnlyWhenTheRuleSaysSo) {
+  BridgeOptions every;
+  BridgeOptions change;
+  change.plan_requests = kPlanRequestsOnChange;
+  BridgeOptions blocked;
+  blocked.plan_requests = kPlanRequestsOnBlocked;
+  BridgeOptions free_running = blocked;
+  free_running.lockstep = false;
+  // On the prior map nothing new is ever seen: down the first column, along the bottom row.
+  PlannerEpisode known;
+  known.start(info(), &kWorld.grid, 0, 1.0);
+  known.observe(scanAt(Cell{0, 0}));
+  EXPECT_FALSE(known.moveWithoutRequest(change));  // no path yet
+  ASSERT_EQ(known.answer({centre(0, 0), centre(0, 2), centre(3, 2)}, Cell{0, 0}).action, Action::South);
+  known.observe(scanAt(Cell{0, 1}));
+  EXPECT_EQ(known.moveWithoutRequest(change), Action::South);
+  known.observe(scanAt(Cell{0, 2}));
+  EXPECT_EQ(known.moveWithoutRequest(blocked), Action::East);
+  EXPECT_FALSE(known.moveWithoutRequest(every));
+  EXPECT_FALSE(known.moveWithoutRequest(free_running));
+  known.observe(scanAt(Cell{0, 2}));  // a bump: it stayed
+  EXPECT_FALSE(known.moveWithoutRequest(blocked));
+  // From its memory: the scan at (0, 1) shows row 2, a change that on_change asks about and on_blocked does not.
+  PlannerEpisode learning;
+  learning.start(info(), nullptr, 0, 1.0);
+  learning.observe(scanAt(Cell{0, 0}));
+  learning.answer({centre(0, 0), centre(0, 2), centre(3, 2)}, Cell{0, 0});
+  ASSERT_TRUE(learning.observe(scanAt(Cell{0, 1})));
+  EXPECT_FALSE(learning.moveWithoutRequest(change));
+  EXPECT_EQ(learning.moveWithoutRequest(blocked), Action::South);
+}
+
 }  // namespace
 }  // namespace agents
 }  // namespace ppp

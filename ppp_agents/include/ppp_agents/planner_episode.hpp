@@ -8,6 +8,7 @@
 #include "ppp_agents/agent.hpp"
 #include "ppp_agents/agent_memory.hpp"
 #include "ppp_agents/path_follower.hpp"
+#include "ppp_agents/planner_bridge_options.hpp"
 #include "ppp_core/grid.hpp"
 #include "ppp_core/map_frame.hpp"
 #include "ppp_core/sensor.hpp"
@@ -39,6 +40,10 @@ class PlannerEpisode {
   /// Takes the step's scan into the memory (a robot given the true map has nothing to learn); true when what the
   /// robot knows changed.
   bool observe(const Scan& scan);
+  /// The move along the current path when a lockstep bridge with `options` needs no plan request at the step last
+  /// observed (docs/planner-interface.md, "plan_requests"): the robot moved since the step before, its path gives
+  /// it a move and, unless the rule is on_blocked, that scan changed nothing the robot knows. Nothing otherwise.
+  std::optional<Action> moveWithoutRequest(const BridgeOptions& options);
   /// A path the planner published unasked: followed from now on when usable, ignored otherwise.
   void offer(const std::vector<MapPoint>& points, Cell robot);
   /// The move along the current path, or nothing when the planner must be asked for a path.
@@ -59,6 +64,9 @@ class PlannerEpisode {
   MapFrame frame_;
   Cell goal_;
   bool has_prior_ = false;
+  Cell position_{-1, -1};  // the robot's cell at the step last observed
+  Cell previous_{-1, -1};  // and at the step before (none at an episode's first step)
+  bool changed_ = false;   // whether the last observed scan changed what the robot knows
   AgentMemory memory_;
   KnownMap known_;
   PathFollower follower_;
