@@ -2,6 +2,7 @@
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/geometric/PathSimplifier.h>
 #include <ompl/geometric/SimpleSetup.h>
 #include <ompl/geometric/planners/prm/PRM.h>
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <utility>
 
@@ -75,9 +77,19 @@ void OmplPlannerOptions::validate() const {
     for (const std::string& name : names) valid += (valid.empty() ? "" : ", ") + name;
     throw InvalidArgument("planner", "unknown OMPL planner '" + planner + "'; valid: " + valid);
   }
-  if (!(planning_time > 0.0) || !std::isfinite(planning_time)) {
-    throw InvalidArgument("planning_time",
-                          "expected a positive, finite number of seconds, got " + std::to_string(planning_time));
+  if (!(planning_time >= 0.0) || !std::isfinite(planning_time)) {
+    throw InvalidArgument("planning_time", "expected a finite number of seconds, 0 or more (0: no wall-clock limit), "
+                                           "got " + std::to_string(planning_time));
+  }
+  if (planning_iterations < 0) {
+    throw InvalidArgument("planning_iterations",
+                          "expected a number of iterations, 0 or more (0: no iteration limit), got " +
+                              std::to_string(planning_iterations));
+  }
+  if (planning_time == 0.0 && planning_iterations == 0) {
+    throw InvalidArgument("planning_iterations",
+                          "expected a limit: planning_iterations and planning_time are both 0, so a plan for a goal "
+                          "that cannot be reached would never end");
   }
 }
 
@@ -113,7 +125,15 @@ std::vector<MapPoint> OmplGridPlanner::plan(const GridMap& map, Cell start, Cell
   to[1] = goal_point.y;
   setup.setStartAndGoalStates(from, to);
 
-  if (setup.solve(options_.planning_time) != ob::PlannerStatus::EXACT_SOLUTION) return {};
+  // Counted iterations end a plan at the same point on any machine; the wall clock, when set, may end it sooner.
+  ob::IterationTerminationCondition iterations(options_.planning_iterations > 0
+                                                   ? static_cast<unsigned>(options_.planning_iterations)
+                                                   : std::numeric_limits<unsigned>::max());
+  const ob::PlannerTerminationCondition limit =
+      options_.planning_time > 0.0
+          ? ob::plannerOrTerminationCondition(iterations, ob::timedPlannerTerminationCondition(options_.planning_time))
+          : ob::PlannerTerminationCondition(iterations);
+  if (setup.solve(limit) != ob::PlannerStatus::EXACT_SOLUTION) return {};
   og::PathGeometric& path = setup.getSolutionPath();
   SeededSimplifier(si, seed).simplifyMax(path);
   std::vector<MapPoint> waypoints;

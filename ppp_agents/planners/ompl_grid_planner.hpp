@@ -15,10 +15,16 @@ const std::vector<std::string>& omplPlannerNames();
 /// What OmplGridPlanner runs.
 struct OmplPlannerOptions {
   std::string planner = "RRTConnect";  ///< One of omplPlannerNames().
-  double planning_time = 1.0;          ///< Seconds OMPL may plan per request.
+  double planning_time = 0.0;          ///< Wall-clock seconds OMPL may plan per request (0: no such limit).
   int seed = 1;                        ///< Each plan's random numbers derive from it and from the request.
+  int planning_iterations = kDefaultPlanningIterations;  ///< Planner iterations per request (0: no such limit).
 
-  /// @throws InvalidArgument naming `planner` or `planning_time` (positive, finite) when out of range.
+  /// The default iteration limit: far more than any solvable 20x20 PPP needs, a fraction of a second when the goal
+  /// cannot be reached.
+  static constexpr int kDefaultPlanningIterations = 100000;
+
+  /// @throws InvalidArgument naming `planner`, `planning_time` (not negative, finite) or `planning_iterations` (not
+  /// negative; not 0 when planning_time is 0 too: a plan must end) when out of range.
   void validate() const;
 };
 
@@ -27,14 +33,16 @@ struct OmplPlannerOptions {
 /// cell it walks through is (GridMotionValidator), so the planner bridge accepts every path it returns.
 /// Each plan draws its samples and shortcuts from random numbers seeded by the options' seed and the request (map,
 /// start, goal), not from OMPL's process-wide stream: the same request gets the same plan whatever was planned
-/// before, in this process or another (within the planning time: a plan cut short by it depends on the machine).
+/// before, in this process or another. The iteration limit keeps that true whatever the machine's load; a plan cut
+/// short by the wall-clock limit depends on the machine (and PRM grows its roadmap on a timer, so its plans always
+/// do).
 class OmplGridPlanner {
  public:
   /// @throws InvalidArgument when the options are out of range.
   explicit OmplGridPlanner(OmplPlannerOptions options);
 
   /// Simplified waypoints from the start cell's centre to the goal cell's centre; empty when a cell is not
-  /// passable or OMPL finds no exact solution within the planning time.
+  /// passable or OMPL finds no exact solution within the limits.
   std::vector<MapPoint> plan(const GridMap& map, Cell start, Cell goal) const;
 
   /// The options in effect.

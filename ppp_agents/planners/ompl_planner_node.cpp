@@ -6,9 +6,11 @@
 //   publishes   plan (nav_msgs/Path, latched)              simplified waypoints from the robot's cell centre to the
 //                                                          goal's, every segment walking only passable cells;
 //                                                          stamped with the pose's stamp (the goal's, or the map's);
-//                                                          empty when OMPL finds no path in time. One per goal.
-//   parameters  ~planner (RRTConnect, RRTstar or PRM; default RRTConnect), ~planning_time (seconds per plan,
-//               default 1.0), ~seed (ompl::RNG::setSeed, default 1), ~unknown_is_free (default true),
+//                                                          empty when OMPL finds no path within its limits.
+//                                                          One per goal.
+//   parameters  ~planner (RRTConnect, RRTstar or PRM; default RRTConnect), ~planning_iterations (iterations per
+//               plan, default 100000; 0: none), ~planning_time (wall-clock seconds per plan, default 0: none),
+//               ~seed (ompl::RNG::setSeed, default 1), ~unknown_is_free (default true),
 //               ~map_frame (default "map"), ~base_frame (default: the node's namespace + "/base_link",
 //               e.g. "ompl/robot/base_link" in /ompl/robot)
 // Topics are relative: start the node in the bridge's robot namespace (/G/robot).
@@ -37,7 +39,9 @@ int main(int argc, char** argv) {
     planners::PlannerNode node(nh, options, [&planner](const planners::GridMap& map, ppp::Cell robot, ppp::Cell goal) {
       return planner.plan(map, robot, goal);
     });
-    ROS_INFO("OMPL planner %s (%.3f s per plan, seed %d, unknown cells %s): %s", parameters.planner.planner.c_str(),
+    ROS_INFO("OMPL planner %s (per plan: %d iterations, %.3f s of wall clock; 0: no limit; seed %d, unknown cells "
+             "%s): %s",
+             parameters.planner.planner.c_str(), parameters.planner.planning_iterations,
              parameters.planner.planning_time, parameters.planner.seed, parameters.unknown_is_free ? "free" : "blocked",
              node.topics().c_str());
     node.run();

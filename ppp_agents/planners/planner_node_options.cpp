@@ -55,8 +55,14 @@ const std::vector<OptionSpec<OmplNodeParameters>>& omplNodeOptionSpecs() {
     return std::vector<OptionSpec<O>>{
         declareOption("planner", "the OMPL geometric planner", +[](O& o) -> std::string& { return o.planner.planner; })
             .withChoices("OMPL planner", planners),
-        declareOption("planning_time", "seconds OMPL may plan per request",
-                      +[](O& o) -> double& { return o.planner.planning_time; }, Bounds{1e-6, 3600}),
+        declareOption("planning_time",
+                      "wall-clock seconds OMPL may plan per request (0: no such limit; a plan it cuts short depends "
+                      "on the machine's load, so results with it are not reproducible)",
+                      +[](O& o) -> double& { return o.planner.planning_time; }, Bounds{0, 3600}),
+        declareOption("planning_iterations",
+                      "planner iterations OMPL may run per request (0: no such limit; RRTConnect: one sample, "
+                      "each tree extended once): a time limit that gives the same plans on any machine",
+                      +[](O& o) -> int& { return o.planner.planning_iterations; }, Bounds{0, 1000000000}),
         declareOption("seed", "seed each plan's random numbers derive from, with what the plan is asked",
                       +[](O& o) -> int& { return o.planner.seed; }, Bounds{1, 2147483647}),
         declareOption("unknown_is_free", "plan through unknown map cells",

@@ -36,7 +36,7 @@ const bool kOmplSeeded = [] {
 
 void BM_OmplRRTConnect(benchmark::State& state) {
   const GridMap map = wallsMap();
-  const OmplGridPlanner planner(OmplPlannerOptions{"RRTConnect", 1.0});
+  const OmplGridPlanner planner{OmplPlannerOptions{}};
   for (auto _ : state) {
     const std::vector<MapPoint> waypoints = planner.plan(map, Cell{0, 0}, Cell{kSide - 1, kSide - 1});
     if (waypoints.empty()) state.SkipWithError("no path");

@@ -5,8 +5,10 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
+#include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "grid_motion_validator.hpp"
@@ -105,15 +107,57 @@ TEST(OmplGridPlannerTest, TheSameRequestGetsTheSamePlanWhateverWasPlannedBefore)
   }
 }
 
+/// The options with their limits replaced: wall-clock seconds and iterations (0: none).
+OmplPlannerOptions limited(double planning_time, int planning_iterations) {
+  OmplPlannerOptions options;
+  options.planning_time = planning_time;
+  options.planning_iterations = planning_iterations;
+  return options;
+}
+
+TEST(OmplGridPlannerTest, AnIterationLimitCutsAPlanShort) {
+  // Every route here bends at least twice (down the first gap, up through the second). One RRTConnect iteration
+  // extends the start tree by one straight motion and pulls the goal tree straight towards it: a route with one
+  // bend at most, so a limit of 1 finds nothing, on any machine; the default limit finds a path.
+  const Picture zigzag = {
+      "S..#......", "...#......", "...#..#...", "...#..#...", "...#..#...",
+      "...#..#...", "...#..#...", "...#..#...", "......#...", "......#..G",
+  };
+  const GridMap map = test::mapPicture(zigzag);
+  const Cell start = test::markedCell(zigzag, 'S');
+  const Cell goal = test::markedCell(zigzag, 'G');
+  EXPECT_TRUE(OmplGridPlanner(limited(0.0, 1)).plan(map, start, goal).empty());
+  expectSolved(zigzag, OmplPlannerOptions{});
+}
+
+TEST(OmplGridPlannerTest, EitherLimitEndsAPlanForAGoalThatCannotBeReached) {
+  const Picture walled = {
+      "S.........", "..........", "..........", "..........", "..........",
+      "..........", "..........", "..........", "........##", "........#G",
+  };
+  const GridMap map = test::mapPicture(walled);
+  EXPECT_TRUE(OmplGridPlanner(limited(0.0, 2000)).plan(map, Cell{0, 0}, Cell{9, 9}).empty());
+  EXPECT_TRUE(OmplGridPlanner(limited(0.01, 0)).plan(map, Cell{0, 0}, Cell{9, 9}).empty());
+}
+
 TEST(OmplGridPlannerTest, RefusesBadOptions) {
   EXPECT_THROW(OmplGridPlanner(OmplPlannerOptions{"RRT", 1.0}), InvalidArgument);
-  EXPECT_THROW(OmplGridPlanner(OmplPlannerOptions{"PRM", 0.0}), InvalidArgument);
-  try {
-    OmplGridPlanner(OmplPlannerOptions{"RRTConnect", -1.0});
-    FAIL() << "no error";
-  } catch (const InvalidArgument& e) {
-    EXPECT_EQ(e.name(), "planning_time");
+  const std::vector<std::pair<OmplPlannerOptions, std::string>> bad = {
+      {limited(-1.0, 100), "planning_time"},
+      {limited(std::numeric_limits<double>::infinity(), 100), "planning_time"},
+      {limited(1.0, -1), "planning_iterations"},
+      {limited(0.0, 0), "planning_iterations"},  // no limit at all: an unreachable goal would be planned for ever
+  };
+  for (const auto& [options, name] : bad) {
+    try {
+      OmplGridPlanner{options};
+      ADD_FAILURE() << "no error for " << name;
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(e.name(), name);
+    }
   }
+  EXPECT_NO_THROW(OmplGridPlanner(limited(0.0, 1)));
+  EXPECT_NO_THROW(OmplGridPlanner(limited(0.5, 0)));
 }
 
 TEST(GridMotionValidatorTest, AgreesWithTheWalkedCells) {
