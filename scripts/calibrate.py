@@ -3,7 +3,11 @@
 
 Each candidate is one assignment of the world options below (how maps are drawn, what the agents' handicaps
 mean). It is played as the dissertation's experiment on its `turns` set (Wei's fitness, tournament
-replacement, 60 PPPs, 10,000 matings), once per seed (generator and run seeds), with `ppp experiment`; the
+replacement, 60 PPPs, 10,000 matings), once per seed (generator and run seeds), with `ppp experiment`. An
+agent's rates depend only on the maps and on its own options, so one experiment per map candidate and seed plays
+every configuration once per assignment of the agent options that concern it, side by side, and every combination
+of the agent options is scored from those rates: a new agent option adds agents to each experiment, not
+experiments. The
 pass rate of each of the eight configurations, averaged over the seeds, is compared with Table 5.1. Options
 fixed by a fact of their own are not searched: the random agent seeks the goal once seen and bumps are free,
 the only combination whose exact pass rate on an empty 20x20 map (ppp_agents/test/episode_test.cpp) lies in
@@ -12,7 +16,7 @@ Beside them it reports the dissertation's per-PPP facts, which the ranking does 
 optimal turns (its example PPP has 10), the PPPs both bumpers never pass (29 of 60), those each wall follower
 never passes (14 and 13, both 7) and the explorer's lowest per-PPP rate (28.8 %), each averaged over the seeds.
 
-Prints one line per candidate as it finishes and the ranking at the end; writes every candidate's rates to
+Prints one line per map candidate as it finishes (its best agent option combination) and the ranking at the end; writes every candidate's rates to
 WORK/calibration.csv. Exit status 0, or 2 on bad usage.
 
 Usage: scripts/calibrate.py [--runs N] [--seeds 1,2,3] [--work DIR] [--quick]
@@ -51,33 +55,47 @@ AGENTS = [
     ('decision_bumper', 'decision_bumper', {}),
 ]
 
-# The searched options: generator options of the set, and agent options applied to every agent they concern.
+WALL_FOLLOWERS = ['wall_follower_left', 'wall_follower_right']
+EXPLORERS = ['explorer', 'explorer_memory_5x5', 'explorer_noise_0.1', 'long_term_explorer']
+
+# The searched options: generator options of the set, and agent options with the configurations they concern.
 MAP_OPTIONS = {
     'shapes': ['hbar,vbar,diag_down,diag_up,block', 'hbar,vbar,block'],
     'max_obstacles': [6, 8, 10],
     'max_bar_length': [0, 6],
 }
 AGENT_OPTIONS = {
-    'memory_model': ['window', 'scans'],   # explorer_memory_5x5 only: what its 5x5 limits
-    'wall_start': ['goal', 'random'],      # wall followers only
-    'explorer_idle': ['random', 'least_visited'],  # explorer and long_term_explorer
+    'memory_model': (['window', 'scans'], ['explorer_memory_5x5']),  # what its 5x5 limits
+    'wall_start': (['goal', 'random'], WALL_FOLLOWERS),
+    'wall_leave': (['never', 'goal_free'], WALL_FOLLOWERS),
+    'goal_ties': (['horizontal', 'random'], WALL_FOLLOWERS),
+    'explorer_idle': (['random', 'least_visited'], EXPLORERS),
 }
 
 
-def experiment_yaml(candidate, seed, runs):
-    """The experiment of one candidate and seed as YAML text."""
+def variants(name, agent_values):
+    """Every assignment of the searched agent options that concern configuration `name`, as (key, value) tuples."""
+    keys = [k for k in sorted(agent_values) if name in AGENT_OPTIONS[k][1]]
+    return [tuple(zip(keys, values)) for values in itertools.product(*(agent_values[k] for k in keys))]
+
+
+def variant_name(name, assignment):
+    """The agent name one variant of a configuration plays under in a candidate's experiment."""
+    return name + ''.join('.%s-%s' % kv for kv in assignment)
+
+
+def experiment_yaml(map_candidate, agent_values, seed, runs):
+    """The experiment of one map candidate and seed as YAML text: every variant of every configuration, side by
+    side (an agent's rates depend on the maps and its own options only, so one experiment serves every
+    combination of the agent options)."""
     lines = ['seed: %d' % seed, 'runs: %d' % runs, 'threads: 0', 'hardest: 0', 'bumps_use_budget: false', 'agents:']
     for name, agent_type, options in AGENTS:
-        entry = dict(name=name, type=agent_type, **options)
-        if name == 'explorer_memory_5x5':
-            entry['memory_model'] = candidate['memory_model']
-        if agent_type.startswith('wall_follower'):
-            entry['wall_start'] = candidate['wall_start']
-        if agent_type in ('explorer', 'long_term_explorer'):
-            entry['explorer_idle'] = candidate['explorer_idle']
-        lines.append('  - ' + json.dumps(entry))
+        for assignment in variants(name, agent_values):
+            entry = dict(name=variant_name(name, assignment), type=agent_type, **options)
+            entry.update(dict(assignment))
+            lines.append('  - ' + json.dumps(entry))
     generator = dict(fitness='turns', matings=10000, seed=seed, replacement='tournament')
-    generator.update({k: candidate[k] for k in MAP_OPTIONS})
+    generator.update(map_candidate)
     lines += ['sets:', '  - ' + json.dumps(dict(name='turns', generator=generator))]
     return '\n'.join(lines) + '\n'
 
@@ -85,46 +103,59 @@ def experiment_yaml(candidate, seed, runs):
 FACTS = ['turns', 'bumpers_zero', 'left_zero', 'right_zero', 'walls_zero', 'explorer_min']
 
 
-def set_pass_rates(directory):
-    """The set-level pass rates (%) per agent of a finished experiment."""
-    with open(os.path.join(directory, 'summary.csv')) as summary:
-        return {row['agent']: 100 * float(row['pass_rate']) for row in csv.DictReader(summary) if row['level'] == 'set'}
-
-
-def per_ppp_facts(directory):
-    """The per-PPP facts of a finished experiment's set: mean optimal turns, PPPs never passed, explorer minimum."""
-    rates = {}
+def played_rates(directory):
+    """Set-level pass rates (%) and per-PPP pass rates (%, in PPP order) per agent of a finished experiment, and
+    the set's mean optimal turns."""
+    rates, per_ppp = {}, {}
     with open(os.path.join(directory, 'summary.csv')) as summary:
         for row in csv.DictReader(summary):
-            if row['level'] == 'problem':
-                rates.setdefault(row['agent'], []).append(100 * float(row['pass_rate']))
-    never = lambda *agents: sum(1 for values in zip(*(rates[a] for a in agents)) if max(values) == 0)
+            if row['level'] == 'set':
+                rates[row['agent']] = 100 * float(row['pass_rate'])
+            elif row['level'] == 'problem':
+                per_ppp.setdefault(row['agent'], []).append(100 * float(row['pass_rate']))
     with open(os.path.join(directory, 'sets', 'turns', 'set.csv')) as characters:
         turns = [float(row['turns']) for row in csv.DictReader(characters)]
-    return {'turns': sum(turns) / len(turns), 'bumpers_zero': never('bumper', 'decision_bumper'),
+    return rates, per_ppp, sum(turns) / len(turns)
+
+
+def per_ppp_facts(per_ppp, turns):
+    """The dissertation's per-PPP facts of one set: mean optimal turns, PPPs never passed, explorer minimum."""
+    never = lambda *agents: sum(1 for values in zip(*(per_ppp[a] for a in agents)) if max(values) == 0)
+    return {'turns': turns, 'bumpers_zero': never('bumper', 'decision_bumper'),
             'left_zero': never('wall_follower_left'), 'right_zero': never('wall_follower_right'),
-            'walls_zero': never('wall_follower_left', 'wall_follower_right'), 'explorer_min': min(rates['explorer'])}
+            'walls_zero': never('wall_follower_left', 'wall_follower_right'), 'explorer_min': min(per_ppp['explorer'])}
 
 
-def play(candidate, seeds, runs, work):
-    """Mean pass rates (%) and per-PPP facts of a candidate over the seeds."""
-    total = {}
-    facts = {}
+def play(map_candidate, agent_values, seeds, runs, work):
+    """Each seed's (set rates, per-PPP rates, mean turns) of a map candidate, its agents' variants side by side."""
+    played = []
     for seed in seeds:
-        name = '_'.join('%s' % candidate[k] for k in sorted(candidate)).replace(',', '-') + '_s%d' % seed
+        name = '_'.join('%s' % map_candidate[k] for k in sorted(map_candidate)).replace(',', '-') + '_s%d' % seed
         directory = os.path.join(work, name)
         shutil.rmtree(directory, ignore_errors=True)
         with open(directory + '.yaml', 'w') as config:
-            config.write(experiment_yaml(candidate, seed, runs))
+            config.write(experiment_yaml(map_candidate, agent_values, seed, runs))
         done = subprocess.run([os.path.join(REPO, 'scripts', 'ppp'), 'experiment', directory + '.yaml', '-o', directory,
                                '--quiet'], capture_output=True, text=True)
         if done.returncode != 0:
             sys.exit('calibrate: ppp experiment failed on %s.yaml: %s' % (directory, done.stderr.strip()[-500:]))
-        for agent, rate in set_pass_rates(directory).items():
-            total[agent] = total.get(agent, 0.0) + rate / len(seeds)
-        for fact, value in per_ppp_facts(directory).items():
-            facts[fact] = facts.get(fact, 0.0) + value / len(seeds)
-    return total, facts
+        played.append(played_rates(directory))
+    return played
+
+
+def combine(played, agent_candidate):
+    """Mean pass rates (%) and per-PPP facts over the seeds of one combination of the agent options."""
+    rates, facts = {}, {}
+    for seed_rates, seed_per_ppp, turns in played:
+        chosen = {}
+        for name, _, _ in AGENTS:
+            keys = [k for k in sorted(agent_candidate) if name in AGENT_OPTIONS[k][1]]
+            chosen[name] = variant_name(name, tuple((k, agent_candidate[k]) for k in keys))
+        for name, variant in chosen.items():
+            rates[name] = rates.get(name, 0.0) + seed_rates[variant] / len(played)
+        for fact, value in per_ppp_facts({n: seed_per_ppp[v] for n, v in chosen.items()}, turns).items():
+            facts[fact] = facts.get(fact, 0.0) + value / len(played)
+    return rates, facts
 
 
 def main():
@@ -141,25 +172,31 @@ def main():
     if args.runs < 1:
         parser.error('--runs: expected at least 1, got %d' % args.runs)
     os.makedirs(args.work, exist_ok=True)
-    space = dict(MAP_OPTIONS)
-    space.update({k: v if not args.quick else v[:1] for k, v in AGENT_OPTIONS.items()})
-    keys = sorted(space)
+    agent_values = {k: values if not args.quick else values[:1] for k, (values, _) in AGENT_OPTIONS.items()}
+    map_keys, agent_keys = sorted(MAP_OPTIONS), sorted(agent_values)
+    keys = sorted(map_keys + agent_keys)
     ranked = []
     with open(os.path.join(args.work, 'calibration.csv'), 'w', newline='') as out:
         writer = csv.writer(out)
         writer.writerow(keys + ['worst_gap', 'rms_gap', 'random'] + list(TABLE_5_1) + FACTS)
-        for values in itertools.product(*(space[k] for k in keys)):
-            candidate = dict(zip(keys, values))
-            rates, facts = play(candidate, seeds, args.runs, args.work)
-            gaps = [rates[a] - TABLE_5_1[a] for a in TABLE_5_1]
-            worst = max(abs(g) for g in gaps)
-            rms = (sum(g * g for g in gaps) / len(gaps)) ** 0.5
-            writer.writerow(list(values) + ['%.2f' % worst, '%.2f' % rms, '%.2f' % rates['random']] +
-                            ['%.2f' % rates[a] for a in TABLE_5_1] + ['%.2f' % facts[f] for f in FACTS])
+        for map_values in itertools.product(*(MAP_OPTIONS[k] for k in map_keys)):
+            map_candidate = dict(zip(map_keys, map_values))
+            played = play(map_candidate, agent_values, seeds, args.runs, args.work)
+            for agent_combination in itertools.product(*(agent_values[k] for k in agent_keys)):
+                candidate = dict(map_candidate, **dict(zip(agent_keys, agent_combination)))
+                rates, facts = combine(played, dict(zip(agent_keys, agent_combination)))
+                gaps = [rates[a] - TABLE_5_1[a] for a in TABLE_5_1]
+                worst = max(abs(g) for g in gaps)
+                rms = (sum(g * g for g in gaps) / len(gaps)) ** 0.5
+                writer.writerow([candidate[k] for k in keys] +
+                                ['%.2f' % worst, '%.2f' % rms, '%.2f' % rates['random']] +
+                                ['%.2f' % rates[a] for a in TABLE_5_1] + ['%.2f' % facts[f] for f in FACTS])
+                ranked.append((worst, rms, candidate, rates, facts))
             out.flush()
-            ranked.append((worst, rms, candidate, rates, facts))
-            print('worst %5.1f rms %5.1f  %s' % (worst, rms, ' '.join('%s=%s' % kv for kv in candidate.items())),
-                  flush=True)
+            mine = [r for r in ranked if all(r[2][k] == v for k, v in map_candidate.items())]
+            best = min(mine, key=lambda r: (r[0], r[1]))
+            print('worst %5.1f rms %5.1f (best of %d agent option combinations)  %s' %
+                  (best[0], best[1], len(mine), ' '.join('%s=%s' % kv for kv in best[2].items())), flush=True)
     ranked.sort(key=lambda r: (r[0], r[1]))
     print('\nBest candidates (mean over seeds %s, %d runs per PPP; gaps in points against Table 5.1):' %
           (args.seeds, args.runs))

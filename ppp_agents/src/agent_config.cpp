@@ -48,6 +48,18 @@ std::string wallStartProblem(const AgentConfig& config) {
   return config.wall_start == kWallStartGoal || wall_follower ? "" : "only wall followers take it";
 }
 
+/// What is wrong with the wall leaving rule asked for, or "" when nothing is.
+std::string wallLeaveProblem(const AgentConfig& config) {
+  const bool wall_follower = agentType(config.type).has(AgentTrait::FollowsWalls);
+  return config.wall_leave == kWallLeaveNever || wall_follower ? "" : "only wall followers take it";
+}
+
+/// What is wrong with the goal tie rule asked for, or "" when nothing is.
+std::string goalTiesProblem(const AgentConfig& config) {
+  const bool wall_follower = agentType(config.type).has(AgentTrait::FollowsWalls);
+  return config.goal_ties == kGoalTiesHorizontal || wall_follower ? "" : "only wall followers take it";
+}
+
 /// What is wrong with the explorers' idle rule asked for, or "" when nothing is.
 std::string explorerIdleProblem(const AgentConfig& config) {
   const bool explorer = agentType(config.type).has(AgentTrait::Explores);
@@ -158,6 +170,8 @@ void AgentConfig::validate() const {
   if (!goalSeekingProblem(*this).empty()) throw InvalidArgument("goal_seeking", goalSeekingProblem(*this));
   if (!memoryModelProblem(*this).empty()) throw InvalidArgument("memory_model", memoryModelProblem(*this));
   if (!wallStartProblem(*this).empty()) throw InvalidArgument("wall_start", wallStartProblem(*this));
+  if (!wallLeaveProblem(*this).empty()) throw InvalidArgument("wall_leave", wallLeaveProblem(*this));
+  if (!goalTiesProblem(*this).empty()) throw InvalidArgument("goal_ties", goalTiesProblem(*this));
   if (!explorerIdleProblem(*this).empty()) throw InvalidArgument("explorer_idle", explorerIdleProblem(*this));
   if (!priorMapProblem(*this).empty()) throw InvalidArgument("prior_map", priorMapProblem(*this));
   if (!plannerNodeProblem(*this).empty()) throw InvalidArgument("planner_node", plannerNodeProblem(*this));
@@ -197,6 +211,17 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
                       +[](A& a) -> std::string& { return a.wall_start; })
             .withChoices("wall start", {{kWallStartGoal, "head for the goal"},
                                         {kWallStartRandom, "go straight on in a heading drawn at random"}}),
+        declareOption("wall_leave", "wall followers: when they let go of the wall they follow",
+                      +[](A& a) -> std::string& { return a.wall_leave; })
+            .withChoices("wall leave",
+                         {{kWallLeaveNever, "the first wall touched is followed for good"},
+                          {kWallLeaveGoalFree,
+                           "as soon as the move towards the goal is free (Bug0), then head for the goal until the "
+                           "next wall"}}),
+        declareOption("goal_ties", "wall followers heading for the goal: their move when it is as far across as down",
+                      +[](A& a) -> std::string& { return a.goal_ties; })
+            .withChoices("goal ties", {{kGoalTiesHorizontal, "across (East or West)"},
+                                       {kGoalTiesRandom, "across or down, drawn at random each time"}}),
         declareOption("explorer_idle", "explorers: where they move when no neighbour would reveal anything",
                       +[](A& a) -> std::string& { return a.explorer_idle; })
             .withChoices("explorer idle",
@@ -238,14 +263,14 @@ const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs() {
   static const std::vector<OptionSpec<AgentConfig>> specs =
       selectOptions(agentOptionSpecs(),
                     {"type", "name", "memory", "sensor_noise", "goal_seeking", "memory_model", "wall_start",
-                     "explorer_idle"});
+                     "wall_leave", "goal_ties", "explorer_idle"});
   return specs;
 }
 
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs() {
   static const std::vector<OptionSpec<AgentConfig>> specs =
       selectOptions(agentOptionSpecs(), {"type", "memory", "sensor_noise", "goal_seeking", "memory_model",
-                                         "wall_start", "explorer_idle"});
+                                         "wall_start", "wall_leave", "goal_ties", "explorer_idle"});
   return specs;
 }
 

@@ -90,6 +90,8 @@ AgentBehaviour agentBehaviour(const AgentConfig& config) {
   behaviour.memory_scans = scans ? config.memory_window * config.memory_window : 0;
   behaviour.seek_goal = seeksGoal(config);
   behaviour.random_wall_start = config.wall_start == kWallStartRandom;
+  behaviour.leave_wall_for_goal = config.wall_leave == kWallLeaveGoalFree;
+  behaviour.random_goal_ties = config.goal_ties == kGoalTiesRandom;
   behaviour.idle_least_visited = config.explorer_idle == kExplorerIdleLeastVisited;
   return behaviour;
 }

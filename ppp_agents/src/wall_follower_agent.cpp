@@ -14,6 +14,7 @@ void WallFollowerAgent::reset(const EpisodeInfo& info) {
   }
   goal_seen_ = false;
   engaged_ = false;
+  left_a_wall_ = false;
   goal_ = info.goal;
   rng_ = Rng(info.seed);
   heading_ = behaviour_.random_wall_start ? static_cast<int>(rng_.below(4)) : headingTowards(info.start, info.goal);
@@ -22,8 +23,12 @@ void WallFollowerAgent::reset(const EpisodeInfo& info) {
 int WallFollowerAgent::headingTowards(Cell from, Cell goal) {
   const int dx = goal.x - from.x;
   const int dy = goal.y - from.y;
-  if (std::abs(dx) >= std::abs(dy)) return dx >= 0 ? 1 : 3;  // East or West
-  return dy >= 0 ? 2 : 0;                                     // South or North
+  const int horizontal = dx >= 0 ? 1 : 3;  // East or West
+  const int vertical = dy >= 0 ? 2 : 0;    // South or North
+  if (std::abs(dx) == std::abs(dy) && dx != 0 && behaviour_.random_goal_ties) {
+    return rng_.below(2) ? horizontal : vertical;
+  }
+  return std::abs(dx) >= std::abs(dy) ? horizontal : vertical;
 }
 
 Action WallFollowerAgent::act(const Scan& scan) {
@@ -40,8 +45,13 @@ Action WallFollowerAgent::act(const Scan& scan) {
   };
   const int towards_wall = side_ == Side::Left ? 3 : 1;  // quarter turns clockwise: left = 3, right = 1
   const int away_from_wall = 4 - towards_wall;
+  const int towards_goal = headingTowards(scan.position(), goal_);  // one draw a step when ties are random
+  if (engaged_ && behaviour_.leave_wall_for_goal && !wall(towards_goal)) {
+    engaged_ = false;
+    left_a_wall_ = true;
+  }
   if (!engaged_) {
-    if (!behaviour_.random_wall_start) heading_ = headingTowards(scan.position(), goal_);
+    if (!behaviour_.random_wall_start || left_a_wall_) heading_ = towards_goal;
     if (!wall(heading_)) return kMoves[heading_];
     engaged_ = true;
     heading_ = (heading_ + away_from_wall) % 4;  // the wall just hit is now on the agent's side

@@ -225,6 +225,74 @@ TEST(AgentBehaviourTest, ARandomWallStartDrawsTheFirstHeadingFromTheSeed) {
   }
 }
 
+TEST(AgentBehaviourTest, AWallFollowerThatLetsGoOfTheWallDependsOnItsHand) {
+  // Goal seeking off, so only the wall rule plays. Both hands walk the staircase (1, 0), (1, 1), (2, 1) and meet
+  // the one-cell island at (2, 2) moving South. Never letting go, each circles it for good (derived by hand:
+  // the eight cells around it). Letting go when the move towards the goal is free (Bug0): the right hand turns
+  // East to (3, 1), where South is free again, and goes down to the goal in 8 moves; the left hand turns West to
+  // (1, 1), where East is free again, steps back to (2, 1), meets the island again, and shuttles for good.
+  const test::World w = test::world({"S....", ".....", "..#..", ".....", "....G"});
+  const std::vector<Cell> staircase = {{0, 0}, {1, 0}, {1, 1}, {2, 1}};
+  const std::vector<Cell> island = {{1, 1}, {1, 2}, {1, 3}, {2, 3}, {3, 3}, {3, 2}, {3, 1}, {2, 1}};
+  for (const std::string& type : {"wall_follower_left", "wall_follower_right"}) {
+    AgentConfig never = test::config(type);
+    never.goal_seeking = kGoalSeekingOff;
+    AgentConfig leaving = never;
+    leaving.wall_leave = kWallLeaveGoalFree;
+    const auto circling = test::runEpisode(*makeAgent(never), w, 1, 0.0, 60);
+    EXPECT_FALSE(circling.passed) << type;
+    ASSERT_GT(circling.path.size(), 40u) << type;
+    for (std::size_t k = 0; k < staircase.size(); ++k) EXPECT_EQ(circling.path[k], staircase[k]) << type << k;
+    std::set<std::pair<int, int>> first_lap;
+    std::set<std::pair<int, int>> around;
+    for (std::size_t k = 0; k < island.size(); ++k) {
+      first_lap.insert({circling.path[4 + k].x, circling.path[4 + k].y});
+      around.insert({island[k].x, island[k].y});
+    }
+    EXPECT_EQ(first_lap, around) << type;
+    for (std::size_t k = 4 + island.size(); k < circling.path.size(); ++k) {
+      EXPECT_EQ(circling.path[k], circling.path[k - island.size()]) << type << k;
+    }
+    const auto bug0 = test::runEpisode(*makeAgent(leaving), w, 1, 0.0, 60);
+    if (type == "wall_follower_right") {
+      const std::vector<Cell> expected = {{0, 0}, {1, 0}, {1, 1}, {2, 1}, {3, 1}, {3, 2}, {3, 3}, {4, 3}, {4, 4}};
+      EXPECT_TRUE(bug0.passed);
+      EXPECT_EQ(bug0.path, expected);
+    } else {
+      EXPECT_FALSE(bug0.passed);
+      for (std::size_t k = 4; k < bug0.path.size(); ++k) EXPECT_EQ(bug0.path[k], k % 2 ? staircase[3] : staircase[2]);
+    }
+  }
+}
+
+TEST(AgentBehaviourTest, RandomGoalTiesDrawTheAxisWhereTheGoalIsAsFarAcrossAsDown) {
+  // From the centre of an open 9x9 map to its corner, goal seeking off: the goal is as far across as down at every
+  // other cell of the staircase. Across on a tie, the walk is East, South, East, ... (derived by hand); drawn, it
+  // is a staircase all the same (8 moves, never more than one cell off the diagonal), its first move East for some
+  // seeds and South for others, the same walk for the same seed.
+  const test::World w = test::world({".........", ".........", ".........", ".........", "....S....", ".........",
+                                     ".........", ".........", "........G"});
+  for (const std::string& type : {"wall_follower_left", "wall_follower_right"}) {
+    AgentConfig across = test::config(type);
+    across.goal_seeking = kGoalSeekingOff;
+    AgentConfig drawn = across;
+    drawn.goal_ties = kGoalTiesRandom;
+    std::vector<Cell> staircase;
+    for (int k = 0; k <= 8; ++k) staircase.push_back(Cell{4 + (k + 1) / 2, 4 + k / 2});
+    std::set<std::pair<int, int>> first_cells;
+    for (std::uint64_t seed = 0; seed < 40; ++seed) {
+      EXPECT_EQ(test::runEpisode(*makeAgent(across), w, seed, 0.0, 20).path, staircase) << type;
+      const auto walk = test::runEpisode(*makeAgent(drawn), w, seed, 0.0, 20);
+      EXPECT_EQ(walk.path, test::runEpisode(*makeAgent(drawn), w, seed, 0.0, 20).path) << type;
+      ASSERT_TRUE(walk.passed) << type;
+      EXPECT_EQ(walk.steps, 8) << type;
+      for (const Cell cell : walk.path) EXPECT_LE(std::abs(cell.x - cell.y), 1) << type;
+      first_cells.insert({walk.path[1].x, walk.path[1].y});
+    }
+    EXPECT_EQ(first_cells, (std::set<std::pair<int, int>>{{5, 4}, {4, 5}})) << type;
+  }
+}
+
 TEST(AgentBehaviourTest, AnIdleExplorerGoesWhereItStoodLeastOften) {
   // An open 5x2 map that a scan from x = 2 shows whole, goal seeking off: from then on nothing is new, so every move
   // is idle. Fed scans on row 0 at x = 1, 2, 1, 2 (two visits each), at (2, 0) the least-visited explorer goes

@@ -146,8 +146,8 @@ TEST(AgentConfigTest, ReadsConfigurationsWithDefaults) {
 TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, colour: red}\n"),
             "agents.yaml:2: agents[0].colour: unknown key; valid keys: cells_per_ppp_cell, explorer_idle, "
-            "goal_seeking, host, instances, lockstep, memory, memory_model, name, plan_requests, plan_timeout, "
-            "planner_args, planner_node, prior_map, runs, sensor_noise, type, wall_start");
+            "goal_seeking, goal_ties, host, instances, lockstep, memory, memory_model, name, plan_requests, "
+            "plan_timeout, planner_args, planner_node, prior_map, runs, sensor_noise, type, wall_leave, wall_start");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),
             std::string("agents.yaml:3: agents[1].type: missing; valid: ") + kTypes);
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - name: x\n    type: robot\n"),
@@ -223,6 +223,18 @@ TEST(AgentConfigTest, BehaviourOptionsMapToTheAgentsBehaviourAndOnlyWhereTheyApp
   EXPECT_FALSE(agentBehaviour(follower).random_wall_start);
   follower.wall_start = kWallStartRandom;
   EXPECT_TRUE(agentBehaviour(follower).random_wall_start);
+  EXPECT_FALSE(agentBehaviour(follower).leave_wall_for_goal);
+  follower.wall_leave = kWallLeaveGoalFree;
+  EXPECT_TRUE(agentBehaviour(follower).leave_wall_for_goal);
+  EXPECT_FALSE(agentBehaviour(follower).random_goal_ties);
+  follower.goal_ties = kGoalTiesRandom;
+  EXPECT_TRUE(agentBehaviour(follower).random_goal_ties);
+  EXPECT_EQ(parseError("agents:\n  - {type: explorer, goal_ties: random}\n"),
+            "agents.yaml:2: agents[0].goal_ties: only wall followers take it");
+  EXPECT_EQ(parseError("agents:\n  - {type: bumper, wall_leave: goal_free}\n"),
+            "agents.yaml:2: agents[0].wall_leave: only wall followers take it");
+  EXPECT_EQ(parseError("agents:\n  - {type: wall_follower_left, wall_leave: sometimes}\n"),
+            "agents.yaml:2: agents[0].wall_leave: unknown wall leave 'sometimes'; valid: never, goal_free");
   EXPECT_EQ(parseError("agents:\n  - {type: planner, goal_seeking: on}\n"),
             "agents.yaml:2: agents[0].goal_seeking: a planner agent's planner is given the goal; goal seeking does "
             "not apply");

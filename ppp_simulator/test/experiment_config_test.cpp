@@ -353,7 +353,8 @@ TEST_F(ExperimentYaml, PlannerAgentsKeepTheirOwnRunsAndMapChoiceInTheFingerprint
   EXPECT_EQ(c.runsFor(c.agents[1]), 3);
   const std::string fingerprint = experimentFingerprint(c);
   EXPECT_NE(fingerprint.find("  - {type: planner, name: ompl, memory: full, sensor_noise: 0, goal_seeking: by_type, "
-                             "memory_model: window, wall_start: goal, explorer_idle: random, runs: 3, "
+                             "memory_model: window, wall_start: goal, wall_leave: never, goal_ties: horizontal, "
+                             "explorer_idle: random, runs: 3, "
                              "prior_map: true, "
                              "planner_node: '', planner_args: '', plan_timeout: 5, lockstep: true, "
                              "plan_requests: every_step, cells_per_ppp_cell: 1}"),

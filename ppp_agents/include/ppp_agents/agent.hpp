@@ -29,6 +29,8 @@ struct AgentBehaviour {
   int memory_scans = 0;   ///< Limited memory: only what the last n scans saw is kept; 0 = every scan's.
   bool seek_goal = true;  ///< Once it has seen the goal it takes a shortest path to it on its memory.
   bool random_wall_start = false;  ///< Wall followers: first straight on in a random heading, not towards the goal.
+  bool leave_wall_for_goal = false;  ///< Wall followers: let go of the wall when the move towards the goal is free.
+  bool random_goal_ties = false;  ///< Wall followers: as far from the goal across as down, either way at random.
   bool idle_least_visited = false; ///< Explorers: with nothing new in reach, to the least visited free neighbour.
 };
 

@@ -32,6 +32,15 @@ constexpr const char* kMemoryModelScans = "scans";
 constexpr const char* kWallStartGoal = "goal";
 /// wall_start: before touching a wall, go straight on in a heading drawn at random.
 constexpr const char* kWallStartRandom = "random";
+/// wall_leave: a wall follower never lets go of the first wall it touched.
+constexpr const char* kWallLeaveNever = "never";
+/// wall_leave: a wall follower lets go of the wall as soon as its move towards the goal is free (Bug0).
+constexpr const char* kWallLeaveGoalFree = "goal_free";
+
+/// goal_ties: a wall follower heading for the goal as far across as down moves across.
+constexpr const char* kGoalTiesHorizontal = "horizontal";
+/// goal_ties: a wall follower heading for the goal as far across as down moves either way, drawn at random.
+constexpr const char* kGoalTiesRandom = "random";
 
 /// explorer_idle: with nothing new in reach, the explorer moves to a random free neighbour.
 constexpr const char* kExplorerIdleRandom = "random";
@@ -47,6 +56,8 @@ struct AgentConfig {
   std::string goal_seeking = kGoalSeekingByType;  ///< kGoalSeekingByType, kGoalSeekingOn or kGoalSeekingOff.
   std::string memory_model = kMemoryModelWindow;  ///< What memory KxK limits: kMemoryModelWindow or kMemoryModelScans.
   std::string wall_start = kWallStartGoal;        ///< Wall followers: kWallStartGoal or kWallStartRandom.
+  std::string wall_leave = kWallLeaveNever;       ///< Wall followers: kWallLeaveNever or kWallLeaveGoalFree.
+  std::string goal_ties = kGoalTiesHorizontal;    ///< Wall followers: kGoalTiesHorizontal or kGoalTiesRandom.
   std::string explorer_idle = kExplorerIdleRandom;  ///< Explorers: kExplorerIdleRandom or kExplorerIdleLeastVisited.
   int runs = 0;                ///< Runs per PPP for this agent; 0 = the experiment's `runs`.
   bool prior_map = false;      ///< Planner agents only: the planner is given the true map instead of the memory.
@@ -56,7 +67,7 @@ struct AgentConfig {
   int instances = 0;           ///< Planner agents only: bridge and planner pairs sharing its runs; 0 = instanceCount's.
   std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
   /// @throws InvalidArgument naming "type" (listing the valid ones), "name", "memory", "sensor_noise",
-  /// "goal_seeking", "memory_model", "wall_start", "explorer_idle", "runs",
+  /// "goal_seeking", "memory_model", "wall_start", "wall_leave", "goal_ties", "explorer_idle", "runs",
   /// "prior_map", "planner_node", "planner_args", "plan_timeout", "cells_per_ppp_cell", "instances" or "host"
   /// (other agents have no planner: their bridge options are unused).
   void validate() const;
@@ -70,7 +81,7 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs();
 const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs();
 
 /// The agent options that decide how one run plays (type, memory, sensor_noise, goal_seeking, memory_model,
-/// wall_start, explorer_idle): the flags of `ppp simulate` and
+/// wall_start, wall_leave, goal_ties, explorer_idle): the flags of `ppp simulate` and
 /// `ppp replay`, and of the replay commands a report gives.
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs();
 

@@ -13,7 +13,9 @@ namespace agents {
 /// wall side if it can, else goes straight, else turns away, else turns back. Before touching any wall it heads
 /// for the goal, each step along the axis with the larger distance left (a staircase along the diagonal from a
 /// corner), until that move is blocked (or, with a random wall start, straight on in a heading drawn from its
-/// seed); then it turns so the wall is on its side and never lets go of it.
+/// seed); then it turns so the wall is on its side and never lets go of it. With `wall_leave: goal_free` it lets
+/// go as soon as its move towards the goal is free (Bug0), heads for the goal again and follows the next wall it
+/// meets: a concave pocket facing the goal then traps it, one hand more often than the other.
 /// Fault: the first obstacle met from the default corner start is usually an island (a free-standing cycle of
 /// walls); it circles it forever when the goal is not in sight from that loop.
 /// Once it sees the goal it leaves the wall and takes a shortest path on its memory (kept for this alone), unless
@@ -30,8 +32,9 @@ class WallFollowerAgent final : public Agent {
   Action act(const Scan& scan) override;
 
  private:
-  /// The quarter-turn heading (index into kMoves) along the larger axis distance from `from` to `goal`.
-  static int headingTowards(Cell from, Cell goal);
+  /// The quarter-turn heading (index into kMoves) along the larger axis distance from `from` to `goal`; on a tie
+  /// the horizontal one, or with random goal ties either, drawn from the episode's seed.
+  int headingTowards(Cell from, Cell goal);
 
   Side side_;
   AgentBehaviour behaviour_;
@@ -39,6 +42,7 @@ class WallFollowerAgent final : public Agent {
   Navigator navigator_;
   bool goal_seen_ = false;
   bool engaged_ = false;  // touched a wall: the hand-on-wall rule is in force
+  bool left_a_wall_ = false;  // let go of a wall (wall_leave): heads for the goal, even after a random start
   int heading_ = 0;       // index into kMoves
   Cell goal_;
   Rng rng_{0};
