@@ -57,6 +57,7 @@ AGENTS = [
 
 WALL_FOLLOWERS = ['wall_follower_left', 'wall_follower_right']
 EXPLORERS = ['explorer', 'explorer_memory_5x5', 'explorer_noise_0.1', 'long_term_explorer']
+BUMPERS = ['bumper', 'decision_bumper']
 
 # The searched options: generator options of the set, and agent options with the configurations they concern.
 MAP_OPTIONS = {
@@ -70,6 +71,7 @@ AGENT_OPTIONS = {
     'wall_leave': (['never', 'goal_free'], WALL_FOLLOWERS),
     'goal_ties': (['horizontal', 'random'], WALL_FOLLOWERS),
     'explorer_idle': (['random', 'least_visited'], EXPLORERS),
+    'bumper_turn': (['other', 'quarter'], BUMPERS),
 }
 
 

@@ -60,6 +60,12 @@ std::string goalTiesProblem(const AgentConfig& config) {
   return config.goal_ties == kGoalTiesHorizontal || wall_follower ? "" : "only wall followers take it";
 }
 
+/// What is wrong with the bumpers' turn rule asked for, or "" when nothing is.
+std::string bumperTurnProblem(const AgentConfig& config) {
+  const bool bumper = agentType(config.type).has(AgentTrait::Bumps);
+  return config.bumper_turn == kBumperTurnOther || bumper ? "" : "only bumpers take it";
+}
+
 /// What is wrong with the explorers' idle rule asked for, or "" when nothing is.
 std::string explorerIdleProblem(const AgentConfig& config) {
   const bool explorer = agentType(config.type).has(AgentTrait::Explores);
@@ -172,6 +178,7 @@ void AgentConfig::validate() const {
   if (!wallStartProblem(*this).empty()) throw InvalidArgument("wall_start", wallStartProblem(*this));
   if (!wallLeaveProblem(*this).empty()) throw InvalidArgument("wall_leave", wallLeaveProblem(*this));
   if (!goalTiesProblem(*this).empty()) throw InvalidArgument("goal_ties", goalTiesProblem(*this));
+  if (!bumperTurnProblem(*this).empty()) throw InvalidArgument("bumper_turn", bumperTurnProblem(*this));
   if (!explorerIdleProblem(*this).empty()) throw InvalidArgument("explorer_idle", explorerIdleProblem(*this));
   if (!priorMapProblem(*this).empty()) throw InvalidArgument("prior_map", priorMapProblem(*this));
   if (!plannerNodeProblem(*this).empty()) throw InvalidArgument("planner_node", plannerNodeProblem(*this));
@@ -222,6 +229,10 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
                       +[](A& a) -> std::string& { return a.goal_ties; })
             .withChoices("goal ties", {{kGoalTiesHorizontal, "across (East or West)"},
                                        {kGoalTiesRandom, "across or down, drawn at random each time"}}),
+        declareOption("bumper_turn", "bumpers: the directions they draw a new one from after a bump",
+                      +[](A& a) -> std::string& { return a.bumper_turn; })
+            .withChoices("bumper turn", {{kBumperTurnOther, "the three other than the one that bumped"},
+                                         {kBumperTurnQuarter, "a quarter turn, left or right, never straight back"}}),
         declareOption("explorer_idle", "explorers: where they move when no neighbour would reveal anything",
                       +[](A& a) -> std::string& { return a.explorer_idle; })
             .withChoices("explorer idle",
@@ -263,14 +274,14 @@ const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs() {
   static const std::vector<OptionSpec<AgentConfig>> specs =
       selectOptions(agentOptionSpecs(),
                     {"type", "name", "memory", "sensor_noise", "goal_seeking", "memory_model", "wall_start",
-                     "wall_leave", "goal_ties", "explorer_idle"});
+                     "wall_leave", "goal_ties", "bumper_turn", "explorer_idle"});
   return specs;
 }
 
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs() {
   static const std::vector<OptionSpec<AgentConfig>> specs =
       selectOptions(agentOptionSpecs(), {"type", "memory", "sensor_noise", "goal_seeking", "memory_model",
-                                         "wall_start", "wall_leave", "goal_ties", "explorer_idle"});
+                                         "wall_start", "wall_leave", "goal_ties", "bumper_turn", "explorer_idle"});
   return specs;
 }
 

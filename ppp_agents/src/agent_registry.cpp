@@ -38,10 +38,10 @@ const std::vector<AgentType>& agentRegistry() {
        AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal | AgentTrait::Explores,
        [](const AgentBehaviour& b) -> std::unique_ptr<Agent> { return std::make_unique<ExplorerAgent>(true, b); }},
       {"bumper", "straight until a bump, then a random new direction",
-       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal,
+       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal | AgentTrait::Bumps,
        [](const AgentBehaviour& b) -> std::unique_ptr<Agent> { return std::make_unique<BumperAgent>(false, b); }},
       {"decision_bumper", "the bumper, trying untried directions at each bump cell first",
-       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal,
+       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal | AgentTrait::Bumps,
        [](const AgentBehaviour& b) -> std::unique_ptr<Agent> { return std::make_unique<BumperAgent>(true, b); }},
       {kPlannerType, "an external ROS planner played through planner_bridge_node", AgentTrait::ReadsScanWindow,
        nullptr},
@@ -92,6 +92,7 @@ AgentBehaviour agentBehaviour(const AgentConfig& config) {
   behaviour.random_wall_start = config.wall_start == kWallStartRandom;
   behaviour.leave_wall_for_goal = config.wall_leave == kWallLeaveGoalFree;
   behaviour.random_goal_ties = config.goal_ties == kGoalTiesRandom;
+  behaviour.quarter_turns = config.bumper_turn == kBumperTurnQuarter;
   behaviour.idle_least_visited = config.explorer_idle == kExplorerIdleLeastVisited;
   return behaviour;
 }

@@ -23,10 +23,16 @@ void BumperAgent::reset(const EpisodeInfo& info) {
 }
 
 int BumperAgent::turn(Cell position, int bumped) {
+  // Quarter turns: left or right of the bumped direction, never straight back.
+  const unsigned turns = behaviour_.quarter_turns ? (1u << ((bumped + 1) % 4)) | (1u << ((bumped + 3) % 4)) : 0xFu;
+  const auto anyTurn = [&] {
+    if (behaviour_.quarter_turns) return (bumped + (rng_.below(2) != 0 ? 1 : 3)) % 4;
+    return (bumped + 1 + static_cast<int>(rng_.below(3))) % 4;
+  };
   if (decision_) {
     std::uint8_t& tried = tried_[static_cast<std::size_t>(position.y) * width_ + position.x];
     tried = static_cast<std::uint8_t>(tried | (1u << bumped));
-    const unsigned untried = ~static_cast<unsigned>(tried) & 0xFu;
+    const unsigned untried = ~static_cast<unsigned>(tried) & turns;
     int chosen;
     if (untried != 0) {
       const int count = __builtin_popcount(untried);
@@ -39,12 +45,12 @@ int BumperAgent::turn(Cell position, int bumped) {
         }
       }
     } else {
-      chosen = (bumped + 1 + static_cast<int>(rng_.below(3))) % 4;
+      chosen = anyTurn();
     }
     tried = static_cast<std::uint8_t>(tried | (1u << chosen));
     return chosen;
   }
-  return (bumped + 1 + static_cast<int>(rng_.below(3))) % 4;
+  return anyTurn();
 }
 
 Action BumperAgent::act(const Scan& scan) {

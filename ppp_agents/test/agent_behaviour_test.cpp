@@ -98,6 +98,37 @@ TEST(AgentBehaviourTest, DecisionBumperTriesEveryDirectionAtACellBeforeRepeating
   EXPECT_GT(bumper_repeats, 50);
 }
 
+TEST(AgentBehaviourTest, QuarterTurnBumpersTurnLeftOrRightAndTheDecisionBumperGoesRoundTheCompass) {
+  // Bumping again and again at the same cell with bumper_turn: quarter. The bumper's new direction is always a
+  // quarter turn from the one that bumped, left for some seeds and right for others. The decision bumper's is
+  // too, and derived by hand: after d and its quarter turn p, the only untried quarter turn of p is d's reverse,
+  // and then of that the other quarter turn of d: it tries all four, d, p, -d, -p.
+  AgentBehaviour quarter;
+  quarter.quarter_turns = true;
+  const auto index = [](Action a) { return static_cast<int>(a) - 1; };
+  for (bool decision : {false, true}) {
+    BumperAgent agent(decision, quarter);
+    std::set<int> turns_seen;
+    for (std::uint64_t seed = 0; seed < 60; ++seed) {
+      agent.reset(info(9, 9, Cell{4, 4}, Cell{0, 0}, seed));
+      std::vector<int> directions;
+      for (int step = 0; step < 4; ++step) {
+        directions.push_back(index(agent.act(uniformScan(kScanFree, Cell{4, 4}, Cell{0, 0}, step > 0, step))));
+      }
+      for (int i = 1; i < 4; ++i) {
+        const int turn = (directions[i] - directions[i - 1] + 4) % 4;
+        EXPECT_TRUE(turn == 1 || turn == 3) << seed;
+        turns_seen.insert(turn);
+      }
+      if (decision) {
+        EXPECT_EQ(directions[2], (directions[0] + 2) % 4) << seed;
+        EXPECT_EQ(directions[3], (directions[1] + 2) % 4) << seed;
+      }
+    }
+    EXPECT_EQ(turns_seen, (std::set<int>{1, 3})) << decision;
+  }
+}
+
 TEST(AgentBehaviourTest, WallFollowersKeepTheWallOnTheirSide) {
   const test::World w = test::world({
       "....#.......",

@@ -145,9 +145,10 @@ TEST(AgentConfigTest, ReadsConfigurationsWithDefaults) {
 
 TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, colour: red}\n"),
-            "agents.yaml:2: agents[0].colour: unknown key; valid keys: cells_per_ppp_cell, explorer_idle, "
-            "goal_seeking, goal_ties, host, instances, lockstep, memory, memory_model, name, plan_requests, "
-            "plan_timeout, planner_args, planner_node, prior_map, runs, sensor_noise, type, wall_leave, wall_start");
+            "agents.yaml:2: agents[0].colour: unknown key; valid keys: bumper_turn, cells_per_ppp_cell, "
+            "explorer_idle, goal_seeking, goal_ties, host, instances, lockstep, memory, memory_model, name, "
+            "plan_requests, plan_timeout, planner_args, planner_node, prior_map, runs, sensor_noise, type, "
+            "wall_leave, wall_start");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),
             std::string("agents.yaml:3: agents[1].type: missing; valid: ") + kTypes);
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - name: x\n    type: robot\n"),
@@ -204,14 +205,6 @@ TEST(AgentConfigTest, BehaviourOptionsMapToTheAgentsBehaviourAndOnlyWhereTheyApp
   EXPECT_EQ(parseError("agents:\n  - {type: astar, goal_seeking: off}\n"),
             "agents.yaml:2: agents[0].goal_seeking: astar plans its route to the goal from the start; goal seeking "
             "does not apply");
-  EXPECT_EQ(parseError("agents:\n  - {type: explorer, wall_start: random}\n"),
-            "agents.yaml:2: agents[0].wall_start: only wall followers take it");
-  EXPECT_EQ(parseError("agents:\n  - {type: bumper, explorer_idle: least_visited}\n"),
-            "agents.yaml:2: agents[0].explorer_idle: only explorers take it");
-  AgentConfig explorer_idle = config("long_term_explorer");
-  EXPECT_FALSE(agentBehaviour(explorer_idle).idle_least_visited);
-  explorer_idle.explorer_idle = kExplorerIdleLeastVisited;
-  EXPECT_TRUE(agentBehaviour(explorer_idle).idle_least_visited);
   EXPECT_EQ(parseError("agents:\n  - {type: planner, memory_model: scans}\n"),
             "agents.yaml:2: agents[0].memory_model: a planner agent's memory is a window (the bridge's)");
   AgentConfig scans = config("explorer", 5);
@@ -219,25 +212,40 @@ TEST(AgentConfigTest, BehaviourOptionsMapToTheAgentsBehaviourAndOnlyWhereTheyApp
   EXPECT_EQ(agentBehaviour(scans).memory_window, 0);
   EXPECT_EQ(agentBehaviour(scans).memory_scans, 25);
   EXPECT_EQ(agentBehaviour(config("explorer", 5)).memory_scans, 0);
-  AgentConfig follower = config("wall_follower_right");
-  EXPECT_FALSE(agentBehaviour(follower).random_wall_start);
-  follower.wall_start = kWallStartRandom;
-  EXPECT_TRUE(agentBehaviour(follower).random_wall_start);
-  EXPECT_FALSE(agentBehaviour(follower).leave_wall_for_goal);
-  follower.wall_leave = kWallLeaveGoalFree;
-  EXPECT_TRUE(agentBehaviour(follower).leave_wall_for_goal);
-  EXPECT_FALSE(agentBehaviour(follower).random_goal_ties);
-  follower.goal_ties = kGoalTiesRandom;
-  EXPECT_TRUE(agentBehaviour(follower).random_goal_ties);
-  EXPECT_EQ(parseError("agents:\n  - {type: explorer, goal_ties: random}\n"),
-            "agents.yaml:2: agents[0].goal_ties: only wall followers take it");
-  EXPECT_EQ(parseError("agents:\n  - {type: bumper, wall_leave: goal_free}\n"),
-            "agents.yaml:2: agents[0].wall_leave: only wall followers take it");
   EXPECT_EQ(parseError("agents:\n  - {type: wall_follower_left, wall_leave: sometimes}\n"),
             "agents.yaml:2: agents[0].wall_leave: unknown wall leave 'sometimes'; valid: never, goal_free");
   EXPECT_EQ(parseError("agents:\n  - {type: planner, goal_seeking: on}\n"),
             "agents.yaml:2: agents[0].goal_seeking: a planner agent's planner is given the goal; goal seeking does "
             "not apply");
+}
+
+TEST(AgentConfigTest, OptionsOfOneKindOfAgentSetItsBehaviourAndAreRefusedByOthers) {
+  struct KindOption {
+    const char* taker;    // a type that takes the option
+    const char* setting;  // the option and its non-default value, as YAML
+    bool AgentBehaviour::*flag;
+    const char* refuser;  // a type that refuses it
+    const char* refusal;
+  };
+  const KindOption options[] = {
+      {"wall_follower_right", "wall_start: random", &AgentBehaviour::random_wall_start, "explorer",
+       "wall_start: only wall followers take it"},
+      {"wall_follower_left", "wall_leave: goal_free", &AgentBehaviour::leave_wall_for_goal, "bumper",
+       "wall_leave: only wall followers take it"},
+      {"wall_follower_right", "goal_ties: random", &AgentBehaviour::random_goal_ties, "explorer",
+       "goal_ties: only wall followers take it"},
+      {"decision_bumper", "bumper_turn: quarter", &AgentBehaviour::quarter_turns, "wall_follower_left",
+       "bumper_turn: only bumpers take it"},
+      {"long_term_explorer", "explorer_idle: least_visited", &AgentBehaviour::idle_least_visited, "bumper",
+       "explorer_idle: only explorers take it"},
+  };
+  for (const KindOption& o : options) {
+    const std::string taker = std::string("agents:\n  - {type: ") + o.taker;
+    EXPECT_FALSE(agentBehaviour(read(taker + "}\n")[0]).*o.flag) << o.setting;
+    EXPECT_TRUE(agentBehaviour(read(taker + ", " + o.setting + "}\n")[0]).*o.flag) << o.setting;
+    EXPECT_EQ(parseError(std::string("agents:\n  - {type: ") + o.refuser + ", " + o.setting + "}\n"),
+              std::string("agents.yaml:2: agents[0].") + o.refusal);
+  }
 }
 
 TEST(AgentConfigTest, YamlAcceptsAndRefusesWhatEverySourceDoes) {

@@ -354,6 +354,7 @@ TEST_F(ExperimentYaml, PlannerAgentsKeepTheirOwnRunsAndMapChoiceInTheFingerprint
   const std::string fingerprint = experimentFingerprint(c);
   EXPECT_NE(fingerprint.find("  - {type: planner, name: ompl, memory: full, sensor_noise: 0, goal_seeking: by_type, "
                              "memory_model: window, wall_start: goal, wall_leave: never, goal_ties: horizontal, "
+                             "bumper_turn: other, "
                              "explorer_idle: random, runs: 3, "
                              "prior_map: true, "
                              "planner_node: '', planner_args: '', plan_timeout: 5, lockstep: true, "

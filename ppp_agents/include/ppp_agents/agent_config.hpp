@@ -42,6 +42,11 @@ constexpr const char* kGoalTiesHorizontal = "horizontal";
 /// goal_ties: a wall follower heading for the goal as far across as down moves either way, drawn at random.
 constexpr const char* kGoalTiesRandom = "random";
 
+/// bumper_turn: after a bump, a bumper takes any of the three other directions.
+constexpr const char* kBumperTurnOther = "other";
+/// bumper_turn: after a bump, a bumper turns left or right, never straight back.
+constexpr const char* kBumperTurnQuarter = "quarter";
+
 /// explorer_idle: with nothing new in reach, the explorer moves to a random free neighbour.
 constexpr const char* kExplorerIdleRandom = "random";
 /// explorer_idle: with nothing new in reach, the explorer moves to the free neighbour it stood on least often.
@@ -58,6 +63,7 @@ struct AgentConfig {
   std::string wall_start = kWallStartGoal;        ///< Wall followers: kWallStartGoal or kWallStartRandom.
   std::string wall_leave = kWallLeaveNever;       ///< Wall followers: kWallLeaveNever or kWallLeaveGoalFree.
   std::string goal_ties = kGoalTiesHorizontal;    ///< Wall followers: kGoalTiesHorizontal or kGoalTiesRandom.
+  std::string bumper_turn = kBumperTurnOther;     ///< Bumpers: kBumperTurnOther or kBumperTurnQuarter.
   std::string explorer_idle = kExplorerIdleRandom;  ///< Explorers: kExplorerIdleRandom or kExplorerIdleLeastVisited.
   int runs = 0;                ///< Runs per PPP for this agent; 0 = the experiment's `runs`.
   bool prior_map = false;      ///< Planner agents only: the planner is given the true map instead of the memory.
@@ -67,8 +73,8 @@ struct AgentConfig {
   int instances = 0;           ///< Planner agents only: bridge and planner pairs sharing its runs; 0 = instanceCount's.
   std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
   /// @throws InvalidArgument naming "type" (listing the valid ones), "name", "memory", "sensor_noise",
-  /// "goal_seeking", "memory_model", "wall_start", "wall_leave", "goal_ties", "explorer_idle", "runs",
-  /// "prior_map", "planner_node", "planner_args", "plan_timeout", "cells_per_ppp_cell", "instances" or "host"
+  /// "goal_seeking", "memory_model", "wall_start", "wall_leave", "goal_ties", "bumper_turn", "explorer_idle",
+  /// "runs", "prior_map", "planner_node", "planner_args", "plan_timeout", "cells_per_ppp_cell", "instances" or "host"
   /// (other agents have no planner: their bridge options are unused).
   void validate() const;
 };
@@ -81,7 +87,7 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs();
 const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs();
 
 /// The agent options that decide how one run plays (type, memory, sensor_noise, goal_seeking, memory_model,
-/// wall_start, wall_leave, goal_ties, explorer_idle): the flags of `ppp simulate` and
+/// wall_start, wall_leave, goal_ties, bumper_turn, explorer_idle): the flags of `ppp simulate` and
 /// `ppp replay`, and of the replay commands a report gives.
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs();
 
