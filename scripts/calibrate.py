@@ -71,6 +71,7 @@ AGENT_OPTIONS = {
     'wall_leave': (['never', 'goal_free'], WALL_FOLLOWERS),
     'goal_ties': (['horizontal', 'random'], WALL_FOLLOWERS),
     'explorer_idle': (['random', 'least_visited'], EXPLORERS),
+    'explorer_ties': (['random', 'goal'], EXPLORERS),
     'bumper_turn': (['other', 'quarter'], BUMPERS),
 }
 

@@ -72,6 +72,12 @@ std::string explorerIdleProblem(const AgentConfig& config) {
   return config.explorer_idle == kExplorerIdleRandom || explorer ? "" : "only explorers take it";
 }
 
+/// What is wrong with the explorers' tie rule asked for, or "" when nothing is.
+std::string explorerTiesProblem(const AgentConfig& config) {
+  const bool explorer = agentType(config.type).has(AgentTrait::Explores);
+  return config.explorer_ties == kExplorerTiesRandom || explorer ? "" : "only explorers take it";
+}
+
 /// What is wrong with the plan request rule asked for, or "" when nothing is.
 std::string agentPlanRequestsProblem(const AgentConfig& config) {
   if (config.type == kPlannerType || asksEveryStep(config.bridge)) return planRequestsProblem(config.bridge);
@@ -180,6 +186,7 @@ void AgentConfig::validate() const {
   if (!goalTiesProblem(*this).empty()) throw InvalidArgument("goal_ties", goalTiesProblem(*this));
   if (!bumperTurnProblem(*this).empty()) throw InvalidArgument("bumper_turn", bumperTurnProblem(*this));
   if (!explorerIdleProblem(*this).empty()) throw InvalidArgument("explorer_idle", explorerIdleProblem(*this));
+  if (!explorerTiesProblem(*this).empty()) throw InvalidArgument("explorer_ties", explorerTiesProblem(*this));
   if (!priorMapProblem(*this).empty()) throw InvalidArgument("prior_map", priorMapProblem(*this));
   if (!plannerNodeProblem(*this).empty()) throw InvalidArgument("planner_node", plannerNodeProblem(*this));
   if (!plannerArgsProblem(*this).empty()) throw InvalidArgument("planner_args", plannerArgsProblem(*this));
@@ -238,6 +245,11 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
             .withChoices("explorer idle",
                          {{kExplorerIdleRandom, "to a random free neighbour"},
                           {kExplorerIdleLeastVisited, "to the free neighbour stood on least often, ties at random"}}),
+        declareOption("explorer_ties", "explorers: which of the neighbours revealing most unknown cells they move to",
+                      +[](A& a) -> std::string& { return a.explorer_ties; })
+            .withChoices("explorer ties",
+                         {{kExplorerTiesRandom, "one at random"},
+                          {kExplorerTiesGoal, "one of those nearest the goal (Manhattan distance), then at random"}}),
         declareOption("runs", "runs per PPP for this agent (0: the experiment's runs)",
                       +[](A& a) -> int& { return a.runs; }, Bounds{0, kMaxRuns}),
         declareOption("prior_map", "planner agents: the planner is given the true map instead of the memory",
@@ -274,14 +286,15 @@ const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs() {
   static const std::vector<OptionSpec<AgentConfig>> specs =
       selectOptions(agentOptionSpecs(),
                     {"type", "name", "memory", "sensor_noise", "goal_seeking", "memory_model", "wall_start",
-                     "wall_leave", "goal_ties", "bumper_turn", "explorer_idle"});
+                     "wall_leave", "goal_ties", "bumper_turn", "explorer_idle", "explorer_ties"});
   return specs;
 }
 
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs() {
   static const std::vector<OptionSpec<AgentConfig>> specs =
       selectOptions(agentOptionSpecs(), {"type", "memory", "sensor_noise", "goal_seeking", "memory_model",
-                                         "wall_start", "wall_leave", "goal_ties", "bumper_turn", "explorer_idle"});
+                                         "wall_start", "wall_leave", "goal_ties", "bumper_turn", "explorer_idle",
+                                         "explorer_ties"});
   return specs;
 }
 

@@ -63,6 +63,20 @@ bool ExplorerAgent::frontierStep(Cell position, Action* action) {
   return true;
 }
 
+int ExplorerAgent::nearestGoal(Cell position, Cell goal, Action* moves, int count) {
+  const auto distance = [&](Action move) {
+    const Cell c = target(position, move);
+    return std::abs(c.x - goal.x) + std::abs(c.y - goal.y);
+  };
+  int nearest = distance(moves[0]);
+  for (int i = 1; i < count; ++i) nearest = std::min(nearest, distance(moves[i]));
+  int kept = 0;
+  for (int i = 0; i < count; ++i) {
+    if (distance(moves[i]) == nearest) moves[kept++] = moves[i];
+  }
+  return kept;
+}
+
 Action ExplorerAgent::act(const Scan& scan) {
   const Cell position = scan.position();
   memory_.update(scan);
@@ -90,6 +104,9 @@ Action ExplorerAgent::act(const Scan& scan) {
       best_count = 0;
     }
     if (gains[i] == best_gain && gains[i] > 0) best[best_count++] = kMoves[i];
+  }
+  if (best_count > 1 && behaviour_.goal_ties_for_gain) {
+    best_count = nearestGoal(position, scan.goal(), best, best_count);
   }
   if (best_count > 0) {
     path_.clear();

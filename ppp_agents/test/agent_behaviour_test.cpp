@@ -324,6 +324,32 @@ TEST(AgentBehaviourTest, RandomGoalTiesDrawTheAxisWhereTheGoalIsAsFarAcrossAsDow
   }
 }
 
+TEST(AgentBehaviourTest, ExplorersBreakTiesTowardsTheGoalWhenAskedTo) {
+  // From the centre of an open 11x11 map every first move reveals a new row or column of 5 cells: a four-way tie.
+  // At random, the explorers take each of the four; towards the goal (bottom right), only East and South, which
+  // bring it nearer, and both.
+  const test::World w = test::world({"...........", "...........", "...........", "...........", "...........",
+                                     ".....S.....", "...........", "...........", "...........", "...........",
+                                     "..........G"});
+  for (const std::string& type : {"explorer", "long_term_explorer"}) {
+    for (const std::string& ties : {kExplorerTiesRandom, kExplorerTiesGoal}) {
+      AgentConfig config = test::config(type);
+      config.goal_seeking = kGoalSeekingOff;
+      config.explorer_ties = ties;
+      auto agent = makeAgent(config);
+      std::set<std::pair<int, int>> first_cells;
+      for (std::uint64_t seed = 0; seed < 40; ++seed) {
+        const Cell first = test::runEpisode(*agent, w, seed, 0.0, 1).path.back();
+        first_cells.insert({first.x, first.y});
+      }
+      const std::set<std::pair<int, int>> expected =
+          ties == kExplorerTiesGoal ? std::set<std::pair<int, int>>{{6, 5}, {5, 6}}
+                                    : std::set<std::pair<int, int>>{{6, 5}, {5, 6}, {4, 5}, {5, 4}};
+      EXPECT_EQ(first_cells, expected) << type << " " << ties;
+    }
+  }
+}
+
 TEST(AgentBehaviourTest, AnIdleExplorerGoesWhereItStoodLeastOften) {
   // An open 5x2 map that a scan from x = 2 shows whole, goal seeking off: from then on nothing is new, so every move
   // is idle. Fed scans on row 0 at x = 1, 2, 1, 2 (two visits each), at (2, 0) the least-visited explorer goes

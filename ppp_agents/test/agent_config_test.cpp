@@ -146,9 +146,9 @@ TEST(AgentConfigTest, ReadsConfigurationsWithDefaults) {
 TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, colour: red}\n"),
             "agents.yaml:2: agents[0].colour: unknown key; valid keys: bumper_turn, cells_per_ppp_cell, "
-            "explorer_idle, goal_seeking, goal_ties, host, instances, lockstep, memory, memory_model, name, "
-            "plan_requests, plan_timeout, planner_args, planner_node, prior_map, runs, sensor_noise, type, "
-            "wall_leave, wall_start");
+            "explorer_idle, explorer_ties, goal_seeking, goal_ties, host, instances, lockstep, memory, "
+            "memory_model, name, plan_requests, plan_timeout, planner_args, planner_node, prior_map, runs, "
+            "sensor_noise, type, wall_leave, wall_start");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),
             std::string("agents.yaml:3: agents[1].type: missing; valid: ") + kTypes);
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - name: x\n    type: robot\n"),
@@ -238,6 +238,8 @@ TEST(AgentConfigTest, OptionsOfOneKindOfAgentSetItsBehaviourAndAreRefusedByOther
        "bumper_turn: only bumpers take it"},
       {"long_term_explorer", "explorer_idle: least_visited", &AgentBehaviour::idle_least_visited, "bumper",
        "explorer_idle: only explorers take it"},
+      {"explorer", "explorer_ties: goal", &AgentBehaviour::goal_ties_for_gain, "random",
+       "explorer_ties: only explorers take it"},
   };
   for (const KindOption& o : options) {
     const std::string taker = std::string("agents:\n  - {type: ") + o.taker;

@@ -51,6 +51,10 @@ constexpr const char* kBumperTurnQuarter = "quarter";
 constexpr const char* kExplorerIdleRandom = "random";
 /// explorer_idle: with nothing new in reach, the explorer moves to the free neighbour it stood on least often.
 constexpr const char* kExplorerIdleLeastVisited = "least_visited";
+/// explorer_ties: of the neighbours revealing most, the explorer moves to one at random.
+constexpr const char* kExplorerTiesRandom = "random";
+/// explorer_ties: of the neighbours revealing most, the explorer moves to one nearest the goal, then at random.
+constexpr const char* kExplorerTiesGoal = "goal";
 
 /// One agent configuration of an experiment: a type plus handicaps, under a name of its own.
 struct AgentConfig {
@@ -65,6 +69,7 @@ struct AgentConfig {
   std::string goal_ties = kGoalTiesHorizontal;    ///< Wall followers: kGoalTiesHorizontal or kGoalTiesRandom.
   std::string bumper_turn = kBumperTurnOther;     ///< Bumpers: kBumperTurnOther or kBumperTurnQuarter.
   std::string explorer_idle = kExplorerIdleRandom;  ///< Explorers: kExplorerIdleRandom or kExplorerIdleLeastVisited.
+  std::string explorer_ties = kExplorerTiesRandom;  ///< Explorers: kExplorerTiesRandom or kExplorerTiesGoal.
   int runs = 0;                ///< Runs per PPP for this agent; 0 = the experiment's `runs`.
   bool prior_map = false;      ///< Planner agents only: the planner is given the true map instead of the memory.
   std::string planner_node;    ///< Planner agents only: "package/executable" of the planner to start ("" = the user's).
@@ -74,7 +79,7 @@ struct AgentConfig {
   std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
   /// @throws InvalidArgument naming "type" (listing the valid ones), "name", "memory", "sensor_noise",
   /// "goal_seeking", "memory_model", "wall_start", "wall_leave", "goal_ties", "bumper_turn", "explorer_idle",
-  /// "runs", "prior_map", "planner_node", "planner_args", "plan_timeout", "cells_per_ppp_cell", "instances" or "host"
+  /// "explorer_ties", "runs", "prior_map", "planner_node", "planner_args", "plan_timeout", "cells_per_ppp_cell", "instances" or "host"
   /// (other agents have no planner: their bridge options are unused).
   void validate() const;
 };
@@ -87,7 +92,7 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs();
 const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs();
 
 /// The agent options that decide how one run plays (type, memory, sensor_noise, goal_seeking, memory_model,
-/// wall_start, wall_leave, goal_ties, bumper_turn, explorer_idle): the flags of `ppp simulate` and
+/// wall_start, wall_leave, goal_ties, bumper_turn, explorer_idle, explorer_ties): the flags of `ppp simulate` and
 /// `ppp replay`, and of the replay commands a report gives.
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs();
 

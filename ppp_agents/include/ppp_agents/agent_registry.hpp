@@ -18,7 +18,7 @@ enum class AgentTrait : unsigned {
   Baseline = 1u << 3,        ///< No strategy to find faults in (left out of the report's worst PPPs).
   SeeksGoal = 1u << 4,       ///< By design it heads for the goal once it has seen it (goal_seeking: by_type).
   FollowsWalls = 1u << 5,    ///< A wall follower: it takes wall_start, wall_leave and goal_ties.
-  Explores = 1u << 6,        ///< An explorer: it takes explorer_idle.
+  Explores = 1u << 6,        ///< An explorer: it takes explorer_idle and explorer_ties.
   Bumps = 1u << 7,           ///< A bumper: it takes bumper_turn.
 };
 

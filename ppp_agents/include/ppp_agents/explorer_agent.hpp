@@ -14,7 +14,8 @@ namespace agents {
 /// `explorer` and `long_term_explorer`. Both remember what they see and, each step, move to the 4-neighbour
 /// (free in memory) whose sensor window holds the most unknown cells that could be seen from it (cells behind
 /// a remembered obstacle do not count: they stay hidden, and counting them would make the agent shuttle
-/// between two cells forever), ties broken at random.
+/// between two cells forever), ties broken at random (with `explorer_ties: goal`, among the tied neighbours
+/// nearest the goal by Manhattan distance: it knows where the goal is, as a robot given a navigation goal does).
 /// - explorer: when no neighbour would reveal anything it moves to a random free neighbour (with `explorer_idle:
 ///   least_visited`, to one it has stood on least often, ties at random); fault: it wanders in explored areas.
 /// - long_term_explorer: then it follows a shortest path on its memory (known-free cells) to the nearest
@@ -38,6 +39,8 @@ class ExplorerAgent final : public Agent {
   bool isFrontier(Cell c) const;
   /// The next move along the frontier path (re-planned when needed), or false when there is no frontier.
   bool frontierStep(Cell position, Action* action);
+  /// Keeps only the first `count` moves from `position` that end nearest `goal`; returns how many that is.
+  static int nearestGoal(Cell position, Cell goal, Action* moves, int count);
 
   bool long_term_;
   AgentBehaviour behaviour_;
