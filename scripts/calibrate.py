@@ -7,8 +7,8 @@ replacement, 60 PPPs, 10,000 matings), once per seed (generator and run seeds), 
 agent's rates depend only on the maps and on its own options, so one experiment per map candidate and seed plays
 every configuration once per assignment of the agent options that concern it, side by side, and every combination
 of the agent options is scored from those rates: a new agent option adds agents to each experiment, not
-experiments. The
-pass rate of each of the eight configurations, averaged over the seeds, is compared with Table 5.1. Options
+experiments. The pass rate of each of the eight configurations, averaged over the seeds, is compared with
+Table 5.1. Options
 fixed by a fact of their own are not searched: the random agent seeks the goal once seen and bumps are free,
 the only combination whose exact pass rate on an empty 20x20 map (ppp_agents/test/episode_test.cpp) lies in
 4.4 % +- 1 (3.41 %). Candidates are ranked by their largest gap in points, then by the root mean square gap.
@@ -16,8 +16,8 @@ Beside them it reports the dissertation's per-PPP facts, which the ranking does 
 optimal turns (its example PPP has 10), the PPPs both bumpers never pass (29 of 60), those each wall follower
 never passes (14 and 13, both 7) and the explorer's lowest per-PPP rate (28.8 %), each averaged over the seeds.
 
-Prints one line per map candidate as it finishes (its best agent option combination) and the ranking at the end; writes every candidate's rates to
-WORK/calibration.csv. Exit status 0, or 2 on bad usage.
+Prints one line per map candidate as it finishes (its best agent option combination) and the ranking at the end;
+writes every candidate's rates to WORK/calibration.csv. Exit status 0, or 2 on bad usage.
 
 Usage: scripts/calibrate.py [--runs N] [--seeds 1,2,3] [--work DIR] [--quick]
   --runs    runs per agent per PPP (default 100)
@@ -76,9 +76,14 @@ AGENT_OPTIONS = {
 }
 
 
+def concerning(name, keys):
+    """The searched agent options among `keys` that concern configuration `name`, sorted."""
+    return [k for k in sorted(keys) if name in AGENT_OPTIONS[k][1]]
+
+
 def variants(name, agent_values):
     """Every assignment of the searched agent options that concern configuration `name`, as (key, value) tuples."""
-    keys = [k for k in sorted(agent_values) if name in AGENT_OPTIONS[k][1]]
+    keys = concerning(name, agent_values)
     return [tuple(zip(keys, values)) for values in itertools.product(*(agent_values[k] for k in keys))]
 
 
@@ -148,12 +153,10 @@ def play(map_candidate, agent_values, seeds, runs, work):
 
 def combine(played, agent_candidate):
     """Mean pass rates (%) and per-PPP facts over the seeds of one combination of the agent options."""
+    chosen = {name: variant_name(name, tuple((k, agent_candidate[k]) for k in concerning(name, agent_candidate)))
+              for name, _, _ in AGENTS}
     rates, facts = {}, {}
     for seed_rates, seed_per_ppp, turns in played:
-        chosen = {}
-        for name, _, _ in AGENTS:
-            keys = [k for k in sorted(agent_candidate) if name in AGENT_OPTIONS[k][1]]
-            chosen[name] = variant_name(name, tuple((k, agent_candidate[k]) for k in keys))
         for name, variant in chosen.items():
             rates[name] = rates.get(name, 0.0) + seed_rates[variant] / len(played)
         for fact, value in per_ppp_facts({n: seed_per_ppp[v] for n, v in chosen.items()}, turns).items():

@@ -2,7 +2,6 @@
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
-#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/geometric/PathSimplifier.h>
 #include <ompl/geometric/SimpleSetup.h>
 #include <ompl/geometric/planners/prm/PRM.h>
@@ -10,8 +9,8 @@
 #include <ompl/geometric/planners/rrt/RRTstar.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
-#include <limits>
 #include <memory>
 #include <utility>
 
@@ -83,14 +82,15 @@ void OmplPlannerOptions::validate() const {
   }
   if (planning_iterations < 0) {
     throw InvalidArgument("planning_iterations",
-                          "expected a number of iterations, 0 or more (0: no iteration limit), got " +
+                          "expected a number of iterations, 0 or more (0: the planner's default), got " +
                               std::to_string(planning_iterations));
   }
-  if (planning_time == 0.0 && planning_iterations == 0) {
-    throw InvalidArgument("planning_iterations",
-                          "expected a limit: planning_iterations and planning_time are both 0, so a plan for a goal "
-                          "that cannot be reached would never end");
-  }
+}
+
+int defaultPlanningIterations(const std::string& planner) { return planner == "RRTstar" ? 10000 : 100000; }
+
+int OmplPlannerOptions::iterationLimit() const {
+  return planning_iterations > 0 ? planning_iterations : defaultPlanningIterations(planner);
 }
 
 OmplGridPlanner::OmplGridPlanner(OmplPlannerOptions options) : options_(std::move(options)) { options_.validate(); }
@@ -125,14 +125,16 @@ std::vector<MapPoint> OmplGridPlanner::plan(const GridMap& map, Cell start, Cell
   to[1] = goal_point.y;
   setup.setStartAndGoalStates(from, to);
 
-  // Counted iterations end a plan at the same point on any machine; the wall clock, when set, may end it sooner.
-  ob::IterationTerminationCondition iterations(options_.planning_iterations > 0
-                                                   ? static_cast<unsigned>(options_.planning_iterations)
-                                                   : std::numeric_limits<unsigned>::max());
-  const ob::PlannerTerminationCondition limit =
-      options_.planning_time > 0.0
-          ? ob::plannerOrTerminationCondition(iterations, ob::timedPlannerTerminationCondition(options_.planning_time))
-          : ob::PlannerTerminationCondition(iterations);
+  // Counted checks of the limit (one per iteration: the N + 1st check ends the plan, as OMPL's
+  // IterationTerminationCondition, but atomic, as PRM checks from two threads) end a plan at the same point on any
+  // machine; the wall clock, when set, may end it sooner.
+  std::atomic<long long> checks{0};
+  const long long iterations = options_.iterationLimit();
+  ob::PlannerTerminationCondition limit(
+      [&checks, iterations] { return checks.fetch_add(1, std::memory_order_relaxed) >= iterations; });
+  if (options_.planning_time > 0.0) {
+    limit = ob::plannerOrTerminationCondition(limit, ob::timedPlannerTerminationCondition(options_.planning_time));
+  }
   if (setup.solve(limit) != ob::PlannerStatus::EXACT_SOLUTION) return {};
   og::PathGeometric& path = setup.getSolutionPath();
   SeededSimplifier(si, seed).simplifyMax(path);

@@ -12,19 +12,22 @@ namespace planners {
 /// The OMPL planners OmplPlannerOptions::planner may name.
 const std::vector<std::string>& omplPlannerNames();
 
+/// The iteration limit of a plan when OmplPlannerOptions leave it at 0: 100,000 for RRTConnect (far more than it
+/// needs on any solvable 20x20 PPP; about 0.2 s when the goal cannot be reached) and PRM, 10,000 for RRTstar (which
+/// improves its path until the limit: about half a second).
+int defaultPlanningIterations(const std::string& planner);
+
 /// What OmplGridPlanner runs.
 struct OmplPlannerOptions {
   std::string planner = "RRTConnect";  ///< One of omplPlannerNames().
   double planning_time = 0.0;          ///< Wall-clock seconds OMPL may plan per request (0: no such limit).
   int seed = 1;                        ///< Each plan's random numbers derive from it and from the request.
-  int planning_iterations = kDefaultPlanningIterations;  ///< Planner iterations per request (0: no such limit).
+  int planning_iterations = 0;         ///< Planner iterations per request; 0: defaultPlanningIterations(planner).
 
-  /// The default iteration limit: far more than any solvable 20x20 PPP needs, a fraction of a second when the goal
-  /// cannot be reached.
-  static constexpr int kDefaultPlanningIterations = 100000;
-
+  /// The iteration limit in effect: planning_iterations, or the planner's default when it is 0.
+  int iterationLimit() const;
   /// @throws InvalidArgument naming `planner`, `planning_time` (not negative, finite) or `planning_iterations` (not
-  /// negative; not 0 when planning_time is 0 too: a plan must end) when out of range.
+  /// negative) when out of range.
   void validate() const;
 };
 

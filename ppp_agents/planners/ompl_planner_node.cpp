@@ -9,7 +9,8 @@
 //                                                          empty when OMPL finds no path within its limits.
 //                                                          One per goal.
 //   parameters  ~planner (RRTConnect, RRTstar or PRM; default RRTConnect), ~planning_iterations (iterations per
-//               plan, default 100000; 0: none), ~planning_time (wall-clock seconds per plan, default 0: none),
+//               plan; default 0: 100000, for RRTstar 10000), ~planning_time (wall-clock seconds per plan, default
+//               0: none),
 //               ~seed (ompl::RNG::setSeed, default 1), ~unknown_is_free (default true),
 //               ~map_frame (default "map"), ~base_frame (default: the node's namespace + "/base_link",
 //               e.g. "ompl/robot/base_link" in /ompl/robot)
@@ -39,9 +40,9 @@ int main(int argc, char** argv) {
     planners::PlannerNode node(nh, options, [&planner](const planners::GridMap& map, ppp::Cell robot, ppp::Cell goal) {
       return planner.plan(map, robot, goal);
     });
-    ROS_INFO("OMPL planner %s (per plan: %d iterations, %.3f s of wall clock; 0: no limit; seed %d, unknown cells "
+    ROS_INFO("OMPL planner %s (per plan: %d iterations, %.3f s of wall clock, 0: no limit; seed %d, unknown cells "
              "%s): %s",
-             parameters.planner.planner.c_str(), parameters.planner.planning_iterations,
+             parameters.planner.planner.c_str(), parameters.planner.iterationLimit(),
              parameters.planner.planning_time, parameters.planner.seed, parameters.unknown_is_free ? "free" : "blocked",
              node.topics().c_str());
     node.run();

@@ -60,8 +60,10 @@ const std::vector<OptionSpec<OmplNodeParameters>>& omplNodeOptionSpecs() {
                       "on the machine's load, so results with it are not reproducible)",
                       +[](O& o) -> double& { return o.planner.planning_time; }, Bounds{0, 3600}),
         declareOption("planning_iterations",
-                      "planner iterations OMPL may run per request (0: no such limit; RRTConnect: one sample, "
-                      "each tree extended once): a time limit that gives the same plans on any machine",
+                      "planner iterations OMPL may run per request (0: 100,000 for RRTConnect and PRM, 10,000 for "
+                      "RRTstar; an RRTConnect iteration grows one tree a step towards a random sample and the other "
+                      "towards it): a time limit that gives the same plans on any machine (RRTConnect, RRTstar; PRM "
+                      "grows its roadmap on a timer)",
                       +[](O& o) -> int& { return o.planner.planning_iterations; }, Bounds{0, 1000000000}),
         declareOption("seed", "seed each plan's random numbers derive from, with what the plan is asked",
                       +[](O& o) -> int& { return o.planner.seed; }, Bounds{1, 2147483647}),

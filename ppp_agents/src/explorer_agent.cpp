@@ -9,6 +9,22 @@
 namespace ppp {
 namespace agents {
 
+namespace {
+
+/// Keeps, of the first `count` moves, those with the least `key(move)`, in order; returns how many.
+template <class Key>
+int keepLeast(Action* moves, int count, Key key) {
+  auto least = key(moves[0]);
+  for (int i = 1; i < count; ++i) least = std::min(least, key(moves[i]));
+  int kept = 0;
+  for (int i = 0; i < count; ++i) {
+    if (key(moves[i]) == least) moves[kept++] = moves[i];
+  }
+  return kept;
+}
+
+}  // namespace
+
 ExplorerAgent::ExplorerAgent(bool long_term, const AgentBehaviour& behaviour)
     : long_term_(long_term), behaviour_(behaviour) {}
 
@@ -63,20 +79,6 @@ bool ExplorerAgent::frontierStep(Cell position, Action* action) {
   return true;
 }
 
-int ExplorerAgent::nearestGoal(Cell position, Cell goal, Action* moves, int count) {
-  const auto distance = [&](Action move) {
-    const Cell c = target(position, move);
-    return std::abs(c.x - goal.x) + std::abs(c.y - goal.y);
-  };
-  int nearest = distance(moves[0]);
-  for (int i = 1; i < count; ++i) nearest = std::min(nearest, distance(moves[i]));
-  int kept = 0;
-  for (int i = 0; i < count; ++i) {
-    if (distance(moves[i]) == nearest) moves[kept++] = moves[i];
-  }
-  return kept;
-}
-
 Action ExplorerAgent::act(const Scan& scan) {
   const Cell position = scan.position();
   memory_.update(scan);
@@ -106,7 +108,11 @@ Action ExplorerAgent::act(const Scan& scan) {
     if (gains[i] == best_gain && gains[i] > 0) best[best_count++] = kMoves[i];
   }
   if (best_count > 1 && behaviour_.goal_ties_for_gain) {
-    best_count = nearestGoal(position, scan.goal(), best, best_count);
+    const Cell goal = scan.goal();
+    best_count = keepLeast(best, best_count, [&](Action move) {
+      const Cell c = target(position, move);
+      return std::abs(c.x - goal.x) + std::abs(c.y - goal.y);
+    });
   }
   if (best_count > 0) {
     path_.clear();
@@ -116,17 +122,10 @@ Action ExplorerAgent::act(const Scan& scan) {
   if (long_term_ && frontierStep(position, &action)) return action;
   if (behaviour_.idle_least_visited && free_count > 1) {
     // Keep only the free neighbours stood on least often.
-    const auto visits = [&](Action move) {
+    free_count = keepLeast(free, free_count, [&](Action move) {
       const Cell c = target(position, move);
       return visits_[static_cast<std::size_t>(c.y) * width_ + c.x];
-    };
-    std::uint16_t fewest = UINT16_MAX;
-    for (int i = 0; i < free_count; ++i) fewest = std::min(fewest, visits(free[i]));
-    int kept = 0;
-    for (int i = 0; i < free_count; ++i) {
-      if (visits(free[i]) == fewest) free[kept++] = free[i];
-    }
-    free_count = kept;
+    });
   }
   if (free_count > 0) return free[free_count == 1 ? 0 : rng_.below(static_cast<std::uint64_t>(free_count))];
   return kMoves[rng_.below(4)];

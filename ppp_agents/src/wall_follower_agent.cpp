@@ -17,7 +17,7 @@ void WallFollowerAgent::reset(const EpisodeInfo& info) {
   left_a_wall_ = false;
   goal_ = info.goal;
   rng_ = Rng(info.seed);
-  heading_ = behaviour_.random_wall_start ? static_cast<int>(rng_.below(4)) : headingTowards(info.start, info.goal);
+  heading_ = behaviour_.random_wall_start ? static_cast<int>(rng_.below(4)) : 0;  // else act() heads for the goal
 }
 
 int WallFollowerAgent::headingTowards(Cell from, Cell goal) {

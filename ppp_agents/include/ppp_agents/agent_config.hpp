@@ -79,8 +79,8 @@ struct AgentConfig {
   std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
   /// @throws InvalidArgument naming "type" (listing the valid ones), "name", "memory", "sensor_noise",
   /// "goal_seeking", "memory_model", "wall_start", "wall_leave", "goal_ties", "bumper_turn", "explorer_idle",
-  /// "explorer_ties", "runs", "prior_map", "planner_node", "planner_args", "plan_timeout", "cells_per_ppp_cell", "instances" or "host"
-  /// (other agents have no planner: their bridge options are unused).
+  /// "explorer_ties", "runs", "prior_map", "planner_node", "planner_args", "plan_timeout", "cells_per_ppp_cell",
+  /// "instances" or "host" (other agents have no planner: their bridge options are unused).
   void validate() const;
 };
 

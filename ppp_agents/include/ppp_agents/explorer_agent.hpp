@@ -39,8 +39,6 @@ class ExplorerAgent final : public Agent {
   bool isFrontier(Cell c) const;
   /// The next move along the frontier path (re-planned when needed), or false when there is no frontier.
   bool frontierStep(Cell position, Action* action);
-  /// Keeps only the first `count` moves from `position` that end nearest `goal`; returns how many that is.
-  static int nearestGoal(Cell position, Cell goal, Action* moves, int count);
 
   bool long_term_;
   AgentBehaviour behaviour_;

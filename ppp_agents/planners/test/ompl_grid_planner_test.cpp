@@ -146,7 +146,6 @@ TEST(OmplGridPlannerTest, RefusesBadOptions) {
       {limited(-1.0, 100), "planning_time"},
       {limited(std::numeric_limits<double>::infinity(), 100), "planning_time"},
       {limited(1.0, -1), "planning_iterations"},
-      {limited(0.0, 0), "planning_iterations"},  // no limit at all: an unreachable goal would be planned for ever
   };
   for (const auto& [options, name] : bad) {
     try {
@@ -157,7 +156,9 @@ TEST(OmplGridPlannerTest, RefusesBadOptions) {
     }
   }
   EXPECT_NO_THROW(OmplGridPlanner(limited(0.0, 1)));
-  EXPECT_NO_THROW(OmplGridPlanner(limited(0.5, 0)));
+  EXPECT_NO_THROW(OmplGridPlanner(limited(0.0, 0)));  // the planner's default iteration limit
+  EXPECT_EQ(defaultPlanningIterations("RRTConnect"), 100000);
+  EXPECT_EQ(defaultPlanningIterations("RRTstar"), 10000);
 }
 
 TEST(GridMotionValidatorTest, AgreesWithTheWalkedCells) {
