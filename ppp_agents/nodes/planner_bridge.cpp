@@ -22,15 +22,6 @@ bool samePoints(const std::vector<MapPoint>& a, const std::vector<MapPoint>& b) 
                     [](const MapPoint& p, const MapPoint& q) { return p.x == q.x && p.y == q.y; });
 }
 
-/// A reply rejecting every scan of `batch`, for the step's outcome to fill in.
-std::vector<protocol::MoveReply> rejectedReplies(const ppp_msgs::ScanBatch& batch) {
-  std::vector<protocol::MoveReply> replies(batch.episodes.size());
-  for (std::size_t i = 0; i < replies.size(); ++i) {
-    replies[i] = {batch.episodes[i], i < batch.steps.size() ? batch.steps[i] : 0, protocol::kRejectedAction};
-  }
-  return replies;
-}
-
 }  // namespace
 
 PlannerBridge::PlannerBridge(ros::NodeHandle& nh, const BridgeParameters& parameters)
@@ -77,7 +68,6 @@ void PlannerBridge::onScans(const ppp_msgs::ScanBatch::ConstPtr& batch) {
 
 void PlannerBridge::play(const ppp_msgs::ScanBatch::ConstPtr& batch) {
   const std::size_t n = batch->episodes.size();
-  std::vector<protocol::MoveReply> replies = rejectedReplies(*batch);
   std::string what;
   const std::string fault = protocol::checkScanBatch(*batch, true, &what);
   if (!fault.empty()) {
@@ -95,14 +85,21 @@ void PlannerBridge::play(const ppp_msgs::ScanBatch::ConstPtr& batch) {
         work_.notify_one();
         return;
       }
-      replies[0].action = outcome->action;
-      replies[0].failure = outcome->failure;
+      return reply(*batch, &*outcome);
     }
   }
-  reply(*batch, replies);
+  reply(*batch, nullptr);
 }
 
-void PlannerBridge::reply(const ppp_msgs::ScanBatch& batch, const std::vector<protocol::MoveReply>& replies) {
+void PlannerBridge::reply(const ppp_msgs::ScanBatch& batch, const StepOutcome* outcome) {
+  std::vector<protocol::MoveReply> replies(batch.episodes.size());
+  for (std::size_t i = 0; i < replies.size(); ++i) {
+    replies[i] = {batch.episodes[i], i < batch.steps.size() ? batch.steps[i] : 0, protocol::kRejectedAction};
+  }
+  if (outcome && !replies.empty()) {
+    replies[0].action = outcome->action;
+    replies[0].failure = outcome->failure;
+  }
   ppp_msgs::MoveBatch moves = protocol::encodeMoves(parameters_.config.name, batch.batch, replies);
   moves.header.stamp = ros::Time::now();
   moves_.publish(moves);
@@ -122,10 +119,7 @@ void PlannerBridge::askPlanner() {
     const ppp_msgs::ScanBatch::ConstPtr batch = asking_;
     lock.unlock();  // the network thread goes on reading paths (and queueing scans) meanwhile
     const StepOutcome outcome = request();
-    std::vector<protocol::MoveReply> replies = rejectedReplies(*batch);
-    replies[0].action = outcome.action;
-    replies[0].failure = outcome.failure;
-    reply(*batch, replies);
+    reply(*batch, &outcome);
     lock.lock();
     asking_ = nullptr;
   }

@@ -17,7 +17,6 @@
 #include "planner_bridge_parameters.hpp"
 #include "planner_link.hpp"
 #include "ppp_agents/planner_episode.hpp"
-#include "ppp_agents/protocol/batch_codec.hpp"
 #include "ppp_core/sensor.hpp"
 #include "ppp_msgs/MoveBatch.h"
 #include "ppp_msgs/ScanBatch.h"
@@ -61,7 +60,9 @@ class PlannerBridge {
   void onScans(const ppp_msgs::ScanBatch::ConstPtr& batch);
   /// Plays a batch (mutex_ held): answers it, or hands its plan request to the worker.
   void play(const ppp_msgs::ScanBatch::ConstPtr& batch);
-  void reply(const ppp_msgs::ScanBatch& batch, const std::vector<protocol::MoveReply>& replies);
+  /// Publishes the moves for `batch`: its first scan's `outcome`, every other scan (all of them without one)
+  /// rejected.
+  void reply(const ppp_msgs::ScanBatch& batch, const StepOutcome* outcome);
   /// The worker thread: asks the planner for each step handed over, and replies.
   void askPlanner();
   void start(const ppp_msgs::EpisodeStart& start);

@@ -42,40 +42,43 @@ std::string memoryModelProblem(const AgentConfig& config) {
   return "a planner agent's memory is a window (the bridge's)";
 }
 
-/// What is wrong with the wall start asked for, or "" when nothing is.
-std::string wallStartProblem(const AgentConfig& config) {
-  const bool wall_follower = agentType(config.type).has(AgentTrait::FollowsWalls);
-  return config.wall_start == kWallStartGoal || wall_follower ? "" : "only wall followers take it";
+/// An option only one kind of built-in agent takes (its types have `trait`); any other agent must leave it at its
+/// default.
+struct KindOption {
+  const char* key;     ///< The option.
+  AgentTrait trait;    ///< What the types that take it have.
+  const char* takers;  ///< Those types, as errors name them.
+};
+
+/// Every option of one kind of agent, in the order validate() checks them.
+const std::vector<KindOption>& kindOptions() {
+  static const std::vector<KindOption> options = {
+      {"wall_start", AgentTrait::FollowsWalls, "wall followers"},
+      {"wall_leave", AgentTrait::FollowsWalls, "wall followers"},
+      {"goal_ties", AgentTrait::FollowsWalls, "wall followers"},
+      {"bumper_turn", AgentTrait::Bumps, "bumpers"},
+      {"explorer_idle", AgentTrait::Explores, "explorers"},
+      {"explorer_ties", AgentTrait::Explores, "explorers"},
+  };
+  return options;
 }
 
-/// What is wrong with the wall leaving rule asked for, or "" when nothing is.
-std::string wallLeaveProblem(const AgentConfig& config) {
-  const bool wall_follower = agentType(config.type).has(AgentTrait::FollowsWalls);
-  return config.wall_leave == kWallLeaveNever || wall_follower ? "" : "only wall followers take it";
+/// The names of kindOptions().
+std::vector<std::string> kindOptionNames() {
+  std::vector<std::string> names;
+  for (const KindOption& option : kindOptions()) names.push_back(option.key);
+  return names;
 }
 
-/// What is wrong with the goal tie rule asked for, or "" when nothing is.
-std::string goalTiesProblem(const AgentConfig& config) {
-  const bool wall_follower = agentType(config.type).has(AgentTrait::FollowsWalls);
-  return config.goal_ties == kGoalTiesHorizontal || wall_follower ? "" : "only wall followers take it";
-}
-
-/// What is wrong with the bumpers' turn rule asked for, or "" when nothing is.
-std::string bumperTurnProblem(const AgentConfig& config) {
-  const bool bumper = agentType(config.type).has(AgentTrait::Bumps);
-  return config.bumper_turn == kBumperTurnOther || bumper ? "" : "only bumpers take it";
-}
-
-/// What is wrong with the explorers' idle rule asked for, or "" when nothing is.
-std::string explorerIdleProblem(const AgentConfig& config) {
-  const bool explorer = agentType(config.type).has(AgentTrait::Explores);
-  return config.explorer_idle == kExplorerIdleRandom || explorer ? "" : "only explorers take it";
-}
-
-/// What is wrong with the explorers' tie rule asked for, or "" when nothing is.
-std::string explorerTiesProblem(const AgentConfig& config) {
-  const bool explorer = agentType(config.type).has(AgentTrait::Explores);
-  return config.explorer_ties == kExplorerTiesRandom || explorer ? "" : "only explorers take it";
+/// @throws InvalidArgument naming the first option of another kind of agent that `config` sets off its default.
+void checkKindOptions(const AgentConfig& config) {
+  static const AgentConfig defaults;
+  for (const KindOption& option : kindOptions()) {
+    const OptionSpec<AgentConfig>& spec = optionNamed(agentOptionSpecs(), option.key);
+    if (!agentType(config.type).has(option.trait) && spec.text(config) != spec.text(defaults)) {
+      throw InvalidArgument(option.key, std::string("only ") + option.takers + " take it");
+    }
+  }
 }
 
 /// What is wrong with the plan request rule asked for, or "" when nothing is.
@@ -181,12 +184,7 @@ void AgentConfig::validate() const {
   }
   if (!goalSeekingProblem(*this).empty()) throw InvalidArgument("goal_seeking", goalSeekingProblem(*this));
   if (!memoryModelProblem(*this).empty()) throw InvalidArgument("memory_model", memoryModelProblem(*this));
-  if (!wallStartProblem(*this).empty()) throw InvalidArgument("wall_start", wallStartProblem(*this));
-  if (!wallLeaveProblem(*this).empty()) throw InvalidArgument("wall_leave", wallLeaveProblem(*this));
-  if (!goalTiesProblem(*this).empty()) throw InvalidArgument("goal_ties", goalTiesProblem(*this));
-  if (!bumperTurnProblem(*this).empty()) throw InvalidArgument("bumper_turn", bumperTurnProblem(*this));
-  if (!explorerIdleProblem(*this).empty()) throw InvalidArgument("explorer_idle", explorerIdleProblem(*this));
-  if (!explorerTiesProblem(*this).empty()) throw InvalidArgument("explorer_ties", explorerTiesProblem(*this));
+  checkKindOptions(*this);
   if (!priorMapProblem(*this).empty()) throw InvalidArgument("prior_map", priorMapProblem(*this));
   if (!plannerNodeProblem(*this).empty()) throw InvalidArgument("planner_node", plannerNodeProblem(*this));
   if (!plannerArgsProblem(*this).empty()) throw InvalidArgument("planner_args", plannerArgsProblem(*this));
@@ -283,18 +281,20 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
 }
 
 const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs() {
-  static const std::vector<OptionSpec<AgentConfig>> specs =
-      selectOptions(agentOptionSpecs(),
-                    {"type", "name", "memory", "sensor_noise", "goal_seeking", "memory_model", "wall_start",
-                     "wall_leave", "goal_ties", "bumper_turn", "explorer_idle", "explorer_ties"});
+  static const std::vector<OptionSpec<AgentConfig>> specs = [] {
+    std::vector<std::string> names = {"type", "name", "memory", "sensor_noise", "goal_seeking", "memory_model"};
+    for (const std::string& name : kindOptionNames()) names.push_back(name);
+    return selectOptions(agentOptionSpecs(), names);
+  }();
   return specs;
 }
 
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs() {
-  static const std::vector<OptionSpec<AgentConfig>> specs =
-      selectOptions(agentOptionSpecs(), {"type", "memory", "sensor_noise", "goal_seeking", "memory_model",
-                                         "wall_start", "wall_leave", "goal_ties", "bumper_turn", "explorer_idle",
-                                         "explorer_ties"});
+  static const std::vector<OptionSpec<AgentConfig>> specs = [] {
+    std::vector<std::string> names = {"type", "memory", "sensor_noise", "goal_seeking", "memory_model"};
+    for (const std::string& name : kindOptionNames()) names.push_back(name);
+    return selectOptions(agentOptionSpecs(), names);
+  }();
   return specs;
 }
 
