@@ -36,6 +36,13 @@ std::string goalSeekingProblem(const AgentConfig& config) {
   return "";
 }
 
+/// What is wrong with the goal range asked for, or "" when nothing is.
+std::string goalRangeProblem(const AgentConfig& config) {
+  if (config.goal_range == 0 || seeksGoal(config)) return "";
+  return "only agents that head for the goal once they notice it take it (this one's goal_seeking is '" +
+         config.goal_seeking + "', type " + config.type + ")";
+}
+
 /// What is wrong with the memory model asked for, or "" when nothing is.
 std::string memoryModelProblem(const AgentConfig& config) {
   if (config.memory_model == kMemoryModelWindow || config.type != kPlannerType) return "";
@@ -59,6 +66,7 @@ const std::vector<KindOption>& kindOptions() {
       {"bumper_turn", AgentTrait::Bumps, "bumpers"},
       {"explorer_idle", AgentTrait::Explores, "explorers"},
       {"explorer_ties", AgentTrait::Explores, "explorers"},
+      {"frontier", AgentTrait::SeeksFrontiers, "long-term explorers"},
   };
   return options;
 }
@@ -183,6 +191,7 @@ void AgentConfig::validate() const {
                                         "] (5 for 5x5) or 0 for full memory, got " + std::to_string(memory_window));
   }
   if (!goalSeekingProblem(*this).empty()) throw InvalidArgument("goal_seeking", goalSeekingProblem(*this));
+  if (!goalRangeProblem(*this).empty()) throw InvalidArgument("goal_range", goalRangeProblem(*this));
   if (!memoryModelProblem(*this).empty()) throw InvalidArgument("memory_model", memoryModelProblem(*this));
   checkKindOptions(*this);
   if (!priorMapProblem(*this).empty()) throw InvalidArgument("prior_map", priorMapProblem(*this));
@@ -214,6 +223,11 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
                          {{kGoalSeekingByType, "as its type's design: every type but random heads for it"},
                           {kGoalSeekingOn, "it takes a shortest path to the goal on its memory"},
                           {kGoalSeekingOff, "it plays its strategy as if it had not seen it"}}),
+        declareOption("goal_range",
+                      "goal seekers: how near the goal must be for the agent to notice it: within this many cells "
+                      "(Chebyshev distance), whatever lies between, as a robot that knows both positions; 0: when "
+                      "its scan shows the goal free (in the window, in line of sight)",
+                      +[](A& a) -> int& { return a.goal_range; }, Bounds{0, kMaxGridSide}),
         declareOption("memory_model", "what a limited memory KxK keeps",
                       +[](A& a) -> std::string& { return a.memory_model; })
             .withChoices("memory model",
@@ -248,6 +262,13 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
             .withChoices("explorer ties",
                          {{kExplorerTiesRandom, "one at random"},
                           {kExplorerTiesGoal, "one of those nearest the goal (Manhattan distance), then at random"}}),
+        declareOption("frontier", "long-term explorers: the frontier they walk to when nothing new is in reach",
+                      +[](A& a) -> std::string& { return a.frontier; })
+            .withChoices("frontier",
+                         {{kFrontierNearest, "the nearest (the shortest walk on known-free cells)"},
+                          {kFrontierGoal,
+                           "the one with the least walk to it plus Manhattan distance on to the goal (goal-directed "
+                           "exploration), the nearer on ties"}}),
         declareOption("runs", "runs per PPP for this agent (0: the experiment's runs)",
                       +[](A& a) -> int& { return a.runs; }, Bounds{0, kMaxRuns}),
         declareOption("prior_map", "planner agents: the planner is given the true map instead of the memory",
@@ -282,7 +303,8 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
 
 const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs() {
   static const std::vector<OptionSpec<AgentConfig>> specs = [] {
-    std::vector<std::string> names = {"type", "name", "memory", "sensor_noise", "goal_seeking", "memory_model"};
+    std::vector<std::string> names = {"type", "name", "memory", "sensor_noise", "goal_seeking", "goal_range",
+                                      "memory_model"};
     for (const std::string& name : kindOptionNames()) names.push_back(name);
     return selectOptions(agentOptionSpecs(), names);
   }();
@@ -291,7 +313,7 @@ const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs() {
 
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs() {
   static const std::vector<OptionSpec<AgentConfig>> specs = [] {
-    std::vector<std::string> names = {"type", "memory", "sensor_noise", "goal_seeking", "memory_model"};
+    std::vector<std::string> names = {"type", "memory", "sensor_noise", "goal_seeking", "goal_range", "memory_model"};
     for (const std::string& name : kindOptionNames()) names.push_back(name);
     return selectOptions(agentOptionSpecs(), names);
   }();

@@ -35,7 +35,7 @@ const std::vector<AgentType>& agentRegistry() {
        AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal | AgentTrait::Explores,
        [](const AgentBehaviour& b) -> std::unique_ptr<Agent> { return std::make_unique<ExplorerAgent>(false, b); }},
       {"long_term_explorer", "the explorer, walking to the nearest frontier when nothing is new nearby",
-       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal | AgentTrait::Explores,
+       AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal | AgentTrait::Explores | AgentTrait::SeeksFrontiers,
        [](const AgentBehaviour& b) -> std::unique_ptr<Agent> { return std::make_unique<ExplorerAgent>(true, b); }},
       {"bumper", "straight until a bump, then a random new direction",
        AgentTrait::ReadsScanWindow | AgentTrait::SeeksGoal | AgentTrait::Bumps,
@@ -89,12 +89,14 @@ AgentBehaviour agentBehaviour(const AgentConfig& config) {
   behaviour.memory_window = scans ? 0 : config.memory_window;
   behaviour.memory_scans = scans ? config.memory_window * config.memory_window : 0;
   behaviour.seek_goal = seeksGoal(config);
+  behaviour.goal_range = config.goal_range;
   behaviour.random_wall_start = config.wall_start == kWallStartRandom;
   behaviour.leave_wall_for_goal = config.wall_leave == kWallLeaveGoalFree;
   behaviour.random_goal_ties = config.goal_ties == kGoalTiesRandom;
   behaviour.quarter_turns = config.bumper_turn == kBumperTurnQuarter;
   behaviour.goal_ties_for_gain = config.explorer_ties == kExplorerTiesGoal;
   behaviour.idle_least_visited = config.explorer_idle == kExplorerIdleLeastVisited;
+  behaviour.frontier_towards_goal = config.frontier == kFrontierGoal;
   return behaviour;
 }
 

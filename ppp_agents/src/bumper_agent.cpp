@@ -55,10 +55,10 @@ int BumperAgent::turn(Cell position, int bumped) {
 
 Action BumperAgent::act(const Scan& scan) {
   const Cell position = scan.position();
-  if (behaviour_.seek_goal && (goal_seen_ || goalInWindow(scan))) {
+  if (behaviour_.seek_goal && (goal_seen_ || goalNearby(scan, behaviour_.goal_range))) {
     memory_.update(scan);
     Action action;
-    if (navigator_.towardsSeenGoal(scan, memory_, &goal_seen_, &action)) {
+    if (navigator_.towardsSeenGoal(scan, memory_, behaviour_.goal_range, &goal_seen_, &action)) {
       last_ = moveIndex(action);
       return action;
     }

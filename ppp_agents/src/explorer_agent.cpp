@@ -33,6 +33,7 @@ void ExplorerAgent::reset(const EpisodeInfo& info) {
   navigator_.reset(info.width, info.height);
   rng_ = Rng(info.seed);
   goal_seen_ = false;
+  goal_ = info.goal;
   width_ = info.width;
   if (behaviour_.idle_least_visited) {
     visits_.assign(static_cast<std::size_t>(info.width) * static_cast<std::size_t>(info.height), 0);
@@ -61,8 +62,14 @@ bool ExplorerAgent::frontierStep(Cell position, Action* action) {
     for (std::size_t i = path_next_; valid && i < path_.size(); ++i) valid = memory_.isFree(path_[i]);
   }
   if (!valid) {
-    const int found = navigator_.search(
-        position, [&](Cell c) { return memory_.isFree(c); }, [&](Cell c) { return isFrontier(c); });
+    const auto known_free = [&](Cell c) { return memory_.isFree(c); };
+    const int found =
+        behaviour_.frontier_towards_goal
+            ? navigator_.searchLeast(position, known_free,
+                                     [&](Cell c) {
+                                       return isFrontier(c) ? std::abs(goal_.x - c.x) + std::abs(goal_.y - c.y) : -1;
+                                     })
+            : navigator_.search(position, known_free, [&](Cell c) { return isFrontier(c); });
     if (found < 0) {
       path_.clear();
       path_next_ = 0;
@@ -87,7 +94,9 @@ Action ExplorerAgent::act(const Scan& scan) {
     if (visits < UINT16_MAX) ++visits;
   }
   Action action;
-  if (behaviour_.seek_goal && navigator_.towardsSeenGoal(scan, memory_, &goal_seen_, &action)) return action;
+  if (behaviour_.seek_goal && navigator_.towardsSeenGoal(scan, memory_, behaviour_.goal_range, &goal_seen_, &action)) {
+    return action;
+  }
   range_ = scan.range();
   std::array<bool, 4> open{};
   for (int i = 0; i < 4; ++i) open[i] = memory_.isFree(target(position, kMoves[i]));

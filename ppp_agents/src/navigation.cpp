@@ -14,6 +14,7 @@ void Navigator::reset(int width, int height) {
     parent_.assign(cells, -1);
     first_.assign(cells, 0);
     queue_.assign(cells, 0);
+    steps_.assign(cells, 0);
     stamp_ = 0;
   }
 }
@@ -33,8 +34,9 @@ bool Navigator::towardsGoal(const AgentMemory& memory, Cell from, Cell goal, Act
   return true;
 }
 
-bool Navigator::towardsSeenGoal(const Scan& scan, const AgentMemory& memory, bool* goal_seen, Action* action) {
-  if (!*goal_seen) *goal_seen = goalSeen(scan);
+bool Navigator::towardsSeenGoal(const Scan& scan, const AgentMemory& memory, int goal_range, bool* goal_seen,
+                                Action* action) {
+  if (!*goal_seen) *goal_seen = goalSeen(scan, goal_range);
   return *goal_seen && towardsGoal(memory, scan.position(), scan.goal(), action);
 }
 

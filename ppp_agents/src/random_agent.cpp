@@ -20,7 +20,7 @@ Action RandomAgent::act(const Scan& scan) {
   if (behaviour_.seek_goal) {
     memory_.update(scan);
     Action action;
-    if (navigator_.towardsSeenGoal(scan, memory_, &goal_seen_, &action)) return action;
+    if (navigator_.towardsSeenGoal(scan, memory_, behaviour_.goal_range, &goal_seen_, &action)) return action;
   }
   return static_cast<Action>(rng_.below(kActionCount));
 }

@@ -35,7 +35,7 @@ Action WallFollowerAgent::act(const Scan& scan) {
   if (behaviour_.seek_goal) {
     memory_.update(scan);
     Action action;
-    if (navigator_.towardsSeenGoal(scan, memory_, &goal_seen_, &action)) return action;
+    if (navigator_.towardsSeenGoal(scan, memory_, behaviour_.goal_range, &goal_seen_, &action)) return action;
   }
   // The four neighbours are always in line of sight, so the scan reports them (noise may misreport them).
   const auto wall = [&](int direction) {

@@ -195,6 +195,32 @@ TEST(AgentBehaviourTest, LongTermExplorerGoesBackForTheNearestFrontier) {
   }
 }
 
+TEST(AgentBehaviourTest, AGoalDirectedLongTermExplorerWalksToTheFrontierOnTheGoalsSide) {
+  // A corridor with a branch down at each end, the goal at the foot of the east one. Scans from x = 3..11 along the
+  // corridor, then from (5,1): its whole length is known and nothing new is in reach (the cells below are behind
+  // walls), so the explorer walks to a frontier. The west branch is 5 steps away (and 14 more to the goal), the
+  // east one at least 8 (and at most 3 more): the nearest is West, the goal-directed choice East.
+  const test::World w = test::world({
+      "###############",
+      "#....S........#",
+      "#.###########.#",
+      "#.###########.#",
+      "#.###########G#",
+  });
+  const SensorModel sensor(SensorOptions{2, 0.0});
+  for (const std::string& frontier : {kFrontierNearest, kFrontierGoal}) {
+    AgentConfig config = test::config("long_term_explorer");
+    config.goal_seeking = kGoalSeekingOff;
+    config.frontier = frontier;
+    auto agent = makeAgent(config);
+    agent->reset(info(15, 5, w.start, w.goal, 1));
+    int step = 0;
+    for (int x = 3; x <= 11; ++x) agent->act(Scan(sensor, w.grid, Cell{x, 1}, w.goal, false, step++, 0));
+    const Action action = agent->act(Scan(sensor, w.grid, Cell{5, 1}, w.goal, false, step++, 0));
+    EXPECT_EQ(action, frontier == std::string(kFrontierGoal) ? Action::East : Action::West) << frontier;
+  }
+}
+
 TEST(AgentBehaviourTest, GoalSeekingChangesNothingBeforeTheGoalComesIntoView) {
   // Each seeking type with goal seeking off, and random with it on, against its type's design on the same seeds:
   // the walks agree until the agent first stands within sensor range of the goal (a necessary condition for

@@ -146,7 +146,7 @@ TEST(AgentConfigTest, ReadsConfigurationsWithDefaults) {
 TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, colour: red}\n"),
             "agents.yaml:2: agents[0].colour: unknown key; valid keys: bumper_turn, cells_per_ppp_cell, "
-            "explorer_idle, explorer_ties, goal_seeking, goal_ties, host, instances, lockstep, memory, "
+            "explorer_idle, explorer_ties, frontier, goal_range, goal_seeking, goal_ties, host, instances, lockstep, memory, "
             "memory_model, name, plan_requests, plan_timeout, planner_args, planner_node, prior_map, runs, "
             "sensor_noise, type, wall_leave, wall_start");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),
@@ -219,6 +219,24 @@ TEST(AgentConfigTest, BehaviourOptionsMapToTheAgentsBehaviourAndOnlyWhereTheyApp
             "not apply");
 }
 
+TEST(AgentConfigTest, GoalRangeSetsTheBehaviourOfGoalSeekersOnly) {
+  EXPECT_EQ(agentBehaviour(config("explorer")).goal_range, 0);
+  EXPECT_EQ(read("agents:\n  - {type: bumper, goal_range: 3}\n")[0].goal_range, 3);
+  EXPECT_EQ(agentBehaviour(read("agents:\n  - {type: bumper, goal_range: 3}\n")[0]).goal_range, 3);
+  EXPECT_EQ(read("agents:\n  - {type: random, goal_seeking: on, goal_range: 3}\n")[0].goal_range, 3);
+  EXPECT_EQ(parseError("agents:\n  - {type: random, goal_range: 3}\n"),
+            "agents.yaml:2: agents[0].goal_range: only agents that head for the goal once they notice it take it "
+            "(this one's goal_seeking is 'by_type', type random)");
+  EXPECT_EQ(parseError("agents:\n  - {type: explorer, goal_seeking: off, goal_range: 3}\n"),
+            "agents.yaml:2: agents[0].goal_range: only agents that head for the goal once they notice it take it "
+            "(this one's goal_seeking is 'off', type explorer)");
+  EXPECT_EQ(parseError("agents:\n  - {type: astar, goal_range: 3}\n"),
+            "agents.yaml:2: agents[0].goal_range: only agents that head for the goal once they notice it take it "
+            "(this one's goal_seeking is 'by_type', type astar)");
+  EXPECT_EQ(parseError("agents:\n  - {type: explorer, goal_range: -1}\n"),
+            "agents.yaml:2: agents[0].goal_range: expected an integer in [0, 4096], got -1");
+}
+
 TEST(AgentConfigTest, OptionsOfOneKindOfAgentSetItsBehaviourAndAreRefusedByOthers) {
   struct KindOption {
     const char* taker;    // a type that takes the option
@@ -240,6 +258,8 @@ TEST(AgentConfigTest, OptionsOfOneKindOfAgentSetItsBehaviourAndAreRefusedByOther
        "explorer_idle: only explorers take it"},
       {"explorer", "explorer_ties: goal", &AgentBehaviour::goal_ties_for_gain, "random",
        "explorer_ties: only explorers take it"},
+      {"long_term_explorer", "frontier: goal", &AgentBehaviour::frontier_towards_goal, "explorer",
+       "frontier: only long-term explorers take it"},
   };
   for (const KindOption& o : options) {
     const std::string taker = std::string("agents:\n  - {type: ") + o.taker;

@@ -36,14 +36,28 @@ AgentMemory drawnMemory(const std::vector<std::string>& rows) {
 
 TEST(NavigationTest, GoalSeenOnlyWhenInTheWindowAndReportedFree) {
   std::vector<std::int8_t> cells(25, kScanFree);
-  EXPECT_TRUE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{7, 3}, false, 0)));
-  EXPECT_FALSE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{8, 5}, false, 0)));
-  EXPECT_TRUE(goalInWindow(Scan(2, cells, Cell{5, 5}, Cell{3, 7}, false, 0)));
-  EXPECT_FALSE(goalInWindow(Scan(2, cells, Cell{5, 5}, Cell{5, 8}, false, 0)));
+  EXPECT_TRUE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{7, 3}, false, 0), 0));
+  EXPECT_FALSE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{8, 5}, false, 0), 0));
+  EXPECT_TRUE(goalNearby(Scan(2, cells, Cell{5, 5}, Cell{3, 7}, false, 0), 0));
+  EXPECT_FALSE(goalNearby(Scan(2, cells, Cell{5, 5}, Cell{5, 8}, false, 0), 0));
   cells[0] = kScanUnknown;  // offset (-2, -2): hidden
-  EXPECT_FALSE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{3, 3}, false, 0)));
+  EXPECT_FALSE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{3, 3}, false, 0), 0));
   cells[0] = kScanObstacle;  // misreported by noise
-  EXPECT_FALSE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{3, 3}, false, 0)));
+  EXPECT_FALSE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{3, 3}, false, 0), 0));
+}
+
+TEST(NavigationTest, AGoalRangeNoticesTheGoalWithinItsCellsWhateverLiesBetween) {
+  std::vector<std::int8_t> cells(25, kScanObstacle);  // a window of walls: nothing is seen free
+  // Goal range 3: noticed at Chebyshev distance 3 (outside the 5x5 window) and behind a reported wall, not at 4.
+  EXPECT_TRUE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{8, 2}, false, 0), 3));
+  EXPECT_TRUE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{4, 6}, false, 0), 3));
+  EXPECT_FALSE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{9, 5}, false, 0), 3));
+  EXPECT_TRUE(goalNearby(Scan(2, cells, Cell{5, 5}, Cell{2, 8}, false, 0), 3));
+  EXPECT_FALSE(goalNearby(Scan(2, cells, Cell{5, 5}, Cell{5, 9}, false, 0), 3));
+  // Goal range 1 is shorter than the window: the goal two cells away is not noticed even when seen free.
+  std::vector<std::int8_t> open(25, kScanFree);
+  EXPECT_FALSE(goalSeen(Scan(2, open, Cell{5, 5}, Cell{7, 5}, false, 0), 1));
+  EXPECT_TRUE(goalSeen(Scan(2, open, Cell{5, 5}, Cell{6, 4}, false, 0), 1));
 }
 
 TEST(NavigationTest, TowardsGoalTakesAShortestPathTreatingUnknownAsPassable) {
@@ -89,17 +103,42 @@ TEST(NavigationTest, TowardsSeenGoalHeadsForTheGoalFromTheFirstScanShowingIt) {
   bool goal_seen = false;
   Action action = Action::Stay;
   // From (0,2) the goal is outside the range-2 window: not seen, no move.
-  EXPECT_FALSE(navigator.towardsSeenGoal(Scan(2, cells, Cell{0, 2}, goal, false, 0), memory, &goal_seen, &action));
+  EXPECT_FALSE(navigator.towardsSeenGoal(Scan(2, cells, Cell{0, 2}, goal, false, 0), memory, 0, &goal_seen, &action));
   EXPECT_FALSE(goal_seen);
   // From (1,1) it is in the window and reported free: seen; N, E, E is the first of the 3-move paths found.
-  ASSERT_TRUE(navigator.towardsSeenGoal(Scan(2, cells, Cell{1, 1}, goal, false, 1), memory, &goal_seen, &action));
+  ASSERT_TRUE(navigator.towardsSeenGoal(Scan(2, cells, Cell{1, 1}, goal, false, 1), memory, 0, &goal_seen, &action));
   EXPECT_TRUE(goal_seen);
   EXPECT_EQ(action, Action::North);
   // Hidden in a later scan (offset (2, -1)): still heading for it.
   cells[1 * 5 + 4] = kScanUnknown;
   action = Action::Stay;
-  ASSERT_TRUE(navigator.towardsSeenGoal(Scan(2, cells, Cell{1, 1}, goal, false, 2), memory, &goal_seen, &action));
+  ASSERT_TRUE(navigator.towardsSeenGoal(Scan(2, cells, Cell{1, 1}, goal, false, 2), memory, 0, &goal_seen, &action));
   EXPECT_EQ(action, Action::North);
+}
+
+TEST(NavigationTest, SearchLeastWeighsTheWalkAndTheCostBeyond) {
+  // From (2,0) on an open 5x3 map, targets (0,0) at 2 steps with cost 5 and (4,2) at 4 steps with cost 0: the
+  // second scores 4 against 7. With costs 0 and 3 the first scores 2 against 7; with 2 and 0 they tie at 4.
+  const AgentMemory memory = drawnMemory({
+      ".....",
+      ".....",
+      ".....",
+  });
+  Navigator navigator;
+  navigator.reset(5, 3);
+  const auto free = [&](Cell c) { return memory.isFree(c); };
+  const auto costs = [](int a, int b) {
+    return [a, b](Cell c) { return c == Cell{0, 0} ? a : c == Cell{4, 2} ? b : -1; };
+  };
+  EXPECT_EQ(navigator.searchLeast(Cell{2, 0}, free, costs(5, 0)), 2 * 5 + 4);
+  std::vector<Cell> path;
+  navigator.path(2 * 5 + 4, &path);
+  EXPECT_EQ(path.size(), 4u);
+  EXPECT_EQ(path.back(), (Cell{4, 2}));
+  EXPECT_EQ(navigator.searchLeast(Cell{2, 0}, free, costs(0, 3)), 0);
+  EXPECT_EQ(navigator.searchLeast(Cell{2, 0}, free, costs(2, 0)), 0);  // 4 against 4: the nearer
+  EXPECT_EQ(navigator.firstAction(0), Action::West);
+  EXPECT_EQ(navigator.searchLeast(Cell{2, 0}, free, costs(-1, -1)), -1);
 }
 
 TEST(NavigationTest, SearchFindsTheNearestFrontierAndItsPath) {

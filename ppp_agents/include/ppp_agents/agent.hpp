@@ -28,12 +28,14 @@ struct AgentBehaviour {
   int memory_window = 0;  ///< Limited memory: only a k x k window around the agent is kept (odd k); 0 = full.
   int memory_scans = 0;   ///< Limited memory: only what the last n scans saw is kept; 0 = every scan's.
   bool seek_goal = true;  ///< Once it has seen the goal it takes a shortest path to it on its memory.
+  int goal_range = 0;  ///< Notices the goal within this many cells (Chebyshev), walls or not; 0 = seen in the scan.
   bool random_wall_start = false;  ///< Wall followers: first straight on in a random heading, not towards the goal.
   bool leave_wall_for_goal = false;  ///< Wall followers: let go of the wall when the move towards the goal is free.
   bool random_goal_ties = false;  ///< Wall followers: as far from the goal across as down, either way at random.
   bool quarter_turns = false;  ///< Bumpers: after a bump, turn left or right, never straight back.
   bool goal_ties_for_gain = false;  ///< Explorers: of neighbours revealing as much, those nearest the goal.
   bool idle_least_visited = false; ///< Explorers: with nothing new in reach, to the least visited free neighbour.
+  bool frontier_towards_goal = false;  ///< Long-term explorer: the frontier least far to walk to plus on to the goal.
 };
 
 /// A test agent: each step it gets a scan (its cell, the goal, a bump flag and the window of cells) and returns

@@ -56,6 +56,11 @@ constexpr const char* kExplorerTiesRandom = "random";
 /// explorer_ties: of the neighbours revealing most, the explorer moves to one nearest the goal, then at random.
 constexpr const char* kExplorerTiesGoal = "goal";
 
+/// frontier: the long-term explorer walks to the nearest frontier.
+constexpr const char* kFrontierNearest = "nearest";
+/// frontier: the long-term explorer walks to the frontier with the least walk to it plus distance on to the goal.
+constexpr const char* kFrontierGoal = "goal";
+
 /// One agent configuration of an experiment: a type plus handicaps, under a name of its own.
 struct AgentConfig {
   std::string name;            ///< Name in results and reports (e.g. "explorer_memory_5x5"); defaults to type.
@@ -63,6 +68,7 @@ struct AgentConfig {
   int memory_window = 0;       ///< Limited memory: keep only a k x k window around the agent (odd k); 0 = full.
   double sensor_noise = 0.0;   ///< Probability that a sensed cell is reported flipped (applied by the sensor).
   std::string goal_seeking = kGoalSeekingByType;  ///< kGoalSeekingByType, kGoalSeekingOn or kGoalSeekingOff.
+  int goal_range = 0;          ///< Goal seekers: notice the goal within this many cells, walls or not; 0 = seen.
   std::string memory_model = kMemoryModelWindow;  ///< What memory KxK limits: kMemoryModelWindow or kMemoryModelScans.
   std::string wall_start = kWallStartGoal;        ///< Wall followers: kWallStartGoal or kWallStartRandom.
   std::string wall_leave = kWallLeaveNever;       ///< Wall followers: kWallLeaveNever or kWallLeaveGoalFree.
@@ -70,6 +76,7 @@ struct AgentConfig {
   std::string bumper_turn = kBumperTurnOther;     ///< Bumpers: kBumperTurnOther or kBumperTurnQuarter.
   std::string explorer_idle = kExplorerIdleRandom;  ///< Explorers: kExplorerIdleRandom or kExplorerIdleLeastVisited.
   std::string explorer_ties = kExplorerTiesRandom;  ///< Explorers: kExplorerTiesRandom or kExplorerTiesGoal.
+  std::string frontier = kFrontierNearest;          ///< Long-term explorers: kFrontierNearest or kFrontierGoal.
   int runs = 0;                ///< Runs per PPP for this agent; 0 = the experiment's `runs`.
   bool prior_map = false;      ///< Planner agents only: the planner is given the true map instead of the memory.
   std::string planner_node;    ///< Planner agents only: "package/executable" of the planner to start ("" = the user's).
@@ -78,8 +85,8 @@ struct AgentConfig {
   int instances = 0;           ///< Planner agents only: bridge and planner pairs sharing its runs; 0 = instanceCount's.
   std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
   /// @throws InvalidArgument naming "type" (listing the valid ones), "name", "memory", "sensor_noise",
-  /// "goal_seeking", "memory_model", "wall_start", "wall_leave", "goal_ties", "bumper_turn", "explorer_idle",
-  /// "explorer_ties", "runs", "prior_map", "planner_node", "planner_args", "plan_timeout", "cells_per_ppp_cell",
+  /// "goal_seeking", "goal_range", "memory_model", "wall_start", "wall_leave", "goal_ties", "bumper_turn", "explorer_idle",
+  /// "explorer_ties", "frontier", "runs", "prior_map", "planner_node", "planner_args", "plan_timeout", "cells_per_ppp_cell",
   /// "instances" or "host" (other agents have no planner: their bridge options are unused).
   void validate() const;
 };
@@ -91,8 +98,8 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs();
 /// The agent options an agent node reads as `~` parameters (and the experiment's graph writes for it).
 const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs();
 
-/// The agent options that decide how one run plays (type, memory, sensor_noise, goal_seeking, memory_model,
-/// wall_start, wall_leave, goal_ties, bumper_turn, explorer_idle, explorer_ties): the flags of `ppp simulate` and
+/// The agent options that decide how one run plays (type, memory, sensor_noise, goal_seeking, goal_range, memory_model,
+/// wall_start, wall_leave, goal_ties, bumper_turn, explorer_idle, explorer_ties, frontier): the flags of `ppp simulate` and
 /// `ppp replay`, and of the replay commands a report gives.
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs();
 

@@ -20,6 +20,7 @@ enum class AgentTrait : unsigned {
   FollowsWalls = 1u << 5,    ///< A wall follower: it takes wall_start, wall_leave and goal_ties.
   Explores = 1u << 6,        ///< An explorer: it takes explorer_idle and explorer_ties.
   Bumps = 1u << 7,           ///< A bumper: it takes bumper_turn.
+  SeeksFrontiers = 1u << 8,  ///< The long-term explorer: it takes frontier.
 };
 
 /// Both traits.

@@ -19,8 +19,9 @@ namespace agents {
 /// - explorer: when no neighbour would reveal anything it moves to a random free neighbour (with `explorer_idle:
 ///   least_visited`, to one it has stood on least often, ties at random); fault: it wanders in explored areas.
 /// - long_term_explorer: then it follows a shortest path on its memory (known-free cells) to the nearest
-///   frontier (a known-free cell with an unknown 4-neighbour), re-planning when a cell of the path turns out
-///   blocked or the frontier is gone; fault: it may travel far for single unknown cells.
+///   frontier (a known-free cell with an unknown 4-neighbour; with `frontier: goal`, the one with the least walk
+///   to it plus Manhattan distance on to the goal), re-planning when a cell of the path turns out blocked or the
+///   frontier is gone; fault: it may travel far for single unknown cells.
 /// Once either has seen the goal it takes a shortest path to it on its memory (unknown cells passable), unless its
 /// behaviour has goal seeking off.
 class ExplorerAgent final : public Agent {
@@ -46,6 +47,7 @@ class ExplorerAgent final : public Agent {
   Navigator navigator_;
   Rng rng_{0};
   bool goal_seen_ = false;
+  Cell goal_;
   int width_ = 0;
   std::vector<std::uint16_t> visits_;  // with idle_least_visited: per cell, the steps the agent stood on it
   int range_ = 0;  // of the last scan; 0 before the first

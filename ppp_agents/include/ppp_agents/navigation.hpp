@@ -12,22 +12,22 @@
 namespace ppp {
 namespace agents {
 
-/// True when the goal lies in the scan window and is reported free, i.e. the agent sees it in line of sight.
-/// Reads the window only when the goal is within range.
-inline bool goalSeen(const Scan& scan) {
+/// True when the goal is near enough to be noticed: within `goal_range` cells (Chebyshev distance), or with
+/// `goal_range` 0 within the scan window. Reads nothing.
+inline bool goalNearby(const Scan& scan, int goal_range) {
   const Cell p = scan.position();
   const Cell g = scan.goal();
-  const int r = scan.range();
-  if (g.x < p.x - r || g.x > p.x + r || g.y < p.y - r || g.y > p.y + r) return false;
-  return scan.at(g.x - p.x, g.y - p.y) == kScanFree;
+  const int r = goal_range > 0 ? goal_range : scan.range();
+  return g.x >= p.x - r && g.x <= p.x + r && g.y >= p.y - r && g.y <= p.y + r;
 }
 
-/// True when the goal lies within the scan window (Chebyshev distance <= range); reads nothing.
-inline bool goalInWindow(const Scan& scan) {
-  const Cell p = scan.position();
-  const Cell g = scan.goal();
-  const int r = scan.range();
-  return g.x >= p.x - r && g.x <= p.x + r && g.y >= p.y - r && g.y <= p.y + r;
+/// True when the agent notices the goal: with `goal_range` 0 when it lies in the scan window and is reported free
+/// (it sees it in line of sight; the window is read only then); otherwise when it is within `goal_range` cells,
+/// whatever lies between (the agent knows both positions).
+inline bool goalSeen(const Scan& scan, int goal_range) {
+  if (!goalNearby(scan, goal_range)) return false;
+  if (goal_range > 0) return true;
+  return scan.at(scan.goal().x - scan.position().x, scan.goal().y - scan.position().y) == kScanFree;
 }
 
 /// Breadth-first search over a W x H grid of cells with reusable buffers (no allocation after reset()):
@@ -43,6 +43,12 @@ class Navigator {
   template <class Passable, class IsTarget>
   int search(Cell from, Passable passable, IsTarget is_target);
 
+  /// Searches like search() and returns the index of the cell other than `from` with the least steps from `from`
+  /// plus cost(cell), among cells with cost(cell) >= 0 (the others are no targets), the one found first on ties;
+  /// -1 when there is none. Stops once no cell further out can do better.
+  template <class Passable, class Cost>
+  int searchLeast(Cell from, Passable passable, Cost cost);
+
   /// The first move of the path found to `target` by the last search().
   Action firstAction(int target) const { return static_cast<Action>(first_[target]); }
 
@@ -55,9 +61,9 @@ class Navigator {
   /// shows no such path.
   bool towardsGoal(const AgentMemory& memory, Cell from, Cell goal, Action* action);
 
-  /// towardsGoal() from the scan's position once the goal has been seen: sets `*goal_seen` when this scan
-  /// shows the goal (it stays set), and returns false while the goal is unseen or memory shows no path.
-  bool towardsSeenGoal(const Scan& scan, const AgentMemory& memory, bool* goal_seen, Action* action);
+  /// towardsGoal() from the scan's position once the goal has been noticed: sets `*goal_seen` when
+  /// goalSeen(scan, goal_range) (it stays set), and returns false while the goal is unseen or memory shows no path.
+  bool towardsSeenGoal(const Scan& scan, const AgentMemory& memory, int goal_range, bool* goal_seen, Action* action);
 
   /// Map columns the buffers are sized for.
   int width() const { return width_; }
@@ -70,6 +76,7 @@ class Navigator {
   std::vector<int> parent_;
   std::vector<std::uint8_t> first_;
   std::vector<int> queue_;
+  std::vector<int> steps_;  // searchLeast(): steps from the start, per reached cell
 };
 
 template <class Passable, class IsTarget>
@@ -101,6 +108,26 @@ int Navigator::search(Cell from, Passable passable, IsTarget is_target) {
     }
   }
   return -1;
+}
+
+template <class Passable, class Cost>
+int Navigator::searchLeast(Cell from, Passable passable, Cost cost) {
+  int best = -1;
+  int best_score = 0;
+  steps_[from.y * width_ + from.x] = 0;
+  search(from, passable,
+         [&](Cell c) {
+           const int i = c.y * width_ + c.x;
+           steps_[i] = steps_[parent_[i]] + 1;
+           if (best >= 0 && steps_[i] >= best_score) return true;  // nothing further out can do better
+           const int extra = cost(c);
+           if (extra >= 0 && (best < 0 || steps_[i] + extra < best_score)) {
+             best = i;
+             best_score = steps_[i] + extra;
+           }
+           return false;
+         });
+  return best;
 }
 
 }  // namespace agents
