@@ -78,6 +78,7 @@ AGENT_OPTIONS = {
     'wall_start': (['goal', 'random'], WALL_FOLLOWERS),
     'wall_leave': (['never', 'goal_free'], WALL_FOLLOWERS),
     'goal_ties': (['horizontal', 'random'], WALL_FOLLOWERS),
+    'wall_sense': (['scan', 'touch'], WALL_FOLLOWERS),
     'explorer_idle': (['random', 'least_visited'], EXPLORERS),
     'explorer_ties': (['random', 'goal'], EXPLORERS),
     'bumper_turn': (['other', 'quarter'], BUMPERS),
@@ -117,6 +118,13 @@ def exact_random_rate(goal_range, bumps_use_budget, side=20, budget=300, sensor_
     return 100 * passed
 
 
+def admissible(assignment):
+    """False for a combination of agent options that agents refuse (a wall follower by touch cannot let go of the
+    wall when the way to the goal is free: it does not see it)."""
+    options = dict(assignment)
+    return not (options.get('wall_sense') == 'touch' and options.get('wall_leave') == 'goal_free')
+
+
 def concerning(name, keys):
     """The searched agent options among `keys` that concern configuration `name`, sorted."""
     return [k for k in sorted(keys) if name in AGENT_OPTIONS[k][1]]
@@ -125,7 +133,8 @@ def concerning(name, keys):
 def variants(name, agent_values):
     """Every assignment of the searched agent options that concern configuration `name`, as (key, value) tuples."""
     keys = concerning(name, agent_values)
-    return [tuple(zip(keys, values)) for values in itertools.product(*(agent_values[k] for k in keys))]
+    assignments = [tuple(zip(keys, values)) for values in itertools.product(*(agent_values[k] for k in keys))]
+    return [a for a in assignments if admissible(a)]
 
 
 def variant_name(name, assignment):
@@ -238,7 +247,7 @@ def main():
             played = play(map_candidate, dict(agent_values, goal_range=admitted), seeds, args.runs, args.work)
             for agent_combination in itertools.product(*(agent_values[k] for k in agent_keys)):
                 candidate = dict(map_candidate, **dict(zip(agent_keys, agent_combination)))
-                if candidate['goal_range'] not in admitted:
+                if candidate['goal_range'] not in admitted or not admissible(candidate.items()):
                     continue
                 rates, facts = combine(played, dict(zip(agent_keys, agent_combination)))
                 gaps = [rates[a] - TABLE_5_1[a] for a in TABLE_5_1]

@@ -43,6 +43,13 @@ std::string goalRangeProblem(const AgentConfig& config) {
          config.goal_seeking + "', type " + config.type + ")";
 }
 
+/// What is wrong with the wall sense asked for, or "" when nothing is.
+std::string wallSenseProblem(const AgentConfig& config) {
+  if (config.wall_sense != kWallSenseTouch || config.wall_leave != kWallLeaveGoalFree) return "";
+  return "a wall follower by touch cannot let go when the way to the goal is free (wall_leave: goal_free): it "
+         "does not see it";
+}
+
 /// What is wrong with the memory model asked for, or "" when nothing is.
 std::string memoryModelProblem(const AgentConfig& config) {
   if (config.memory_model == kMemoryModelWindow || config.type != kPlannerType) return "";
@@ -63,6 +70,7 @@ const std::vector<KindOption>& kindOptions() {
       {"wall_start", AgentTrait::FollowsWalls, "wall followers"},
       {"wall_leave", AgentTrait::FollowsWalls, "wall followers"},
       {"goal_ties", AgentTrait::FollowsWalls, "wall followers"},
+      {"wall_sense", AgentTrait::FollowsWalls, "wall followers"},
       {"bumper_turn", AgentTrait::Bumps, "bumpers"},
       {"explorer_idle", AgentTrait::Explores, "explorers"},
       {"explorer_ties", AgentTrait::Explores, "explorers"},
@@ -194,6 +202,7 @@ void AgentConfig::validate() const {
   if (!goalRangeProblem(*this).empty()) throw InvalidArgument("goal_range", goalRangeProblem(*this));
   if (!memoryModelProblem(*this).empty()) throw InvalidArgument("memory_model", memoryModelProblem(*this));
   checkKindOptions(*this);
+  if (!wallSenseProblem(*this).empty()) throw InvalidArgument("wall_sense", wallSenseProblem(*this));
   if (!priorMapProblem(*this).empty()) throw InvalidArgument("prior_map", priorMapProblem(*this));
   if (!plannerNodeProblem(*this).empty()) throw InvalidArgument("planner_node", plannerNodeProblem(*this));
   if (!plannerArgsProblem(*this).empty()) throw InvalidArgument("planner_args", plannerArgsProblem(*this));
@@ -248,6 +257,13 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
                       +[](A& a) -> std::string& { return a.goal_ties; })
             .withChoices("goal ties", {{kGoalTiesHorizontal, "across (East or West)"},
                                        {kGoalTiesRandom, "across or down, drawn at random each time"}}),
+        declareOption("wall_sense", "wall followers: how they find the wall they follow",
+                      +[](A& a) -> std::string& { return a.wall_sense; })
+            .withChoices("wall sense",
+                         {{kWallSenseScan, "from the scan (the four neighbours it reports)"},
+                          {kWallSenseTouch,
+                           "by touch: each step it tries its moves in the hand-on-wall order, from the one towards "
+                           "the wall, and takes the first that does not bump (each bump is an action)"}}),
         declareOption("bumper_turn", "bumpers: the directions they draw a new one from after a bump",
                       +[](A& a) -> std::string& { return a.bumper_turn; })
             .withChoices("bumper turn", {{kBumperTurnOther, "the three other than the one that bumped"},

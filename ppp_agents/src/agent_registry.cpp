@@ -93,6 +93,7 @@ AgentBehaviour agentBehaviour(const AgentConfig& config) {
   behaviour.random_wall_start = config.wall_start == kWallStartRandom;
   behaviour.leave_wall_for_goal = config.wall_leave == kWallLeaveGoalFree;
   behaviour.random_goal_ties = config.goal_ties == kGoalTiesRandom;
+  behaviour.walls_by_touch = config.wall_sense == kWallSenseTouch;
   behaviour.quarter_turns = config.bumper_turn == kBumperTurnQuarter;
   behaviour.goal_ties_for_gain = config.explorer_ties == kExplorerTiesGoal;
   behaviour.idle_least_visited = config.explorer_idle == kExplorerIdleLeastVisited;

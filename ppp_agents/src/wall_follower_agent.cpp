@@ -1,5 +1,6 @@
 #include "ppp_agents/wall_follower_agent.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 
 namespace ppp {
@@ -15,6 +16,8 @@ void WallFollowerAgent::reset(const EpisodeInfo& info) {
   goal_seen_ = false;
   engaged_ = false;
   left_a_wall_ = false;
+  tried_ = -1;
+  probe_ = 0;
   goal_ = info.goal;
   rng_ = Rng(info.seed);
   heading_ = behaviour_.random_wall_start ? static_cast<int>(rng_.below(4)) : 0;  // else act() heads for the goal
@@ -35,7 +38,10 @@ Action WallFollowerAgent::act(const Scan& scan) {
   if (behaviour_.seek_goal) {
     memory_.update(scan);
     Action action;
-    if (navigator_.towardsSeenGoal(scan, memory_, behaviour_.goal_range, &goal_seen_, &action)) return action;
+    if (navigator_.towardsSeenGoal(scan, memory_, behaviour_.goal_range, &goal_seen_, &action)) {
+      tried_ = -1;
+      return action;
+    }
   }
   // The four neighbours are always in line of sight, so the scan reports them (noise may misreport them).
   const auto wall = [&](int direction) {
@@ -46,6 +52,7 @@ Action WallFollowerAgent::act(const Scan& scan) {
   const int towards_wall = side_ == Side::Left ? 3 : 1;  // quarter turns clockwise: left = 3, right = 1
   const int away_from_wall = 4 - towards_wall;
   const int towards_goal = headingTowards(scan.position(), goal_);  // one draw a step when ties are random
+  if (behaviour_.walls_by_touch) return feel(scan, towards_goal);
   if (engaged_ && behaviour_.leave_wall_for_goal && !wall(towards_goal)) {
     engaged_ = false;
     left_a_wall_ = true;
@@ -64,6 +71,30 @@ Action WallFollowerAgent::act(const Scan& scan) {
     }
   }
   return Action::Stay;
+}
+
+Action WallFollowerAgent::feel(const Scan& scan, int towards_goal) {
+  const int towards_wall = side_ == Side::Left ? 3 : 1;
+  const int away_from_wall = 4 - towards_wall;
+  const bool blocked = tried_ >= 0 && scan.bumped();
+  if (!engaged_) {
+    if (!blocked) {
+      if (!behaviour_.random_wall_start) heading_ = towards_goal;
+      tried_ = heading_;
+      return kMoves[heading_];
+    }
+    engaged_ = true;
+    heading_ = (tried_ + away_from_wall) % 4;  // the wall just felt is now on the agent's side
+    probe_ = 1;                                 // and known there: straight on first
+  } else if (blocked) {
+    probe_ = std::min(probe_ + 1, 3);
+  } else if (tried_ >= 0) {
+    heading_ = tried_;  // it moved: the wall side first again
+    probe_ = 0;
+  }
+  const int order[4] = {(heading_ + towards_wall) % 4, heading_, (heading_ + away_from_wall) % 4, (heading_ + 2) % 4};
+  tried_ = order[probe_];
+  return kMoves[tried_];
 }
 
 }  // namespace agents

@@ -156,6 +156,17 @@ TEST(AgentBehaviourTest, WallFollowersKeepTheWallOnTheirSide) {
   // Both get there in the end: the goal lies on the loop they follow (the map's edge).
   EXPECT_TRUE(test::runEpisode(left, w, 0).passed);
   EXPECT_TRUE(test::runEpisode(right, w, 0).passed);
+  // By touch the left follower walks the same cells, bumping where the scan told the other one of a wall: into the
+  // wall at (4,1), (4,2) and (4,3) (the first one starts the following), at (4,4) into (4,3) before going on east,
+  // up the east face into (4,3), (4,2), (4,1) and (4,0), at (5,0) off the top edge ahead, then at (6,0) off the
+  // edge on its left: 13 moves and 10 bumps in 23 actions.
+  AgentBehaviour touch;
+  touch.walls_by_touch = true;
+  WallFollowerAgent left_by_touch(WallFollowerAgent::Side::Left, touch);
+  const auto t = test::runEpisode(left_by_touch, w, 0, 0.0, 23);
+  EXPECT_EQ(t.path, expected_left);
+  EXPECT_EQ(t.bumps, 10);
+  EXPECT_TRUE(test::runEpisode(left_by_touch, w, 0).passed);
 }
 
 TEST(AgentBehaviourTest, ExplorerMovesTowardsTheUnknown) {

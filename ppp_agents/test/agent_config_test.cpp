@@ -148,7 +148,7 @@ TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
             "agents.yaml:2: agents[0].colour: unknown key; valid keys: bumper_turn, cells_per_ppp_cell, "
             "explorer_idle, explorer_ties, frontier, goal_range, goal_seeking, goal_ties, host, instances, lockstep, memory, "
             "memory_model, name, plan_requests, plan_timeout, planner_args, planner_node, prior_map, runs, "
-            "sensor_noise, type, wall_leave, wall_start");
+            "sensor_noise, type, wall_leave, wall_sense, wall_start");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),
             std::string("agents.yaml:3: agents[1].type: missing; valid: ") + kTypes);
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - name: x\n    type: robot\n"),
@@ -212,6 +212,9 @@ TEST(AgentConfigTest, BehaviourOptionsMapToTheAgentsBehaviourAndOnlyWhereTheyApp
   EXPECT_EQ(agentBehaviour(scans).memory_window, 0);
   EXPECT_EQ(agentBehaviour(scans).memory_scans, 25);
   EXPECT_EQ(agentBehaviour(config("explorer", 5)).memory_scans, 0);
+  EXPECT_EQ(parseError("agents:\n  - {type: wall_follower_left, wall_sense: touch, wall_leave: goal_free}\n"),
+            "agents.yaml:2: agents[0].wall_sense: a wall follower by touch cannot let go when the way to the goal is "
+            "free (wall_leave: goal_free): it does not see it");
   EXPECT_EQ(parseError("agents:\n  - {type: wall_follower_left, wall_leave: sometimes}\n"),
             "agents.yaml:2: agents[0].wall_leave: unknown wall leave 'sometimes'; valid: never, goal_free");
   EXPECT_EQ(parseError("agents:\n  - {type: planner, goal_seeking: on}\n"),
@@ -252,6 +255,8 @@ TEST(AgentConfigTest, OptionsOfOneKindOfAgentSetItsBehaviourAndAreRefusedByOther
        "wall_leave: only wall followers take it"},
       {"wall_follower_right", "goal_ties: random", &AgentBehaviour::random_goal_ties, "explorer",
        "goal_ties: only wall followers take it"},
+      {"wall_follower_left", "wall_sense: touch", &AgentBehaviour::walls_by_touch, "bumper",
+       "wall_sense: only wall followers take it"},
       {"decision_bumper", "bumper_turn: quarter", &AgentBehaviour::quarter_turns, "wall_follower_left",
        "bumper_turn: only bumpers take it"},
       {"long_term_explorer", "explorer_idle: least_visited", &AgentBehaviour::idle_least_visited, "bumper",

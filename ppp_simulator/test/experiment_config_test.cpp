@@ -354,7 +354,7 @@ TEST_F(ExperimentYaml, PlannerAgentsKeepTheirOwnRunsAndMapChoiceInTheFingerprint
   const std::string fingerprint = experimentFingerprint(c);
   EXPECT_NE(fingerprint.find("  - {type: planner, name: ompl, memory: full, sensor_noise: 0, goal_seeking: by_type, "
                              "goal_range: 0, memory_model: window, wall_start: goal, wall_leave: never, "
-                             "goal_ties: horizontal, bumper_turn: other, "
+                             "goal_ties: horizontal, wall_sense: scan, bumper_turn: other, "
                              "explorer_idle: random, explorer_ties: random, frontier: nearest, runs: 3, "
                              "prior_map: true, "
                              "planner_node: '', planner_args: '', plan_timeout: 5, lockstep: true, "

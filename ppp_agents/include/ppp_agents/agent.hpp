@@ -32,6 +32,7 @@ struct AgentBehaviour {
   bool random_wall_start = false;  ///< Wall followers: first straight on in a random heading, not towards the goal.
   bool leave_wall_for_goal = false;  ///< Wall followers: let go of the wall when the move towards the goal is free.
   bool random_goal_ties = false;  ///< Wall followers: as far from the goal across as down, either way at random.
+  bool walls_by_touch = false;  ///< Wall followers: find the wall by bumping into it, not from the scan.
   bool quarter_turns = false;  ///< Bumpers: after a bump, turn left or right, never straight back.
   bool goal_ties_for_gain = false;  ///< Explorers: of neighbours revealing as much, those nearest the goal.
   bool idle_least_visited = false; ///< Explorers: with nothing new in reach, to the least visited free neighbour.

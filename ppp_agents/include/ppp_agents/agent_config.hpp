@@ -61,6 +61,12 @@ constexpr const char* kFrontierNearest = "nearest";
 /// frontier: the long-term explorer walks to the frontier with the least walk to it plus distance on to the goal.
 constexpr const char* kFrontierGoal = "goal";
 
+/// wall_sense: a wall follower reads the wall beside it from its scan.
+constexpr const char* kWallSenseScan = "scan";
+/// wall_sense: a wall follower finds the wall by touch: it tries its moves in the hand-on-wall order and takes the
+/// first that does not bump.
+constexpr const char* kWallSenseTouch = "touch";
+
 /// One agent configuration of an experiment: a type plus handicaps, under a name of its own.
 struct AgentConfig {
   std::string name;            ///< Name in results and reports (e.g. "explorer_memory_5x5"); defaults to type.
@@ -73,6 +79,7 @@ struct AgentConfig {
   std::string wall_start = kWallStartGoal;        ///< Wall followers: kWallStartGoal or kWallStartRandom.
   std::string wall_leave = kWallLeaveNever;       ///< Wall followers: kWallLeaveNever or kWallLeaveGoalFree.
   std::string goal_ties = kGoalTiesHorizontal;    ///< Wall followers: kGoalTiesHorizontal or kGoalTiesRandom.
+  std::string wall_sense = kWallSenseScan;        ///< Wall followers: kWallSenseScan or kWallSenseTouch.
   std::string bumper_turn = kBumperTurnOther;     ///< Bumpers: kBumperTurnOther or kBumperTurnQuarter.
   std::string explorer_idle = kExplorerIdleRandom;  ///< Explorers: kExplorerIdleRandom or kExplorerIdleLeastVisited.
   std::string explorer_ties = kExplorerTiesRandom;  ///< Explorers: kExplorerTiesRandom or kExplorerTiesGoal.
@@ -85,7 +92,7 @@ struct AgentConfig {
   int instances = 0;           ///< Planner agents only: bridge and planner pairs sharing its runs; 0 = instanceCount's.
   std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
   /// @throws InvalidArgument naming "type" (listing the valid ones), "name", "memory", "sensor_noise",
-  /// "goal_seeking", "goal_range", "memory_model", "wall_start", "wall_leave", "goal_ties", "bumper_turn", "explorer_idle",
+  /// "goal_seeking", "goal_range", "memory_model", "wall_start", "wall_leave", "goal_ties", "wall_sense", "bumper_turn", "explorer_idle",
   /// "explorer_ties", "frontier", "runs", "prior_map", "planner_node", "planner_args", "plan_timeout", "cells_per_ppp_cell",
   /// "instances" or "host" (other agents have no planner: their bridge options are unused).
   void validate() const;
@@ -99,7 +106,7 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs();
 const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs();
 
 /// The agent options that decide how one run plays (type, memory, sensor_noise, goal_seeking, goal_range, memory_model,
-/// wall_start, wall_leave, goal_ties, bumper_turn, explorer_idle, explorer_ties, frontier): the flags of `ppp simulate` and
+/// wall_start, wall_leave, goal_ties, wall_sense, bumper_turn, explorer_idle, explorer_ties, frontier): the flags of `ppp simulate` and
 /// `ppp replay`, and of the replay commands a report gives.
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs();
 

@@ -18,6 +18,9 @@ namespace agents {
 /// meets: a concave pocket facing the goal then traps it, one hand more often than the other.
 /// Fault: the first obstacle met from the default corner start is usually an island (a free-standing cycle of
 /// walls); it circles it forever when the goal is not in sight from that loop.
+/// With `wall_sense: touch` it reads no wall from its scan: each step it tries the move the rule prefers (towards
+/// the wall side first) and, when that bumps, the next one in the rule's order, so along a straight wall it bumps
+/// once per cell; it starts following a wall when its move towards the goal bumps.
 /// Once it sees the goal it leaves the wall and takes a shortest path on its memory (kept for this alone), unless
 /// its behaviour has goal seeking off.
 class WallFollowerAgent final : public Agent {
@@ -35,6 +38,8 @@ class WallFollowerAgent final : public Agent {
   /// The quarter-turn heading (index into kMoves) along the larger axis distance from `from` to `goal`; on a tie
   /// the horizontal one, or with random goal ties either, drawn from the episode's seed.
   int headingTowards(Cell from, Cell goal);
+  /// The hand-on-wall rule by touch (wall_sense: touch), with `towards_goal` this step's heading for the goal.
+  Action feel(const Scan& scan, int towards_goal);
 
   Side side_;
   AgentBehaviour behaviour_;
@@ -44,6 +49,8 @@ class WallFollowerAgent final : public Agent {
   bool engaged_ = false;  // touched a wall: the hand-on-wall rule is in force
   bool left_a_wall_ = false;  // let go of a wall (wall_leave): heads for the goal, even after a random start
   int heading_ = 0;       // index into kMoves
+  int tried_ = -1;        // by touch: the heading of its last move, -1 when it was not the rule's (or none)
+  int probe_ = 0;         // by touch: which of the rule's moves from heading_ it tries (0: towards the wall)
   Cell goal_;
   Rng rng_{0};
 };
