@@ -39,8 +39,11 @@ std::string goalSeekingProblem(const AgentConfig& config) {
 /// What is wrong with the goal range asked for, or "" when nothing is.
 std::string goalRangeProblem(const AgentConfig& config) {
   if (config.goal_range == 0 || seeksGoal(config)) return "";
+  AgentConfig seeking = config;
+  seeking.goal_seeking = kGoalSeekingOn;
+  const std::string remedy = goalSeekingProblem(seeking).empty() ? "; goal_seeking: on makes it one" : "";
   return "only agents that head for the goal once they notice it take it (this one's goal_seeking is '" +
-         config.goal_seeking + "', type " + config.type + ")";
+         config.goal_seeking + "', type " + config.type + remedy + ")";
 }
 
 /// What is wrong with the wall sense asked for, or "" when nothing is.
@@ -234,8 +237,8 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
                           {kGoalSeekingOff, "it plays its strategy as if it had not seen it"}}),
         declareOption("goal_range",
                       "goal seekers: how near the goal must be for the agent to notice it: within this many cells "
-                      "(Chebyshev distance), whatever lies between, as a robot that knows both positions; 0: when "
-                      "its scan shows the goal free (in the window, in line of sight)",
+                      "(Chebyshev distance), whatever lies between, as a robot that knows both positions, besides "
+                      "when its scan shows the goal free (in the window, in line of sight); 0: only then",
                       +[](A& a) -> int& { return a.goal_range; }, Bounds{0, kMaxGridSide}),
         declareOption("memory_model", "what a limited memory KxK keeps",
                       +[](A& a) -> std::string& { return a.memory_model; })

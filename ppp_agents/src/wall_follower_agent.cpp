@@ -39,7 +39,8 @@ Action WallFollowerAgent::act(const Scan& scan) {
     memory_.update(scan);
     Action action;
     if (navigator_.towardsSeenGoal(scan, memory_, behaviour_.goal_range, &goal_seen_, &action)) {
-      tried_ = -1;
+      tried_ = -1;  // by touch: a bump after this move is not the rule's; it starts again from the wall side
+      probe_ = 0;
       return action;
     }
   }
@@ -49,8 +50,6 @@ Action WallFollowerAgent::act(const Scan& scan) {
     const std::int8_t value = scan.at(n.x, n.y);
     return value == kScanObstacle || value == kScanOutOfBounds;
   };
-  const int towards_wall = side_ == Side::Left ? 3 : 1;  // quarter turns clockwise: left = 3, right = 1
-  const int away_from_wall = 4 - towards_wall;
   const int towards_goal = headingTowards(scan.position(), goal_);  // one draw a step when ties are random
   if (behaviour_.walls_by_touch) return feel(scan, towards_goal);
   if (engaged_ && behaviour_.leave_wall_for_goal && !wall(towards_goal)) {
@@ -61,10 +60,10 @@ Action WallFollowerAgent::act(const Scan& scan) {
     if (!behaviour_.random_wall_start || left_a_wall_) heading_ = towards_goal;
     if (!wall(heading_)) return kMoves[heading_];
     engaged_ = true;
-    heading_ = (heading_ + away_from_wall) % 4;  // the wall just hit is now on the agent's side
+    heading_ = (heading_ + awayFromWall()) % 4;  // the wall just hit is now on the agent's side
   }
-  const int order[4] = {(heading_ + towards_wall) % 4, heading_, (heading_ + away_from_wall) % 4, (heading_ + 2) % 4};
-  for (int direction : order) {
+  for (int rank = 0; rank < 4; ++rank) {
+    const int direction = ruleMove(rank);
     if (!wall(direction)) {
       heading_ = direction;
       return kMoves[direction];
@@ -73,9 +72,13 @@ Action WallFollowerAgent::act(const Scan& scan) {
   return Action::Stay;
 }
 
+int WallFollowerAgent::ruleMove(int rank) const {
+  const int towards_wall = 4 - awayFromWall();
+  const int turn[4] = {towards_wall, 0, awayFromWall(), 2};
+  return (heading_ + turn[rank]) % 4;
+}
+
 Action WallFollowerAgent::feel(const Scan& scan, int towards_goal) {
-  const int towards_wall = side_ == Side::Left ? 3 : 1;
-  const int away_from_wall = 4 - towards_wall;
   const bool blocked = tried_ >= 0 && scan.bumped();
   if (!engaged_) {
     if (!blocked) {
@@ -84,7 +87,7 @@ Action WallFollowerAgent::feel(const Scan& scan, int towards_goal) {
       return kMoves[heading_];
     }
     engaged_ = true;
-    heading_ = (tried_ + away_from_wall) % 4;  // the wall just felt is now on the agent's side
+    heading_ = (tried_ + awayFromWall()) % 4;  // the wall just felt is now on the agent's side
     probe_ = 1;                                 // and known there: straight on first
   } else if (blocked) {
     probe_ = std::min(probe_ + 1, 3);
@@ -92,8 +95,7 @@ Action WallFollowerAgent::feel(const Scan& scan, int towards_goal) {
     heading_ = tried_;  // it moved: the wall side first again
     probe_ = 0;
   }
-  const int order[4] = {(heading_ + towards_wall) % 4, heading_, (heading_ + away_from_wall) % 4, (heading_ + 2) % 4};
-  tried_ = order[probe_];
+  tried_ = ruleMove(probe_);
   return kMoves[tried_];
 }
 

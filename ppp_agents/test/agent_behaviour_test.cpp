@@ -269,6 +269,34 @@ TEST(AgentBehaviourTest, GoalSeekingChangesNothingBeforeTheGoalComesIntoView) {
   }
 }
 
+TEST(AgentBehaviourTest, AWallFollowerByTouchResumesFromTheWallSideWhenTheGoalTurnsOutWalledIn) {
+  // Scans fed by hand to a left follower by touch noticing the goal within 2 cells. At (8,4) it heads West for the
+  // goal; bumping there it faces North with the wall on its left and tries straight on, and bumping again it tries
+  // away from the wall, East. From (6,2), (4,0) and (4,4) it notices the goal and heads for it; from (2,2) its
+  // memory shows the goal walled in, so it follows the wall again: from its wall side (West, as it faces North), not
+  // from where the bumps left off (East).
+  const test::World w = test::world({
+      ".........",
+      "....#....",
+      "...#G#...",
+      "....#....",
+      "........S",
+  });
+  const SensorModel sensor(SensorOptions{2, 0.0});
+  AgentBehaviour touch;
+  touch.walls_by_touch = true;
+  touch.goal_range = 2;
+  WallFollowerAgent left(WallFollowerAgent::Side::Left, touch);
+  left.reset(info(9, 5, w.start, w.goal, 1));
+  int step = 0;
+  const auto act = [&](Cell at, bool bumped) { return left.act(Scan(sensor, w.grid, at, w.goal, bumped, step++, 0)); };
+  EXPECT_EQ(act(Cell{8, 4}, false), Action::West);
+  EXPECT_EQ(act(Cell{8, 4}, true), Action::North);
+  EXPECT_EQ(act(Cell{8, 4}, true), Action::East);
+  for (const Cell noticed : {Cell{6, 2}, Cell{4, 0}, Cell{4, 4}}) act(noticed, false);
+  EXPECT_EQ(act(Cell{2, 2}, false), Action::West);
+}
+
 TEST(AgentBehaviourTest, ARandomWallStartDrawsTheFirstHeadingFromTheSeed) {
   // From the centre of an open 9x9 map, the goal out of view: heading for the goal is always East first (the
   // axes tie); a random wall start goes each of the four ways for some seed, the same way for the same seed.

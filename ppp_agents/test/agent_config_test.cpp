@@ -146,8 +146,8 @@ TEST(AgentConfigTest, ReadsConfigurationsWithDefaults) {
 TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, colour: red}\n"),
             "agents.yaml:2: agents[0].colour: unknown key; valid keys: bumper_turn, cells_per_ppp_cell, "
-            "explorer_idle, explorer_ties, frontier, goal_range, goal_seeking, goal_ties, host, instances, lockstep, memory, "
-            "memory_model, name, plan_requests, plan_timeout, planner_args, planner_node, prior_map, runs, "
+            "explorer_idle, explorer_ties, frontier, goal_range, goal_seeking, goal_ties, host, instances, lockstep, "
+            "memory, memory_model, name, plan_requests, plan_timeout, planner_args, planner_node, prior_map, runs, "
             "sensor_noise, type, wall_leave, wall_sense, wall_start");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),
             std::string("agents.yaml:3: agents[1].type: missing; valid: ") + kTypes);
@@ -229,10 +229,10 @@ TEST(AgentConfigTest, GoalRangeSetsTheBehaviourOfGoalSeekersOnly) {
   EXPECT_EQ(read("agents:\n  - {type: random, goal_seeking: on, goal_range: 3}\n")[0].goal_range, 3);
   EXPECT_EQ(parseError("agents:\n  - {type: random, goal_range: 3}\n"),
             "agents.yaml:2: agents[0].goal_range: only agents that head for the goal once they notice it take it "
-            "(this one's goal_seeking is 'by_type', type random)");
+            "(this one's goal_seeking is 'by_type', type random; goal_seeking: on makes it one)");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, goal_seeking: off, goal_range: 3}\n"),
             "agents.yaml:2: agents[0].goal_range: only agents that head for the goal once they notice it take it "
-            "(this one's goal_seeking is 'off', type explorer)");
+            "(this one's goal_seeking is 'off', type explorer; goal_seeking: on makes it one)");
   EXPECT_EQ(parseError("agents:\n  - {type: astar, goal_range: 3}\n"),
             "agents.yaml:2: agents[0].goal_range: only agents that head for the goal once they notice it take it "
             "(this one's goal_seeking is 'by_type', type astar)");

@@ -54,10 +54,13 @@ TEST(NavigationTest, AGoalRangeNoticesTheGoalWithinItsCellsWhateverLiesBetween) 
   EXPECT_FALSE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{9, 5}, false, 0), 3));
   EXPECT_TRUE(goalNearby(Scan(2, cells, Cell{5, 5}, Cell{2, 8}, false, 0), 3));
   EXPECT_FALSE(goalNearby(Scan(2, cells, Cell{5, 5}, Cell{5, 9}, false, 0), 3));
-  // Goal range 1 is shorter than the window: the goal two cells away is not noticed even when seen free.
+  // Goal range 1 is shorter than the window: the goal two cells away is noticed when seen free, and only then;
+  // one cell away it is noticed behind a wall.
   std::vector<std::int8_t> open(25, kScanFree);
-  EXPECT_FALSE(goalSeen(Scan(2, open, Cell{5, 5}, Cell{7, 5}, false, 0), 1));
-  EXPECT_TRUE(goalSeen(Scan(2, open, Cell{5, 5}, Cell{6, 4}, false, 0), 1));
+  EXPECT_TRUE(goalSeen(Scan(2, open, Cell{5, 5}, Cell{7, 5}, false, 0), 1));
+  EXPECT_FALSE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{7, 5}, false, 0), 1));
+  EXPECT_TRUE(goalSeen(Scan(2, cells, Cell{5, 5}, Cell{6, 4}, false, 0), 1));
+  EXPECT_TRUE(goalNearby(Scan(2, cells, Cell{5, 5}, Cell{7, 3}, false, 0), 1));
 }
 
 TEST(NavigationTest, TowardsGoalTakesAShortestPathTreatingUnknownAsPassable) {

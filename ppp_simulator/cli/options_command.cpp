@@ -30,6 +30,17 @@ std::string parameter(const OptionSpec<Options>& spec) {
   return name;
 }
 
+/// The options' spellings by `spell`, as prose: "`a`, `b` and `c`".
+template <typename Options, typename Spell>
+std::string spelledList(const std::vector<OptionSpec<Options>>& specs, Spell spell) {
+  std::string list;
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    if (i > 0) list += i + 1 == specs.size() ? " and " : ", ";
+    list += "`" + spell(specs[i]) + "`";
+  }
+  return list;
+}
+
 /// The options reference (docs/options.md): every declared options struct, each source's spelling.
 std::string optionsReference() {
   std::ostringstream out;
@@ -47,10 +58,10 @@ std::string optionsReference() {
       << optionsMarkdownTable(simulator::experimentOptionSpecs(), simulator::ExperimentConfig{}, &key)
       << "\n## Agents\n\n"
       << "Keys of each entry of an `agents` list (`config/agents.yaml`).\n"
-      << "`agent_node` reads `~type`, `~name`, `~memory`, `~sensor_noise` and `~goal_seeking`; `planner_bridge_node`\n"
-      << "reads `~name`, `~memory` and `~sensor_noise`; `ppp simulate` and `ppp replay` take `--agent` (the type),\n"
-      << "`--memory`, `--sensor-noise` and `--goal-seeking`, with the episode's options (`--budget`,\n"
-      << "`--sensor-range`, ...).\n\n"
+      << "`agent_node` reads " << spelledList(agents::agentNodeOptionSpecs(), &parameter<agents::AgentConfig>)
+      << "; `planner_bridge_node` reads `~name`, `~memory` and `~sensor_noise`; `ppp simulate` and `ppp replay` "
+      << "take " << spelledList(agents::agentPlayOptionSpecs(), &flagName<agents::AgentConfig>)
+      << " (`--agent` is the type), with the episode's options (`--budget`, `--sensor-range`, ...).\n\n"
       << optionsMarkdownTable(agents::agentOptionSpecs(), agents::AgentConfig{}, &key)
       << "\n## Generator\n\n"
       << "Keys of `config/generator.yaml` and of a set's `generator` mapping, `generator_node` `~` parameters and\n"

@@ -27,7 +27,7 @@ struct EpisodeInfo {
 struct AgentBehaviour {
   int memory_window = 0;  ///< Limited memory: only a k x k window around the agent is kept (odd k); 0 = full.
   int memory_scans = 0;   ///< Limited memory: only what the last n scans saw is kept; 0 = every scan's.
-  bool seek_goal = true;  ///< Once it has seen the goal it takes a shortest path to it on its memory.
+  bool seek_goal = true;  ///< Once it has noticed the goal it takes a shortest path to it on its memory.
   int goal_range = 0;  ///< Notices the goal within this many cells (Chebyshev), walls or not; 0 = seen in the scan.
   bool random_wall_start = false;  ///< Wall followers: first straight on in a random heading, not towards the goal.
   bool leave_wall_for_goal = false;  ///< Wall followers: let go of the wall when the move towards the goal is free.

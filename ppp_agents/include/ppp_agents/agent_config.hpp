@@ -17,11 +17,11 @@ constexpr int kMaxRuns = 100000000;
 /// Most instances (bridge and planner process pairs) of one planner agent.
 constexpr int kMaxInstances = 64;
 
-/// goal_seeking: as the agent type's design (every built-in type but random heads for the goal once seen).
+/// goal_seeking: as the agent type's design (every built-in type but random heads for the goal once noticed).
 constexpr const char* kGoalSeekingByType = "by_type";
-/// goal_seeking: once it has seen the goal, the agent takes a shortest path to it on its memory.
+/// goal_seeking: once it has noticed the goal (goal_range), the agent takes a shortest path to it on its memory.
 constexpr const char* kGoalSeekingOn = "on";
-/// goal_seeking: the agent plays its strategy whether it has seen the goal or not.
+/// goal_seeking: the agent plays its strategy whether it has noticed the goal or not.
 constexpr const char* kGoalSeekingOff = "off";
 
 /// memory_model: the memory window is a k x k window around the agent.
@@ -92,9 +92,10 @@ struct AgentConfig {
   int instances = 0;           ///< Planner agents only: bridge and planner pairs sharing its runs; 0 = instanceCount's.
   std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
   /// @throws InvalidArgument naming "type" (listing the valid ones), "name", "memory", "sensor_noise",
-  /// "goal_seeking", "goal_range", "memory_model", "wall_start", "wall_leave", "goal_ties", "wall_sense", "bumper_turn", "explorer_idle",
-  /// "explorer_ties", "frontier", "runs", "prior_map", "planner_node", "planner_args", "plan_timeout", "cells_per_ppp_cell",
-  /// "instances" or "host" (other agents have no planner: their bridge options are unused).
+  /// "goal_seeking", "goal_range", "memory_model", "wall_start", "wall_leave", "goal_ties", "wall_sense",
+  /// "bumper_turn", "explorer_idle", "explorer_ties", "frontier", "runs", "prior_map", "planner_node",
+  /// "planner_args", "plan_timeout", "cells_per_ppp_cell", "instances" or "host" (other agents have no planner:
+  /// their bridge options are unused).
   void validate() const;
 };
 
@@ -105,9 +106,9 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs();
 /// The agent options an agent node reads as `~` parameters (and the experiment's graph writes for it).
 const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs();
 
-/// The agent options that decide how one run plays (type, memory, sensor_noise, goal_seeking, goal_range, memory_model,
-/// wall_start, wall_leave, goal_ties, wall_sense, bumper_turn, explorer_idle, explorer_ties, frontier): the flags of `ppp simulate` and
-/// `ppp replay`, and of the replay commands a report gives.
+/// The agent options that decide how one run plays (type, memory, sensor_noise, goal_seeking, goal_range,
+/// memory_model, wall_start, wall_leave, goal_ties, wall_sense, bumper_turn, explorer_idle, explorer_ties,
+/// frontier): the flags of `ppp simulate` and `ppp replay`, and of the replay commands a report gives.
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs();
 
 /// The type of agents played by an external ROS planner through planner_bridge_node, one episode at a time.

@@ -17,7 +17,7 @@ enum class AgentTrait : unsigned {
   Control = 1u << 2,         ///< The control: passes every valid PPP (left out when ranking PPPs).
   Baseline = 1u << 3,        ///< No strategy to find faults in (left out of the report's worst PPPs).
   SeeksGoal = 1u << 4,       ///< By design it heads for the goal once it has seen it (goal_seeking: by_type).
-  FollowsWalls = 1u << 5,    ///< A wall follower: it takes wall_start, wall_leave and goal_ties.
+  FollowsWalls = 1u << 5,    ///< A wall follower: it takes wall_start, wall_leave, goal_ties and wall_sense.
   Explores = 1u << 6,        ///< An explorer: it takes explorer_idle and explorer_ties.
   Bumps = 1u << 7,           ///< A bumper: it takes bumper_turn.
   SeeksFrontiers = 1u << 8,  ///< The long-term explorer: it takes frontier.

@@ -18,8 +18,8 @@ namespace agents {
 ///   bumped one.
 /// With `bumper_turn: quarter` both draw only among the two quarter turns (left or right of the bumped
 /// direction), never straight back: the decision bumper among the untried ones of those two first.
-/// Both steer by the bump flag alone: they read the scan window only while the goal is within the window
-/// (Chebyshev distance <= range), remembering those scans; once the goal is seen they take a shortest path to
+/// Both steer by the bump flag alone: they read the scan window only while the goal is within the window or their
+/// goal range (goalNearby()), remembering those scans; once the goal is noticed they take a shortest path to
 /// it on that memory (unknown cells passable); with goal seeking off they never read it. Fault: straight lines
 /// and random turns leave them trapped in
 /// pockets whose exit they rarely line up with.

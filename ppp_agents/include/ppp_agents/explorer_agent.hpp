@@ -22,8 +22,8 @@ namespace agents {
 ///   frontier (a known-free cell with an unknown 4-neighbour; with `frontier: goal`, the one with the least walk
 ///   to it plus Manhattan distance on to the goal), re-planning when a cell of the path turns out blocked or the
 ///   frontier is gone; fault: it may travel far for single unknown cells.
-/// Once either has seen the goal it takes a shortest path to it on its memory (unknown cells passable), unless its
-/// behaviour has goal seeking off.
+/// Once either has noticed the goal (seen free in its scan, or within its goal_range) it takes a shortest path to
+/// it on its memory (unknown cells passable), unless its behaviour has goal seeking off.
 class ExplorerAgent final : public Agent {
  public:
   /// An explorer; `long_term` selects the frontier-seeking variant.

@@ -12,21 +12,25 @@
 namespace ppp {
 namespace agents {
 
-/// True when the goal is near enough to be noticed: within `goal_range` cells (Chebyshev distance), or with
-/// `goal_range` 0 within the scan window. Reads nothing.
-inline bool goalNearby(const Scan& scan, int goal_range) {
+/// Whether the goal lies within `cells` of the agent (Chebyshev distance). Reads nothing.
+inline bool goalWithin(const Scan& scan, int cells) {
   const Cell p = scan.position();
   const Cell g = scan.goal();
-  const int r = goal_range > 0 ? goal_range : scan.range();
-  return g.x >= p.x - r && g.x <= p.x + r && g.y >= p.y - r && g.y <= p.y + r;
+  return g.x >= p.x - cells && g.x <= p.x + cells && g.y >= p.y - cells && g.y <= p.y + cells;
 }
 
-/// True when the agent notices the goal: with `goal_range` 0 when it lies in the scan window and is reported free
-/// (it sees it in line of sight; the window is read only then); otherwise when it is within `goal_range` cells,
-/// whatever lies between (the agent knows both positions).
+/// True when the goal may be noticed from this scan: it lies within the scan window or within `goal_range` cells.
+/// Reads nothing.
+inline bool goalNearby(const Scan& scan, int goal_range) {
+  return goalWithin(scan, std::max(scan.range(), goal_range));
+}
+
+/// True when the agent notices the goal: when it lies within `goal_range` cells, whatever lies between (the agent
+/// knows both positions; 0: never so), or in the scan window reported free (it sees it in line of sight; the window
+/// is read only then).
 inline bool goalSeen(const Scan& scan, int goal_range) {
-  if (!goalNearby(scan, goal_range)) return false;
-  if (goal_range > 0) return true;
+  if (goal_range > 0 && goalWithin(scan, goal_range)) return true;
+  if (!goalWithin(scan, scan.range())) return false;
   return scan.at(scan.goal().x - scan.position().x, scan.goal().y - scan.position().y) == kScanFree;
 }
 
@@ -49,11 +53,11 @@ class Navigator {
   template <class Passable, class Cost>
   int searchLeast(Cell from, Passable passable, Cost cost);
 
-  /// The first move of the path found to `target` by the last search().
+  /// The first move of the path found to `target` by the last search() or searchLeast().
   Action firstAction(int target) const { return static_cast<Action>(first_[target]); }
 
-  /// Writes the cells of the path found to `target` by the last search() into `path`, from the first cell
-  /// after the start to the target.
+  /// Writes the cells of the path found to `target` by the last search() or searchLeast() into `path`, from the
+  /// first cell after the start to the target.
   void path(int target, std::vector<Cell>* path) const;
 
   /// First move of a shortest path from `from` to `goal` over cells not remembered as obstacles (unknown

@@ -10,7 +10,7 @@ namespace agents {
 
 /// `random`: uniform over the five actions, drawn from its own generator. By its design it never reads the scan
 /// (so it never notices the goal either: a pure random walk, the baseline whose pass rate a Markov chain predicts
-/// exactly). With goal seeking (goal_seeking: on) it remembers its scans and, once it has seen the goal, takes a
+/// exactly). With goal seeking (goal_seeking: on) it remembers its scans and, once it has noticed the goal, takes a
 /// shortest path to it on that memory.
 class RandomAgent final : public Agent {
  public:

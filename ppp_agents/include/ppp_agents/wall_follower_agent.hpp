@@ -20,8 +20,9 @@ namespace agents {
 /// walls); it circles it forever when the goal is not in sight from that loop.
 /// With `wall_sense: touch` it reads no wall from its scan: each step it tries the move the rule prefers (towards
 /// the wall side first) and, when that bumps, the next one in the rule's order, so along a straight wall it bumps
-/// once per cell; it starts following a wall when its move towards the goal bumps.
-/// Once it sees the goal it leaves the wall and takes a shortest path on its memory (kept for this alone), unless
+/// once per cell; it starts following a wall when its move before touching one (towards the goal, or straight on
+/// after a random start) bumps.
+/// Once it notices the goal it leaves the wall and takes a shortest path on its memory (kept for this alone), unless
 /// its behaviour has goal seeking off.
 class WallFollowerAgent final : public Agent {
  public:
@@ -40,6 +41,11 @@ class WallFollowerAgent final : public Agent {
   int headingTowards(Cell from, Cell goal);
   /// The hand-on-wall rule by touch (wall_sense: touch), with `towards_goal` this step's heading for the goal.
   Action feel(const Scan& scan, int towards_goal);
+  /// Quarter turns clockwise that turn away from the wall side: 1 for the left hand, 3 for the right.
+  int awayFromWall() const { return side_ == Side::Left ? 1 : 3; }
+  /// The heading of the hand-on-wall rule's move of rank 0 to 3 from heading_: towards the wall side, straight
+  /// on, away from it, back.
+  int ruleMove(int rank) const;
 
   Side side_;
   AgentBehaviour behaviour_;
