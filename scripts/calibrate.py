@@ -18,8 +18,9 @@ Beside them it reports the dissertation's per-PPP facts, which the ranking does 
 optimal turns (its example PPP has 10), the PPPs both bumpers never pass (29 of 60), those each wall follower
 never passes (14 and 13, both 7) and the explorer's lowest per-PPP rate (28.8 %), each averaged over the seeds.
 
-Prints one line per map candidate as it finishes (its best agent option combination) and the ranking at the end;
-writes every candidate's rates to WORK/calibration.csv. Exit status 0, or 2 on bad usage.
+Prints one line per map candidate as it finishes (its best agent option combination), the ranking at the end, and
+the seed whose set best stands for the best candidate (its rates nearest their mean over the seeds: the preset's
+seed); writes every candidate's rates to WORK/calibration.csv. Exit status 0, or 2 on bad usage.
 
 Usage: scripts/calibrate.py [--runs N] [--seeds 1,2,3] [--work DIR] [--quick]
   --runs    runs per agent per PPP (default 100)
@@ -67,7 +68,7 @@ BUMPERS = ['bumper', 'decision_bumper']
 MAP_OPTIONS = {
     'shapes': ['hbar,vbar,diag_down,diag_up,block', 'hbar,vbar,block'],
     'max_obstacles': [6, 8, 10],
-    'max_bar_length': [0, 6],
+    'max_bar_length': [0, 6, 8],
 }
 EXPERIMENT_OPTIONS = {
     'bumps_use_budget': [True, False],
@@ -203,10 +204,15 @@ def play(map_candidate, agent_values, seeds, runs, work):
     return played
 
 
+def chosen_variants(agent_candidate):
+    """The agent name each configuration plays under for one combination of the agent options."""
+    return {name: variant_name(name, tuple((k, agent_candidate[k]) for k in concerning(name, agent_candidate)))
+            for name, _, _ in AGENTS}
+
+
 def combine(played, agent_candidate):
     """Mean pass rates (%) and per-PPP facts over the seeds of one combination of the agent options."""
-    chosen = {name: variant_name(name, tuple((k, agent_candidate[k]) for k in concerning(name, agent_candidate)))
-              for name, _, _ in AGENTS}
+    chosen = chosen_variants(agent_candidate)
     rates, facts = {}, {}
     for seed_rates, seed_per_ppp, turns in played:
         for name, variant in chosen.items():
@@ -214,6 +220,15 @@ def combine(played, agent_candidate):
         for fact, value in per_ppp_facts({n: seed_per_ppp[v] for n, v in chosen.items()}, turns).items():
             facts[fact] = facts.get(fact, 0.0) + value / len(played)
     return rates, facts
+
+
+def typicality(played, agent_candidate):
+    """Per seed, the root mean square distance (points) of its set's rates of the eight configurations from their
+    mean over the seeds: the least is the one set that best stands for the candidate. Blind to Table 5.1."""
+    chosen = chosen_variants(agent_candidate)
+    per_seed = [{name: seed_rates[chosen[name]] for name in TABLE_5_1} for seed_rates, _, _ in played]
+    mean = {name: sum(rates[name] for rates in per_seed) / len(per_seed) for name in TABLE_5_1}
+    return [(sum((rates[n] - mean[n]) ** 2 for n in TABLE_5_1) / len(TABLE_5_1)) ** 0.5 for rates in per_seed]
 
 
 def main():
@@ -234,7 +249,7 @@ def main():
     map_keys, agent_keys = sorted(list(MAP_OPTIONS) + list(EXPERIMENT_OPTIONS)), sorted(agent_values)
     options = dict(MAP_OPTIONS, **EXPERIMENT_OPTIONS)
     keys = sorted(map_keys + agent_keys)
-    ranked = []
+    ranked, played_by_map = [], {}
     with open(os.path.join(args.work, 'calibration.csv'), 'w', newline='') as out:
         writer = csv.writer(out)
         writer.writerow(keys + ['worst_gap', 'rms_gap', 'random'] + list(TABLE_5_1) + FACTS)
@@ -245,6 +260,7 @@ def main():
             if not admitted:
                 continue
             played = play(map_candidate, dict(agent_values, goal_range=admitted), seeds, args.runs, args.work)
+            played_by_map[map_values] = played
             for agent_combination in itertools.product(*(agent_values[k] for k in agent_keys)):
                 candidate = dict(map_candidate, **dict(zip(agent_keys, agent_combination)))
                 if candidate['goal_range'] not in admitted or not admissible(candidate.items()):
@@ -270,6 +286,12 @@ def main():
         print('    ' + ', '.join('%s %.1f (%+.1f)' % (a, rates[a], rates[a] - TABLE_5_1[a]) for a in TABLE_5_1) +
               ', random %.2f' % rates['random'])
         print('    facts: ' + ', '.join('%s %.1f' % (f, facts[f]) for f in FACTS))
+    if ranked:
+        best = ranked[0][2]
+        distances = typicality(played_by_map[tuple(best[k] for k in map_keys)], {k: best[k] for k in agent_keys})
+        typical = min(range(len(seeds)), key=lambda i: distances[i])
+        print('\nThe best candidate\'s most typical set: seed %d (root mean square distance from the mean over the '
+              'seeds, in points: %s)' % (seeds[typical], ', '.join('seed %d %.1f' % sd for sd in zip(seeds, distances))))
     return 0
 
 
