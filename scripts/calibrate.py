@@ -8,13 +8,11 @@ agent's rates depend only on the maps and on its own options, so one experiment 
 every configuration once per assignment of the agent options that concern it, side by side, and every combination
 of the agent options is scored from those rates: a new agent option adds agents to each experiment, not
 experiments. The pass rate of each of the eight configurations, averaged over the seeds, is compared with
-Table 5.1. The random
-agent seeks the goal once it notices it, and a candidate must give it an exact pass rate on an empty 20x20 map
-(the Markov chain of ppp_agents/test/episode_test.cpp, computed here too) within the dissertation's 4.4 % +- 1;
-that fact alone decides between the goal ranges and budget rules it admits (goal range 0 with free bumps, 3.41 %;
-goal range 3, 4.43 % with counted bumps and 5.07 % with free ones). Candidates are ranked by their largest gap in
-points, then by the root mean square gap.
-Beside them it reports the dissertation's per-PPP facts, which the ranking does not weigh: the set's mean
+Table 5.1. The random agent seeks the goal once it notices it, and a candidate must give it an exact pass rate on
+an empty 20x20 map (the Markov chain of ppp_agents/test/episode_test.cpp, computed here too) within the
+dissertation's 4.4 % +- 1: of the goal ranges and budget rules searched, that admits goal range 0 with free bumps
+(3.41 %) and goal range 3 with counted (4.43 %) or free bumps (5.07 %). Candidates are ranked by their largest gap
+in points, then by the root mean square gap. Beside them it reports the dissertation's per-PPP facts, which the ranking does not weigh: the set's mean
 optimal turns (its example PPP has 10), the PPPs both bumpers never pass (29 of 60), those each wall follower
 never passes (14 and 13, both 7) and the explorer's lowest per-PPP rate (28.8 %), each averaged over the seeds.
 
