@@ -14,7 +14,7 @@ std::vector<Cell> optimisticAStar(const GridMap& map, Cell start, Cell goal) {
   const int width = map.frame().width;
   const int cells = width * map.frame().height;
   const auto index = [width](Cell c) { return c.y * width + c.x; };
-  const auto heuristic = [&goal](Cell c) { return std::abs(c.x - goal.x) + std::abs(c.y - goal.y); };
+  const auto heuristic = [&goal](Cell c) { return manhattanDistance(c, goal); };
 
   std::vector<int> cost(static_cast<std::size_t>(cells), -1);
   std::vector<int> parent(static_cast<std::size_t>(cells), -1);

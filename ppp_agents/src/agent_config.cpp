@@ -82,9 +82,9 @@ const std::vector<KindOption>& kindOptions() {
   return options;
 }
 
-/// The names of kindOptions().
-std::vector<std::string> kindOptionNames() {
-  std::vector<std::string> names;
+/// The options that decide how one run plays: the play flags, and with "name" the agent node's parameters.
+std::vector<std::string> playOptionNames() {
+  std::vector<std::string> names = {"type", "memory", "sensor_noise", "goal_seeking", "goal_range", "memory_model"};
   for (const KindOption& option : kindOptions()) names.push_back(option.key);
   return names;
 }
@@ -322,20 +322,15 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
 
 const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs() {
   static const std::vector<OptionSpec<AgentConfig>> specs = [] {
-    std::vector<std::string> names = {"type", "name", "memory", "sensor_noise", "goal_seeking", "goal_range",
-                                      "memory_model"};
-    for (const std::string& name : kindOptionNames()) names.push_back(name);
+    std::vector<std::string> names = playOptionNames();
+    names.insert(names.begin() + 1, "name");
     return selectOptions(agentOptionSpecs(), names);
   }();
   return specs;
 }
 
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs() {
-  static const std::vector<OptionSpec<AgentConfig>> specs = [] {
-    std::vector<std::string> names = {"type", "memory", "sensor_noise", "goal_seeking", "goal_range", "memory_model"};
-    for (const std::string& name : kindOptionNames()) names.push_back(name);
-    return selectOptions(agentOptionSpecs(), names);
-  }();
+  static const std::vector<OptionSpec<AgentConfig>> specs = selectOptions(agentOptionSpecs(), playOptionNames());
   return specs;
 }
 

@@ -70,7 +70,7 @@ bool AstarAgent::plan(const Grid& grid, Cell from, Cell goal, std::vector<Action
   parent_.assign(cells, -1);
   closed_.assign(cells, 0);
   open_.clear();
-  const auto heuristic = [&](Cell c) { return std::abs(c.x - goal.x) + std::abs(c.y - goal.y); };
+  const auto heuristic = [&](Cell c) { return manhattanDistance(c, goal); };
   // std::push_heap keeps the largest on top, so "worse" orders the best entry last.
   const auto worse = [](const Entry& a, const Entry& b) {
     if (a.f != b.f) return a.f > b.f;

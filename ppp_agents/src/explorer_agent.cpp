@@ -58,7 +58,7 @@ bool ExplorerAgent::frontierStep(Cell position, Action* action) {
   bool valid = path_next_ < path_.size() && isFrontier(path_.back());
   if (valid) {
     const Cell next = path_[path_next_];
-    valid = std::abs(next.x - position.x) + std::abs(next.y - position.y) == 1;
+    valid = manhattanDistance(next, position) == 1;
     for (std::size_t i = path_next_; valid && i < path_.size(); ++i) valid = memory_.isFree(path_[i]);
   }
   if (!valid) {
@@ -66,9 +66,7 @@ bool ExplorerAgent::frontierStep(Cell position, Action* action) {
     const int found =
         behaviour_.frontier_towards_goal
             ? navigator_.searchLeast(position, known_free,
-                                     [&](Cell c) {
-                                       return isFrontier(c) ? std::abs(goal_.x - c.x) + std::abs(goal_.y - c.y) : -1;
-                                     })
+                                     [&](Cell c) { return isFrontier(c) ? manhattanDistance(c, goal_) : -1; })
             : navigator_.search(position, known_free, [&](Cell c) { return isFrontier(c); });
     if (found < 0) {
       path_.clear();
@@ -117,11 +115,8 @@ Action ExplorerAgent::act(const Scan& scan) {
     if (gains[i] == best_gain && gains[i] > 0) best[best_count++] = kMoves[i];
   }
   if (best_count > 1 && behaviour_.goal_ties_for_gain) {
-    const Cell goal = scan.goal();
-    best_count = keepLeast(best, best_count, [&](Action move) {
-      const Cell c = target(position, move);
-      return std::abs(c.x - goal.x) + std::abs(c.y - goal.y);
-    });
+    best_count = keepLeast(best, best_count,
+                           [&](Action move) { return manhattanDistance(target(position, move), goal_); });
   }
   if (best_count > 0) {
     path_.clear();

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,9 @@ struct Cell {
   /// Negation of ==.
   friend bool operator!=(const Cell& a, const Cell& b) { return !(a == b); }
 };
+
+/// The Manhattan distance between two cells: the fewest 4-connected moves between them on an empty grid.
+inline int manhattanDistance(Cell a, Cell b) { return std::abs(a.x - b.x) + std::abs(a.y - b.y); }
 
 /// A cell as messages write it: "(x, y)".
 std::string cellText(Cell c);
