@@ -12,13 +12,13 @@ Table 5.1. The random agent seeks the goal once it notices it, and a candidate m
 an empty 20x20 map (the Markov chain of ppp_agents/test/episode_test.cpp, computed here too) within the
 dissertation's 4.4 % +- 1: of the goal ranges and budget rules searched, that admits goal range 0 with free bumps
 (3.41 %) and goal range 3 with counted (4.43 %) or free bumps (5.07 %). Candidates are ranked by their largest gap
-in points, then by the root mean square gap. Beside them it reports the dissertation's per-PPP facts, which the ranking does not weigh: the set's mean
-optimal turns (its example PPP has 10), the PPPs both bumpers never pass (29 of 60), those each wall follower
-never passes (14 and 13, both 7) and the explorer's lowest per-PPP rate (28.8 %), each averaged over the seeds.
+in points, then by the root mean square gap. Beside them it reports the dissertation's per-PPP facts, which the
+ranking does not weigh: the set's mean optimal turns (its example PPP has 10), the PPPs both bumpers never pass (29
+of 60), those each wall follower never passes (14 and 13, both 7) and the explorer's lowest per-PPP rate (28.8 %),
+each averaged over the seeds. Which one set the preset plays is scripts/seed_spread.py's to say.
 
-Prints one line per map candidate as it finishes (its best agent option combination), the ranking at the end, and
-the seed whose set best stands for the best candidate (its rates nearest their mean over the seeds: the preset's
-seed); writes every candidate's rates to WORK/calibration.csv. Exit status 0, or 2 on bad usage.
+Prints one line per map candidate as it finishes (its best agent option combination) and the ranking at the end;
+writes every candidate's rates to WORK/calibration.csv. Exit status 0, or 2 on bad usage.
 
 Usage: scripts/calibrate.py [--runs N] [--seeds 1,2,3] [--work DIR] [--quick]
   --runs    runs per agent per PPP (default 100)
@@ -162,17 +162,19 @@ def experiment_yaml(map_candidate, agent_values, seed, runs):
 FACTS = ['turns', 'bumpers_zero', 'left_zero', 'right_zero', 'walls_zero', 'explorer_min']
 
 
-def played_rates(directory):
-    """Set-level pass rates (%) and per-PPP pass rates (%, in PPP order) per agent of a finished experiment, and
-    the set's mean optimal turns."""
+def played_rates(directory, set_name='turns'):
+    """Set-level pass rates (%) and per-PPP pass rates (%, in PPP order) per agent on one set of a finished
+    experiment, and the set's mean optimal turns."""
     rates, per_ppp = {}, {}
     with open(os.path.join(directory, 'summary.csv')) as summary:
         for row in csv.DictReader(summary):
+            if row['set'] != set_name:
+                continue
             if row['level'] == 'set':
                 rates[row['agent']] = 100 * float(row['pass_rate'])
             elif row['level'] == 'problem':
                 per_ppp.setdefault(row['agent'], []).append(100 * float(row['pass_rate']))
-    with open(os.path.join(directory, 'sets', 'turns', 'set.csv')) as characters:
+    with open(os.path.join(directory, 'sets', set_name, 'set.csv')) as characters:
         turns = [float(row['turns']) for row in csv.DictReader(characters)]
     return rates, per_ppp, sum(turns) / len(turns)
 
@@ -220,15 +222,6 @@ def combine(played, agent_candidate):
     return rates, facts
 
 
-def typicality(played, agent_candidate):
-    """Per seed, the root mean square distance (points) of its set's rates of the eight configurations from their
-    mean over the seeds: the least is the one set that best stands for the candidate. Blind to Table 5.1."""
-    chosen = chosen_variants(agent_candidate)
-    per_seed = [{name: seed_rates[chosen[name]] for name in TABLE_5_1} for seed_rates, _, _ in played]
-    mean = {name: sum(rates[name] for rates in per_seed) / len(per_seed) for name in TABLE_5_1}
-    return [(sum((rates[n] - mean[n]) ** 2 for n in TABLE_5_1) / len(TABLE_5_1)) ** 0.5 for rates in per_seed]
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     parser.add_argument('--runs', type=int, default=100)
@@ -247,7 +240,7 @@ def main():
     map_keys, agent_keys = sorted(list(MAP_OPTIONS) + list(EXPERIMENT_OPTIONS)), sorted(agent_values)
     options = dict(MAP_OPTIONS, **EXPERIMENT_OPTIONS)
     keys = sorted(map_keys + agent_keys)
-    ranked, played_by_map = [], {}
+    ranked = []
     with open(os.path.join(args.work, 'calibration.csv'), 'w', newline='') as out:
         writer = csv.writer(out)
         writer.writerow(keys + ['worst_gap', 'rms_gap', 'random'] + list(TABLE_5_1) + FACTS)
@@ -258,7 +251,6 @@ def main():
             if not admitted:
                 continue
             played = play(map_candidate, dict(agent_values, goal_range=admitted), seeds, args.runs, args.work)
-            played_by_map[map_values] = played
             for agent_combination in itertools.product(*(agent_values[k] for k in agent_keys)):
                 candidate = dict(map_candidate, **dict(zip(agent_keys, agent_combination)))
                 if candidate['goal_range'] not in admitted or not admissible(candidate.items()):
@@ -284,12 +276,6 @@ def main():
         print('    ' + ', '.join('%s %.1f (%+.1f)' % (a, rates[a], rates[a] - TABLE_5_1[a]) for a in TABLE_5_1) +
               ', random %.2f' % rates['random'])
         print('    facts: ' + ', '.join('%s %.1f' % (f, facts[f]) for f in FACTS))
-    if ranked:
-        best = ranked[0][2]
-        distances = typicality(played_by_map[tuple(best[k] for k in map_keys)], {k: best[k] for k in agent_keys})
-        typical = min(range(len(seeds)), key=lambda i: distances[i])
-        print('\nThe best candidate\'s most typical set: seed %d (root mean square distance from the mean over the '
-              'seeds, in points: %s)' % (seeds[typical], ', '.join('seed %d %.1f' % sd for sd in zip(seeds, distances))))
     return 0
 
 

@@ -27,6 +27,8 @@ packages=(
   libgtest-dev libbenchmark-dev clang libclang-rt-14-dev
   # peak memory in the scale benchmark (/usr/bin/time)
   time
+  # scripts/seed_spread.py reads experiment YAML
+  python3-yaml
 )
 
 # The multi-machine test runs Debian's sshd inside a network namespace of its own. Installing openssh-server
