@@ -31,11 +31,9 @@ import csv
 import itertools
 import json
 import os
-import shutil
-import subprocess
 import sys
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from experiment_runs import SEEDS_EXPECTED, parse_seeds, played_rates, run_experiment
 
 # Table 5.1 of the dissertation: pass rates (%) on its `turns` set, 1,000 runs on each of 60 PPPs.
 TABLE_5_1 = {
@@ -162,23 +160,6 @@ def experiment_yaml(map_candidate, agent_values, seed, runs):
 FACTS = ['turns', 'bumpers_zero', 'left_zero', 'right_zero', 'walls_zero', 'explorer_min']
 
 
-def played_rates(directory, set_name='turns'):
-    """Set-level pass rates (%) and per-PPP pass rates (%, in PPP order) per agent on one set of a finished
-    experiment, and the set's mean optimal turns."""
-    rates, per_ppp = {}, {}
-    with open(os.path.join(directory, 'summary.csv')) as summary:
-        for row in csv.DictReader(summary):
-            if row['set'] != set_name:
-                continue
-            if row['level'] == 'set':
-                rates[row['agent']] = 100 * float(row['pass_rate'])
-            elif row['level'] == 'problem':
-                per_ppp.setdefault(row['agent'], []).append(100 * float(row['pass_rate']))
-    with open(os.path.join(directory, 'sets', set_name, 'set.csv')) as characters:
-        turns = [float(row['turns']) for row in csv.DictReader(characters)]
-    return rates, per_ppp, sum(turns) / len(turns)
-
-
 def per_ppp_facts(per_ppp, turns):
     """The dissertation's per-PPP facts of one set: mean optimal turns, PPPs never passed, explorer minimum."""
     never = lambda *agents: sum(1 for values in zip(*(per_ppp[a] for a in agents)) if max(values) == 0)
@@ -193,13 +174,7 @@ def play(map_candidate, agent_values, seeds, runs, work):
     for seed in seeds:
         name = '_'.join('%s' % map_candidate[k] for k in sorted(map_candidate)).replace(',', '-') + '_s%d' % seed
         directory = os.path.join(work, name)
-        shutil.rmtree(directory, ignore_errors=True)
-        with open(directory + '.yaml', 'w') as config:
-            config.write(experiment_yaml(map_candidate, agent_values, seed, runs))
-        done = subprocess.run([os.path.join(REPO, 'scripts', 'ppp'), 'experiment', directory + '.yaml', '-o', directory,
-                               '--quiet'], capture_output=True, text=True)
-        if done.returncode != 0:
-            sys.exit('calibrate: ppp experiment failed on %s.yaml: %s' % (directory, done.stderr.strip()[-500:]))
+        run_experiment(experiment_yaml(map_candidate, agent_values, seed, runs), directory, 'calibrate')
         played.append(played_rates(directory))
     return played
 
@@ -223,16 +198,16 @@ def combine(played, agent_candidate):
 
 
 def main():
+    """Searches the candidates, writes WORK/calibration.csv and prints the ranking."""
     parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     parser.add_argument('--runs', type=int, default=100)
     parser.add_argument('--seeds', default='1,2,3')
     parser.add_argument('--work', default='/tmp/ppp-calibration')
     parser.add_argument('--quick', action='store_true')
     args = parser.parse_args()
-    try:
-        seeds = [int(s) for s in args.seeds.split(',')]
-    except ValueError:
-        parser.error('--seeds: expected integers separated by commas, got %r' % args.seeds)
+    seeds = parse_seeds(args.seeds)
+    if seeds is None:
+        parser.error('--seeds: %s, got %r' % (SEEDS_EXPECTED, args.seeds))
     if args.runs < 1:
         parser.error('--runs: expected at least 1, got %d' % args.runs)
     os.makedirs(args.work, exist_ok=True)

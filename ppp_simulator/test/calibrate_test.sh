@@ -13,8 +13,9 @@ if head -1 "$work/search/calibration.csv" | grep -q "worst_gap,rms_gap,random,wa
 else fail "calibration.csv header: $(head -1 "$work/search/calibration.csv")"; fi
 if grep -q "^Best candidates" "$work/out" && grep -q "facts: turns" "$work/out"; then pass
 else fail "no ranking printed: $(tail -3 "$work/out")"; fi
-expect_error "bad seeds" "--seeds: expected integers separated by commas, got 'one'" \
+expect_error "bad seeds" "--seeds: expected FIRST-LAST or distinct integers separated by commas" \
   /usr/bin/python3 "$calibrate" --seeds one --work "$work/bad"
+if grep -qF "at most 10000, got 'one'" "$work/err"; then pass; else fail "bad seeds: $(cat "$work/err")"; fi
 if [ ! -e "$work/bad" ]; then pass; else fail "bad usage created $work/bad"; fi
 expect_error "no runs" "--runs: expected at least 1, got 0" /usr/bin/python3 "$calibrate" --runs 0 --work "$work/bad"
 finish
