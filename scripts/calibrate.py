@@ -28,6 +28,7 @@ Usage: scripts/calibrate.py [--runs N] [--seeds 1,2,3] [--work DIR] [--quick]
 """
 import argparse
 import csv
+import functools
 import itertools
 import json
 import os
@@ -87,6 +88,7 @@ AGENT_OPTIONS = {
 RANDOM_EMPTY_MAP, RANDOM_TOLERANCE = 4.4, 1.0
 
 
+@functools.lru_cache(maxsize=None)  # each map candidate asks again for the same few
 def exact_random_rate(goal_range, bumps_use_budget, side=20, budget=300, sensor_range=2):
     """Exact pass rate (%) of the goal-seeking random agent on an empty side x side map from corner to corner:
     its distribution over cells pushed forward one counted action at a time (a free bump is drawn again), absorbed
@@ -179,15 +181,10 @@ def play(map_candidate, agent_values, seeds, runs, work):
     return played
 
 
-def chosen_variants(agent_candidate):
-    """The agent name each configuration plays under for one combination of the agent options."""
-    return {name: variant_name(name, tuple((k, agent_candidate[k]) for k in concerning(name, agent_candidate)))
-            for name, _, _ in AGENTS}
-
-
 def combine(played, agent_candidate):
     """Mean pass rates (%) and per-PPP facts over the seeds of one combination of the agent options."""
-    chosen = chosen_variants(agent_candidate)
+    chosen = {name: variant_name(name, tuple((k, agent_candidate[k]) for k in concerning(name, agent_candidate)))
+              for name, _, _ in AGENTS}
     rates, facts = {}, {}
     for seed_rates, seed_per_ppp, turns in played:
         for name, variant in chosen.items():
