@@ -26,7 +26,7 @@ namespace ppp {
 namespace agents {
 
 /// Plays one agent of type planner: for each step of the simulator's episode (ScanBatch of one scan) it
-/// publishes the robot's world to an external planner (map, odom, tf, scan, goal; docs/planner-interface.md)
+/// publishes the robot's world to an external planner (map, odom, tf, scan, goal; docs/reference/planner-interface.md)
 /// and turns the planner's nav_msgs/Path into the step's move, or into a failure with its reason. A step that
 /// needs no plan request is answered in roscpp's network thread as its scan is read; a plan request is handed to
 /// a worker thread, which waits for the planner's path (read in the network thread) and answers.

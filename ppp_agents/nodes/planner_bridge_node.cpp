@@ -1,5 +1,5 @@
 // planner_bridge_node: plays an agent of type planner with an external ROS planner, one episode at a time
-// (docs/planner-interface.md). Start it in the agent's namespace (ns="NAME"), the planner in NAME/robot.
+// (docs/reference/planner-interface.md). Start it in the agent's namespace (ns="NAME"), the planner in NAME/robot.
 //   simulator side  subscribes scans (ppp_msgs/ScanBatch)   publishes moves (ppp_msgs/MoveBatch)
 //   planner side    publishes robot/map (nav_msgs/OccupancyGrid, latched), robot/odom (nav_msgs/Odometry),
 //                   robot/scan (sensor_msgs/LaserScan), robot/move_base_simple/goal (geometry_msgs/PoseStamped)

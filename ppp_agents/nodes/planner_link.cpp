@@ -85,7 +85,7 @@ void PlannerLink::waitForPlanner() {
         " (geometry_msgs/PoseStamped; a subscriber of another type cannot connect)");
   }
   throw InvalidArgument("planner", missing + ". Start the planner in namespace " + nh_.getNamespace() +
-                                       " or remap its topics to these names (docs/planner-interface.md)");
+                                       " or remap its topics to these names (docs/reference/planner-interface.md)");
 }
 
 void PlannerLink::onPlan(const nav_msgs::Path::ConstPtr& path) {
@@ -138,7 +138,7 @@ std::optional<nav_msgs::Path> PlannerLink::waitForPath(const ros::Time& request,
       const bool unstamped = path.header.stamp.isZero();
       if (unstamped && parameters_.lockstep) {
         ROS_WARN_ONCE("an unstamped path does not answer a lockstep request: stamp it with the goal's stamp "
-                      "(docs/planner-interface.md)");
+                      "(docs/reference/planner-interface.md)");
       } else if (unstamped || path.header.stamp >= request) {
         if (fits(path)) {
           answered_ = true;

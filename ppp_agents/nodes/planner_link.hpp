@@ -18,7 +18,7 @@
 namespace ppp {
 namespace agents {
 
-/// The planner bridge's side towards the external planner (docs/planner-interface.md): publishes what the robot
+/// The planner bridge's side towards the external planner (docs/reference/planner-interface.md): publishes what the robot
 /// knows (map, odom, tf, scan) and plan requests (goal) in robot/..., and takes the planner's paths on a callback
 /// queue of its own, so that a step can wait for one.
 class PlannerLink {

@@ -1,5 +1,5 @@
 // mrpt_planner_node: MRPT's wavefront planner for circular robots (mrpt::nav::PlannerSimple2D) on the robot's
-// map (docs/planner-interface.md).
+// map (docs/reference/planner-interface.md).
 //   subscribes  map (nav_msgs/OccupancyGrid)               what the robot knows: -1 unknown, 0 free, 100 obstacle
 //               move_base_simple/goal (geometry_msgs/PoseStamped)  a plan request
 //               tf ~map_frame -> ~base_frame               the robot's pose

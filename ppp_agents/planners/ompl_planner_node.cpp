@@ -1,4 +1,4 @@
-// ompl_planner_node: OMPL geometric planning on the robot's map (docs/planner-interface.md).
+// ompl_planner_node: OMPL geometric planning on the robot's map (docs/reference/planner-interface.md).
 //   subscribes  map (nav_msgs/OccupancyGrid)               what the robot knows: -1 unknown, 0 free, 100 obstacle
 //               move_base_simple/goal (geometry_msgs/PoseStamped)  a plan request
 //               tf ~map_frame -> ~base_frame               the robot's pose

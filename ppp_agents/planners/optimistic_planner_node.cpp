@@ -1,4 +1,4 @@
-// optimistic_planner_node: repeated A* that treats unknown cells as free (docs/planner-interface.md).
+// optimistic_planner_node: repeated A* that treats unknown cells as free (docs/reference/planner-interface.md).
 //   subscribes  map (nav_msgs/OccupancyGrid)               what the robot knows: -1 unknown, 0 free, 100 obstacle
 //               move_base_simple/goal (geometry_msgs/PoseStamped)  a plan request
 //               tf ~map_frame -> ~base_frame               the robot's pose

@@ -31,7 +31,7 @@ struct PlannerNodeOptions {
   PlannerBody body;             ///< The robot's body as the planner believes it (its inflation).
 };
 
-/// The ROS side of the example planners (docs/planner-interface.md): keeps the newest `map`, answers every
+/// The ROS side of the example planners (docs/reference/planner-interface.md): keeps the newest `map`, answers every
 /// `move_base_simple/goal` with a nav_msgs/Path on `plan` once it holds a map at least as new as the goal and
 /// the robot's pose at the goal's stamp (`odom`, frame map_frame, child base_frame; waiting at most 1 s for them),
 /// and, with replan_on_map, plans again on every new map. A plan is stamped with the stamp of the pose it starts

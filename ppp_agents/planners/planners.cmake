@@ -1,4 +1,4 @@
-# The example planner nodes (docs/planner-interface.md), included by ppp_agents/CMakeLists.txt. The algorithms
+# The example planner nodes (docs/reference/planner-interface.md), included by ppp_agents/CMakeLists.txt. The algorithms
 # are a ROS-free library tested without a master; the nodes share one ROS glue library.
 find_package(ompl REQUIRED)
 find_package(mrpt-nav REQUIRED)

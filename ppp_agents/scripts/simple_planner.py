@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A minimal planner for the PPP Lab planner bridge (docs/planner-interface.md).
+"""A minimal planner for the PPP Lab planner bridge (docs/reference/planner-interface.md).
 
 On each goal it searches the map breadth-first for a shortest path of 4-connected cells, treating
 unknown cells as free, and publishes the centre of every cell of it on `plan` (an empty Path when

@@ -73,7 +73,7 @@ std::unique_ptr<Agent> makeAgent(const AgentConfig& config) {
   const AgentType& type = agentType(config.type);
   if (type.make == nullptr) {
     throw InvalidArgument("type", "'" + config.name + "' is a planner agent: an external ROS planner played through "
-                                  "planner_bridge_node (docs/planner-interface.md), never built in-process");
+                                  "planner_bridge_node (docs/reference/planner-interface.md), never built in-process");
   }
   return type.make(agentBehaviour(config));
 }

@@ -316,7 +316,7 @@ TEST(AgentConfigTest, PlannerAgentsAreReadButNeverBuiltInProcess) {
   EXPECT_TRUE(readsScanWindow(configs[1]));
   EXPECT_EQ(invalidArgument([&] { makeAgent(configs[0]); }),
             "type: 'ompl' is a planner agent: an external ROS planner played through planner_bridge_node "
-            "(docs/planner-interface.md), never built in-process");
+            "(docs/reference/planner-interface.md), never built in-process");
   AgentConfig astar = config("astar");
   astar.prior_map = true;
   EXPECT_EQ(invalidArgument([&] { astar.validate(); }),

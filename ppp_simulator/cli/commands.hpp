@@ -19,7 +19,7 @@ void addExperimentCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);
 /// Adds `ppp launch-file`: the roslaunch XML of an experiment's ROS graph.
 void addLaunchFileCommand(CLI::App& app);
-/// Adds `ppp options`: the reference of every declared option (docs/options.md).
+/// Adds `ppp options`: the reference of every declared option (docs/reference/options.md).
 void addOptionsCommand(CLI::App& app);
 
 }  // namespace cli

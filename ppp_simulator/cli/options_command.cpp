@@ -41,7 +41,7 @@ std::string spelledList(const std::vector<OptionSpec<Options>>& specs, Spell spe
   return list;
 }
 
-/// The options reference (docs/options.md): every declared options struct, each source's spelling.
+/// The options reference (docs/reference/options.md): every declared options struct, each source's spelling.
 std::string optionsReference() {
   std::ostringstream out;
   out << "# Options reference\n\n"
@@ -82,7 +82,7 @@ std::string optionsReference() {
       << optionsMarkdownTable(simulator::simulatorTaskSpecs(), simulator::SimulatorTask{}, &parameter)
       << "\n## Planner bridge node\n\n"
       << "`planner_bridge_node` `~` parameters besides its agent's `~name`, `~memory` and `~sensor_noise`\n"
-      << "(docs/planner-interface.md).\n\n"
+      << "(docs/reference/planner-interface.md).\n\n"
       << optionsMarkdownTable(agents::bridgeOptionSpecs(), agents::BridgeOptions{}, &parameter)
       << "\n## Example planner nodes\n\n"
       << "`~` parameters of `optimistic_planner_node`, `ompl_planner_node` and `mrpt_planner_node` (the frames\n"
@@ -102,7 +102,7 @@ std::string optionsReference() {
 void addOptionsCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "options", "Print the options reference: every declared option of experiments, agents, the generator and the "
-                 "simulator node (docs/options.md)");
+                 "simulator node (docs/reference/options.md)");
   command->callback([] { std::cout << optionsReference(); });
 }
 

@@ -19,10 +19,10 @@ else
   fail "scripts/ppp generate --help: $(head -3 "$work/wrapper.err")"
 fi
 
-# The options reference is what the declarations say (regenerate: scripts/ppp options > docs/options.md).
+# The options reference is what the declarations say (regenerate: scripts/ppp options > docs/reference/options.md).
 expect_ok "options" "$ppp" options
-cmp -s "$work/out" "$config_dir/../docs/options.md" && pass \
-  || fail "docs/options.md differs from ppp options: regenerate it with scripts/ppp options > docs/options.md"
+cmp -s "$work/out" "$config_dir/../docs/reference/options.md" && pass \
+  || fail "docs/reference/options.md differs from ppp options: regenerate it with scripts/ppp options > docs/reference/options.md"
 
 expect_ok "random" "$ppp" random --size 12x9 --obstacles 6 --seed 7 -o "$work/a.ppp"
 expect_ok "random again" "$ppp" random --size 12x9 --obstacles 6 --seed 7 -o "$work/b.ppp"

@@ -1,12 +1,12 @@
 #!/usr/bin/python3
 """No option's flag or parameter name is spelled by hand outside the plumbing that derives it from its declaration.
 
-Every declared option (the tables of `ppp options`, docs/options.md) reaches YAML, ROS parameters and flags through
+Every declared option (the tables of `ppp options`, docs/reference/options.md) reaches YAML, ROS parameters and flags through
 its one declaration: flags are `--` plus the name (`_` and `.` as `-`), parameters `~` plus the name (`.` as `/`).
 This test reads the declared names from `ppp options` and fails, naming file and line, on any non-test source that
 reads a ROS parameter by a literal name instead of through a table, or names such a flag or parameter itself where
 code acts on it: declaring a flag, asking whether one was given, or naming one in an error (prose in help texts
-and docs may mention them; the generated docs/options.md is tested against the tables).
+and docs may mention them; the generated docs/reference/options.md is tested against the tables).
 Usage: names_in_plumbing_test.py REPOSITORY_ROOT PPP
 """
 import os

@@ -30,7 +30,7 @@ TEST(EvaluationTest, OpennessWorkedByHand) {
 }
 
 TEST(EvaluationTest, DifficultyWorkedByHand) {
-  // Visible cells counted by hand with the shadow rule (see docs/evaluation.md):
+  // Visible cells counted by hand with the shadow rule (see docs/reference/evaluation.md):
   // start (0,0) 9, goal (3,3) 12, centre (2,2) 11, top-right (3,0) 9, bottom-left (0,3) 12, of 16.
   Evaluator evaluator;
   const Evaluation e = evaluator.evaluate(handProblem());

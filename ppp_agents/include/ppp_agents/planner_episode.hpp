@@ -32,7 +32,7 @@ struct Answer {
 
 /// One episode of a planner agent as planner_bridge_node plays it, without ROS: what the robot knows (its
 /// memory with the agent's memory handicap, or the true map), the planner's path it follows, and the verdicts
-/// on the planner's paths (docs/planner-interface.md).
+/// on the planner's paths (docs/reference/planner-interface.md).
 class PlannerEpisode {
  public:
   /// Starts an episode on a width x height map; `prior` is the true map for agents given it, else null.
@@ -41,7 +41,7 @@ class PlannerEpisode {
   /// robot knows changed.
   bool observe(const Scan& scan);
   /// The move along the current path when a lockstep bridge with `options` needs no plan request at the step last
-  /// observed (docs/planner-interface.md, "plan_requests"): the robot moved since the step before, its path gives
+  /// observed (docs/reference/planner-interface.md, "plan_requests"): the robot moved since the step before, its path gives
   /// it a move and, unless the rule is on_blocked, that scan changed nothing the robot knows. Nothing otherwise.
   std::optional<Action> moveWithoutRequest(const BridgeOptions& options);
   /// A path the planner published unasked: followed from now on when usable, ignored otherwise.

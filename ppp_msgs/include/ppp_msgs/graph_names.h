@@ -34,7 +34,7 @@ constexpr const char* kMoves = "moves";  ///< ppp_msgs/MoveBatch, agent node or 
 constexpr const char* kPath = "path";    ///< nav_msgs/Path of a recorded episode (simulator).
 constexpr const char* kScan = "scan";    ///< sensor_msgs/LaserScan of a recorded episode (simulator).
 
-// The planner interface, relative to the planner's namespace /NAME/robot (docs/planner-interface.md).
+// The planner interface, relative to the planner's namespace /NAME/robot (docs/reference/planner-interface.md).
 constexpr const char* kRobotNamespace = "robot";           ///< The planner's namespace inside the agent's.
 constexpr const char* kPlannerMap = "map";                 ///< nav_msgs/OccupancyGrid, bridge -> planner.
 constexpr const char* kPlannerOdom = "odom";               ///< nav_msgs/Odometry, bridge -> planner.

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""A misbehaving planner for the planner bridge's fault tests (docs/planner-interface.md).
+"""A misbehaving planner for the planner bridge's fault tests (docs/reference/planner-interface.md).
 
 ~mode  silent    subscribes to the goal and advertises the plan, but never publishes a path
        straight  answers every goal with the straight line from the robot to the goal (through any wall)

@@ -13,7 +13,7 @@ namespace ppp {
 /// Most rays or axes BarnOptions accepts for one measure.
 constexpr int kMaxBarnRays = 4096;
 
-/// Parameters of BARN's difficulty metrics on a grid (docs/evaluation.md, "BARN metrics"); lengths in cells.
+/// Parameters of BARN's difficulty metrics on a grid (docs/reference/evaluation.md, "BARN metrics"); lengths in cells.
 /// Rays start at a cell's centre, ray i of n at angle 2*pi*i/n counter-clockwise from east (north = row - 1).
 struct BarnOptions {
   int visibility_rays = 8;       ///< Rays averaged by the visibility (BARN: the 8 king moves).

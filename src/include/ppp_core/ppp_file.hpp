@@ -9,7 +9,7 @@ namespace ppp {
 /// Largest `.ppp` file the reader accepts, checked before reading it.
 constexpr std::size_t kMaxPppFileBytes = 64u << 20;
 
-/// Serialises a problem in the `.ppp v1` text format (see docs/ppp-format.md).
+/// Serialises a problem in the `.ppp v1` text format (see docs/reference/ppp-format.md).
 /// @throws InvalidArgument when the problem itself is invalid.
 std::string formatPpp(const Problem& problem);
 
