@@ -26,10 +26,7 @@ bool samePoints(const std::vector<MapPoint>& a, const std::vector<MapPoint>& b) 
 
 PlannerBridge::PlannerBridge(ros::NodeHandle& nh, const BridgeParameters& parameters)
     : parameters_(parameters), link_(nh, parameters) {
-  moves_ = nh.advertise<ppp_msgs::MoveBatch>(ppp_msgs::topics::kMoves, 10);
   worker_ = std::thread([this] { askPlanner(); });
-  scans_ = ppp_msgs::subscribeInline<ppp_msgs::ScanBatch>(
-      nh, ppp_msgs::topics::kScans, 10, [this](const ppp_msgs::ScanBatch::ConstPtr& b) { onScans(b); }, &inline_);
 }
 
 PlannerBridge::~PlannerBridge() {
@@ -42,12 +39,11 @@ PlannerBridge::~PlannerBridge() {
   if (worker_.joinable()) worker_.join();
 }
 
-void PlannerBridge::serve() {
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    serving_ = true;
-  }
-  work_.notify_one();  // scans that came before the planner did
+void PlannerBridge::serve(ros::NodeHandle& nh) {
+  // The simulator sends its first scans once both topics are connected, so none come before the planner.
+  moves_ = nh.advertise<ppp_msgs::MoveBatch>(ppp_msgs::topics::kMoves, 10);
+  scans_ = ppp_msgs::subscribeInline<ppp_msgs::ScanBatch>(
+      nh, ppp_msgs::topics::kScans, 10, [this](const ppp_msgs::ScanBatch::ConstPtr& b) { onScans(b); }, &inline_);
 }
 
 void PlannerBridge::warnOnce(const std::string& kind, const std::string& text) {
@@ -59,8 +55,8 @@ void PlannerBridge::warnOnce(const std::string& kind, const std::string& text) {
 
 void PlannerBridge::onScans(const ppp_msgs::ScanBatch::ConstPtr& batch) {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (!serving_ || asking_ || !waiting_.empty()) {
-    waiting_.push_back(batch);  // no planner yet, or the worker is asking it: the worker plays this next, in order
+  if (asking_ || !waiting_.empty()) {
+    waiting_.push_back(batch);  // the worker is asking the planner: it plays this next, in order
     return;
   }
   play(batch);
@@ -108,9 +104,9 @@ void PlannerBridge::reply(const ppp_msgs::ScanBatch& batch, const StepOutcome* o
 void PlannerBridge::askPlanner() {
   std::unique_lock<std::mutex> lock(mutex_);
   while (true) {
-    work_.wait(lock, [&] { return stopping_ || asking_ || (serving_ && !waiting_.empty()); });
+    work_.wait(lock, [&] { return stopping_ || asking_ || !waiting_.empty(); });
     if (stopping_) return;
-    if (!asking_) {  // a batch that came while the worker asked, or before the planner connected
+    if (!asking_) {  // a batch that came while the worker asked
       const ppp_msgs::ScanBatch::ConstPtr next = waiting_.front();
       waiting_.pop_front();
       play(next);  // may hand over a plan request: the next round asks

@@ -32,15 +32,15 @@ namespace agents {
 /// a worker thread, which waits for the planner's path (read in the network thread) and answers.
 class PlannerBridge {
  public:
-  /// Advertises and subscribes in `nh`'s namespace: scans/moves towards the simulator, robot/... towards the
-  /// planner (PlannerLink). Scans wait until serve().
+  /// Advertises and subscribes the planner's topics robot/... in `nh`'s namespace (PlannerLink).
   PlannerBridge(ros::NodeHandle& nh, const BridgeParameters& parameters);
   /// Stops the worker.
   ~PlannerBridge();
   /// Waits up to connect_timeout for the planner (PlannerLink::waitForPlanner). @throws InvalidArgument.
   void waitForPlanner() { link_.waitForPlanner(); }
-  /// Starts answering the simulator's scans, those that came already first.
-  void serve();
+  /// Once the planner is there: connects to the simulator in `nh`'s namespace (scans in, moves out), which
+  /// waits for both topics before it plays this agent, so no step waits on a planner that is not there yet.
+  void serve(ros::NodeHandle& nh);
   /// The planner-side topic names, for the log.
   std::string plannerTopics() const { return link_.topics(); }
 
@@ -81,12 +81,11 @@ class PlannerBridge {
   ros::Publisher moves_;
 
   // Hand-over of plan requests between the network thread and the worker. While asking_ is set only the worker
-  // touches the episode; scans that arrive meanwhile, or before serve(), wait in order for the worker.
+  // touches the episode; scans that arrive meanwhile wait in order for the worker.
   std::mutex mutex_;
   std::condition_variable work_;
   ppp_msgs::ScanBatch::ConstPtr asking_;
   std::deque<ppp_msgs::ScanBatch::ConstPtr> waiting_;
-  bool serving_ = false;  // the planner is connected
   bool stopping_ = false;
   Request request_;
   std::thread worker_;

@@ -4,11 +4,11 @@
 //   planner side    publishes robot/map (nav_msgs/OccupancyGrid, latched), robot/odom (nav_msgs/Odometry),
 //                   robot/scan (sensor_msgs/LaserScan), robot/move_base_simple/goal (geometry_msgs/PoseStamped)
 //                   and tf map_frame -> base_frame; subscribes robot/plan (nav_msgs/Path)
-//   parameters      ~name (default: the namespace's last component), ~memory ("KxK" or "full"),
-//                   ~sensor_noise (logged; the simulator applies it), ~resolution (metres per cell, 1),
-//                   ~plan_timeout (s, 5), ~connect_timeout (s, 20), ~map_frame ("map"),
-//                   ~base_frame (default "<namespace>/robot/base_link")
-// Exits with an error naming the topics when no planner connects within ~connect_timeout.
+//   parameters      ~name (default: the namespace's last component), ~memory, ~sensor_noise (the simulator
+//                   applies it) and the bridge's own (~plan_timeout, ~lockstep, ~connect_timeout, ~map_frame, ...):
+//                   docs/reference/options.md#planner-bridge-node
+// Exits with an error naming the topics when no planner connects within ~connect_timeout (default 20 s; the
+// experiment's graph gives a planner the user starts by hand 300 s).
 #include <ros/ros.h>
 
 #include "planner_bridge.hpp"
@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
              bridge.plannerTopics().c_str());
     bridge.waitForPlanner();
     ROS_INFO("bridge '%s': planner connected", parameters.config.name.c_str());
-    bridge.serve();
+    bridge.serve(nh);
     ros::spin();
   } catch (const ppp::Error& e) {
     ROS_FATAL("%s", e.what());

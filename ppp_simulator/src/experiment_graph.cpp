@@ -80,15 +80,25 @@ ppp_msgs::GraphNode agentNode(const agents::AgentConfig& agent) {
   return node;
 }
 
+/// How long a planner agent's bridges wait for their planner: five minutes for one the user starts by hand, 20 s
+/// for one the graph starts.
+double plannerConnectTimeout(const agents::AgentConfig& agent) {
+  const std::size_t slash = agent.planner_node.find('/');
+  const bool by_hand = slash == std::string::npos || slash + 1 == agent.planner_node.size();
+  return by_hand ? 300.0 : 20.0;
+}
+
+/// Seconds the simulator waits for a planner agent beyond its bridge's wait for the planner: the bridge's own start.
+constexpr double kBridgeConnectMargin = 10.0;
+
 /// The bridge of each instance of a planner agent (told the robot's radius) and, when the config names it, its
 /// planner, in the instance's namespace (agents::instanceGraphName).
 std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, double robot_radius) {
   const std::size_t slash = agent.planner_node.find('/');
   const std::string package = agent.planner_node.substr(0, slash);
   const std::string type = slash == std::string::npos ? "" : agent.planner_node.substr(slash + 1);
-  // A planner the user starts by hand gets five minutes to appear; one started here, 20 s.
   agents::BridgeOptions options = agent.bridge;
-  options.connect_timeout = type.empty() ? 300.0 : 20.0;
+  options.connect_timeout = plannerConnectTimeout(agent);
   options.robot_radius = robot_radius;
   static const std::vector<OptionSpec<agents::AgentConfig>> named =
       selectOptions(agents::agentNodeOptionSpecs(), {"name", "memory"});
@@ -208,7 +218,15 @@ ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const Grap
   task.output_dir = hunted ? "" : options.output_dir;
   task.generator_nodes = !hunted;
   addParams(simulatorTaskSpecs(), task, &simulator);
-  addParams(simulatorOptionSpecs(), options.simulator, &simulator);
+  // A bridge connects to the simulator once its planner is there: the simulator waits as long as the bridges do,
+  // so a planner started late costs no run (a step's timeout would fail it).
+  SimulatorOptions simulator_options = options.simulator;
+  for (const agents::AgentConfig& agent : agents) {
+    if (!agents::isPlanner(agent)) continue;
+    simulator_options.connect_timeout =
+        std::max(simulator_options.connect_timeout, plannerConnectTimeout(agent) + kBridgeConnectMargin);
+  }
+  addParams(simulatorOptionSpecs(), simulator_options, &simulator);
   graph.nodes.push_back(simulator);
   for (const agents::AgentConfig& agent : agents) {
     if (agents::isPlanner(agent)) {

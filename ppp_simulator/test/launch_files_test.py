@@ -227,6 +227,14 @@ class DefaultGraphTest(unittest.TestCase):
         planner = sorted((n.namespace, n.name, n.package, n.type) for n in started.nodes if n.namespace.endswith('/robot/'))
         self.assertEqual(planner, [(ns + 'robot/', 'planner', 'ppp_agents', 'simple_planner.py')
                                    for ns in instance_namespaces('mine', CORES)])
+        # The bridge waits five minutes for a planner started by hand, and joins the simulator only then: the
+        # simulator waits for it as long, so a late planner costs no run. One the graph starts has 20 s, well
+        # within the simulator's own default of 60 s.
+        self.assertEqual(bridge_only.params['/mine/bridge/connect_timeout'].value, 300.0)
+        self.assertEqual(bridge_only.params['/simulator/connect_timeout'].value, 310.0)
+        for ns in instance_namespaces('mine', CORES):
+            self.assertEqual(started.params[ns + 'bridge/connect_timeout'].value, 20.0)
+        self.assertEqual(started.params['/simulator/connect_timeout'].value, 60.0)
 
 
 class SmallGraphTest(unittest.TestCase):

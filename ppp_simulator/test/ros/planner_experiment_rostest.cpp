@@ -1,6 +1,6 @@
 // Planner agents end to end: simulator_node (started here) plays the bridges and planners of
 // planner_experiment.test. The example planners pass their maps, the optimistic one as two instances sharing its
-// runs as it plays them alone; a silent planner, one publishing a path through a wall and one killed mid-episode
+// runs as it plays them alone, one started after the simulator's step timeout loses no run; a silent planner, one publishing a path through a wall and one killed mid-episode
 // fail with their reasons while the next episode runs; a bridge without a planner, or with a plan topic of the
 // wrong type, exits naming the topics.
 #include <gtest/gtest.h>
@@ -28,7 +28,7 @@ const std::string kTestDir = PPP_ROS_TEST_DIR;
 std::vector<agents::EpisodeResult> runExperiment(const std::string& name, const std::string& config, std::string* out) {
   *out = scratch(name);
   Child simulator(std::string(SIMULATOR_NODE) + " __name:=sim_" + name + " _config:=" + kTestDir + "/" + config +
-                      " _output_dir:=" + *out + " _record:=false _connect_timeout:=60",
+                      " _output_dir:=" + *out + " _record:=false _connect_timeout:=60 _planner_step_timeout:=15",
                   *out + ".log");
   const int status = simulator.wait();
   EXPECT_EQ(status, 0) << simulator.output();
@@ -47,7 +47,7 @@ TEST(PlannerExperimentTest, ExamplePlannersPassAndFaultyPlannersFailWithTheirRea
   std::string out;
   auto rows = runExperiment("planners", "planner_experiment.yaml", &out);
   attachPlannerMoves(out + "/" + kPlannerMovesFile, &rows);
-  ASSERT_EQ(rows.size(), 3u * 2 * 5 + 3u + 3u + 3u + 3u);
+  ASSERT_EQ(rows.size(), 3u * 2 * 6 + 3u + 3u + 3u + 3u);
   auto r = reasons(rows);
   for (const char* map : {"open", "wall", "hidden"}) {
     // OMPL plans on the true map; the optimistic re-planner starts blind and must find the route behind the
@@ -55,6 +55,7 @@ TEST(PlannerExperimentTest, ExamplePlannersPassAndFaultyPlannersFailWithTheirRea
     EXPECT_EQ(r["ompl"][map]["goal_reached"], 2) << map;
     EXPECT_EQ(r["optimistic"][map]["goal_reached"], 2) << map;
     EXPECT_EQ(r["optimistic_blocked"][map]["goal_reached"], 2) << map;
+    EXPECT_EQ(r["late_planner"][map]["goal_reached"], 2) << map;  // no run lost while its planner started
     EXPECT_EQ(r["silent_planner"][map]["planner_timeout"], 1) << map;
     // A lockstep bridge moves only on an answer stamped with its request; a free-running one takes any path.
     EXPECT_EQ(r["unstamped_lockstep"][map]["planner_timeout"], 1) << map;
