@@ -26,7 +26,7 @@ isolate=(scripts/loopback-only)
 port=11311
 if ! scripts/loopback-only /bin/true; then
   echo "WARNING: running without a network namespace of its own: the nodes' topic ports are open to every" \
-       "network this machine is on (see the README, 'Exposure')" >&2
+       "network this machine is on (see docs/how-to/isolated-network.md)" >&2
   isolate=()
   port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
 fi

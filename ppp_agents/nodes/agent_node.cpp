@@ -1,8 +1,9 @@
 // agent_node: one agent configuration serving many episodes at once for the simulator node.
 //   subscribes  scans (ppp_msgs/ScanBatch)  one scan per active episode of this agent
 //   publishes   moves (ppp_msgs/MoveBatch)  one move per scan, sent as soon as the batch is answered
-//   parameters  ~type (required), ~name (default: the node's name), ~memory ("KxK" or "full"),
-//               ~sensor_noise (validated and logged; the simulator applies the noise)
+//   parameters  ~type (required: a built-in type; planner agents play through planner_bridge_node), ~name
+//               (default: the node's name) and every other option an agent plays by (~memory, ~sensor_noise,
+//               ~goal_seeking, ...: docs/reference/options.md#agents); the simulator applies the sensor noise
 // Topics are relative: start the node as <node name="NAME" ...> (or with ns/remapping) to get /NAME/scans.
 #include <ros/ros.h>
 

@@ -1,19 +1,17 @@
 // ompl_planner_node: OMPL geometric planning on the robot's map (docs/reference/planner-interface.md).
 //   subscribes  map (nav_msgs/OccupancyGrid)               what the robot knows: -1 unknown, 0 free, 100 obstacle
 //               move_base_simple/goal (geometry_msgs/PoseStamped)  a plan request
-//               tf ~map_frame -> ~base_frame               the robot's pose
-//               odom (nav_msgs/Odometry)                 only as the sign that the tf of a stamp is out
+//               odom (nav_msgs/Odometry)                   the robot's pose (frame ~map_frame, child ~base_frame),
+//                                                          kept by stamp (the node reads no tf)
 //   publishes   plan (nav_msgs/Path, latched)              simplified waypoints from the robot's cell centre to the
 //                                                          goal's, every segment walking only passable cells;
 //                                                          stamped with the pose's stamp (the goal's, or the map's);
 //                                                          empty when OMPL finds no path within its limits.
 //                                                          One per goal.
-//   parameters  ~planner (RRTConnect, RRTstar or PRM; default RRTConnect), ~planning_iterations (iterations per
-//               plan; default 0: 100000, for RRTstar 10000), ~planning_time (wall-clock seconds per plan, default
-//               0: none),
-//               ~seed (ompl::RNG::setSeed, default 1), ~unknown_is_free (default true),
-//               ~map_frame (default "map"), ~base_frame (default: the node's namespace + "/base_link",
-//               e.g. "ompl/robot/base_link" in /ompl/robot)
+//   parameters  ~planner (RRTConnect, RRTstar or PRM), ~planning_iterations, ~planning_time, ~seed (each plan's
+//               ompl::RNG seed derives from it), ~unknown_is_free, ~inflation, ~map_frame, ~base_frame (default:
+//               the node's namespace + "/base_link", e.g. "ompl/robot/base_link" in /ompl/robot); their defaults
+//               and ranges: docs/reference/options.md#example-planner-nodes
 // Topics are relative: start the node in the bridge's robot namespace (/G/robot).
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>

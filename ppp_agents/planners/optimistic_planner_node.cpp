@@ -1,14 +1,14 @@
 // optimistic_planner_node: repeated A* that treats unknown cells as free (docs/reference/planner-interface.md).
 //   subscribes  map (nav_msgs/OccupancyGrid)               what the robot knows: -1 unknown, 0 free, 100 obstacle
 //               move_base_simple/goal (geometry_msgs/PoseStamped)  a plan request
-//               tf ~map_frame -> ~base_frame               the robot's pose
-//               odom (nav_msgs/Odometry)                 only as the sign that the tf of a stamp is out
+//               odom (nav_msgs/Odometry)                   the robot's pose (frame ~map_frame, child ~base_frame),
+//                                                          kept by stamp (the node reads no tf)
 //   publishes   plan (nav_msgs/Path, latched)              the centre of every cell from the robot's to the goal's,
 //                                                          stamped with the pose's stamp (the goal's, or the map's);
 //                                                          empty when the map shows no path. Planned on every goal
 //                                                          and again on every new map until the robot is on the goal.
-//   parameters  ~map_frame (default "map"), ~base_frame (default: the node's namespace + "/base_link",
-//               e.g. "optimistic/robot/base_link" in /optimistic/robot)
+//   parameters  ~inflation, ~map_frame, ~base_frame (default: the node's namespace + "/base_link", e.g.
+//               "optimistic/robot/base_link" in /optimistic/robot): docs/reference/options.md#example-planner-nodes
 // Topics are relative: start the node in the bridge's robot namespace (/G/robot).
 #include <ros/ros.h>
 

@@ -51,7 +51,8 @@ PlannerNode::PlannerNode(ros::NodeHandle& nh, PlannerNodeOptions options, PlanFu
 
 std::string PlannerNode::topics() const {
   return map_subscriber_.getTopic() + ", " + goal_subscriber_.getTopic() + " -> " + plan_publisher_.getTopic() +
-         "; pose: tf " + options_.frames.map_frame + " -> " + options_.frames.base_frame;
+         "; pose: " + odom_subscriber_.getTopic() + " (" + options_.frames.map_frame + " -> " +
+         options_.frames.base_frame + ")";
 }
 
 void PlannerNode::onMap(const nav_msgs::OccupancyGrid::ConstPtr& map) {

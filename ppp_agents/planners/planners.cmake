@@ -36,8 +36,8 @@ target_link_libraries(mrpt_planner_node ppp_planners_ros ppp_planners_mrpt)
 target_compile_options(mrpt_planner_node PRIVATE -Wall -Wextra)
 
 install(TARGETS optimistic_planner_node ompl_planner_node mrpt_planner_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
-# simple_planner.py, and two variants of it with a classic, rare fault each, for hunting (README "Testing your
-# own planner").
+# simple_planner.py, and two variants of it with a classic, rare fault each, for hunting
+# (docs/tutorials/hunt-your-planner.md).
 catkin_install_python(PROGRAMS scripts/simple_planner.py scripts/horizon_planner.py scripts/greedy_planner.py
                       DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A planner with a classic, rare fault, for hunting (README "Testing your own planner"): simple_planner.py's
+"""A planner with a classic, rare fault, for hunting (docs/tutorials/hunt-your-planner.md): simple_planner.py's
 search made greedy, always expanding the cell nearest the goal first (greedy best-first, a common shortcut for
 speed). It always finds a path when there is one, but not the shortest: it fails only where its detours outgrow
 the budget (with a relative budget, `budget_factor`)."""

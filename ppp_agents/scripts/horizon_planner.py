@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A planner with a classic, rare fault, for hunting (README "Testing your own planner"): simple_planner.py with
+"""A planner with a classic, rare fault, for hunting (docs/tutorials/hunt-your-planner.md): simple_planner.py with
 a fixed search horizon, as planners bound their work: it gives up ("no path") on any route longer than
 `~horizon` cells (default 45, a little over the 39 cells of a 20x20 map's corner-to-corner route). It fails
 only where what the robot has seen forces a long detour."""

@@ -11,6 +11,7 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/grid.hpp"
 #include "ppp_core/option_yaml.hpp"
+#include "ppp_core/text_format.hpp"
 
 namespace ppp {
 namespace agents {
@@ -320,17 +321,30 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
   return specs;
 }
 
+namespace {
+
+/// The options `names` of agentOptionSpecs() (the first "type"), for a source that plays built-in agents only:
+/// its type's doc lists the types it accepts.
+std::vector<OptionSpec<AgentConfig>> builtInAgentOptions(const std::vector<std::string>& names) {
+  std::vector<OptionSpec<AgentConfig>> specs = selectOptions(agentOptionSpecs(), names);
+  specs[0].doc = "agent type: " + joinNames(agentTypeNames()) + " (" + kPlannerType +
+                 " agents play only through ROS, in an experiment or a hunt)";
+  return specs;
+}
+
+}  // namespace
+
 const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs() {
   static const std::vector<OptionSpec<AgentConfig>> specs = [] {
     std::vector<std::string> names = playOptionNames();
     names.insert(names.begin() + 1, "name");
-    return selectOptions(agentOptionSpecs(), names);
+    return builtInAgentOptions(names);
   }();
   return specs;
 }
 
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs() {
-  static const std::vector<OptionSpec<AgentConfig>> specs = selectOptions(agentOptionSpecs(), playOptionNames());
+  static const std::vector<OptionSpec<AgentConfig>> specs = builtInAgentOptions(playOptionNames());
   return specs;
 }
 

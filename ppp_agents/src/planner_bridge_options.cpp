@@ -51,7 +51,9 @@ const std::vector<OptionSpec<BridgeOptions>>& bridgeOptionSpecs() {
                         {kPlanRequestsOnBlocked,
                          "only when the robot did not move or its path gives it no move (blocked by a known "
                          "obstacle, or the robot off it), as a navigation stack re-plans when its path is blocked"}}),
-      declareOption("connect_timeout", "seconds to wait at start-up for the planner's topics",
+      declareOption("connect_timeout",
+                    "seconds to wait at start-up for the planner's topics (an experiment's graph sets 300 for a "
+                    "planner the user starts, 20 for one it starts)",
                     +[](B& b) -> double& { return b.connect_timeout; }, Bounds{1e-3, 86400})
           .notAffectingResults(),
       declareOption("map_frame", "frame of the map, poses and goal", +[](B& b) -> std::string& { return b.map_frame; })

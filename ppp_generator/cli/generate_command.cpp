@@ -24,7 +24,7 @@ namespace {
 struct GenerateFlags {
   std::string config = PPP_DEFAULT_CONFIG_DIR "/generator.yaml";
   std::map<std::string, std::string> options;  ///< The generator options' flags given, by flag name.
-  std::map<std::string, std::string> episode;  ///< The episode options' flags given (failure fitness), by flag name.
+  std::map<std::string, std::string> episode;  ///< The episode options' flags given (panel fitnesses), by flag name.
   std::string size;                            ///< --size WIDTHxHEIGHT, as `ppp random` takes it.
   int threads = 0;
   std::string output;
@@ -49,7 +49,7 @@ generator::GeneratorOptions resolveOptions(const CLI::App& command, const Genera
   return o;
 }
 
-/// Whether any flag of the episode options or --threads was given (they serve the failure fitness only).
+/// Whether any flag of the episode options or --threads was given (they serve the panel fitnesses only).
 bool episodeFlagsGiven(const CLI::App& command) {
   for (const OptionSpec<EpisodeOptions>& spec : generator::huntEpisodeOptionSpecs()) {
     if (command.count(flagName(spec)) > 0) return true;
@@ -93,14 +93,15 @@ void addGenerateCommand(CLI::App& app) {
   auto flags = std::make_shared<GenerateFlags>();
   CLI::App* command = app.add_subcommand(
       "generate", "Evolve a set of PPPs with the genetic algorithm; write the .ppp files, set.csv and the taxonomy");
-  command->add_option("--config", flags->config, "Generator YAML whose values the flags override")
-      ->capture_default_str();
+  command->add_option("--config", flags->config,
+                      "Generator YAML whose values the flags override (default: the workspace's "
+                      "config/generator.yaml)");
   static const generator::GeneratorOptions defaults;
   addOptionFlags(command, generator::generatorOptionSpecs(), &defaults, &flags->options);
   command->add_option("--size", flags->size, "grid size, for --width and --height together")->type_name("WIDTHxHEIGHT");
   static const EpisodeOptions episode_defaults;
   addOptionFlags(command, generator::huntEpisodeOptionSpecs(), &episode_defaults, &flags->episode);
-  command->add_option("--threads", flags->threads, "failure: worker threads (default 0: every core)");
+  command->add_option("--threads", flags->threads, "failure, regret: worker threads (default 0: every core)");
   command->add_option("-o,--output", flags->output, "Output directory (required)");
   command->add_flag("--print-options", flags->print_options,
                     "Print every generator option with its default, range and doc as YAML (config/generator.yaml)");

@@ -2,12 +2,12 @@
 //   publishes  problem_set (ppp_msgs/ProblemSet, latched)  the whole set
 //              map         (nav_msgs/OccupancyGrid, latched) the set's PPP number ~publish_index
 //   service    ~generate   (ppp_msgs/Generate)              evolve again (optionally with another seed)
-//   parameters see config/generator.yaml (same names) plus ~output_dir, ~publish_index, ~resolution,
-//              ~options (the generator options as YAML text), ~set_name, ~resume (publish the set already
-//              in ~output_dir), ~generate_on_start, ~exit_when_done, and for fitness failure ~evaluator (the simulator node's
-//              ppp_msgs/EvaluateProblems service that plays the panel; empty: the node plays built-in agents
-//              itself, under ~budget, ~sensor_range and ~connectivity) and ~evaluator_timeout, and
-//              ~wait_for_set (a set topic to hear from before evolving: the generator of initial_pool's set)
+//   parameters the generator options (config/generator.yaml's keys, docs/reference/options.md#generator), one by
+//              one or as YAML text in ~options, and the node's own (docs/reference/options.md#generator-node):
+//              ~output_dir, ~publish_index, ~resume, ~evaluator (for the panel fitnesses, failure and regret: the
+//              simulator node's ppp_msgs/EvaluateProblems service that plays the panel; empty: the node plays
+//              built-in agents itself, under the episode options ~budget, ~sensor_range, ~connectivity, ...),
+//              ~wait_for_set (a set topic to hear from before evolving: the generator of initial_pool's set), ...
 #include <ros/ros.h>
 
 #include <iostream>

@@ -14,7 +14,7 @@ namespace generator {
 /// What the generator node reads from its private (`~`) parameters: its own (declared) and the generator options.
 struct NodeParameters : GeneratorNodeOptions {
   GeneratorOptions options;  ///< The generator's options (defaults: config/generator.yaml's).
-  EpisodeOptions episode;    ///< The rules of a failure fitness's episodes when it hunts in process (~evaluator '').
+  EpisodeOptions episode;    ///< The rules of a panel fitness's episodes when it hunts in process (~evaluator '').
 };
 
 /// Reads and validates the `~` parameters: the generator options from `~options` (YAML text as in

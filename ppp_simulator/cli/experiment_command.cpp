@@ -64,7 +64,8 @@ int runExperimentCommand(const ExperimentFlags& f) {
 void addExperimentCommand(CLI::App& app) {
   auto flags = std::make_shared<ExperimentFlags>();
   CLI::App* command = app.add_subcommand(
-      "experiment", "Evolve the PPP sets, run every agent on every PPP many times, write results and the report");
+      "experiment", "Evolve the PPP sets, run every agent on every PPP many times, write results and the report "
+                    "(planner agents are skipped: they play only through ROS, launch/experiment.launch)");
   command->add_option("config", flags->config, "Experiment YAML (e.g. config/experiment.yaml)")->required();
   command->add_option("-o,--output", flags->output, "Output directory (rerun on it to resume)")->required();
   flags->command = command;

@@ -23,25 +23,14 @@ struct LaunchFileFlags {
   std::string output;
   simulator::GraphOptions graph;
   std::map<std::string, std::string> simulator_flags;
-  std::vector<std::string> planners;
   bool large = false;
   bool json = false;
 };
 
-/// Applies "NAME=PACKAGE/EXECUTABLE" (or "NAME=": the user starts it) to planner agent NAME of `config`.
-/// @throws InvalidArgument naming --planner, or the planner_node's problem.
-void applyPlanner(const std::string& text, simulator::ExperimentConfig* config) {
-  const std::size_t equals = text.find('=');
-  if (equals == std::string::npos || equals == 0) {
-    throw InvalidArgument("--planner", "expected NAME=PACKAGE/EXECUTABLE or NAME=, got '" + text + "'");
-  }
-  simulator::assignPlannerNode(config, text.substr(0, equals), text.substr(equals + 1));
-}
-
 void runLaunchFile(LaunchFileFlags flags) {
   namespace fs = std::filesystem;
   simulator::ExperimentConfig config = simulator::loadExperimentConfig(flags.config);
-  for (const std::string& p : flags.planners) applyPlanner(p, &config);
+  simulator::assignPlanners(&config, flags.graph.planners);
   if (flags.graph.hunt.empty()) simulator::checkWork(simulator::estimateWork(config), flags.large);
   applyAndValidateFlags(*flags.command, simulator::simulatorOptionSpecs(), flags.simulator_flags,
                         &flags.graph.simulator);
@@ -64,11 +53,13 @@ void addLaunchFileCommand(CLI::App& app) {
   flags->command = command;
   static const simulator::SimulatorOptions defaults;
   addOptionFlags(command, simulator::simulatorOptionSpecs(), &defaults, &flags->simulator_flags);
-  command->add_option("--planner", flags->planners,
-                      "NAME=PACKAGE/EXECUTABLE: start this planner for planner agent NAME (NAME=: start none, the "
-                      "user runs it in /NAME/robot); overrides the agent's planner_node");
+  command->add_option("--planner", flags->graph.planners,
+                      "NAME=PACKAGE/EXECUTABLE: start this planner for planner agent NAME, which then has 20 s to "
+                      "connect (NAME=: start none; the user runs it in /NAME/robot within 300 s); overrides the "
+                      "agent's planner_node");
   command->add_option("--hunt", flags->graph.hunt,
-                      "SET: the graph of hunting this failure set of the config into OUTPUT instead (panel agents only)");
+                      "SET: the graph of the hunt of this set of the config (fitness failure or regret) into OUTPUT "
+                      "instead (panel agents only)");
   command->add_option("--env-loader", flags->graph.env_loader,
                       "Script remote machines run nodes through (the workspace's devel/env.sh, same path there)");
   command->add_flag("--large", flags->large,

@@ -53,14 +53,15 @@ std::string optionsReference() {
       << "experiment's fingerprint (its `experiment.yaml`): a rerun on the same directory resumes only when\n"
       << "every such option is unchanged, and otherwise names the first one that differs.\n\n"
       << "## Experiment\n\n"
-      << "Top-level keys of an experiment YAML (`config/experiment.yaml`) besides `sets`, `agents` and `reference` (README);\n"
-      << "`ppp experiment --threads` overrides `threads`.\n\n"
+      << "Top-level keys of an experiment YAML (`config/experiment.yaml`) besides `sets`, `agents` and `reference`\n"
+      << "([write an experiment file](../how-to/write-an-experiment-file.md)); `ppp experiment --threads` overrides\n"
+      << "`threads`.\n\n"
       << optionsMarkdownTable(simulator::experimentOptionSpecs(), simulator::ExperimentConfig{}, &key)
       << "\n## Agents\n\n"
       << "Keys of each entry of an `agents` list (`config/agents.yaml`).\n"
       << "`agent_node` reads " << spelledList(agents::agentNodeOptionSpecs(), &parameter<agents::AgentConfig>)
-      << "; `planner_bridge_node` reads `~name`, `~memory` and `~sensor_noise`; `ppp simulate` and `ppp replay` "
-      << "take " << spelledList(agents::agentPlayOptionSpecs(), &flagName<agents::AgentConfig>)
+      << "; `planner_bridge_node` reads `~name`, `~memory` and `~sensor_noise`; `ppp simulate`, `ppp replay` and "
+      << "`ppp scenarios` take " << spelledList(agents::agentPlayOptionSpecs(), &flagName<agents::AgentConfig>)
       << " (`--agent` is the type), with the episode's options (`--budget`, `--sensor-range`, ...).\n\n"
       << optionsMarkdownTable(agents::agentOptionSpecs(), agents::AgentConfig{}, &key)
       << "\n## Generator\n\n"
@@ -82,7 +83,7 @@ std::string optionsReference() {
       << optionsMarkdownTable(simulator::simulatorTaskSpecs(), simulator::SimulatorTask{}, &parameter)
       << "\n## Planner bridge node\n\n"
       << "`planner_bridge_node` `~` parameters besides its agent's `~name`, `~memory` and `~sensor_noise`\n"
-      << "(docs/reference/planner-interface.md).\n\n"
+      << "([the planner interface](planner-interface.md)).\n\n"
       << optionsMarkdownTable(agents::bridgeOptionSpecs(), agents::BridgeOptions{}, &parameter)
       << "\n## Example planner nodes\n\n"
       << "`~` parameters of `optimistic_planner_node`, `ompl_planner_node` and `mrpt_planner_node` (the frames\n"

@@ -42,6 +42,10 @@ struct ReplayFlags : PlayFlags {
   simulator::AnimationOptions animation;
 };
 
+/// What `simulate` and `replay` take as the PPP.
+constexpr const char* kProblemHelp =
+    "A .ppp, map_server .yaml or MovingAI .map file, or empty:WxH for an empty grid";
+
 
 Problem loadProblem(const std::string& source) {
   const std::string prefix = "empty:";
@@ -118,10 +122,7 @@ void addSimulateCommand(CLI::App& app) {
   auto flags = std::make_shared<SimulateFlags>();
   CLI::App* command = app.add_subcommand("simulate", "Run one agent many times on one PPP and report its pass rate");
   flags->agent.add(command);
-  command
-      ->add_option("--problem", flags->problem,
-                   "A .ppp (or map .yaml or MovingAI .map) file, or empty:WxH for an empty grid")
-      ->required();
+  command->add_option("--problem", flags->problem, kProblemHelp)->required();
   command->add_option("--runs", flags->runs, "Number of runs")->capture_default_str();
   command->add_option("--seed", flags->seed, "Seed; run i uses a seed derived from it")->capture_default_str();
   command->add_flag("--json", flags->json, "Print {runs, passes, pass_rate, mean_steps} as JSON");
@@ -132,7 +133,7 @@ void addReplayCommand(CLI::App& app) {
   auto flags = std::make_shared<ReplayFlags>();
   CLI::App* command = app.add_subcommand(
       "replay", "Run one episode with a given run seed (as in results.csv) and draw the agent's path");
-  command->add_option("problem", flags->problem, "A .ppp (or map .yaml) file, or empty:WxH")->required();
+  command->add_option("problem", flags->problem, kProblemHelp)->required();
   flags->agent.add(command);
   command->add_option("--seed", flags->seed, "The run's seed (results.csv column seed)")->required();
   command->add_option("-o,--output", flags->output,

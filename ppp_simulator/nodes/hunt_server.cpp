@@ -6,12 +6,13 @@
 #include "ppp_core/error.hpp"
 #include "ppp_msgs/conversions.h"
 #include "ppp_msgs/graph_names.h"
+#include "ppp_simulator/experiment_graph.hpp"
 
 namespace ppp {
 namespace simulator {
 
 HuntServer::HuntServer(ros::NodeHandle& nh, const SimulatorParameters& parameters)
-    : nh_(nh), parameters_(parameters), config_(loadExperimentConfig(parameters.config)) {}
+    : nh_(nh), parameters_(parameters), config_(launchedConfig(parameters)) {}
 
 HuntServer::~HuntServer() = default;
 

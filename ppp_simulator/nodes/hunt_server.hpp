@@ -20,8 +20,9 @@ namespace simulator {
 
 /// Answers ~evaluate (ppp_msgs/EvaluateProblems) for hunts. Each request's PPPs are played by the named agents
 /// of ~config (agent nodes on /NAME/scans and /NAME/moves, planner bridges, exactly as in an experiment), `runs`
-/// times each, seeded as the in-process failure fitness does; the answer says per PPP how often the panel failed
-/// and why. Agents that time out or die fail their runs with that reason, so a hunt never hangs on them.
+/// times each, seeded as the in-process panel fitnesses do; the answer says per PPP how often the panel failed,
+/// why, and how much longer than the optimum its runs took (for the failure and the regret fitness alike).
+/// Agents that time out or die fail their runs with that reason, so a hunt never hangs on them.
 class HuntServer {
  public:
   /// Reads ~config's agents. @throws IoError, ParseError, InvalidArgument.

@@ -5,7 +5,8 @@
 // per active episode) and takes ppp_msgs/MoveBatch from /NAME/moves, in lockstep, through the same AgentLane and
 // episode code as the in-process runner, so the results equal `ppp experiment`'s. Results go to results.csv as
 // episodes end; summary.csv and the report are written when all runs are done; a sample of episodes and every
-// result are recorded in experiment.bag. The node exits when the experiment is finished.
+// result are recorded in experiment.bag. The node exits when the experiment is finished. Its parameters:
+// docs/reference/options.md#simulator-node; its topics and services: docs/reference/ros-graph.md.
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 
@@ -26,6 +27,7 @@
 #include "ppp_msgs/conversions.h"
 #include "ppp_msgs/node_liveness.h"
 #include "ppp_agents/agent_lane.hpp"
+#include "ppp_simulator/experiment_graph.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
 #include "set_receiver.hpp"
 #include "simulator_parameters.hpp"
@@ -35,7 +37,7 @@ namespace simulator {
 
 /// Takes the sets (from the generator nodes, or made here), then runs the experiment.
 int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const SimulatorParameters& parameters) {
-  const ExperimentConfig config = loadExperimentConfig(parameters.config);
+  const ExperimentConfig config = launchedConfig(parameters);
   const std::string config_text = readTextFile(parameters.config, 1u << 20);
   ReceivedSets received;
   if (parameters.generator_nodes) {

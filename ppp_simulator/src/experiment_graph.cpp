@@ -16,13 +16,14 @@ namespace simulator {
 
 namespace {
 
-/// The roslaunch param type of a declared option ("int", "double", "bool"; else "str").
+/// The roslaunch param type of a declared option ("int", "double", "bool", "yaml" for a list; else "str").
 template <typename Options>
 std::string parameterType(const OptionSpec<Options>& spec) {
   switch (spec.kind) {
     case OptionKind::Integer: return "int";
     case OptionKind::Number: return "double";
     case OptionKind::Boolean: return "bool";
+    case OptionKind::TextList: return "yaml";  // its plain text is a YAML flow list
     default: return "str";
   }
 }
@@ -161,18 +162,33 @@ void GraphOptions::validate(const ExperimentConfig& config) const {
   }
 }
 
-void assignPlannerNode(ExperimentConfig* config, const std::string& agent, const std::string& planner_node) {
-  std::vector<std::string> planners;
-  for (agents::AgentConfig& a : config->agents) {
-    if (!agents::isPlanner(a)) continue;
-    if (a.name == agent) {
-      a.planner_node = planner_node;
-      return;
+void assignPlanners(ExperimentConfig* config, const std::vector<std::string>& assignments) {
+  for (const std::string& text : assignments) {
+    const std::size_t equals = text.find('=');
+    if (equals == std::string::npos || equals == 0) {
+      throw InvalidArgument("planner", "expected NAME=PACKAGE/EXECUTABLE or NAME=, got '" + text + "'");
     }
-    planners.push_back(a.name);
+    const std::string agent = text.substr(0, equals);
+    std::vector<std::string> planners;
+    agents::AgentConfig* assigned = nullptr;
+    for (agents::AgentConfig& a : config->agents) {
+      if (!agents::isPlanner(a)) continue;
+      if (a.name == agent) assigned = &a;
+      planners.push_back(a.name);
+    }
+    if (!assigned) {
+      throw InvalidArgument("planner", "the config has no planner agent named '" + agent + "' (its planner agents: " +
+                                           (planners.empty() ? "none" : joinNames(planners)) + ")");
+    }
+    assigned->planner_node = text.substr(equals + 1);
   }
-  throw InvalidArgument("planner", "the config has no planner agent named '" + agent + "' (its planner agents: " +
-                                       (planners.empty() ? "none" : joinNames(planners)) + ")");
+  config->validate();
+}
+
+ExperimentConfig launchedConfig(const SimulatorTask& task) {
+  ExperimentConfig config = loadExperimentConfig(task.config);
+  assignPlanners(&config, task.planners);
+  return config;
 }
 
 std::string generatorNodeName(const std::string& set_name) {
@@ -217,6 +233,7 @@ ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const Grap
   task.config = options.config_path;
   task.output_dir = hunted ? "" : options.output_dir;
   task.generator_nodes = !hunted;
+  task.planners = options.planners;
   addParams(simulatorTaskSpecs(), task, &simulator);
   // A bridge connects to the simulator once its planner is there: the simulator waits as long as the bridges do,
   // so a planner started late costs no run (a step's timeout would fail it).

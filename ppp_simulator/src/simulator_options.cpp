@@ -62,6 +62,10 @@ const std::vector<OptionSpec<SimulatorTask>>& simulatorTaskSpecs() {
                       +[](T& t) -> std::string& { return t.output_dir; }),
         declareOption("generator_nodes", "play the sets the generator nodes publish instead of evolving them here",
                       +[](T& t) -> bool& { return t.generator_nodes; }),
+        declareOption("planners",
+                      "planner agents' nodes given at launch (NAME=PACKAGE/EXECUTABLE, or NAME= for one started by "
+                      "hand) over the config's planner_node: they decide how many instances of each play",
+                      +[](T& t) -> std::vector<std::string>& { return t.planners; }),
     };
     for (OptionSpec<T>& spec : list) spec = spec.notAffectingResults();  // where and how, never what
     return list;

@@ -235,6 +235,10 @@ class DefaultGraphTest(unittest.TestCase):
         for ns in instance_namespaces('mine', CORES):
             self.assertEqual(started.params[ns + 'bridge/connect_timeout'].value, 20.0)
         self.assertEqual(started.params['/simulator/connect_timeout'].value, 60.0)
+        # The simulator reads the config file, which names no planner node: it is told the one given at launch,
+        # so that it plays the instances the graph starts (one per core) rather than one.
+        self.assertEqual(started.params['/simulator/planners'].value, ['mine=ppp_agents/simple_planner.py'])
+        self.assertEqual(bridge_only.params['/simulator/planners'].value, [])
 
 
 class SmallGraphTest(unittest.TestCase):

@@ -9,6 +9,7 @@ namespace cli {
 
 int runCommandLine(CLI::App& app, int argc, char** argv, const char* program) {
   app.require_subcommand(1);
+  app.name(program);  // the usage lines say `ppp simulate`, not the binary's path (docs/reference/cli.md quotes them)
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

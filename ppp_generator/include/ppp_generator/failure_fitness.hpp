@@ -14,10 +14,10 @@
 namespace ppp {
 namespace generator {
 
-/// Most worker threads a failure fitness or an experiment may ask for.
+/// Most worker threads a panel fitness or an experiment may ask for.
 constexpr int kMaxThreads = 1024;
 
-/// The agents and rules of a panel fitness, `failure` or `regret` (SPEC 6b, 6c).
+/// The agents and rules of a panel fitness, `failure` or `regret`.
 struct FailurePanel {
   std::string fitness = kFailureFitness;    ///< kFailureFitness or kRegretFitness: what the panel's runs score.
   std::vector<agents::AgentConfig> agents;  ///< The panel, each run `runs_per_eval` times per PPP.

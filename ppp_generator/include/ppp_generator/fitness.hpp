@@ -26,7 +26,7 @@ struct FitnessScore {
 };
 
 /// Scores many valid PPPs at once, in input order (`grids[i]` is the decoded grid of `problems[i]`): the
-/// failure fitness plays episodes of its agents on them, in process or through the simulator node.
+/// panel fitnesses (failure, regret) play episodes of their agents on them, in process or through the simulator node.
 using BatchScorer = std::function<std::vector<FitnessScore>(const std::vector<const Problem*>& problems,
                                                             const std::vector<const Grid*>& grids)>;
 
@@ -60,11 +60,11 @@ std::string fitnessNames();
 /// The registry as an option's choices: each fitness's name and description.
 std::vector<OptionChoice> fitnessChoices();
 
-/// The fitness that is the failure rate of a panel of agents (SPEC 6b); built by makeFailureFitness
+/// The fitness that is the failure rate of a panel of agents; built by makeFailureFitness
 /// (failure_fitness.hpp) in process, or with the simulator node's evaluations through ROS, not by makeFitness.
 constexpr const char* kFailureFitness = "failure";
 
-/// The fitness that is a panel's mean regret (SPEC 6c): how much longer than the optimum its runs took, a failed
+/// The fitness that is a panel's mean regret: how much longer than the optimum its runs took, a failed
 /// run counting as its whole budget; built like kFailureFitness.
 constexpr const char* kRegretFitness = "regret";
 

@@ -25,7 +25,7 @@ constexpr const char* kNoArchive = "none";
 constexpr const char* kMapElitesArchive = "map_elites";
 /// Largest crowding window (a window beyond the population is the whole pool).
 constexpr int kMaxCrowdingWindow = 100000;
-/// Most runs per evaluation of the failure fitness.
+/// Most runs per evaluation of a panel fitness (failure, regret).
 constexpr int kMaxRunsPerEval = 10000;
 /// Most matings per round of a panel fitness (candidates scored in one call).
 constexpr int kMaxRoundSize = 1024;
@@ -61,9 +61,9 @@ struct GeneratorOptions {
   std::string characters = "extended";  ///< Character set of the taxonomy (wei, extended or barn).
   std::string replacement = kCrowdingReplacement;  ///< kCrowdingReplacement or kTournamentReplacement.
   int crowding_window = 20;         ///< Pool members a child is compared with under crowding (capped at the pool).
-  std::vector<std::string> agents;  ///< Failure fitness: the panel's agent names.
-  std::string agents_file;          ///< Failure fitness: agents file the names resolve in ("": built-in types).
-  int runs_per_eval = 20;           ///< Failure fitness: episodes per agent per evaluated PPP.
+  std::vector<std::string> agents;  ///< Panel fitness: the panel's agent names.
+  std::string agents_file;          ///< Panel fitness: agents file the names resolve in ("": built-in types).
+  int runs_per_eval = 20;           ///< Panel fitness: episodes per agent per evaluated PPP.
   int round_size = kFailureBatchSize;  ///< Panel fitness: matings per round, their children scored together.
   std::string archive = kNoArchive; ///< kNoArchive or kMapElitesArchive.
   std::vector<std::string> features{"turns", "obstacles"};  ///< MAP-Elites: characters binned (two or more).

@@ -33,7 +33,7 @@ using ProgressCallback = std::function<void(long done, long total, double best_v
 /// (fewest differing cells) of `crowding_window` random pool members and replaces it if at least as fit, so
 /// a good layout can only push out its own near-copies and the pool keeps many layouts. A child whose
 /// grid is already in the pool is discarded, so the pool holds distinct PPPs.
-/// A batch fitness (failure) is scored a round of batch_size matings at a time: the round's parents are
+/// A batch fitness (failure, regret) is scored a round of batch_size matings at a time: the round's parents are
 /// drawn from the pool as it was before the round, and the children enter in mating order afterwards (under
 /// `tournament` replacement into the tournament slots drawn before the round, so a later mating of the round
 /// may replace an earlier one's child).
@@ -42,7 +42,7 @@ class GeneticAlgorithm {
  public:
   /// Prepares a run with the fitness named in the options. @throws InvalidArgument for bad options.
   explicit GeneticAlgorithm(const GeneratorOptions& options);
-  /// Prepares a run with a fitness built elsewhere (the failure fitness). @throws InvalidArgument.
+  /// Prepares a run with a fitness built elsewhere (a panel fitness). @throws InvalidArgument.
   GeneticAlgorithm(const GeneratorOptions& options, Fitness fitness);
   GeneticAlgorithm(const GeneticAlgorithm&) = delete;             ///< Its breeder refers to its own members.
   GeneticAlgorithm& operator=(const GeneticAlgorithm&) = delete;  ///< As the copy constructor.

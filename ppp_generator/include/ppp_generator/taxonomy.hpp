@@ -9,7 +9,7 @@
 
 namespace ppp::generator {
 
-/// Which taxonomic characters (SPEC 7) describe a PPP in the taxonomy.
+/// Which taxonomic characters (docs/reference/evaluation.md) describe a PPP in the taxonomy.
 enum class CharacterSet {
   Wei,       ///< Wei's four: turns, advances, turns_plus_advances, obstacles.
   Extended,  ///< All fourteen characters of ppp::characterNames().

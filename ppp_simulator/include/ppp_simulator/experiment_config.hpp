@@ -20,7 +20,7 @@ struct SetSpec {
   std::string directory;                                 ///< ...or read it from this `ppp generate` directory.
 };
 
-/// An experiment: every agent runs `runs` times on every PPP of every set (SPEC 8).
+/// An experiment: every agent runs `runs` times on every PPP of every set.
 struct ExperimentConfig {
   std::uint64_t seed = 1;      ///< Every run's seed derives from this one.
   int runs = 1000;             ///< Runs per agent per PPP.
@@ -70,7 +70,7 @@ generator::GeneratorOptions generatorOptionsIn(const ExperimentConfig& config, c
 /// How much an experiment asks for, estimated before it starts.
 struct ExperimentWork {
   double episodes = 0;       ///< Runs of agents on PPPs (sets x PPPs x agents x runs; ROS planners included).
-  double hunt_episodes = 0;  ///< Episodes the failure fitness plays while hunting (2 per mating x panel x runs).
+  double hunt_episodes = 0;  ///< Episodes the panel fitnesses play while hunting (2 per mating x panel x runs).
   double matings = 0;        ///< Mating events of every evolved set.
   double result_bytes = 0;   ///< Size of results.csv (about 90 bytes a row).
 };

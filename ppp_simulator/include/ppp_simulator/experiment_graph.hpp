@@ -15,17 +15,27 @@ struct GraphOptions {
   std::string config_path;      ///< The experiment YAML, absolute (the simulator reads it).
   std::string output_dir;       ///< The output directory, absolute.
   SimulatorOptions simulator;   ///< The simulator node's options, passed as its parameters.
-  /// When set, the graph of a hunt instead: only this `failure` set of the config is evolved, into OUTPUT_DIR.
+  /// When set, the graph of a hunt instead: only this set of the config, evolved with a panel fitness (failure
+  /// or regret), is evolved, into OUTPUT_DIR.
   std::string hunt;
   /// The env-loader script remote machines run nodes through (the workspace's devel/env.sh at the same path).
   std::string env_loader;
+  /// The planner nodes assigned over the config file's (assignPlanners), which the config given to experimentGraph
+  /// holds already: passed on to the simulator, which reads the file, so that it expects the instances the graph
+  /// starts.
+  std::vector<std::string> planners;
   /// @throws InvalidArgument naming the option.
   void validate(const ExperimentConfig& config) const;
 };
 
-/// Sets planner agent `agent`'s planner_node ("package/executable", or "" for a planner the user starts), as a
-/// command line may override the config's. @throws InvalidArgument naming "planner" for an unknown planner agent.
-void assignPlannerNode(ExperimentConfig* config, const std::string& agent, const std::string& planner_node);
+/// Sets the planner_node of the planner agents named in `assignments` ("NAME=PACKAGE/EXECUTABLE", or "NAME=" for a
+/// planner the user starts), as a launch may override the config's. @throws InvalidArgument naming "planner" for a
+/// malformed assignment or an unknown planner agent, or the planner_node's problem.
+void assignPlanners(ExperimentConfig* config, const std::vector<std::string>& assignments);
+
+/// The experiment config as a launched graph runs it: `task.config` with `task.planners` assigned.
+/// @throws ParseError, IoError or InvalidArgument as loadExperimentConfig and assignPlanners.
+ExperimentConfig launchedConfig(const SimulatorTask& task);
 
 /// The generator node that evolves set `set_name` ("gen_" + its name as a ROS name).
 std::string generatorNodeName(const std::string& set_name);

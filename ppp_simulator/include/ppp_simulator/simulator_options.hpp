@@ -41,6 +41,9 @@ struct SimulatorTask {
   /// Play the evolved sets the generator nodes publish (setTopic() of each set, as launch/experiment.launch starts
   /// them) instead of evolving them here; sets given as directories are read from disk either way.
   bool generator_nodes = false;
+  /// Planner nodes assigned at launch over the config's planner_node ("NAME=PACKAGE/EXECUTABLE", or "NAME=" for
+  /// one the user starts), as `ppp launch-file --planner` gives them: they decide how many instances play.
+  std::vector<std::string> planners;
 };
 
 /// One declaration per SimulatorTask parameter.

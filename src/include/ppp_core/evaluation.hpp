@@ -10,7 +10,7 @@
 
 namespace ppp {
 
-/// Weights of the difficulty score (SPEC 5); the defaults are the dissertation's.
+/// Weights of the difficulty score (docs/reference/evaluation.md); the defaults are the dissertation's.
 struct DifficultyWeights {
   double start = 1.5;                ///< Weight of visibility from the start.
   double centre = 1.0;               ///< Weight of visibility from the centre.
@@ -34,7 +34,7 @@ struct Visibilities {
   double bottom_left = 0;  ///< From (0, height-1).
 };
 
-/// Every measure of SPEC 4-5 for one PPP.
+/// Every measure of one PPP (docs/reference/evaluation.md): the DPA, visibility, openness, difficulty.
 struct Evaluation {
   bool valid = false;               ///< Goal reachable from start.
   int turns = -1;                   ///< Fewest turns (-1 when invalid).
@@ -72,11 +72,11 @@ class Evaluator {
   VisibilitySolver visibility_;
 };
 
-/// Names of the taxonomic characters of SPEC 7, in characterVector() order.
+/// Names of the taxonomic characters (docs/reference/evaluation.md), in characterVector() order.
 const std::vector<std::string>& characterNames();
 /// Wei's four characters (turns, advances, turns_plus_advances, obstacles): the first four names.
 constexpr std::size_t kWeiCharacterCount = 4;
-/// The full character vector of SPEC 7 for one evaluation.
+/// The full character vector of one evaluation.
 std::vector<double> characterVector(const Evaluation& evaluation);
 
 }  // namespace ppp

@@ -6,8 +6,9 @@
 
 namespace ppp {
 
-// A robot with a body (SPEC 6c): a disc of `robot_radius` cells centred in the cell it stands on. It may stand
-// where the disc overlaps no obstacle cell and stays on the map; that set of cells is its configuration space.
+// A robot with a body (docs/how-to/robot-with-a-body.md): a disc of `robot_radius` cells centred in the cell it
+// stands on. It may stand where the disc overlaps no obstacle cell and stays on the map; that set of cells is its
+// configuration space.
 
 /// Largest robot radius, in cells.
 constexpr double kMaxRobotRadius = 64;

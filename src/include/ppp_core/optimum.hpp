@@ -8,7 +8,7 @@
 namespace ppp {
 
 // The yardstick of a run: what the best route of a PPP costs under the episode's rules, and the measures taken
-// against it (relative budgets, regret, soft failures; SPEC 6c).
+// against it (relative budgets, regret, soft failures: docs/how-to/graded-objectives.md).
 
 /// The best a run can do on one PPP.
 struct Optimum {

@@ -9,7 +9,7 @@
 namespace ppp {
 namespace simulator {
 
-/// How much longer than the optimum one agent's passed runs on one set were: path / optimal length (SPEC 6c).
+/// How much longer than the optimum one agent's passed runs on one set were: path / optimal length.
 struct DetourStats {
   std::string set;          ///< PPP set name.
   std::string agent;        ///< Agent configuration name.
