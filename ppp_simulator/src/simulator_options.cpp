@@ -32,7 +32,8 @@ const std::vector<OptionSpec<SimulatorOptions>>& simulatorOptionSpecs() {
                     +[](S& s) -> double& { return s.planner_step_timeout; }, seconds),
       declareOption("timeouts_before_giving_up", "unanswered batches in a row after which an agent's runs all fail",
                     +[](S& s) -> int& { return s.timeouts_before_giving_up; }, Bounds{1, 1000}),
-      declareOption("connect_timeout", "seconds to wait for each agent node to connect",
+      declareOption("connect_timeout", "seconds to wait for each agent node to connect (a planner agent's bridge connects once its "
+                    "planner has: the experiment's graph raises this to the bridges' wait plus 10 s)",
                     +[](S& s) -> double& { return s.connect_timeout; }, seconds),
       declareOption("set_timeout", "seconds a set's topic may go without a publisher before giving up",
                     +[](S& s) -> double& { return s.set_timeout; }, seconds),
