@@ -12,8 +12,10 @@
 #include "ppp_agents/agent_config.hpp"
 #include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/footprint.hpp"
 #include "ppp_core/picture.hpp"
 #include "ppp_core/problem_io.hpp"
+#include "ppp_core/reachability.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_agents/episode_runner.hpp"
@@ -47,20 +49,33 @@ constexpr const char* kProblemHelp =
     "A .ppp, map_server .yaml or MovingAI .map file, or empty:WxH for an empty grid";
 
 
-Problem loadProblem(const std::string& source) {
+/// The PPP `source` names. @throws InvalidArgument naming --robot-radius when a robot with a body cannot reach its
+/// goal (the disc does not fit at the start or the goal, or through any passage): every run would fail.
+Problem loadProblem(const std::string& source, const EpisodeOptions& episode) {
   const std::string prefix = "empty:";
+  Problem problem;
   if (source.rfind(prefix, 0) == 0) {
     const Size size = parseSize(source.substr(prefix.size()), "--problem");
-    return Problem::empty(size.width, size.height, 0);
+    problem = Problem::empty(size.width, size.height, 0);
+  } else {
+    problem = readProblemFile(source);
   }
-  return readProblemFile(source);
+  if (!isPointRobot(episode.robot_radius) &&
+      !isReachable(configurationSpace(decodeGrid(problem), episode.robot_radius), problem.start, problem.goal)) {
+    throw InvalidArgument("--robot-radius", "a robot of radius " + formatShortest(episode.robot_radius) +
+                                                " cannot reach the goal of " + source + " (the disc does not fit at " +
+                                                "its start " + cellText(problem.start) + ", its goal " +
+                                                cellText(problem.goal) + " or some passage between them): every run "
+                                                "would fail; give start and goal cells further in");
+  }
+  return problem;
 }
 
 void runSimulate(const SimulateFlags& f) {
   if (f.runs <= 0) throw InvalidArgument("--runs", "expected a number of runs >= 1, got " + std::to_string(f.runs));
   const agents::AgentConfig config = f.agent.agent();
   agents::EpisodeRunner runner(config, f.agent.episode());
-  const Problem problem = loadProblem(f.problem);
+  const Problem problem = loadProblem(f.problem, f.agent.episode());
   const Grid grid = decodeGrid(problem);
   auto agent = agents::makeAgent(config);
   long passes = 0;
@@ -96,7 +111,7 @@ void runReplay(const ReplayFlags& f) {
   }
   const agents::AgentConfig config = f.agent.agent();
   const EpisodeOptions options = f.agent.episode();
-  const Problem problem = loadProblem(f.problem);
+  const Problem problem = loadProblem(f.problem, options);
   const Grid grid = decodeGrid(problem);
   EpisodeOutcome outcome;
   std::string drawn;

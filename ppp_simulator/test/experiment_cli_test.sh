@@ -185,6 +185,15 @@ expect_error "unknown agent" "--agent: unknown agent type 'flier'; valid: astar,
 expect_error "budget 0" "--budget: expected an integer in [1, 1000000], got 0" "$ppp" simulate --agent random --problem empty:5x5 --budget 0
 expect_error "runs 0" "--runs: expected a number of runs >= 1" "$ppp" simulate --agent random --problem empty:5x5 --runs 0
 expect_error "even memory" "--memory" "$ppp" simulate --agent explorer --problem empty:5x5 --memory 4x4
+# A robot with a body that cannot stand at the corner start: refused, not 0 % passes.
+expect_error "robot off its start" "--robot-radius: a robot of radius 1 cannot reach the goal of empty:20x20 (the disc does not fit at its start (0, 0)" \
+  "$ppp" simulate --agent astar --problem empty:20x20 --robot-radius 1
+expect_error "robot off its start, replay" "--robot-radius: a robot of radius 1 cannot reach the goal" \
+  "$ppp" replay empty:20x20 --agent astar --robot-radius 1 --seed 1 -o "$work/body.png"
+[ ! -e "$work/body.png" ] && pass || fail "a refused replay wrote its picture"
+printf 'ppp 1\nsize 6 6\nstart 1 1\ngoal 4 4\nmax_obstacles 0\nobstacles 0\ngrid\n......\n.S....\n......\n......\n....G.\n......\nend\n' > "$work/room.ppp"
+expect_ok "robot inside" "$ppp" simulate --agent astar --problem "$work/room.ppp" --robot-radius 1 --runs 3 --seed 1
+grep -q "3 of 3 runs passed" "$work/out" && pass || fail "astar with a body inside the room: $(cat "$work/out")"
 expect_error "memory 0" "--memory" "$ppp" simulate --agent explorer --problem empty:5x5 --memory 0x0
 expect_error "noise" "--sensor-noise: expected a number in [0, 1], got 1.5" \
   "$ppp" simulate --agent explorer --problem empty:5x5 --sensor-noise 1.5
