@@ -48,7 +48,6 @@ struct ReplayFlags : PlayFlags {
 constexpr const char* kProblemHelp =
     "A .ppp, map_server .yaml or MovingAI .map file, or empty:WxH for an empty grid";
 
-
 /// The PPP `source` names. @throws InvalidArgument naming --robot-radius when a robot with a body cannot reach its
 /// goal (the disc does not fit at the start or the goal, or through any passage): every run would fail.
 Problem loadProblem(const std::string& source, const EpisodeOptions& episode) {
@@ -62,7 +61,7 @@ Problem loadProblem(const std::string& source, const EpisodeOptions& episode) {
   }
   if (!isPointRobot(episode.robot_radius) &&
       !isReachable(configurationSpace(decodeGrid(problem), episode.robot_radius), problem.start, problem.goal)) {
-    throw InvalidArgument("--robot-radius", "a robot of radius " + formatShortest(episode.robot_radius) +
+    throw InvalidArgument(flagFor("robot_radius"), "a robot of radius " + formatShortest(episode.robot_radius) +
                                                 " cannot reach the goal of " + source + " (the disc does not fit at " +
                                                 "its start " + cellText(problem.start) + ", its goal " +
                                                 cellText(problem.goal) + " or some passage between them): every run "
