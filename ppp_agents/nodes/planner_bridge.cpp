@@ -95,6 +95,9 @@ void PlannerBridge::reply(const ppp_msgs::ScanBatch& batch, const StepOutcome* o
   if (outcome && !replies.empty()) {
     replies[0].action = outcome->action;
     replies[0].failure = outcome->failure;
+    replies[0].diagnosis = outcome->diagnosis;
+    // In lockstep the bridge's state decides the next move: its digest can prove a loop endless.
+    if (parameters_.lockstep && outcome->failure == nullptr) replies[0].state = episode_.stateDigest(following_);
   }
   ppp_msgs::MoveBatch moves = protocol::encodeMoves(parameters_.config.name, batch.batch, replies);
   moves.header.stamp = ros::Time::now();
@@ -205,7 +208,11 @@ PlannerBridge::StepOutcome PlannerBridge::request() {
     }
   }
   const Answer answer = episode_.answer(points, r.robot);
-  if (answer.verdict == AnswerVerdict::NoPath) return fail(reason::kNoPath, answer.detail);
+  if (answer.verdict == AnswerVerdict::NoPath) {
+    StepOutcome failed = fail(reason::kNoPath, answer.detail);
+    failed.diagnosis = episode_.noPathKind(r.robot, parameters_.robot_radius);
+    return failed;
+  }
   if (answer.verdict == AnswerVerdict::InvalidPath) return fail(reason::kInvalidPath, answer.detail);
   following_ = points;
   return StepOutcome{static_cast<std::uint8_t>(answer.action), nullptr};

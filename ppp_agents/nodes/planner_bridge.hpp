@@ -49,6 +49,7 @@ class PlannerBridge {
   struct StepOutcome {
     std::uint8_t action = 0;
     const char* failure = nullptr;  // a reason:: constant, or nullptr for a move
+    const char* diagnosis = nullptr;  // for no_path: diagnosis::kMissedRoute or kNoRoute
   };
   /// The state a plan request is made for.
   struct Request {

@@ -22,6 +22,7 @@ AgentLane::AgentLane(const AgentConfig& config, const EpisodeOptions& options,
       reads_window_(readsScanWindow(config)),
       collisions_end_(isPlanner(config) && !isPointRobot(options.robot_radius)),
       keeps_actions_(isPlanner(config)),
+      keeps_states_(isPlanner(config) && config.sensor_noise == 0),
       sensor_(SensorOptions{options.sensor_range, config.sensor_noise}) {
   if (batch_size < 1) throw InvalidArgument("batch_size", "expected at least 1, got " + std::to_string(batch_size));
   if (share.count < 1 || share.index < 0 || share.index >= share.count) {
@@ -49,7 +50,7 @@ void AgentLane::scans(std::vector<ScanRequest>* requests) {
                                options_.budgetRule(set.budgets[work.problem]), options_.connectivity, false,
                                windowsOf(set, work.problem),
                                motionOf(set, work.problem)),
-                       false, {}});
+                       false, {}, {}, nullptr});
   }
   requests->resize(active_.size());
   for (std::size_t i = 0; i < active_.size(); ++i) {
@@ -88,8 +89,9 @@ void AgentLane::scans(std::vector<ScanRequest>* requests) {
   }
 }
 
-EpisodeResult AgentLane::result(const Work& work, std::uint64_t seed, const EpisodeOutcome& outcome) const {
-  return episodeResult(sets_[work.set], work.problem, config_.name, work.run, seed, outcome);
+EpisodeResult AgentLane::result(const Work& work, std::uint64_t seed, const EpisodeOutcome& outcome,
+                               const std::vector<std::uint64_t>& states, const char* reported_kind) const {
+  return episodeResult(sets_[work.set], work.problem, config_.name, work.run, seed, outcome, states, reported_kind);
 }
 
 std::vector<EpisodeResult> AgentLane::unanswered(const char* reason, int give_up_after) {
@@ -121,16 +123,18 @@ std::vector<EpisodeResult> AgentLane::answer(const std::vector<MoveReply>& moves
       a.episode.fail(missing_reason);
     } else if (move->failure != nullptr) {
       a.episode.fail(move->failure);
+      a.reported_kind = move->diagnosis;
     } else if (static_cast<int>(move->step) != a.episode.step() || !isAction(move->action, options_.connectivity)) {
       a.episode.fail(reason::kInvalidAction);
     } else {
       const int bumps = a.episode.outcome().bumps;
       a.episode.apply(static_cast<Action>(move->action));
       if (keeps_actions_) a.actions.push_back(static_cast<Action>(move->action));
+      if (keeps_states_) a.states.push_back(move->state);
       if (collisions_end_ && a.episode.outcome().bumps > bumps) a.episode.fail(reason::kCollision);
     }
     if (a.episode.done()) {
-      finished.push_back(result(a.work, a.seed, a.episode.outcome()));
+      finished.push_back(result(a.work, a.seed, a.episode.outcome(), a.states, a.reported_kind));
       finished.back().actions = std::move(a.actions);
     } else {
       if (kept != i) active_[kept] = std::move(a);

@@ -12,7 +12,7 @@ namespace agents {
 
 namespace {
 
-constexpr std::size_t kFields = 12;  // of a row, as resultCsvHeader()
+constexpr std::size_t kFields = 16;  // of a row, as resultCsvHeader()
 
 template <typename T>
 T parseNumber(std::string_view text, const std::string& source, int line, const char* field) {
@@ -43,6 +43,42 @@ double parseLength(std::string_view text, const std::string& source, int line, c
   return value;
 }
 
+/// An optional whole number: -1 (or `none`) for an empty field.
+int parseOptional(std::string_view text, int none, const std::string& source, int line, const char* field) {
+  if (text.empty()) return none;
+  const int value = parseNumber<int>(text, source, line, field);
+  if (value < 0) throw ParseError(source, line, field, "expected a whole number of at least 0, got '" + std::string(text) + "'");
+  return value;
+}
+
+/// The diagnosis fields of `r`, checked against its pass, soft failure and against each other.
+void parseDiagnosis(std::string_view kind, std::string_view step, std::string_view period, std::string_view endless,
+                    const std::string& source, int line, EpisodeResult* r) {
+  const char* named = diagnosis::kindNamed(std::string(kind));
+  if (!kind.empty() && named == nullptr) {
+    throw ParseError(source, line, "diagnosis", "expected one of stuck, loop, confined, wandering, detour, "
+                                                "missed_route, no_route, reported or nothing, got '" + std::string(kind) + "'");
+  }
+  r->diagnosis = std::string(kind);
+  const bool clean_pass = r->passed && !r->soft_failure;
+  if (clean_pass != kind.empty() || (r->soft_failure != (r->diagnosis == diagnosis::kDetour))) {
+    throw ParseError(source, line, "diagnosis",
+                     "'" + r->diagnosis + "' does not fit pass " + (r->passed ? "1" : "0") + ", soft_failure " +
+                         (r->soft_failure ? "1" : "0") + " (a clean pass has none, a soft failure is a detour)");
+  }
+  r->diagnosis_step = parseOptional(step, -1, source, line, "diagnosis_step");
+  r->loop_period = parseOptional(period, 0, source, line, "loop_period");
+  r->endless_step = parseOptional(endless, -1, source, line, "endless_step");
+  const bool loop = r->diagnosis == diagnosis::kLoop;
+  if (loop != (r->loop_period >= 2)) {
+    throw ParseError(source, line, "loop_period", "a loop has a period of at least 2, and only a loop has one");
+  }
+  if (!loop && r->endless_step >= 0) throw ParseError(source, line, "endless_step", "only a loop is endless");
+  if (r->diagnosis_step > r->steps || r->endless_step > r->steps) {
+    throw ParseError(source, line, "diagnosis_step", "a step after the run's last (" + std::to_string(r->steps) + ")");
+  }
+}
+
 /// A row from its fields in header order (any count: a wrong one is named).
 template <typename Field>
 EpisodeResult rowFromFields(const Field* f, std::size_t count, const std::string& source, int line) {
@@ -64,6 +100,7 @@ EpisodeResult rowFromFields(const Field* f, std::size_t count, const std::string
   r.reason = f[10];
   r.soft_failure = parseFlag(f[11], source, line, "soft_failure");
   if (r.soft_failure && !r.passed) throw ParseError(source, line, "soft_failure", "a soft failure is a passed run");
+  parseDiagnosis(f[12], f[13], f[14], f[15], source, line, &r);
   return r;
 }
 
@@ -98,6 +135,17 @@ void appendLength(double value, std::string* out) {
   out->append(digits, length);
 }
 
+/// An optional whole number: nothing when it is `none`.
+void appendOptional(int value, int none, std::string* out) {
+  if (value != none) appendNumber(value, out);
+}
+
+std::string optionalText(int value, int none) {
+  std::string text;
+  appendOptional(value, none, &text);
+  return text;
+}
+
 std::string lengthText(double value) {
   std::string text;
   appendLength(value, &text);
@@ -109,7 +157,8 @@ std::string lengthText(double value) {
 const std::vector<std::string>& resultCsvHeader() {
   static const std::vector<std::string> header = {"set",   "problem", "agent",       "run",            "seed",
                                                   "pass",  "steps",   "bumps",       "path_length",    "optimal_length",
-                                                  "reason", "soft_failure"};
+                                                  "reason", "soft_failure", "diagnosis", "diagnosis_step",
+                                                  "loop_period", "endless_step"};
   return header;
 }
 
@@ -125,7 +174,28 @@ std::vector<std::string> toCsvFields(const EpisodeResult& r) {
           lengthText(r.path_length),
           lengthText(r.optimal_length),
           r.reason,
-          r.soft_failure ? "1" : "0"};
+          r.soft_failure ? "1" : "0",
+          r.diagnosis,
+          optionalText(r.diagnosis_step, -1),
+          optionalText(r.loop_period, 0),
+          optionalText(r.endless_step, -1)};
+}
+
+Diagnosis diagnosisOf(const EpisodeResult& result) {
+  Diagnosis d;
+  const char* kind = diagnosis::kindNamed(result.diagnosis);
+  d.kind = kind != nullptr ? kind : "";
+  d.step = result.diagnosis_step;
+  d.period = result.loop_period;
+  d.endless_step = result.endless_step;
+  return d;
+}
+
+void setDiagnosis(const Diagnosis& d, EpisodeResult* result) {
+  result->diagnosis = d.kind;
+  result->diagnosis_step = d.step;
+  result->loop_period = d.period;
+  result->endless_step = d.endless_step;
 }
 
 EpisodeResult fromCsvFields(const std::vector<std::string>& f, const std::string& source, int line) {
@@ -152,7 +222,15 @@ void appendCsvRow(const EpisodeResult& r, std::string* out) {
   appendLength(r.optimal_length, out);
   *out += ',';
   appendText(r.reason, out);
-  *out += r.soft_failure ? ",1\n" : ",0\n";
+  *out += r.soft_failure ? ",1," : ",0,";
+  *out += r.diagnosis;
+  *out += ',';
+  appendOptional(r.diagnosis_step, -1, out);
+  *out += ',';
+  appendOptional(r.loop_period, 0, out);
+  *out += ',';
+  appendOptional(r.endless_step, -1, out);
+  *out += '\n';
 }
 
 EpisodeResult parseCsvRow(std::string_view line, const std::string& source, int line_number) {

@@ -80,5 +80,15 @@ void PathFollower::clear() {
   position_ = 0;
 }
 
+void PathFollower::addTo(StateDigest* digest) const {
+  digest->add(static_cast<std::int64_t>(walk_.size()));
+  for (const Cell& c : walk_) {
+    digest->add(c.x);
+    digest->add(c.y);
+  }
+  digest->add(static_cast<std::int64_t>(position_));
+  digest->add(static_cast<int>(connectivity_));
+}
+
 }  // namespace agents
 }  // namespace ppp

@@ -1,5 +1,9 @@
 #include "ppp_agents/planner_episode.hpp"
 
+#include "ppp_core/diagnosis.hpp"
+#include "ppp_core/footprint.hpp"
+#include "ppp_core/reachability.hpp"
+
 namespace ppp {
 namespace agents {
 
@@ -67,6 +71,33 @@ Answer PlannerEpisode::answer(const std::vector<MapPoint>& points, Cell robot) {
     return Answer{AnswerVerdict::InvalidPath, Action::Stay, "the path gives the robot no move from its cell"};
   }
   return Answer{AnswerVerdict::Move, *action, ""};
+}
+
+std::uint64_t PlannerEpisode::stateDigest(const std::vector<MapPoint>& following) const {
+  StateDigest digest;
+  for (const Cell c : {position_, previous_, goal_}) {
+    digest.add(c.x);
+    digest.add(c.y);
+  }
+  digest.add(changed_ ? 1 : 0);
+  digest.addBytes(known_.cells.data(), known_.cells.size());
+  follower_.addTo(&digest);
+  digest.add(static_cast<std::int64_t>(following.size()));
+  for (const MapPoint& p : following) {
+    digest.addBytes(&p.x, sizeof p.x);
+    digest.addBytes(&p.y, sizeof p.y);
+  }
+  return digest.value();
+}
+
+const char* PlannerEpisode::noPathKind(Cell robot, double robot_radius) const {
+  Grid map(frame_.width, frame_.height);
+  for (int i = 0; i < map.size(); ++i) map.setObstacle(map.cellAt(i), known_.cells[i] == kScanObstacle);
+  Grid space;
+  const Grid& motion = motionGrid(map, robot_radius, &space);
+  const bool route = motion.contains(robot) && motion.isFree(robot) && motion.isFree(goal_) &&
+                     isReachable(motion, robot, goal_);
+  return route ? diagnosis::kMissedRoute : diagnosis::kNoRoute;
 }
 
 }  // namespace agents

@@ -13,7 +13,8 @@ namespace ppp {
 namespace agents {
 
 EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::string& agent, int run,
-                            std::uint64_t seed, const EpisodeOutcome& outcome) {
+                            std::uint64_t seed, const EpisodeOutcome& outcome,
+                            const std::vector<std::uint64_t>& states, const char* reported_kind) {
   EpisodeResult r;
   r.set = set.name;
   r.problem = set.set.ids[problem];
@@ -27,6 +28,7 @@ EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::stri
   r.optimal_length = set.optimal[problem];
   r.soft_failure = isSoftFailure(r.passed, r.path_length, r.optimal_length, set.episode.soft_failure_ratio);
   r.reason = outcome.reason;
+  setDiagnosis(diagnoseRun(r.passed, r.soft_failure, r.reason, outcome.cells, states, reported_kind), &r);
   return r;
 }
 

@@ -19,6 +19,7 @@
 #include "ppp_core/rng.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_agents/episode_runner.hpp"
+#include "ppp_agents/prepared_set.hpp"
 #include "ppp_simulator/report/episode_animation.hpp"
 
 namespace ppp {
@@ -122,12 +123,23 @@ void runReplay(const ReplayFlags& f) {
             (animation.stride > 1 ? ", every " + std::to_string(animation.stride) + " steps" : std::string()) + ")";
   } else {
     outcome = agents::recordEpisode(problem, grid, config, options, f.seed);
-    writeProblemPng(problem, outcome.path, f.output);
     drawn = "path drawn in " + f.output;
   }
+  // The run as results.csv has it, diagnosis included.
+  ProblemSet single;
+  single.ids = {"replayed"};
+  single.problems = {problem};
+  const agents::PreparedSet set = agents::prepareSet("replay", std::move(single), options);
+  const Diagnosis diagnosis = agents::diagnosisOf(agents::episodeResult(set, 0, config.name, 0, f.seed, outcome));
+  const std::vector<Cell> cycle = cycleCells(diagnosis, outcome.cells);
+  if (!animated) writeProblemPng(problem, outcome.path, f.output, PictureOptions{}, cycle);
   std::cout << config.name << " with seed " << f.seed << ": " << (outcome.passed ? "passed" : "failed") << " ("
             << outcome.reason << ") after " << outcome.steps << " steps, " << outcome.bumps << " bumps, "
             << outcome.path_length << " cells moved; " << drawn << "\n";
+  if (*diagnosis.kind != '\0') {
+    std::cout << "diagnosis: " << describeDiagnosis(diagnosis, outcome.reason, static_cast<int>(cycle.size()))
+              << (cycle.empty() || animated ? "" : " (the cycle's cells are pink)") << "\n";
+  }
 }
 
 }  // namespace

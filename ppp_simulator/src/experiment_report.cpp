@@ -45,6 +45,8 @@ FailureExample replayedRun(const ExperimentConfig& config, const agents::Prepare
   example.ppp = ppp;
   example.path = outcome.path;
   example.reason = outcome.reason;
+  example.diagnosis = agents::diagnosisOf(row);
+  example.cycle = cycleCells(example.diagnosis, outcome.cells);
   example.animation_gif = run.gif;
   example.recorded = agents::isPlanner(agent_config);
   example.replay_flags = optionFlags(agents::agentPlayOptionSpecs(), agent_config, agents::AgentConfig{});

@@ -18,6 +18,10 @@ constexpr std::size_t kMaxResultsBytes = std::size_t{8} << 30;
 
 std::string headerLine() { return csvLine(agents::resultCsvHeader()); }
 
+/// The header of results files written before runs were diagnosed.
+constexpr std::string_view kUndiagnosedHeader =
+    "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,soft_failure";
+
 constexpr int kLinesPerStopCheck = 1 << 14;  // lines read or written between two questions to the StopCheck
 
 /// Parses complete lines, asking `stop` every kLinesPerStopCheck lines; returns the byte length of the text
@@ -33,6 +37,12 @@ std::size_t parseRows(const std::string& text, const std::string& path, std::vec
     const std::string_view content = std::string_view(text).substr(pos, end - pos);
     ++line;
     if (line == 1) {
+      if (content == kUndiagnosedHeader) {
+        throw ParseError(path, 1, "header",
+                         "written by an earlier PPP Lab, without the diagnosis columns; its runs cannot be resumed "
+                         "or read with diagnosed ones: write the experiment to a new output directory (or move "
+                         "this results.csv away to play every run again)");
+      }
       if (content != headerLine()) {
         throw ParseError(path, 1, "header", "not a PPP Lab results file; expected '" + headerLine() + "'");
       }

@@ -60,20 +60,9 @@ std::vector<agents::EpisodeResult> inProcess(const agents::AgentConfig& c, int r
   for (const agents::PreparedSet& set : smallSets()) {
     for (std::size_t p = 0; p < set.set.problems.size(); ++p) {
       for (int run = 0; run < runs; ++run) {
-        agents::EpisodeResult r;
-        r.set = set.name;
-        r.problem = set.set.ids[p];
-        r.agent = c.name;
-        r.run = run;
-        r.seed = runSeed(5, r.set, r.problem, r.agent, run);
-        const auto o = runner.run(set.set.problems[p], set.grids[p], *agent, r.seed);
-        r.passed = o.passed;
-        r.steps = o.steps;
-        r.bumps = o.bumps;
-        r.path_length = pathLength(o);
-        r.optimal_length = set.optimal[p];
-        r.reason = o.reason;
-        results.push_back(r);
+        const std::uint64_t seed = runSeed(5, set.name, set.set.ids[p], c.name, run);
+        const auto o = runner.run(set.set.problems[p], set.grids[p], *agent, seed);
+        results.push_back(agents::episodeResult(set, static_cast<int>(p), c.name, run, seed, o));
       }
     }
   }

@@ -69,9 +69,10 @@ cmp -s "$work/a/summary.csv" "$work/b/summary.csv" && pass || fail "summary afte
 # their new rows replace them: here every 997th run of the finished experiment is recorded as lost instead.
 cp -r "$work/a" "$work/l"
 awk 'NR == 1 || NR % 997 != 0' "$work/a/results.csv" > "$work/l/results.csv"
-awk -F, -v OFS=, 'NR > 1 && NR % 997 == 0 { $6 = 0; $11 = (NR % 2 ? "timeout" : "agent_lost"); print }' \
+awk -F, -v OFS=, 'NR > 1 && NR % 997 == 0 {
+  $6 = 0; $11 = (NR % 2 ? "timeout" : "agent_lost"); $12 = 0; $13 = "reported"; $14 = $15 = $16 = ""; print }' \
   "$work/a/results.csv" >> "$work/l/results.csv"
-lost=$(grep -c ",timeout,0$\|,agent_lost,0$" "$work/l/results.csv")
+lost=$(grep -c ",timeout,0,reported,,,$\|,agent_lost,0,reported,,,$" "$work/l/results.csv")
 expect_ok "resume with lost runs" "$ppp" experiment "$work/experiment.yaml" -o "$work/l"
 grep -q "playing again $lost runs lost to the agent link" "$work/err" "$work/out" && pass || \
   fail "no word about $lost lost runs: $(cat "$work/err")"

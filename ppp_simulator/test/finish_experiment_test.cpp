@@ -56,7 +56,9 @@ class FinishExperimentTest : public ::testing::Test {
   }
   /// The text of results.csv holding `rows`.
   static std::string textOf(const std::vector<agents::EpisodeResult>& rows) {
-    std::string text = "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,soft_failure\n";
+    std::string text =
+        "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,soft_failure,diagnosis,"
+        "diagnosis_step,loop_period,endless_step\n";
     for (const agents::EpisodeResult& r : rows) agents::appendCsvRow(r, &text);
     return text;
   }

@@ -28,26 +28,39 @@ agents::EpisodeResult run(const std::string& set, const std::string& problem, co
 /// `r` marked as a soft failure.
 agents::EpisodeResult soft(agents::EpisodeResult r) {
   r.soft_failure = true;
+  r.diagnosis = diagnosis::kDetour;
+  return r;
+}
+
+/// `r` diagnosed as `kind`; a loop with period 2, endless when `endless`.
+agents::EpisodeResult diagnosed(agents::EpisodeResult r, const char* kind, bool endless = false) {
+  r.diagnosis = kind;
+  r.diagnosis_step = 10;
+  if (std::string(kind) == diagnosis::kLoop) r.loop_period = 2;
+  if (endless) r.endless_step = 12;
   return r;
 }
 
 // By hand (orders: sets hard, easy, unused; agents random, astar):
-//   hard/h1:  random 2 of 3 (0.666667; one of the two a soft failure), astar 3 of 3
+//   hard/h1:  random 2 of 3 (0.666667; one of the two a soft failure, a detour; the failure an endless loop),
+//             astar 3 of 3
 //   hard/h2:  astar 1 of 1; random never ran it
-//   easy/p2:  random 1 of 4 (0.25, steps 10 + 300·3 → mean 227.5), astar 4 of 4 (8 steps each)
-//   easy/p10: random 0 of 1, astar 2 of 2
+//   easy/p2:  random 1 of 4 (0.25, steps 10 + 300·3 → mean 227.5; the failures a loop and two confined),
+//             astar 4 of 4 (8 steps each)
+//   easy/p10: random 0 of 1 (stuck), astar 2 of 2
 //   set rates (mean of per-PPP rates): hard/random 0.666667 (1 PPP), hard/astar 1 (2 PPPs),
 //   easy/random (0.25 + 0)/2 = 0.125 — not the pooled 1/5 = 0.2 — and easy/astar 1.
 std::vector<agents::EpisodeResult> handMadeResults() {
   return {
       run("easy", "p10", "astar", true, 12), run("hard", "h1", "random", true, 40),
-      run("easy", "p2", "random", false, 300), run("easy", "p2", "astar", true, 8),
+      diagnosed(run("easy", "p2", "random", false, 300), diagnosis::kLoop), run("easy", "p2", "astar", true, 8),
       run("hard", "h2", "astar", true, 20),   run("easy", "p2", "random", true, 10),
       run("hard", "h1", "astar", true, 18),   run("easy", "p2", "astar", true, 8),
-      run("hard", "h1", "random", false, 300), run("easy", "p10", "random", false, 300),
-      run("easy", "p2", "random", false, 300), run("hard", "h1", "astar", true, 18),
+      diagnosed(run("hard", "h1", "random", false, 300), diagnosis::kLoop, true),
+      diagnosed(run("easy", "p10", "random", false, 300), diagnosis::kStuck),
+      diagnosed(run("easy", "p2", "random", false, 300), diagnosis::kConfined), run("hard", "h1", "astar", true, 18),
       run("easy", "p2", "astar", true, 8),    soft(run("hard", "h1", "random", true, 60)),
-      run("easy", "p2", "random", false, 300), run("easy", "p10", "astar", true, 12),
+      diagnosed(run("easy", "p2", "random", false, 300), diagnosis::kConfined), run("easy", "p10", "astar", true, 12),
       run("hard", "h1", "astar", true, 18),   run("easy", "p2", "astar", true, 8),
   };
 }
@@ -176,18 +189,19 @@ TEST(WriteSummaryCsv, WritesProblemRowsThenSetRows) {
   const std::string path = dir + "/summary.csv";
   writeSummaryCsv(path, handMadeTable());
   EXPECT_EQ(readTextFile(path, 1 << 20),
-            "level,set,problem,agent,problems,runs,passes,pass_rate,soft_failures\n"
-            "problem,hard,h1,random,1,3,2,0.666667,1\n"
-            "problem,hard,h1,astar,1,3,3,1,0\n"
-            "problem,hard,h2,astar,1,1,1,1,0\n"
-            "problem,easy,p2,random,1,4,1,0.25,0\n"
-            "problem,easy,p2,astar,1,4,4,1,0\n"
-            "problem,easy,p10,random,1,1,0,0,0\n"
-            "problem,easy,p10,astar,1,2,2,1,0\n"
-            "set,hard,,random,1,3,2,0.666667,1\n"
-            "set,hard,,astar,2,4,4,1,0\n"
-            "set,easy,,random,2,5,1,0.125,0\n"
-            "set,easy,,astar,2,6,6,1,0\n");
+            "level,set,problem,agent,problems,runs,passes,pass_rate,soft_failures,stuck,loop,confined,wandering,"
+            "detour,missed_route,no_route,reported,endless_loops\n"
+            "problem,hard,h1,random,1,3,2,0.666667,1,0,1,0,0,1,0,0,0,1\n"
+            "problem,hard,h1,astar,1,3,3,1,0,0,0,0,0,0,0,0,0,0\n"
+            "problem,hard,h2,astar,1,1,1,1,0,0,0,0,0,0,0,0,0,0\n"
+            "problem,easy,p2,random,1,4,1,0.25,0,0,1,2,0,0,0,0,0,0\n"
+            "problem,easy,p2,astar,1,4,4,1,0,0,0,0,0,0,0,0,0,0\n"
+            "problem,easy,p10,random,1,1,0,0,0,1,0,0,0,0,0,0,0,0\n"
+            "problem,easy,p10,astar,1,2,2,1,0,0,0,0,0,0,0,0,0,0\n"
+            "set,hard,,random,1,3,2,0.666667,1,0,1,0,0,1,0,0,0,1\n"
+            "set,hard,,astar,2,4,4,1,0,0,0,0,0,0,0,0,0,0\n"
+            "set,easy,,random,2,5,1,0.125,0,1,1,2,0,0,0,0,0,0\n"
+            "set,easy,,astar,2,6,6,1,0,0,0,0,0,0,0,0,0,0\n");
   EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
   std::filesystem::remove_all(dir);
 }
@@ -197,7 +211,7 @@ TEST(WriteSummaryCsv, QuotesNamesWithCommas) {
   const std::string path = dir + "/summary.csv";
   writeSummaryCsv(path, computePassRates({run("a,b", "p", "x", true, 1)}, {"a,b"}, {"x"}));
   const std::string text = readTextFile(path, 1 << 20);
-  EXPECT_NE(text.find("problem,\"a,b\",p,x,1,1,1,1,0\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("problem,\"a,b\",p,x,1,1,1,1,0,0,0,0,0,0,0,0,0,0\n"), std::string::npos) << text;
   std::filesystem::remove_all(dir);
 }
 

@@ -29,6 +29,10 @@ agents::EpisodeResult row(int run, bool passed) {
   r.passed = passed;
   r.steps = 10 + run;
   r.reason = passed ? "goal_reached" : "budget_exhausted";
+  if (!passed) {
+    r.diagnosis = "wandering";
+    r.diagnosis_step = 5;
+  }
   return r;
 }
 
@@ -86,8 +90,9 @@ TEST_F(ResultsFileTest, AStopWhileReadingLeavesTheFileAsItWas) {
 TEST_F(ResultsFileTest, ForeignFilesAreRefused) {
   std::ofstream(path_) << "a,b,c\n1,2,3\n";
   EXPECT_THROW(ResultsFile{path_}, ParseError);
-  std::ofstream(path_) << "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,soft_failure\n"
-                       << "turns,ppp_000,random,zero,1,1,1,0,1,1,goal_reached,0\n";
+  std::ofstream(path_) << "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,soft_failure,"
+                          "diagnosis,diagnosis_step,loop_period,endless_step\n"
+                       << "turns,ppp_000,random,zero,1,1,1,0,1,1,goal_reached,0,,,,\n";
   try {
     ResultsFile file(path_);
     FAIL();
@@ -96,12 +101,31 @@ TEST_F(ResultsFileTest, ForeignFilesAreRefused) {
   }
 }
 
+TEST_F(ResultsFileTest, FilesWrittenBeforeRunsWereDiagnosedAreRefusedWithWhatToDo) {
+  const std::string old_text = "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,soft_failure\n"
+                               "turns,ppp_000,random,0,1,0,300,0,1,1,budget_exhausted,0\n";
+  std::ofstream(path_) << old_text;
+  try {
+    ResultsFile file(path_);
+    FAIL();
+  } catch (const ParseError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind(path_ + ":1: header: written by an earlier PPP Lab, without the diagnosis columns", 0), 0u)
+        << what;
+    EXPECT_NE(what.find("new output directory"), std::string::npos) << what;
+  }
+  std::ifstream in(path_);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), old_text);  // nothing appended or cut
+}
+
 /// Row `run` of the planner agent `mine`, with one action per step (E, E, S, ...).
 agents::EpisodeResult plannerRow(int run, int steps) {
   agents::EpisodeResult r = row(run, false);
   r.agent = "mine";
   r.steps = steps;
   r.reason = "no_path";
+  r.diagnosis = "missed_route";
+  r.diagnosis_step = -1;
   for (int i = 0; i < steps; ++i) r.actions.push_back(i % 3 == 2 ? Action::South : Action::East);
   return r;
 }
@@ -159,13 +183,15 @@ TEST_F(ResultsFileTest, PlannerMovesOfARunPlayedAgainAndBadLinesAreHandled) {
 }
 
 TEST(ResultsCsvText, RowsOfTextWithErrorsNamingTheGivenPath) {
-  const std::string header = "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,soft_failure\n";
-  const std::string good = "turns,ppp_000,random,0,1,1,1,0,1,1,goal_reached,0\n";
+  const std::string header =
+      "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,soft_failure,diagnosis,"
+      "diagnosis_step,loop_period,endless_step\n";
+  const std::string good = "turns,ppp_000,random,0,1,1,1,0,1,1,goal_reached,0,,,,\n";
   const auto rows = parseResultsCsv(header + good + "turns,ppp_000,ran", "out/results.csv");
   ASSERT_EQ(rows.size(), 1u);  // the half-written last line is left out
   EXPECT_EQ(rows[0].reason, "goal_reached");
   try {
-    parseResultsCsv(header + good + "turns,ppp_000,random,zero,1,1,1,0,1,1,goal_reached,0\n", "out/results.csv");
+    parseResultsCsv(header + good + "turns,ppp_000,random,zero,1,1,1,0,1,1,goal_reached,0,,,,\n", "out/results.csv");
     ADD_FAILURE() << "run zero accepted";
   } catch (const ParseError& e) {
     EXPECT_EQ(std::string(e.what()), "out/results.csv:3: run: expected a whole number, got 'zero'");
@@ -180,36 +206,72 @@ TEST(ResultsCsvText, LengthsAreWholeNumbersOrEightDecimals) {
   r.problem = "p";
   r.agent = "astar";
   r.reason = "goal_reached";
+  r.passed = true;
   r.path_length = 12;
   r.optimal_length = -1;
   std::string line;
   agents::appendCsvRow(r, &line);
-  EXPECT_EQ(line, "s,p,astar,0,0,0,0,0,12,-1,goal_reached,0\n");
+  EXPECT_EQ(line, "s,p,astar,0,0,1,0,0,12,-1,goal_reached,0,,,,\n");
   r.path_length = 3 + 2 * std::sqrt(2.0);
   r.optimal_length = 5.65685424949238;
   line.clear();
   agents::appendCsvRow(r, &line);
-  EXPECT_EQ(line, "s,p,astar,0,0,0,0,0,5.82842712,5.65685425,goal_reached,0\n");
+  EXPECT_EQ(line, "s,p,astar,0,0,1,0,0,5.82842712,5.65685425,goal_reached,0,,,,\n");
   const agents::EpisodeResult back = agents::parseCsvRow(line.substr(0, line.size() - 1), "x.csv", 2);
   EXPECT_NEAR(back.path_length, 5.82842712, 1e-12);
   // A length that rounds to a whole number at eight decimals is written as that number (the text of a row read
   // back and written again does not change).
   r.path_length = 7 + 1.5e-9;
   r.optimal_length = 2.999999996;
-  EXPECT_EQ(csvLine(agents::toCsvFields(r)), "s,p,astar,0,0,0,0,0,7,3,goal_reached,0");
-  EXPECT_THROW(agents::parseCsvRow("s,p,astar,0,0,0,0,0,7,-0.5,goal_reached,0", "x.csv", 2), ParseError);  // only -1 is negative
+  EXPECT_EQ(csvLine(agents::toCsvFields(r)), "s,p,astar,0,0,1,0,0,7,3,goal_reached,0,,,,");
+  EXPECT_THROW(agents::parseCsvRow("s,p,astar,0,0,1,0,0,7,-0.5,goal_reached,0,,,,", "x.csv", 2), ParseError);  // only -1 is negative
   std::string again;
   agents::appendCsvRow(back, &again);
   EXPECT_EQ(again, line);
-  for (const std::string bad : {"s,p,a,0,0,0,0,0,long,1,r,0", "s,p,a,0,0,0,0,0,1,nan,r,0", "s,p,a,0,0,0,0,0,-2,1,r,0"}) {
+  for (const std::string bad : {"s,p,a,0,0,0,0,0,long,1,r,0,stuck,0,,", "s,p,a,0,0,0,0,0,1,nan,r,0,stuck,0,,",
+                                "s,p,a,0,0,0,0,0,-2,1,r,0,stuck,0,,"}) {
     EXPECT_THROW(agents::parseCsvRow(bad, "x.csv", 3), ParseError) << bad;
   }
   try {
-    agents::parseCsvRow("s,p,a,0,0,0,0,0,1e99,1,r,0", "x.csv", 3);
+    agents::parseCsvRow("s,p,a,0,0,0,0,0,1e99,1,r,0,stuck,0,,", "x.csv", 3);
     ADD_FAILURE() << "1e99 accepted";
   } catch (const ParseError& e) {
     EXPECT_EQ(std::string(e.what()), "x.csv:3: path_length: expected a length, got '1e99'");
   }
+}
+
+TEST(ResultsCsvText, DiagnosisFieldsAreCheckedAgainstTheRunAndEachOther) {
+  const std::string head = "s,p,a,0,1,";
+  const auto error = [&](const std::string& tail) {
+    try {
+      agents::parseCsvRow(head + tail, "x.csv", 4);
+    } catch (const ParseError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  // Good rows: a clean pass, a detour, a loop proven endless, a planner's missed route.
+  EXPECT_EQ(error("1,9,0,9,9,goal_reached,0,,,,"), "accepted");
+  EXPECT_EQ(error("1,30,0,30,9,goal_reached,1,detour,,,"), "accepted");
+  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,loop,56,2,58"), "accepted");
+  EXPECT_EQ(error("0,12,0,12,9,no_path,0,missed_route,,,"), "accepted");
+  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,spiral,56,,"),
+            "x.csv:4: diagnosis: expected one of stuck, loop, confined, wandering, detour, missed_route, no_route, "
+            "reported or nothing, got 'spiral'");
+  EXPECT_EQ(error("1,9,0,9,9,goal_reached,0,loop,0,2,"),
+            "x.csv:4: diagnosis: 'loop' does not fit pass 1, soft_failure 0 (a clean pass has none, a soft failure is "
+            "a detour)");
+  EXPECT_NE(error("0,300,0,80,9,budget_exhausted,0,,,,").find("diagnosis: '' does not fit pass 0"), std::string::npos);
+  EXPECT_NE(error("1,30,0,30,9,goal_reached,1,loop,0,2,").find("a soft failure is a detour"), std::string::npos);
+  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,loop,56,,"),
+            "x.csv:4: loop_period: a loop has a period of at least 2, and only a loop has one");
+  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,stuck,56,2,"),
+            "x.csv:4: loop_period: a loop has a period of at least 2, and only a loop has one");
+  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,confined,56,,60"), "x.csv:4: endless_step: only a loop is endless");
+  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,stuck,-1,,"),
+            "x.csv:4: diagnosis_step: expected a whole number of at least 0, got '-1'");
+  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,stuck,301,,"),
+            "x.csv:4: diagnosis_step: a step after the run's last (300)");
 }
 
 TEST_F(ResultsFileTest, RewriteKeepsTheGivenOrder) {
@@ -299,6 +361,12 @@ TEST(ResultsCsvText, RowsWrittenAndParsedInOnePassMatchTheFieldByFieldWay) {
     r.path_length = 12;
     r.optimal_length = 38;
     r.reason = name;
+    if (!r.passed) {  // a loop proven endless, with every diagnosis field at its extreme
+      r.diagnosis = "loop";
+      r.diagnosis_step = 0;
+      r.loop_period = 2147483647;
+      r.endless_step = 300;
+    }
     rows.push_back(r);
   }
   for (const agents::EpisodeResult& r : rows) {

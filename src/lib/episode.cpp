@@ -31,6 +31,8 @@ Episode::Episode(const Problem& problem, const Grid& grid, const SensorModel& se
       record_path_(record_path),
       position_(problem.start) {
   if (record_path_) outcome_.path.push_back(position_);
+  outcome_.cells.reserve(static_cast<std::size_t>(budget_.actionLimit()) + 1);
+  outcome_.cells.push_back(position_);
 }
 
 Scan Episode::scan() const {
@@ -44,6 +46,7 @@ void Episode::apply(Action action) {
   bool counts = action != Action::Stay || budget_.stays_count;
   const bool diagonal = isDiagonal(action);
   if (diagonal && connectivity_ != Connectivity::Eight) {
+    outcome_.cells.push_back(position_);
     fail(reason::kInvalidAction);
     return;
   }
@@ -62,6 +65,7 @@ void Episode::apply(Action action) {
       counts = budget_.bumps_count;
     }
   }
+  outcome_.cells.push_back(position_);
   if (counts) ++counted_;
   if (position_ == problem_->goal) {
     outcome_.passed = true;

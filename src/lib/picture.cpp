@@ -28,6 +28,18 @@ void checkPictureSize(const Problem& problem, const PictureOptions& options) {
   }
 }
 
+/// @throws InvalidArgument naming `what` when a cell of `cells` is off the problem's grid.
+void checkOnGrid(const Problem& problem, const std::vector<Cell>& cells, const char* what) {
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const Cell c = cells[i];
+    if (c.x < 0 || c.y < 0 || c.x >= problem.width || c.y >= problem.height) {
+      throw InvalidArgument(what, "step " + std::to_string(i) + " (" + std::to_string(c.x) + ", " +
+                                      std::to_string(c.y) + ") is outside the " + std::to_string(problem.width) +
+                                      "x" + std::to_string(problem.height) + " grid");
+    }
+  }
+}
+
 }  // namespace
 
 void PictureOptions::validate() const {
@@ -58,18 +70,12 @@ Pixel cellCentre(Cell c, const PictureOptions& options) {
 }
 
 std::vector<std::uint8_t> renderProblemRgb(const Problem& problem, const std::vector<Cell>& path,
-                                           const PictureOptions& options) {
+                                           const PictureOptions& options, const std::vector<Cell>& marked) {
   options.validate();
   validateProblem(problem);
   checkPictureSize(problem, options);
-  for (std::size_t i = 0; i < path.size(); ++i) {
-    const Cell c = path[i];
-    if (c.x < 0 || c.y < 0 || c.x >= problem.width || c.y >= problem.height) {
-      throw InvalidArgument("path", "step " + std::to_string(i) + " (" + std::to_string(c.x) + ", " +
-                                        std::to_string(c.y) + ") is outside the " + std::to_string(problem.width) +
-                                        "x" + std::to_string(problem.height) + " grid");
-    }
-  }
+  checkOnGrid(problem, path, "path");
+  checkOnGrid(problem, marked, "marked");
   const Grid grid = decodeGrid(problem);
   Canvas<Rgb> canvas(pictureWidth(problem.width, options), pictureHeight(problem.height, options),
                      options.grid_lines ? kGridLineColour : kFreeColour);
@@ -79,6 +85,7 @@ std::vector<std::uint8_t> renderProblemRgb(const Problem& problem, const std::ve
       canvas.fillCell(c, grid.isObstacle(c) ? kObstacleColour : kFreeColour, options);
     }
   }
+  for (const Cell c : marked) canvas.fillCell(c, kMarkedColour, options);
   const int thickness = std::max(1, options.cell_pixels / 8);
   for (std::size_t i = 1; i < path.size(); ++i) {
     canvas.line(cellCentre(path[i - 1], options), cellCentre(path[i], options), thickness, kPathColour);
@@ -124,8 +131,8 @@ std::string encodePng(const std::vector<std::uint8_t>& rgb, int width, int heigh
 }
 
 void writeProblemPng(const Problem& problem, const std::vector<Cell>& path, const std::string& png_path,
-                     const PictureOptions& options) {
-  const std::vector<std::uint8_t> rgb = renderProblemRgb(problem, path, options);
+                     const PictureOptions& options, const std::vector<Cell>& marked) {
+  const std::vector<std::uint8_t> rgb = renderProblemRgb(problem, path, options, marked);
   writeFileAtomically(png_path,
                       encodePng(rgb, pictureWidth(problem.width, options), pictureHeight(problem.height, options)));
 }

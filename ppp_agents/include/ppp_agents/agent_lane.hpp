@@ -54,7 +54,9 @@ class AgentLane {
   /// Applies a batch of moves. An active episode with no move gets `missing_reason`; a move for the wrong step
   /// or with an unknown action fails its episode with reason::kInvalidAction, a move with a failure fails it
   /// with that reason, and a planner agent's move that bumps a robot with a body (robot_radius) fails it with
-  /// reason::kCollision, as a real robot's run would end; moves for unknown episodes are ignored. Returns the results of the episodes that ended.
+  /// reason::kCollision, as a real robot's run would end; moves for unknown episodes are ignored. A planner's
+  /// decision states (MoveReply::state) are kept to prove its loops endless, unless its sensor is noisy (the
+  /// next scan is then not a function of the state). Returns the results of the episodes that ended.
   std::vector<EpisodeResult> answer(const std::vector<MoveReply>& moves, const char* missing_reason);
   /// A batch went unanswered: its episodes fail with `reason`, and once `give_up_after` batches in a row went
   /// unanswered every remaining run fails with it too (a silent agent does not hold the experiment up).
@@ -79,8 +81,11 @@ class AgentLane {
     Episode episode;
     bool started;
     std::vector<Action> actions;  // a planner's run: its actions so far
+    std::vector<std::uint64_t> states;  // the agent's decision state per action, when it proves loops
+    const char* reported_kind;          // the diagnosis the agent gave for its own ending, if any
   };
-  EpisodeResult result(const Work& work, std::uint64_t seed, const EpisodeOutcome& outcome) const;
+  EpisodeResult result(const Work& work, std::uint64_t seed, const EpisodeOutcome& outcome,
+                       const std::vector<std::uint64_t>& states = {}, const char* reported_kind = nullptr) const;
 
   AgentConfig config_;
   EpisodeOptions options_;
@@ -90,6 +95,7 @@ class AgentLane {
   bool reads_window_;
   bool collisions_end_;  // a planner driving a robot with a body: a bump is a collision that ends the run
   bool keeps_actions_;   // a planner: its runs cannot be replayed, so each result carries its actions
+  bool keeps_states_;    // a planner without sensor noise: its decision states can prove a loop endless
   SensorModel sensor_;
   std::deque<Work> queue_;
   std::vector<Active> active_;

@@ -7,6 +7,7 @@
 
 #include "ppp_agents/protocol/batch_types.hpp"
 #include "ppp_core/action.hpp"
+#include "ppp_core/diagnosis.hpp"
 
 namespace ppp {
 namespace agents {
@@ -26,17 +27,28 @@ struct EpisodeResult {
                               ///< length under connectivity 8.
   std::string reason;       ///< One of the reason:: constants.
   bool soft_failure = false;  ///< Passed, but on a path longer than the soft failure ratio x the optimal length.
+  std::string diagnosis;    ///< What kind of failure (a diagnosis:: constant), "" for a clean pass.
+  int diagnosis_step = -1;  ///< Diagnosis::step (-1: none; an empty field).
+  int loop_period = 0;      ///< Diagnosis::period (0: not a loop; an empty field).
+  int endless_step = -1;    ///< Diagnosis::endless_step (-1: not proven endless; an empty field).
   /// Planner agents played by an AgentLane: every action of the run in order (not in results.csv; the simulator
   /// keeps them in planner_moves.csv so the report can show the run); empty otherwise.
   std::vector<Action> actions;
 };
 
 /// The results.csv header: set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,
-/// soft_failure.
+/// soft_failure,diagnosis,diagnosis_step,loop_period,endless_step.
 const std::vector<std::string>& resultCsvHeader();
 
-/// A result as CSV fields in header order (pass and soft_failure as 1/0).
+/// A result as CSV fields in header order (pass and soft_failure as 1/0; a missing diagnosis step, period or
+/// endless step as an empty field).
 std::vector<std::string> toCsvFields(const EpisodeResult& result);
+
+/// Sets the diagnosis fields of `result` to `d`.
+void setDiagnosis(const Diagnosis& d, EpisodeResult* result);
+
+/// The diagnosis fields of `result`.
+Diagnosis diagnosisOf(const EpisodeResult& result);
 
 /// Parses CSV fields in header order. @throws ParseError naming `source`, `line` and the field.
 EpisodeResult fromCsvFields(const std::vector<std::string>& fields, const std::string& source, int line);

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "ppp_agents/state_digest.hpp"
 #include "ppp_core/action.hpp"
 #include "ppp_core/grid.hpp"
 #include "ppp_core/map_frame.hpp"
@@ -38,6 +39,8 @@ class PathFollower {
   std::optional<Action> next(Cell robot, const KnownMap& known);
   /// Forgets the path.
   void clear();
+  /// Adds the follower's whole state (the walk and the robot's place on it) to `digest`.
+  void addTo(StateDigest* digest) const;
   /// Sets the move model (4 or 8) of the moves next() gives; 4 until set.
   void setConnectivity(Connectivity connectivity) { connectivity_ = connectivity; }
 

@@ -53,6 +53,15 @@ class PlannerEpisode {
   bool fits(const std::vector<MapPoint>& points, Cell robot) const;
   /// Judges the planner's answer to a request; a usable path is followed from now on.
   Answer answer(const std::vector<MapPoint>& points, Cell robot);
+  /// A digest of the episode's whole decision state (the robot's cell and the one before, whether the last scan
+  /// changed what it knows, what it knows, the path it follows and its place on it) and `following`, the
+  /// waypoints of the planner's last answer: equal digests at two steps mean the bridge, and a planner that is
+  /// a function of its input (pose, map, goal), will act the same from both.
+  std::uint64_t stateDigest(const std::vector<MapPoint>& following) const;
+  /// For a planner that answered "no path" with the robot at `robot`: diagnosis::kMissedRoute when the map it
+  /// was given had a route to the goal for a robot of `robot_radius` cells through cells not known to be
+  /// obstacles, else diagnosis::kNoRoute.
+  const char* noPathKind(Cell robot, double robot_radius) const;
   /// What the robot knows: kScanFree / kScanObstacle / kScanUnknown per cell.
   const KnownMap& known() const { return known_; }
   /// The map's frame (size and resolution).

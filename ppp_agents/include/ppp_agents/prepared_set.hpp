@@ -45,9 +45,12 @@ inline const WindowAtlas* windowsOf(const PreparedSet& set, int problem) {
   return windows ? &*windows : nullptr;
 }
 
-/// The results.csv row of one run of `agent` on PPP `problem` of `set` (a soft failure under its rules).
+/// The results.csv row of one run of `agent` on PPP `problem` of `set` (a soft failure under its rules), with
+/// its diagnosis (diagnoseRun() of the outcome's cells, the agent's decision `states` when it reported them, and
+/// the `reported_kind` it gave for its own ending).
 EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::string& agent, int run,
-                            std::uint64_t seed, const EpisodeOutcome& outcome);
+                            std::uint64_t seed, const EpisodeOutcome& outcome,
+                            const std::vector<std::uint64_t>& states = {}, const char* reported_kind = nullptr);
 
 /// A set ready to play under `episode`'s rules: its grids, optima (optimumOf()), budgets and window atlases at
 /// the sensor range.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "ppp_core/diagnosis.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/sensor.hpp"
 
@@ -164,7 +165,13 @@ ppp_msgs::MoveBatch encodeMoves(const std::string& agent, std::uint32_t batch, c
     ppp_msgs::EpisodeFailure failure;
     failure.episode = moves[i].episode;
     failure.reason = moves[i].failure;
+    if (moves[i].diagnosis != nullptr) failure.diagnosis = moves[i].diagnosis;
     m.failures.push_back(failure);
+  }
+  const bool states = std::any_of(moves.begin(), moves.end(), [](const MoveReply& r) { return r.state != 0; });
+  if (states) {
+    m.states.resize(moves.size());
+    for (std::size_t i = 0; i < moves.size(); ++i) m.states[i] = moves[i].state;
   }
   return m;
 }
@@ -180,14 +187,34 @@ DecodedMoves decodeMoves(const ppp_msgs::MoveBatch& message) {
   }
   decoded.moves.resize(n);
   for (std::size_t i = 0; i < n; ++i) decoded.moves[i] = {message.episodes[i], message.steps[i], message.actions[i]};
+  if (message.states.size() == n) {
+    for (std::size_t i = 0; i < n; ++i) decoded.moves[i].state = message.states[i];
+  } else if (!message.states.empty()) {
+    decoded.fault = "a MoveBatch with " + std::to_string(message.states.size()) + " states for " +
+                    std::to_string(n) + " moves: its states are ignored";
+  }
   for (const ppp_msgs::EpisodeFailure& f : message.failures) {
     const char* why = reason::agentReportedReason(f.reason);
     if (why == nullptr) {
       decoded.fault = "an episode given up for an unknown reason '" + f.reason + "': recorded as invalid_action";
       why = reason::kInvalidAction;
     }
+    const char* kind = nullptr;
+    if (!f.diagnosis.empty()) {
+      kind = diagnosis::kindNamed(f.diagnosis);
+      const bool fits = f.reason == reason::kNoPath &&
+                        (f.diagnosis == diagnosis::kMissedRoute || f.diagnosis == diagnosis::kNoRoute);
+      if (!fits) {
+        decoded.fault = "a " + f.reason + " failure with the diagnosis '" + f.diagnosis +
+                        "' (only no_path takes one: missed_route or no_route): the diagnosis is ignored";
+        kind = nullptr;
+      }
+    }
     for (MoveReply& m : decoded.moves) {
-      if (m.episode == f.episode) m.failure = why;
+      if (m.episode == f.episode) {
+        m.failure = why;
+        m.diagnosis = kind;
+      }
     }
   }
   return decoded;

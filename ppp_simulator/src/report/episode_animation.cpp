@@ -10,6 +10,7 @@
 #include "ppp_agents/agent_memory.hpp"
 #include "ppp_agents/agent_registry.hpp"
 #include "ppp_core/canvas.hpp"
+#include "ppp_core/diagnosis.hpp"
 #include "ppp_core/episode_reason.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/footprint.hpp"
@@ -35,11 +36,13 @@ enum Ink : std::uint8_t {
   kTrailInk,
   kAgentInk,
   kBumpInk,
+  kCycleInk,
 };
 
 const std::vector<Rgb> kPalette = {kGridLineColour, kFreeColour,  kObstacleColour, kUnsensedColour,
                                    Rgb{128, 128, 136}, kScannedColour, Rgb{235, 180, 40}, kStartColour,
-                                   kGoalColour,     kPathColour,  kAgentColour,    kBumpColour};
+                                   kGoalColour,     kPathColour,  kAgentColour,    kBumpColour,
+                                   kMarkedColour};
 
 void checkMilliseconds(int ms, const char* name) {
   if (ms < 20 || ms > 10000 || ms % 10 != 0) {
@@ -60,7 +63,26 @@ struct FrameState {
   const std::vector<Bump>* bumps;                   // the distinct bumps so far
   const Scan* scan;
   const agents::AgentMemory* memory;  // null: the agent knows the map
+  const std::vector<bool>* cycle;     // per cell, whether it is on the loop's cycle (null: none shown)
 };
+
+/// A loop's cycle, to be marked from the step it began.
+struct CycleMarks {
+  std::vector<bool> cells;  // per cell (row-major), on the cycle; empty when the run is no loop
+  int from = 0;             // the loop's first step
+};
+
+/// The cycle of `outcome` on `problem` when the run ended in a loop (diagnoseRun()).
+CycleMarks cycleMarks(const Problem& problem, const EpisodeOutcome& outcome) {
+  CycleMarks marks;
+  const Diagnosis d = diagnoseRun(outcome.passed, false, outcome.reason, outcome.cells);
+  const std::vector<Cell> cycle = cycleCells(d, outcome.cells);
+  if (cycle.empty()) return marks;
+  marks.cells.assign(static_cast<std::size_t>(problem.width) * problem.height, false);
+  for (const Cell c : cycle) marks.cells[static_cast<std::size_t>(c.y) * problem.width + c.x] = true;
+  marks.from = d.step;
+  return marks;
+}
 
 /// Records each distinct item once, in the order first seen; `key` maps an item to a number below `keys`.
 template <typename Item>
@@ -119,6 +141,8 @@ class FramePainter {
         const int range = s.scan->range();
         if (!grid_.isObstacle(c) && std::abs(dx) <= range && std::abs(dy) <= range && s.scan->at(dx, dy) != kScanUnknown) {
           ink = kScannedInk;
+        } else if (s.cycle != nullptr && (*s.cycle)[static_cast<std::size_t>(y) * problem_.width + x]) {
+          ink = kCycleInk;
         }
         canvas.fillCell(c, ink, picture_);
       }
@@ -188,7 +212,8 @@ using NextAction = std::function<std::optional<Action>(const Scan&)>;
 /// steps; as animateEpisode otherwise.
 EpisodeAnimation drawEpisode(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
                              const EpisodeOptions& options, std::uint64_t run_seed, int steps, const NextAction& next,
-                             const char* end_reason, const AnimationOptions& animation, const StopCheck& stop) {
+                             const char* end_reason, const AnimationOptions& animation, const CycleMarks& marks,
+                             const StopCheck& stop) {
   const FramePainter painter(problem, grid, cellPixels(problem, animation));
   const agents::EpisodeRunner runner(config, options);
   EpisodeAnimation result;
@@ -225,7 +250,9 @@ EpisodeAnimation drawEpisode(const Problem& problem, const Grid& grid, const age
     if (memory != nullptr) memory->update(scan);  // the last one only for the picture: the agent never acts on it
     if (last || episode.step() % result.stride == 0) {
       stopIfAsked(stop);
-      const FrameState state{position, &trail.items(), &bumps.items(), &scan, memory.get()};
+      const bool looping = !marks.cells.empty() && episode.step() >= marks.from;
+      const FrameState state{position, &trail.items(), &bumps.items(), &scan, memory.get(),
+                             looping ? &marks.cells : nullptr};
       gif.addFrame(painter.paint(state), (last ? animation.last_frame_ms : animation.frame_ms) / 10);
     }
     if (last) break;
@@ -256,14 +283,15 @@ EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const 
   animation.validate();
   agents::EpisodeRunner runner(config, options);
   std::unique_ptr<agents::Agent> agent = agents::makeAgent(config);
-  // A first run counts the steps, so the frames can be spread over the episode before any is drawn.
-  const int steps = runner.run(problem, grid, *agent, run_seed).steps;
+  // A first run counts the steps, so the frames can be spread over the episode before any is drawn, and finds a
+  // loop's cycle, marked from the step the loop began.
+  const EpisodeOutcome first = runner.run(problem, grid, *agent, run_seed);
   Grid space;
   agent->reset(agents::episodeInfo(problem, grid, config, run_seed, options.connectivity,
                                    &motionGrid(grid, options.robot_radius, &space)));
-  return drawEpisode(problem, grid, config, options, run_seed, steps,
+  return drawEpisode(problem, grid, config, options, run_seed, first.steps,
                      [&agent](const Scan& scan) { return std::optional<Action>(agent->act(scan)); }, nullptr,
-                     animation, stop);
+                     animation, cycleMarks(problem, first), stop);
 }
 
 EpisodeAnimation animateRecordedEpisode(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
@@ -279,11 +307,18 @@ EpisodeAnimation animateRecordedEpisode(const Problem& problem, const Grid& grid
     end_reason = nullptr;
   }
   std::size_t next = 0;
-  return drawEpisode(problem, grid, config, options, run_seed, static_cast<int>(actions.size()),
-                     [&](const Scan&) {
-                       return next < actions.size() ? std::optional<Action>(actions[next++]) : std::nullopt;
-                     },
-                     end_reason, animation, stop);
+  const NextAction recorded = [&](const Scan&) {
+    return next < actions.size() ? std::optional<Action>(actions[next++]) : std::nullopt;
+  };
+  const int steps = static_cast<int>(actions.size());
+  // A first play, drawn in two frames, finds a loop's cycle (as animateEpisode's first run does).
+  AnimationOptions sketch = animation;
+  sketch.max_frames = 2;
+  const EpisodeOutcome first =
+      drawEpisode(problem, grid, config, options, run_seed, steps, recorded, end_reason, sketch, {}, stop).outcome;
+  next = 0;
+  return drawEpisode(problem, grid, config, options, run_seed, steps, recorded, end_reason, animation,
+                     cycleMarks(problem, first), stop);
 }
 
 }  // namespace simulator

@@ -80,10 +80,37 @@ struct Tally {
   int runs = 0;
   int passes = 0;
   int soft_failures = 0;
+  DiagnosisCounts diagnoses;
   double steps = 0;
 };
 
+/// summary.csv's diagnosis fields of `counts`.
+std::vector<std::string> diagnosisFields(const DiagnosisCounts& counts) {
+  std::vector<std::string> fields;
+  for (const int n : counts.kinds) fields.push_back(std::to_string(n));
+  fields.push_back(std::to_string(counts.endless));
+  return fields;
+}
+
+/// A summary.csv line: `fields`, then the diagnosis counts.
+std::string summaryLine(std::vector<std::string> fields, const DiagnosisCounts& counts) {
+  for (std::string& f : diagnosisFields(counts)) fields.push_back(std::move(f));
+  return csvLine(fields) + "\n";
+}
+
 }  // namespace
+
+void DiagnosisCounts::add(const agents::EpisodeResult& result) {
+  if (result.diagnosis.empty()) return;
+  const int index = diagnosis::kindIndex(result.diagnosis);
+  if (index >= 0) ++kinds[static_cast<std::size_t>(index)];
+  if (result.endless_step >= 0) ++endless;
+}
+
+void DiagnosisCounts::add(const DiagnosisCounts& other) {
+  for (std::size_t i = 0; i < kinds.size(); ++i) kinds[i] += other.kinds[i];
+  endless += other.endless;
+}
 
 double ProblemPassRate::rate() const { return runs > 0 ? static_cast<double>(passes) / runs : 0.0; }
 
@@ -119,6 +146,7 @@ std::vector<ResultGroup> groupResults(const std::vector<agents::EpisodeResult>& 
     ++group.runs;
     if (r.passed) ++group.passes;
     if (r.soft_failure) ++group.soft_failures;
+    group.diagnoses.add(r);
     group.steps += r.steps;
     if (!r.passed && (group.first_fail == nullptr || r.run < group.first_fail->run)) group.first_fail = &r;
   }
@@ -152,6 +180,7 @@ PassRateTable computeGroupedPassRates(const std::vector<ResultGroup>& groups, co
     tally.runs += group.runs;
     tally.passes += group.passes;
     tally.soft_failures += group.soft_failures;
+    tally.diagnoses.add(group.diagnoses);
     tally.steps += group.steps;
   }
 
@@ -169,6 +198,7 @@ PassRateTable computeGroupedPassRates(const std::vector<ResultGroup>& groups, co
     row.runs = tally.runs;
     row.passes = tally.passes;
     row.soft_failures = tally.soft_failures;
+    row.diagnoses = tally.diagnoses;
     row.mean_steps = tally.steps / tally.runs;
     const std::size_t slot = static_cast<std::size_t>(key.set) * agent_order.size() + static_cast<std::size_t>(key.agent);
     SetPassRate& sum = sums[slot];
@@ -176,6 +206,7 @@ PassRateTable computeGroupedPassRates(const std::vector<ResultGroup>& groups, co
     sum.runs += row.runs;
     sum.passes += row.passes;
     sum.soft_failures += row.soft_failures;
+    sum.diagnoses.add(row.diagnoses);
     sum.mean_rate += row.rate();
     table.per_problem.push_back(std::move(row));
   }
@@ -193,22 +224,27 @@ PassRateTable computeGroupedPassRates(const std::vector<ResultGroup>& groups, co
 }
 
 const std::vector<std::string>& summaryCsvHeader() {
-  static const std::vector<std::string> header = {"level",  "set",    "problem",   "agent",        "problems",
-                                                  "runs",   "passes", "pass_rate", "soft_failures"};
+  static const std::vector<std::string> header = [] {
+    std::vector<std::string> h = {"level", "set", "problem", "agent", "problems", "runs", "passes", "pass_rate",
+                                  "soft_failures"};
+    for (const char* kind : diagnosis::kKinds) h.push_back(kind);
+    h.push_back("endless_loops");
+    return h;
+  }();
   return header;
 }
 
 void writeSummaryCsv(const std::string& path, const PassRateTable& table) {
   std::string text = csvLine(summaryCsvHeader()) + "\n";
   for (const ProblemPassRate& row : table.per_problem) {
-    text += csvLine({"problem", row.set, row.problem, row.agent, "1", std::to_string(row.runs),
-                     std::to_string(row.passes), formatNumber(row.rate()), std::to_string(row.soft_failures)}) +
-            "\n";
+    text += summaryLine({"problem", row.set, row.problem, row.agent, "1", std::to_string(row.runs),
+                         std::to_string(row.passes), formatNumber(row.rate()), std::to_string(row.soft_failures)},
+                        row.diagnoses);
   }
   for (const SetPassRate& row : table.per_set) {
-    text += csvLine({"set", row.set, "", row.agent, std::to_string(row.problems), std::to_string(row.runs),
-                     std::to_string(row.passes), formatNumber(row.mean_rate), std::to_string(row.soft_failures)}) +
-            "\n";
+    text += summaryLine({"set", row.set, "", row.agent, std::to_string(row.problems), std::to_string(row.runs),
+                         std::to_string(row.passes), formatNumber(row.mean_rate), std::to_string(row.soft_failures)},
+                        row.diagnoses);
   }
   writeFileAtomically(path, text);
 }

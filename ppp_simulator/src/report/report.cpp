@@ -270,7 +270,7 @@ std::vector<Picture> makePictures(const std::vector<FailureExample>& failures, c
     Picture picture;
     try {
       const PictureOptions options = pictureOptions(failure.ppp);
-      const std::vector<std::uint8_t> rgb = renderProblemRgb(failure.ppp, failure.path, options);
+      const std::vector<std::uint8_t> rgb = renderProblemRgb(failure.ppp, failure.path, options, failure.cycle);
       picture.width = pictureWidth(failure.ppp.width, options);
       picture.height = pictureHeight(failure.ppp.height, options);
       picture.png = encodePng(rgb, picture.width, picture.height);
@@ -583,6 +583,8 @@ void failureEntry(const FailureExample& failure, const Picture& picture, const s
   const std::string alt = "PPP " + failure.problem + " of set " + failure.set + " with the path of " +
                           failure.agent + " in run " + std::to_string(failure.run);
   const std::string reason = reasonText(failure.reason);
+  std::string diagnosis = describeDiagnosis(failure.diagnosis, failure.reason, static_cast<int>(failure.cycle.size()));
+  if (!failure.cycle.empty()) diagnosis += " (the cycle's cells are pink)";
   const std::string grid = std::to_string(failure.ppp.width) + "\xC3\x97" + std::to_string(failure.ppp.height) +
                            ", start " + cellText(failure.ppp.start) + ", goal " + cellText(failure.ppp.goal) +
                            ", " + std::to_string(decodeGrid(failure.ppp).obstacleCount()) + " obstacle cells";
@@ -596,6 +598,7 @@ void failureEntry(const FailureExample& failure, const Picture& picture, const s
   out->md += "- agent " + mdCode(failure.agent, false) + ", run " + std::to_string(failure.run) + ", seed " +
              mdCode(std::to_string(failure.seed), false) + "\n";
   out->md += "- reason " + mdCode(failure.reason, false) + (reason.empty() ? "" : ": " + mdText(reason)) + "\n";
+  if (!diagnosis.empty()) out->md += "- diagnosis " + mdText(diagnosis) + "\n";
   out->md += "- grid " + mdText(grid) + "\n";
   out->md += "- path " + mdText(pathText(failure)) + "\n";
   out->md += "- replay: " + mdCode(command, false) + "\n\n";
@@ -617,6 +620,7 @@ void failureEntry(const FailureExample& failure, const Picture& picture, const s
                ", seed <code>" + std::to_string(failure.seed) + "</code></li>\n";
   out->html += "<li>reason <code>" + escapeMarkup(failure.reason) + "</code>" +
                (reason.empty() ? "" : ": " + escapeMarkup(reason)) + "</li>\n";
+  if (!diagnosis.empty()) out->html += "<li>diagnosis " + escapeMarkup(diagnosis) + "</li>\n";
   out->html += "<li>grid " + escapeMarkup(grid) + "</li>\n";
   out->html += "<li>path " + escapeMarkup(pathText(failure)) + "</li>\n";
   out->html += "<li>picture <code>" + escapeMarkup(picture.png_file) + "</code>" +
@@ -643,6 +647,63 @@ void failureSection(const ReportInput& input, const std::vector<Picture>& pictur
   for (std::size_t i = 0; i < input.failures.size(); ++i) {
     failureEntry(input.failures[i], pictures[i], std::to_string(i + 1) + ". ", out);
   }
+}
+
+/// Per agent and set, how many runs of each diagnosis kind.
+void diagnosisSection(const PassRateTable& rates, Text* out) {
+  std::vector<const SetPassRate*> rows;
+  DiagnosisCounts total;
+  for (const SetPassRate& row : rates.per_set) {
+    DiagnosisCounts none;
+    if (row.diagnoses.kinds == none.kinds) continue;
+    rows.push_back(&row);
+    total.add(row.diagnoses);
+  }
+  openSection("Diagnoses",
+              rows.empty() ? "No run failed or made a detour."
+                           : "Per agent and set, how its failed runs (and soft failures, as detours) ended, in "
+                             "runs. stuck: it stopped moving; loop: it repeated a cycle of cells to the end (endless: "
+                             "a planner's whole state recurred, so it can never leave); confined: it moved only over "
+                             "cells it had stood on before; wandering: it was still reaching new cells when the "
+                             "budget ran out; missed_route / no_route: a planner's \"no path\" when its map had a "
+                             "route / had none; reported: the reason column says it (a collision, a timeout, ...). "
+                             "results.csv has each run's diagnosis, the step it began and a loop's period.",
+              out);
+  if (rows.empty()) return;
+  std::vector<int> kinds;  // the kinds some run has
+  for (int k = 0; k < diagnosis::kKindCount; ++k) {
+    if (total.kinds[static_cast<std::size_t>(k)] > 0) kinds.push_back(k);
+  }
+  out->md += "| Agent | Set |";
+  std::string align = "|:---|:---|";
+  out->html += "<table>\n<thead><tr><th>Agent</th><th>Set</th>";
+  for (const int k : kinds) {
+    const std::string kind = diagnosis::kKinds[k];
+    const std::string heading = kind == diagnosis::kLoop ? "loop (endless)" : kind;
+    out->md += " " + heading + " |";
+    align += "---:|";
+    out->html += "<th class=\"num\">" + escapeMarkup(heading) + "</th>";
+  }
+  out->md += "\n" + align + "\n";
+  out->html += "</tr></thead>\n<tbody>\n";
+  for (const SetPassRate* row : rows) {
+    out->md += "| " + mdCode(row->agent, true) + " | " + mdCode(row->set, true) + " |";
+    out->html += "<tr><td><code>" + escapeMarkup(row->agent) + "</code></td><td><code>" + escapeMarkup(row->set) +
+                 "</code></td>";
+    for (const int k : kinds) {
+      const int n = row->diagnoses.kinds[static_cast<std::size_t>(k)];
+      std::string cell = n == 0 ? "\xE2\x80\x94" : std::to_string(n);
+      if (std::string(diagnosis::kKinds[k]) == diagnosis::kLoop && n > 0) {
+        cell += " (" + std::to_string(row->diagnoses.endless) + ")";
+      }
+      out->md += " " + cell + " |";
+      out->html += "<td class=\"num" + std::string(n == 0 ? " muted" : "") + "\">" + escapeMarkup(cell) + "</td>";
+    }
+    out->md += "\n";
+    out->html += "</tr>\n";
+  }
+  out->md += "\n";
+  out->html += "</tbody>\n</table>\n";
 }
 
 /// Per agent and set, how many PPPs the agent fails; each agent's worst PPP; the sets' archives.
@@ -773,6 +834,7 @@ void writeReport(const std::string& dir, const ReportInput& input, const StopChe
   passRateSection(input, &text);
   referenceSection(input, &text);
   comparisonSection(input, &text);
+  diagnosisSection(input.rates, &text);
   faultSection(input, worst_pictures, &text);
   detourSection(input, detour_pictures, &text);
   plotSection(plots, &text);

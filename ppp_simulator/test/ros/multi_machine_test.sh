@@ -95,7 +95,7 @@ launch() {
 # built_in DIR: DIR/results.csv without the planner's rows.
 built_in() { grep -v ",optimistic," "$1/results.csv"; }
 # lost DIR: how many rows of DIR/results.csv are runs lost to the link.
-lost() { grep -c ",agent_lost,[01]$\|,timeout,[01]$" "$1/results.csv"; }
+lost() { grep -c ",agent_lost,[01],\|,timeout,[01]," "$1/results.csv"; }
 
 # 1. Across the link: the agents' processes run in the agents' namespace, the results are ppp experiment's.
 launch "$work/whole"
@@ -113,7 +113,7 @@ esac
 wait "$launched"
 built_in "$work/whole" | cmp -s - "$work/cli/results.csv" && pass || \
   fail "the run across the link differs from ppp experiment: $(grep -i "error\|fail" "$work/whole.log" | head)"
-[ "$(grep -c ",optimistic,.*,goal_reached,[01]$" "$work/whole/results.csv")" -eq "$planner_rows" ] && pass || \
+[ "$(grep -c ",optimistic,.*,goal_reached,[01]," "$work/whole/results.csv")" -eq "$planner_rows" ] && pass || \
   fail "the planner did not pass its $planner_rows runs: $(grep ",optimistic," "$work/whole/results.csv")"
 
 # 2. The link is cut once the first results are in: the lost runs are recorded and the experiment completes.

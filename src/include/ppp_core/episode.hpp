@@ -22,6 +22,9 @@ struct EpisodeOutcome {
   int diagonal_moves = 0;   ///< Of them, diagonal moves (connectivity 8).
   const char* reason = "";  ///< reason::kGoalReached, kBudgetExhausted or kActionLimit (or a failure's).
   std::vector<Cell> path;   ///< Cells visited, start first (only when asked for).
+  /// The robot's cell after each action, start first: steps + 1 cells, bumps and stays included (always kept:
+  /// the diagnosis of a failed run reads it).
+  std::vector<Cell> cells;
 };
 
 /// The length an episode moved: 1 per straight move, sqrt(2) per diagonal one.

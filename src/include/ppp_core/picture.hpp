@@ -30,6 +30,8 @@ constexpr Rgb kStartColour{40, 170, 60};
 constexpr Rgb kGoalColour{210, 40, 40};
 /// Colour of the path line and its dots.
 constexpr Rgb kPathColour{30, 80, 230};
+/// Colour of marked cells (a loop's cycle).
+constexpr Rgb kMarkedColour{245, 190, 235};
 /// Colour of the grid lines between cells.
 constexpr Rgb kGridLineColour{200, 200, 200};
 
@@ -63,11 +65,12 @@ Pixel cellCentre(Cell c, const PictureOptions& options);
 
 /// Draws a problem as row-major RGB bytes (3 per pixel, pictureWidth × pictureHeight, row 0 at the top,
 /// like the grid): free cells white, obstacles dark grey, start green, goal red, and the optional `path`
-/// (cells in order; may be empty) as a blue line through the cell centres with a dot on each cell.
-/// @throws InvalidArgument for an invalid problem or options, a path cell off the grid, or a picture larger
-/// than kMaxPictureSide.
+/// (cells in order; may be empty) as a blue line through the cell centres with a dot on each cell, over the
+/// `marked` cells filled pink (a loop's cycle).
+/// @throws InvalidArgument for an invalid problem or options, a path or marked cell off the grid, or a picture
+/// larger than kMaxPictureSide.
 std::vector<std::uint8_t> renderProblemRgb(const Problem& problem, const std::vector<Cell>& path = {},
-                                           const PictureOptions& options = {});
+                                           const PictureOptions& options = {}, const std::vector<Cell>& marked = {});
 
 /// Encodes row-major 8-bit RGB pixels as PNG file bytes, in memory (for files and base64 thumbnails).
 /// @throws InvalidArgument when the buffer size disagrees with width × height, Error when libpng fails.
@@ -76,6 +79,6 @@ std::string encodePng(const std::vector<std::uint8_t>& rgb, int width, int heigh
 /// Renders a problem (see renderProblemRgb) and writes it as a PNG file, atomically.
 /// @throws InvalidArgument as renderProblemRgb, IoError naming `png_path` when it cannot be written.
 void writeProblemPng(const Problem& problem, const std::vector<Cell>& path, const std::string& png_path,
-                     const PictureOptions& options = {});
+                     const PictureOptions& options = {}, const std::vector<Cell>& marked = {});
 
 }  // namespace ppp

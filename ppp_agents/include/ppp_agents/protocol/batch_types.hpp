@@ -53,6 +53,8 @@ struct MoveReply {
   std::uint32_t step = 0;         ///< The step answered.
   int action = 0;                 ///< An Action number (anything else is invalid).
   const char* failure = nullptr;  ///< The agent gives the episode up for this reason (a reason:: constant).
+  const char* diagnosis = nullptr;  ///< With failure no_path: diagnosis::kMissedRoute or kNoRoute, if known.
+  std::uint64_t state = 0;  ///< A digest of the agent's decision state as it chose the move (0: none given).
 };
 
 /// Cells of the window of range `range`: (2 range + 1)^2.

@@ -59,7 +59,8 @@ struct EpisodeAnimation {
 /// drawn once per distinct move and bump). Each frame shows the true map, shaded where the agent has not sensed a cell or has forgotten it
 /// (its memory as rebuilt from the scans it was given, with its memory window; nothing is shaded for an agent
 /// given the map), the cells of the current scan tinted, the scan window outlined, the trail so far, a mark on
-/// the side of a cell for every bump (towards the blocked move), start, goal, and the agent as an orange disc.
+/// the side of a cell for every bump (towards the blocked move), start, goal, and the agent as an orange disc;
+/// when the run ends in a loop (diagnoseRun()), its cycle's cells pink from the step the loop began.
 /// @throws InvalidArgument for bad options, or naming "map" for a map too large to animate; Interrupted when
 /// `stop`, asked before each frame, says stop.
 EpisodeAnimation animateEpisode(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,

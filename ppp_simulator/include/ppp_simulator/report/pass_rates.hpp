@@ -1,12 +1,26 @@
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
 #include "ppp_agents/episode_result.hpp"
+#include "ppp_core/diagnosis.hpp"
 
 namespace ppp {
 namespace simulator {
+
+/// Runs per diagnosis kind (diagnosis::kKinds order), and of the loops those proven endless.
+struct DiagnosisCounts {
+  std::array<int, diagnosis::kKindCount> kinds{};  ///< Runs per kind.
+  int endless = 0;                                 ///< Loops with an endless_step.
+  /// Counts `result`'s diagnosis.
+  void add(const agents::EpisodeResult& result);
+  /// Adds `other`'s counts.
+  void add(const DiagnosisCounts& other);
+  /// Runs of `kind` (a diagnosis:: constant).
+  int of(const char* kind) const { return kinds[static_cast<std::size_t>(diagnosis::kindIndex(kind))]; }
+};
 
 /// One agent's runs on one PPP: how many, how many passed, how long they took.
 struct ProblemPassRate {
@@ -16,6 +30,7 @@ struct ProblemPassRate {
   int runs = 0;           ///< Episodes run.
   int passes = 0;         ///< Episodes that reached the goal.
   int soft_failures = 0;  ///< Of them, soft failures (longer than the soft failure ratio allows).
+  DiagnosisCounts diagnoses;  ///< The runs' diagnoses.
   double mean_steps = 0;  ///< Mean actions per episode, over all runs (failed runs count their full budget).
 
   /// Fraction of runs that passed, in [0, 1]; 0 when there are no runs.
@@ -30,6 +45,7 @@ struct SetPassRate {
   int runs = 0;          ///< Episodes over all those PPPs.
   int passes = 0;        ///< Episodes that passed.
   int soft_failures = 0; ///< Of them, soft failures.
+  DiagnosisCounts diagnoses;  ///< The runs' diagnoses.
   double mean_rate = 0;  ///< Mean over the set's PPPs of their pass rates, in [0, 1] (not passes / runs).
 };
 
@@ -53,6 +69,7 @@ struct ResultGroup {
   int runs = 0;                               ///< Results in the group.
   int passes = 0;                             ///< Of them, passed.
   int soft_failures = 0;                      ///< Of the passed, soft failures.
+  DiagnosisCounts diagnoses;                  ///< Their diagnoses.
   double steps = 0;                           ///< Their steps, summed.
   const agents::EpisodeResult* first_fail = nullptr;  ///< The failed result with the lowest run number, or nullptr.
 };
@@ -75,7 +92,8 @@ PassRateTable computePassRates(const std::vector<agents::EpisodeResult>& results
 PassRateTable computeGroupedPassRates(const std::vector<ResultGroup>& groups, const std::vector<std::string>& set_order,
                                const std::vector<std::string>& agent_order);
 
-/// The summary CSV header: level,set,problem,agent,problems,runs,passes,pass_rate,soft_failures.
+/// The summary CSV header: level,set,problem,agent,problems,runs,passes,pass_rate,soft_failures, then the runs
+/// of each diagnosis kind (stuck,loop,confined,wandering,detour,missed_route,no_route,reported) and endless_loops.
 const std::vector<std::string>& summaryCsvHeader();
 
 /// Writes the summary CSV atomically: one `problem` row per (set, PPP, agent) with problems = 1 and its pass

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "ppp_core/diagnosis.hpp"
 #include "ppp_core/grid.hpp"
 #include "ppp_core/problem.hpp"
 #include "ppp_core/stop.hpp"
@@ -26,6 +27,8 @@ struct FailureExample {
   ppp::Problem ppp;             ///< The PPP itself.
   std::vector<ppp::Cell> path;  ///< Cells the agent stood on, in order, from the start (may be empty).
   std::string reason;           ///< Why the episode ended (a reason:: constant).
+  ppp::Diagnosis diagnosis;     ///< The run's diagnosis (results.csv's).
+  std::vector<ppp::Cell> cycle; ///< A loop's cycle cells (cycleCells()), marked on the picture; else empty.
   std::string replay_flags;     ///< `ppp replay` flags recreating the agent configuration (e.g. "--agent explorer
                                 ///< --memory 5x5"); empty means "--agent <agent>".
   std::string animation_gif;    ///< The run frame by frame (animateEpisode's GIF bytes); empty when there is none.
