@@ -1,6 +1,7 @@
 // The batch protocol's messages: every field survives encode -> decode, empty batches too, and every malformed
 // message is refused naming its field or answered as the protocol says.
 #include "ppp_agents/protocol/batch_codec.hpp"
+#include "ppp_core/diagnosis.hpp"
 
 #include <gtest/gtest.h>
 
@@ -185,6 +186,40 @@ TEST(BatchCodecTest, MalformedMoveBatchesFailTheirEpisodesAsInvalidAction) {
   EXPECT_NE(got.fault.find("'tired'"), std::string::npos);
   message.failures[0].reason = reason::kGoalReached;  // nor may an agent claim a pass
   EXPECT_STREQ(decodeMoves(message).moves[0].failure, reason::kInvalidAction);
+}
+
+TEST(BatchCodecTest, StatesAndANoPathsDiagnosisSurviveTheRoundTrip) {
+  std::vector<MoveReply> sent(3);
+  sent[0] = {1, 4, 2, nullptr, nullptr, 0xfeedULL};
+  sent[1] = {2, 9, 0, reason::kNoPath, diagnosis::kMissedRoute, 0};
+  sent[2] = {3, 1, 1, nullptr, nullptr, 7};
+  ppp_msgs::MoveBatch message = encodeMoves("bridge", 2, sent);
+  ASSERT_EQ(message.states.size(), 3u);
+  DecodedMoves got = decodeMoves(message);
+  EXPECT_EQ(got.fault, "");
+  EXPECT_EQ(got.moves[0].state, 0xfeedULL);
+  EXPECT_EQ(got.moves[2].state, 7u);
+  EXPECT_STREQ(got.moves[1].diagnosis, diagnosis::kMissedRoute);
+  EXPECT_EQ(got.moves[0].diagnosis, nullptr);
+  // Agents that report no state send none at all.
+  EXPECT_TRUE(encodeMoves("explorer", 1, {{1, 0, 2, nullptr}}).states.empty());
+  // States of the wrong length are ignored, and said so.
+  message.states.pop_back();
+  got = decodeMoves(message);
+  EXPECT_EQ(got.moves[0].state, 0u);
+  EXPECT_NE(got.fault.find("2 states for 3 moves"), std::string::npos) << got.fault;
+  // A diagnosis only refines no_path, and only as missed_route or no_route.
+  message = encodeMoves("bridge", 2, sent);
+  message.failures[0].diagnosis = "loop";
+  got = decodeMoves(message);
+  EXPECT_STREQ(got.moves[1].failure, reason::kNoPath);
+  EXPECT_EQ(got.moves[1].diagnosis, nullptr);
+  EXPECT_NE(got.fault.find("the diagnosis 'loop'"), std::string::npos) << got.fault;
+  message.failures[0].reason = reason::kPlannerTimeout;
+  message.failures[0].diagnosis = diagnosis::kNoRoute;
+  got = decodeMoves(message);
+  EXPECT_EQ(got.moves[1].diagnosis, nullptr);
+  EXPECT_NE(got.fault.find("a planner_timeout failure"), std::string::npos) << got.fault;
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "ppp_core/diagnosis.hpp"
 #include "test_world.hpp"
 
 namespace ppp {
@@ -123,6 +124,56 @@ TEST(PlannerEpisodeTest, AStepNeedsNoRequestOnlyWhenTheRuleSaysSo) {
   ASSERT_TRUE(learning.observe(scanAt(Cell{0, 1})));
   EXPECT_FALSE(learning.moveWithoutRequest(change));
   EXPECT_EQ(learning.moveWithoutRequest(blocked), Action::South);
+}
+
+TEST(PlannerEpisodeTest, TheStateDigestIsEqualExactlyWhenTheWholeDecisionStateIs) {
+  const std::vector<MapPoint> around{centre(0, 0), centre(0, 2), centre(3, 2)};
+  const auto played = [&](const std::vector<Cell>& cells) {
+    PlannerEpisode episode;
+    episode.start(info(), nullptr, 0, 1.0);
+    for (const Cell c : cells) episode.observe(scanAt(c));
+    return episode;
+  };
+  // Two episodes that saw the same scans from the same cells and follow nothing are in the same state.
+  PlannerEpisode a = played({{0, 0}, {0, 1}});
+  PlannerEpisode b = played({{0, 0}, {0, 1}});
+  EXPECT_EQ(a.stateDigest({}), b.stateDigest({}));
+  EXPECT_NE(a.stateDigest({}), 0u);
+  // The last answer's waypoints are part of it.
+  EXPECT_NE(a.stateDigest({}), a.stateDigest(around));
+  // So is the path followed and the robot's place on it.
+  const std::uint64_t before = b.stateDigest(around);
+  ASSERT_EQ(b.answer(around, Cell{0, 1}).verdict, AnswerVerdict::Move);
+  EXPECT_NE(b.stateDigest(around), before);
+  // The same scans seen, the same cell, nothing new in the last scan: only the cell before differs.
+  EXPECT_NE(played({{0, 0}, {0, 1}, {0, 1}}).stateDigest({}), played({{0, 1}, {0, 0}, {0, 1}}).stateDigest({}));
+  // The same cell, the same cell before, nothing new in the last scan: only what the robot knows differs (the
+  // first has also seen the goal's corner from (2, 2)).
+  EXPECT_NE(played({{2, 2}, {0, 0}, {0, 0}}).stateDigest({}), played({{0, 0}, {0, 0}}).stateDigest({}));
+  // The step number is not part of the state: a robot that stayed a step longer is where it was.
+  EXPECT_EQ(played({{0, 0}, {0, 0}, {0, 0}}).stateDigest({}), played({{0, 0}, {0, 0}}).stateDigest({}));
+}
+
+TEST(PlannerEpisodeTest, ANoPathIsAMissedRouteWhenTheGivenMapHadOneForTheRobotsBody) {
+  // Nothing known yet: unknown cells count as passable, so "no path" missed the route.
+  PlannerEpisode blind;
+  blind.start(info(), nullptr, 0, 1.0);
+  EXPECT_STREQ(blind.noPathKind(Cell{0, 0}, 0), diagnosis::kMissedRoute);
+  // The true map (column 1 blocked but for its bottom cell): a point robot has the route along the bottom row.
+  PlannerEpisode known;
+  known.start(info(), &kWorld.grid, 0, 1.0);
+  EXPECT_STREQ(known.noPathKind(Cell{0, 0}, 0), diagnosis::kMissedRoute);
+  // A disc of radius 1 cell overlaps the wall from every cell next to it, the robot's own included: no route.
+  EXPECT_STREQ(known.noPathKind(Cell{0, 0}, 1.0), diagnosis::kNoRoute);
+  // A map that walls the robot in (what a noisy scan may report) has no route either.
+  const test::World walled = test::world({
+      "S#..",
+      "##..",
+      "...G",
+  });
+  PlannerEpisode boxed;
+  boxed.start(info(), &walled.grid, 0, 1.0);
+  EXPECT_STREQ(boxed.noPathKind(Cell{0, 0}, 0), diagnosis::kNoRoute);
 }
 
 }  // namespace

@@ -53,13 +53,13 @@ ppp::agents::AgentLane lane(const std::string& type) {
 /// Walks one MoveBatch (ppp_msgs/msg/MoveBatch.msg); false when it does not fit in the bytes left.
 bool walkMoveBatch(ppp::fuzz::WireWalker* w) {
   std::uint32_t failures = 0;
-  const std::size_t least_failure = 4 + 4;  // episode, reason length
+  const std::size_t least_failure = 4 + 4 + 4;  // episode, reason length, diagnosis length
   if (!w->header() || !w->array(1) || !w->fixed(4) || !w->array(4) || !w->array(4) || !w->array(1) ||
-      !w->length(least_failure, &failures)) {
+      !w->array(8) || !w->length(least_failure, &failures)) {
     return false;
   }
   for (std::uint32_t i = 0; i < failures; ++i) {
-    if (!w->fixed(4) || !w->array(1)) return false;
+    if (!w->fixed(4) || !w->array(1) || !w->array(1)) return false;
   }
   return true;
 }
@@ -87,6 +87,9 @@ void checkDecoded(const ppp_msgs::MoveBatch& message, const protocol::DecodedMov
       finding("move_batch_fuzz", "a move changed in decoding", "");
     }
     if (m.failure != nullptr && !knownReason(m.failure)) finding("move_batch_fuzz", "unknown failure", m.failure);
+    if (m.diagnosis != nullptr && (m.failure == nullptr || std::strcmp(m.failure, ppp::reason::kNoPath) != 0)) {
+      finding("move_batch_fuzz", "a diagnosis without no_path", m.diagnosis);
+    }
   }
 }
 
@@ -114,6 +117,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (!ended.emplace(r.problem, r.run).second) finding("move_batch_fuzz", "a run ended twice", r.problem);
       if (!knownReason(r.reason)) finding("move_batch_fuzz", "a run ended for an unknown reason", r.reason);
       if (r.passed != (r.reason == ppp::reason::kGoalReached)) finding("move_batch_fuzz", "pass", r.reason);
+      // Every row the lane makes, its diagnosis included, is one results.csv reads back as it was written.
+      std::string line;
+      ppp::agents::appendCsvRow(r, &line);
+      line.pop_back();
+      try {
+        if (ppp::agents::toCsvFields(ppp::agents::parseCsvRow(line, "fuzz.csv", 2)) != ppp::agents::toCsvFields(r)) {
+          finding("move_batch_fuzz", "a row changed when read back", line);
+        }
+      } catch (const ppp::ParseError& e) {
+        finding("move_batch_fuzz", "a row the lane made is refused", std::string(e.what()) + ": " + line);
+      }
     }
   }
   return 0;

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <algorithm>
 #include <filesystem>
 
@@ -196,6 +198,64 @@ TEST(AgentLaneTest, APlannersResultsCarryTheirActions) {
   EXPECT_EQ(stopped.reason, reason::kNoPath);
   EXPECT_EQ(stopped.actions, (std::vector<Action>{Action::East, Action::East}));
   EXPECT_TRUE(play(config("bumper"), to_goal).actions.empty());
+}
+
+// A planner shuttling east and west on an open 5 x 5 map until its budget of 20 moves runs out: a loop of period
+// 2 from step 1. Its states prove it endless from the first step whose state recurs two steps later; a noisy
+// sensor (the next scan is no function of the state), a built-in agent or states that never recur prove nothing.
+TEST(AgentLaneTest, APlannersRecurringStatesProveItsLoopEndless) {
+  ProblemSet set;
+  set.ids = {"open"};
+  set.problems = {Problem::empty(5, 5, 1)};
+  EpisodeOptions options;
+  options.budget = 20;
+  const std::vector<agents::PreparedSet> sets = {agents::prepareSet("open", set, options)};
+  const auto play = [&](const agents::AgentConfig& agent, const std::function<std::uint64_t(int)>& state) {
+    agents::AgentLane lane(agent, options, sets, [](int, int, int) { return 1u; }, 1, 1);
+    std::vector<protocol::ScanRequest> scans;
+    std::vector<agents::EpisodeResult> ended;
+    for (int step = 0; ended.empty(); ++step) {
+      lane.scans(&scans);
+      protocol::MoveReply move{scans[0].episode, scans[0].step, static_cast<int>(step % 2 ? Action::West : Action::East)};
+      move.state = state(step);
+      ended = lane.answer({move}, reason::kTimeout);
+    }
+    return ended.at(0);
+  };
+  const agents::AgentConfig planner{"mine", agents::kPlannerType, 0, 0.0};
+  // States 100, 101, ... up to step 4 (the robot still learning), then alternating 7, 8.
+  const auto settling = [](int step) { return step < 5 ? 100u + step : 7u + step % 2; };
+  const agents::EpisodeResult loop = play(planner, settling);
+  EXPECT_EQ(loop.reason, reason::kBudgetExhausted);
+  EXPECT_EQ(loop.diagnosis, diagnosis::kLoop);
+  EXPECT_EQ(loop.loop_period, 2);
+  EXPECT_EQ(loop.diagnosis_step, 0);  // (0,0), (1,0), (0,0), ... from the start
+  EXPECT_EQ(loop.endless_step, 5);
+  EXPECT_EQ(play(planner, [](int step) { return 100u + step; }).endless_step, -1);
+  EXPECT_EQ(play(planner, [](int) { return 0u; }).endless_step, -1);  // no states given
+  EXPECT_EQ(play(agents::AgentConfig{"noisy", agents::kPlannerType, 0, 0.1}, settling).endless_step, -1);
+  const agents::EpisodeResult built_in = play(config("bumper"), settling);
+  EXPECT_EQ(built_in.diagnosis, diagnosis::kLoop);
+  EXPECT_EQ(built_in.endless_step, -1);
+}
+
+// A planner's no_path comes with the bridge's diagnosis of it; without one it is reported.
+TEST(AgentLaneTest, APlannersNoPathKeepsTheDiagnosisItCameWith) {
+  ProblemSet set;
+  set.ids = {"open"};
+  set.problems = {Problem::empty(5, 5, 1)};
+  const std::vector<agents::PreparedSet> sets = {agents::prepareSet("open", set, EpisodeOptions{})};
+  const auto give_up = [&](const char* kind) {
+    agents::AgentLane lane({"mine", agents::kPlannerType, 0, 0.0}, EpisodeOptions{}, sets, [](int, int, int) { return 1u; },
+                           1, 1);
+    std::vector<protocol::ScanRequest> scans;
+    lane.scans(&scans);
+    protocol::MoveReply move{scans[0].episode, scans[0].step, 0, reason::kNoPath, kind};
+    return lane.answer({move}, reason::kTimeout).at(0);
+  };
+  EXPECT_EQ(give_up(diagnosis::kMissedRoute).diagnosis, diagnosis::kMissedRoute);
+  EXPECT_EQ(give_up(diagnosis::kNoRoute).diagnosis, diagnosis::kNoRoute);
+  EXPECT_EQ(give_up(nullptr).diagnosis, diagnosis::kReported);
 }
 
 TEST(AgentLaneTest, ASilentAgentIsGivenUpAfterSomeUnansweredBatches) {

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "ppp_core/diagnosis.hpp"
 #include "ppp_core/episode_reason.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/gif_animation.hpp"
@@ -175,6 +176,29 @@ TEST(EpisodeAnimationTest, ShadesWhatTheAgentHasNotSensedOrHasForgotten) {
     }
   }
   EXPECT_GT(checked, 0) << "no cell near the start was off both trails";
+}
+
+TEST(EpisodeAnimationTest, ALoopsCycleIsPinkFromTheStepTheLoopBegan) {
+  // The first of some random maps on which the left wall follower ends in a loop.
+  for (std::uint64_t seed = 1; seed <= 100; ++seed) {
+    Rng rng(seed);
+    const Problem problem = randomProblem(rng, Problem::empty(20, 20, 20), 20);
+    const EpisodeAnimation played =
+        animateEpisode(problem, decodeGrid(problem), agentConfig("wall_follower_left"), EpisodeOptions{}, 1);
+    const EpisodeOutcome& o = played.outcome;
+    const Diagnosis d = diagnoseRun(o.passed, false, o.reason, o.cells);
+    if (std::string(d.kind) != diagnosis::kLoop || d.step == 0) continue;
+    const GifMovie movie = decodeGif(played.gif, "loop.gif");
+    ASSERT_EQ(movie.frames.size(), static_cast<std::size_t>(o.steps) + 1);  // a frame per step
+    EXPECT_FALSE(anyPixel(movie.frames[static_cast<std::size_t>(d.step) - 1], kMarkedColour)) << "seed " << seed;
+    EXPECT_TRUE(anyPixel(movie.frames[static_cast<std::size_t>(d.step)], kMarkedColour)) << "seed " << seed;
+    EXPECT_TRUE(anyPixel(movie.frames.back(), kMarkedColour)) << "seed " << seed;
+    // A run that is no loop shows no pink at all.
+    const EpisodeAnimation straight = animateEpisode(problem, decodeGrid(problem), agentConfig("astar"), EpisodeOptions{}, 1);
+    EXPECT_FALSE(anyPixel(decodeGif(straight.gif, "astar.gif").frames.back(), kMarkedColour));
+    return;
+  }
+  FAIL() << "the wall follower looped on none of the maps";
 }
 
 TEST(EpisodeAnimationTest, ChoosesTheCellSizeByMapSizeAndRefusesMapsTooLargeToAnimate) {

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -196,6 +197,50 @@ TEST_F(ReportTest, FaultsFoundCountsFailedPppsShowsTheWorstAndTheArchive) {
   EXPECT_NE(md.find("| *diversity* | 0.750 | 1.250 |\n"), std::string::npos) << md;
   EXPECT_TRUE(fs::is_regular_file(dir_ + "/pictures/beta_q2_explorer.png"));
   EXPECT_NE(read("report.html").find("<svg><title>the beta archive</title></svg>"), std::string::npos);
+}
+
+TEST_F(ReportTest, DiagnosesAreTabledPerAgentAndSetAndSaidBesideEachPicture) {
+  // handMadeInput()'s runs, their failures diagnosed by hand: explorer wandering everywhere (3 failed runs on
+  // alpha, 5 on beta); random looping on alpha (7, of which run 3 on each PPP endless: 2) and confined on beta (8).
+  ReportInput input = handMadeInput();
+  std::vector<agents::EpisodeResult> results;
+  for (const auto& [set, problems] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+           {"alpha", {"p1", "p2"}}, {"beta", {"q1", "q2"}}}) {
+    const std::map<std::string, std::vector<int>> passes = {
+        {"alpha", {4, 4, 3, 2, 1, 0}}, {"beta", {4, 4, 2, 1, 0, 0}}};
+    int k = 0;
+    for (const std::string agent : {"astar", "explorer", "random"}) {
+      for (const std::string& problem : problems) addRuns(&results, set, problem, agent, passes.at(set)[k++]);
+    }
+  }
+  for (agents::EpisodeResult& r : results) {
+    if (r.passed) continue;
+    r.diagnosis = r.agent == "explorer" ? diagnosis::kWandering : r.set == "alpha" ? diagnosis::kLoop : diagnosis::kConfined;
+    r.diagnosis_step = 100;
+    if (r.diagnosis == diagnosis::kLoop) r.loop_period = 2;
+    if (r.diagnosis == diagnosis::kLoop && r.run == 3) r.endless_step = 102;
+  }
+  input.rates = computePassRates(results, {"alpha", "beta"}, {"astar", "explorer", "random"});
+  input.failures[0].diagnosis.kind = diagnosis::kLoop;
+  input.failures[0].diagnosis.step = 1;
+  input.failures[0].diagnosis.period = 2;
+  input.failures[0].cycle = {{1, 0}, {1, 1}};
+  writeReport(dir_, input);
+  const std::string md = read("report.md");
+  const std::size_t start = md.find("## Diagnoses"), end = md.find("## Faults found");
+  ASSERT_LT(start, end) << md;
+  const std::string section = md.substr(start, end - start);
+  EXPECT_NE(section.find("| Agent | Set | loop (endless) | confined | wandering |\n"), std::string::npos) << section;
+  EXPECT_NE(section.find("| `explorer` | `alpha` | \xE2\x80\x94 | \xE2\x80\x94 | 3 |\n"), std::string::npos) << section;
+  EXPECT_NE(section.find("| `random` | `alpha` | 7 (2) | \xE2\x80\x94 | \xE2\x80\x94 |\n"), std::string::npos) << section;
+  EXPECT_NE(section.find("| `explorer` | `beta` | \xE2\x80\x94 | \xE2\x80\x94 | 5 |\n"), std::string::npos) << section;
+  EXPECT_NE(section.find("| `random` | `beta` | \xE2\x80\x94 | 8 | \xE2\x80\x94 |\n"), std::string::npos) << section;
+  EXPECT_EQ(section.find("`astar`"), std::string::npos) << section;  // it never failed
+  EXPECT_NE(md.find("- diagnosis loop: from step 1 the robot repeats a cycle of 2 actions over 2 cells to the end, "
+                    "sensing nothing new (the cycle's cells are pink)\n"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(read("report.html").find("<li>diagnosis loop: from step 1"), std::string::npos);
 }
 
 TEST_F(ReportTest, AFailureWithAnAnimationShowsItBesideThePictureAndWritesItsFile) {

@@ -85,6 +85,19 @@ TEST(PictureTest, WithoutGridLinesCellsTileThePicture) {
   EXPECT_EQ(text(pixelAt(rgb, 20, Pixel{19, 14})), text(kGoalColour));
 }
 
+TEST(PictureTest, MarkedCellsArePinkUnderThePath) {
+  PictureOptions options;
+  options.cell_pixels = 5;
+  options.grid_lines = false;
+  // Cells (2, 0) and (0, 1) marked; (0, 1) is on the path, whose dot covers its centre.
+  const std::vector<std::uint8_t> rgb = renderProblemRgb(tinyProblem(), kTinyPath, options, {{2, 0}, {0, 1}});
+  EXPECT_EQ(text(pixelAt(rgb, 20, Pixel{12, 2})), text(kMarkedColour));   // the centre of (2, 0)
+  EXPECT_EQ(text(pixelAt(rgb, 20, Pixel{0, 5})), text(kMarkedColour));    // a corner of (0, 1)
+  EXPECT_EQ(text(pixelAt(rgb, 20, Pixel{2, 7})), text(kPathColour));      // its centre: the path's dot
+  EXPECT_EQ(text(pixelAt(rgb, 20, Pixel{17, 2})), text(kFreeColour));     // (3, 0) is not marked
+  EXPECT_THROW(renderProblemRgb(tinyProblem(), {}, options, {{0, 3}}), InvalidArgument);
+}
+
 TEST(PictureTest, PngFileReadsBackWithLibpng) {
   const Problem p = tinyProblem();
   const PictureOptions options;
