@@ -20,4 +20,5 @@ set(PPP_SIMULATOR_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/experiment_report.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/experiment_graph.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/simulator_options.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/failure_shrink.cpp
 )

@@ -54,7 +54,7 @@ int parseOptional(std::string_view text, int none, const std::string& source, in
 /// The diagnosis fields of `r`, checked against its pass, soft failure and against each other.
 void parseDiagnosis(std::string_view kind, std::string_view step, std::string_view period, std::string_view endless,
                     const std::string& source, int line, EpisodeResult* r) {
-  const char* named = diagnosis::kindNamed(std::string(kind));
+  const char* named = diagnosis::kindNamed(kind);
   if (!kind.empty() && named == nullptr) {
     throw ParseError(source, line, "diagnosis", "expected one of stuck, loop, confined, wandering, detour, "
                                                 "missed_route, no_route, reported or nothing, got '" + std::string(kind) + "'");

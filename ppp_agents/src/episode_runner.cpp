@@ -33,7 +33,7 @@ EpisodeOutcome EpisodeRunner::run(const Problem& problem, const Grid& grid, Agen
                   options_.connectivity,
                   record_path, windows, motion);
   while (!episode.done()) episode.apply(agent.act(episode.scan()));
-  return episode.outcome();
+  return episode.takeOutcome();
 }
 
 EpisodeOutcome recordEpisode(const Problem& problem, const Grid& grid, const AgentConfig& config,

@@ -11,6 +11,8 @@ namespace cli {
 void addSimulateCommand(CLI::App& app);
 /// Adds `ppp replay`: one episode drawn as a picture.
 void addReplayCommand(CLI::App& app);
+/// Adds `ppp shrink`: the smallest PPP on which an agent still fails the same way.
+void addShrinkCommand(CLI::App& app);
 /// Adds `ppp scenarios`: one agent on every scenario of a MovingAI .scen file.
 void addScenariosCommand(CLI::App& app);
 /// Adds `ppp experiment`: the full experiment with resume and report.

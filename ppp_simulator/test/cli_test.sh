@@ -237,4 +237,46 @@ expect_error "panel without failure" "agents: only the panel fitnesses (failure,
   "$ppp" generate --quiet --agents bumper -o "$work/bad2"
 [ ! -e "$work/bad2" ] && pass || fail "a failed hunt left an output directory"
 
+
+# --- shrink: the smallest PPP that still fails the same way
+expect_ok "shrink one" "$ppp" shrink "$work/hunt_a/ppp_000.ppp" --agent wall_follower_left --runs 3 -o "$work/small.ppp"
+grep -q "still loop in 3 of 3 runs" "$work/out" && pass || fail "shrink did not say what it kept: $(cat "$work/out")"
+grep -q "^meta shrunk_from ppp_000.ppp$" "$work/small.ppp" && pass || fail "the shrunk PPP does not say where it came from"
+expect_ok "shrink again" "$ppp" shrink "$work/hunt_a/ppp_000.ppp" --agent wall_follower_left --runs 3 -o "$work/small2.ppp"
+cmp -s "$work/small.ppp" "$work/small2.ppp" && pass || fail "the same shrink gave different bytes"
+seed=$(sed -n 's/^meta shrink_seeds \([0-9]*\),.*/\1/p' "$work/small.ppp")
+expect_ok "replay the shrunk PPP" "$ppp" replay "$work/small.ppp" --agent wall_follower_left --seed "$seed" -o "$work/small.png"
+grep -q "^diagnosis: loop" "$work/out" && pass || fail "the shrunk PPP's run is not a loop: $(cat "$work/out")"
+expect_ok "shrink a set" "$ppp" shrink "$work/hunt_a" --agent bumper --runs 2 -o "$work/small_set"
+[ "$(ls "$work/small_set" | wc -l)" -eq "$(grep -c "obstacle cells, still" "$work/out")" ] && pass || \
+  fail "the shrunk set's files do not match what shrink printed"
+expect_ok "shrink with an agents file" "$ppp" shrink "$work/hunt_a/ppp_000.ppp" --agents-file "$config_dir/agents.yaml" \
+  --agent explorer_memory_5x5 --runs 2 --any-kind -o "$work/small_m.ppp"
+printf 'ppp 1\nsize 6 6\nstart 0 0\ngoal 5 5\nmax_obstacles 1\nobstacles 0\ngrid\nS.....\n......\n......\n......\n......\n.....G\nend\n' \
+  > "$work/open.ppp"
+expect_error "shrink a passing PPP" "astar passes open.ppp in all 3 runs judged: nothing to shrink" \
+  "$ppp" shrink "$work/open.ppp" --agent astar --runs 3 -o "$work/none.ppp"
+[ ! -e "$work/none.ppp" ] && pass || fail "shrinking a passing PPP wrote a file"
+expect_error "shrink unknown agent" "--agent" "$ppp" shrink "$work/open.ppp" --agent nobody -o "$work/none.ppp"
+expect_error "shrink missing file" "input: '$work/missing.ppp' does not exist" \
+  "$ppp" shrink "$work/missing.ppp" --agent bumper -o "$work/none.ppp"
+expect_error "shrink a planner in process" "planner agents play through ROS" \
+  "$ppp" shrink "$work/open.ppp" --agent planner -o "$work/none.ppp"
+expect_error "shrink a planner of an agents file" "'optimistic' is a planner agent" \
+  "$ppp" shrink "$work/open.ppp" --agents-file "$config_dir/agents.yaml" --agent optimistic -o "$work/none.ppp"
+expect_error "shrink runs 0" "--runs: expected a number of runs in [1, 100000], got 0" \
+  "$ppp" shrink "$work/open.ppp" --agent bumper --runs 0 -o "$work/none.ppp"
+expect_error "shrink negative rate" "--min-rate: expected a share of the runs in (0, 1], got -0.5" \
+  "$ppp" shrink "$work/open.ppp" --agent bumper --min-rate -0.5 -o "$work/none.ppp"
+expect_error "shrink by what" "--by: expected descriptors or cells, got 'rows'" \
+  "$ppp" shrink "$work/open.ppp" --agent bumper --by rows -o "$work/none.ppp"
+[ ! -e "$work/none.ppp" ] && pass || fail "a refused shrink wrote a file"
+# Interrupted (Ctrl-C) while shrinking a whole set with many runs per candidate: nothing is written.
+"$ppp" shrink "$work/hunt_a" --agent bumper --runs 20000 -o "$work/stopped" > "$work/out" 2> "$work/err" &
+sleep 1
+kill -INT $!
+wait $! && status=0 || status=$?
+[ "$status" -eq 130 ] && pass || fail "an interrupted shrink exited $status: $(cat "$work/err")"
+[ ! -e "$work/stopped" ] && pass || fail "an interrupted shrink left output"
+
 finish

@@ -33,6 +33,10 @@ OWN_FLAGS = {
     ('ppp_simulator/cli/launch_file_command.cpp', '--planner'): "AGENT=PACKAGE/EXECUTABLE, the planner to start (the "
                                                                "OMPL node's ~planner is its algorithm)",
     ('ppp_simulator/cli/scenarios_command.cpp', '--seed'): "the seed scenario seeds derive from",
+    ('ppp_simulator/cli/shrink_command.cpp', '--agents-file'): "the agents file --agent is looked up in (a hunt's "
+                                                              "agents_file holds its panel)",
+    ('ppp_simulator/cli/shrink_command.cpp', '--runs'): "runs judged per candidate, seeded as ppp simulate seeds them",
+    ('ppp_simulator/cli/shrink_command.cpp', '--seed'): "the failing run's seed, or the one the judged runs derive from",
     ('ppp_simulator/cli/simulate_command.cpp', '--runs'): "episodes of this one agent and PPP",
     ('ppp_simulator/cli/simulate_command.cpp', '--seed'): "the seed of those episodes (or of the replayed one)",
     ('src/cli/convert_command.cpp', '--resolution'): "metres per cell of the exported map; the core's commands "

@@ -6,14 +6,14 @@
 
 namespace ppp {
 
-int diagnosis::kindIndex(const std::string& text) {
+int diagnosis::kindIndex(std::string_view text) {
   for (int i = 0; i < kKindCount; ++i) {
     if (text == kKinds[i]) return i;
   }
   return -1;
 }
 
-const char* diagnosis::kindNamed(const std::string& text) {
+const char* diagnosis::kindNamed(std::string_view text) {
   const int index = kindIndex(text);
   return index < 0 ? nullptr : kKinds[index];
 }
@@ -40,12 +40,16 @@ int lastFirstVisit(const std::vector<Cell>& cells) {
     max_y = std::max(max_y, c.y);
   }
   const long width = static_cast<long>(max_x) - min_x + 1;
-  std::vector<char> visited(static_cast<std::size_t>(width * (static_cast<long>(max_y) - min_y + 1)), 0);
+  const std::size_t words = static_cast<std::size_t>((width * (static_cast<long>(max_y) - min_y + 1) + 63) / 64);
+  std::uint64_t small[64] = {};  // the box of a run on a map of up to 4,096 cells: no allocation
+  std::vector<std::uint64_t> large(words <= 64 ? 0 : words, 0);
+  std::uint64_t* visited = words <= 64 ? small : large.data();
   int last = 0;
   for (std::size_t t = 0; t < cells.size(); ++t) {
-    char& seen = visited[static_cast<std::size_t>((cells[t].y - min_y) * width + (cells[t].x - min_x))];
-    if (!seen) last = static_cast<int>(t);
-    seen = 1;
+    const auto bit = static_cast<std::size_t>((cells[t].y - min_y) * width + (cells[t].x - min_x));
+    const std::uint64_t mask = std::uint64_t{1} << (bit % 64);
+    if ((visited[bit / 64] & mask) == 0) last = static_cast<int>(t);
+    visited[bit / 64] |= mask;
   }
   return last;
 }

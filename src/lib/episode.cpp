@@ -27,12 +27,15 @@ Episode::Episode(const Problem& problem, const Grid& grid, const SensorModel& se
       windows_(windows),
       noise_seed_(noiseSeed(run_seed)),
       budget_(budget),
+      action_limit_(budget.actionLimit()),
       connectivity_(connectivity),
       record_path_(record_path),
       position_(problem.start) {
   if (record_path_) outcome_.path.push_back(position_);
-  outcome_.cells.reserve(static_cast<std::size_t>(budget_.actionLimit()) + 1);
-  outcome_.cells.push_back(position_);
+  // One cell per action up to the action limit, stored by index (no growth check per step), cut to the actions
+  // taken when the episode ends.
+  outcome_.cells.resize(static_cast<std::size_t>(action_limit_) + 1);
+  outcome_.cells[0] = position_;
 }
 
 Scan Episode::scan() const {
@@ -46,7 +49,7 @@ void Episode::apply(Action action) {
   bool counts = action != Action::Stay || budget_.stays_count;
   const bool diagonal = isDiagonal(action);
   if (diagonal && connectivity_ != Connectivity::Eight) {
-    outcome_.cells.push_back(position_);
+    outcome_.cells[static_cast<std::size_t>(outcome_.steps)] = position_;
     fail(reason::kInvalidAction);
     return;
   }
@@ -65,25 +68,27 @@ void Episode::apply(Action action) {
       counts = budget_.bumps_count;
     }
   }
-  outcome_.cells.push_back(position_);
+  outcome_.cells[static_cast<std::size_t>(outcome_.steps)] = position_;
   if (counts) ++counted_;
   if (position_ == problem_->goal) {
     outcome_.passed = true;
-    outcome_.reason = reason::kGoalReached;
-    done_ = true;
+    end(reason::kGoalReached);
   } else if (counted_ >= budget_.budget) {
-    outcome_.reason = reason::kBudgetExhausted;
-    done_ = true;
-  } else if (outcome_.steps >= budget_.actionLimit()) {
-    outcome_.reason = reason::kActionLimit;
-    done_ = true;
+    end(reason::kBudgetExhausted);
+  } else if (outcome_.steps >= action_limit_) {
+    end(reason::kActionLimit);
   }
 }
 
 void Episode::fail(const char* why) {
   if (done_) return;
   outcome_.passed = false;
+  end(why);
+}
+
+void Episode::end(const char* why) {
   outcome_.reason = why;
+  outcome_.cells.resize(static_cast<std::size_t>(outcome_.steps) + 1);
   done_ = true;
 }
 

@@ -140,7 +140,10 @@ std::vector<ResultGroup> groupResults(const std::vector<agents::EpisodeResult>& 
     const agents::EpisodeResult& r = results[i];
     if (groups.empty() || groups.back().row->agent != r.agent || groups.back().row->problem != r.problem ||
         groups.back().row->set != r.set) {
-      groups.push_back(ResultGroup{&r, i});
+      ResultGroup group;
+      group.row = &r;
+      group.index = i;
+      groups.push_back(group);
     }
     ResultGroup& group = groups.back();
     ++group.runs;

@@ -679,10 +679,9 @@ void diagnosisSection(const PassRateTable& rates, Text* out) {
   out->html += "<table>\n<thead><tr><th>Agent</th><th>Set</th>";
   for (const int k : kinds) {
     const std::string kind = diagnosis::kKinds[k];
-    const std::string heading = kind == diagnosis::kLoop ? "loop (endless)" : kind;
-    out->md += " " + heading + " |";
+    out->md += " " + kind + " |";
     align += "---:|";
-    out->html += "<th class=\"num\">" + escapeMarkup(heading) + "</th>";
+    out->html += "<th class=\"num\">" + escapeMarkup(kind) + "</th>";
   }
   out->md += "\n" + align + "\n";
   out->html += "</tr></thead>\n<tbody>\n";
@@ -693,8 +692,8 @@ void diagnosisSection(const PassRateTable& rates, Text* out) {
     for (const int k : kinds) {
       const int n = row->diagnoses.kinds[static_cast<std::size_t>(k)];
       std::string cell = n == 0 ? "\xE2\x80\x94" : std::to_string(n);
-      if (std::string(diagnosis::kKinds[k]) == diagnosis::kLoop && n > 0) {
-        cell += " (" + std::to_string(row->diagnoses.endless) + ")";
+      if (std::string(diagnosis::kKinds[k]) == diagnosis::kLoop && row->diagnoses.endless > 0) {
+        cell += " (" + std::to_string(row->diagnoses.endless) + " endless)";
       }
       out->md += " " + cell + " |";
       out->html += "<td class=\"num" + std::string(n == 0 ? " muted" : "") + "\">" + escapeMarkup(cell) + "</td>";

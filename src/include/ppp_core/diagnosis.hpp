@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ppp_core/grid.hpp"
@@ -31,9 +32,9 @@ constexpr const char* kKinds[] = {kStuck, kLoop, kConfined, kWandering, kDetour,
 /// The number of kinds.
 constexpr int kKindCount = static_cast<int>(sizeof kKinds / sizeof kKinds[0]);
 /// The kind constant equal to `text`, or nullptr.
-const char* kindNamed(const std::string& text);
+const char* kindNamed(std::string_view text);
 /// The position of `text` in kKinds, or -1.
-int kindIndex(const std::string& text);
+int kindIndex(std::string_view text);
 }  // namespace diagnosis
 
 /// A run's diagnosis. Steps count actions: step t is the robot's cell after t actions (step 0 is the start).

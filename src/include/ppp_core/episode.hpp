@@ -22,8 +22,8 @@ struct EpisodeOutcome {
   int diagonal_moves = 0;   ///< Of them, diagonal moves (connectivity 8).
   const char* reason = "";  ///< reason::kGoalReached, kBudgetExhausted or kActionLimit (or a failure's).
   std::vector<Cell> path;   ///< Cells visited, start first (only when asked for).
-  /// The robot's cell after each action, start first: steps + 1 cells, bumps and stays included (always kept:
-  /// the diagnosis of a failed run reads it).
+  /// The robot's cell after each action, start first: steps + 1 cells, bumps and stays included (always kept,
+  /// complete once the episode is done: the diagnosis of a failed run reads it).
   std::vector<Cell> cells;
 };
 
@@ -57,6 +57,8 @@ class Episode {
   void fail(const char* reason);
   /// The outcome so far (final once done()).
   const EpisodeOutcome& outcome() const { return outcome_; }
+  /// The outcome, moved out (the episode is done with it).
+  EpisodeOutcome takeOutcome() { return std::move(outcome_); }
   /// Steps taken so far.
   int step() const { return outcome_.steps; }
 
@@ -67,7 +69,11 @@ class Episode {
   const SensorModel* sensor_;
   const WindowAtlas* windows_;
   std::uint64_t noise_seed_;
+  /// Ends the episode for `why` (its cells cut to the actions taken).
+  void end(const char* why);
+
   BudgetRule budget_;
+  long action_limit_;  // budget_.actionLimit()
   int counted_ = 0;  // actions that used the budget
   Connectivity connectivity_;
   bool record_path_;

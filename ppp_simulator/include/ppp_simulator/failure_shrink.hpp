@@ -1,0 +1,81 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ppp_agents/agent_config.hpp"
+#include "ppp_core/diagnosis.hpp"
+#include "ppp_core/episode_options.hpp"
+#include "ppp_core/problem.hpp"
+#include "ppp_core/shrink.hpp"
+#include "ppp_core/stop.hpp"
+
+namespace ppp {
+namespace simulator {
+
+/// How the runs of one agent with given seeds went on one PPP, as results.csv would record them.
+struct RunsOutcome {
+  bool valid = true;  ///< The PPP is one the robot can solve (agents::prepareSet accepts it); nothing ran if not.
+  int runs = 0;       ///< Runs played.
+  int failed = 0;     ///< Of them, failed or soft-failed (diagnosed).
+  std::array<int, diagnosis::kKindCount> kinds{};  ///< Failed and soft-failed runs per diagnosis kind.
+};
+
+/// Plays the built-in agent `agent` on `problem` once per seed of `seeds` (results.csv's run seeds) under
+/// `episode`, each run diagnosed as in an experiment.
+RunsOutcome playRuns(const Problem& problem, const agents::AgentConfig& agent, const EpisodeOptions& episode,
+                     const std::vector<std::uint64_t>& seeds);
+
+/// The failure a shrink keeps: at least `failures` of the judged runs fail, with diagnosis `kind` unless it is
+/// empty.
+struct FailureToKeep {
+  std::string kind;  ///< A diagnosis:: kind, or "" for any failure.
+  int failures = 0;  ///< Runs that must fail (so).
+};
+
+/// What `outcome` shows: with `any_kind`, its failures of any kind; otherwise the most common diagnosis among its
+/// failed runs (a tie goes to the kind first in diagnosis::kKinds) and how many runs it had.
+FailureToKeep failureShown(const RunsOutcome& outcome, bool any_kind);
+
+/// How a shrink judges its candidates: one agent's runs with given seeds.
+struct FailureJudging {
+  agents::AgentConfig agent;         ///< A built-in agent (planners play through ROS).
+  EpisodeOptions episode;            ///< The episode's rules.
+  std::vector<std::uint64_t> seeds;  ///< The run seeds (results.csv's seed column).
+  bool any_kind = false;             ///< Keep any failure, not only the original's most common diagnosis.
+  /// Keep candidates on which at least this share of the runs fail so, in (0, 1]; 0: the original's share.
+  double min_rate = 0;
+  /// @throws InvalidArgument naming "seeds" (none) or "min_rate".
+  void validate() const;
+};
+
+/// Whether `outcome` is a valid PPP's and still shows `keep`.
+bool stillShows(const RunsOutcome& outcome, const FailureToKeep& keep);
+
+/// A shrunk failure and what it took.
+struct ShrunkFailure {
+  Problem problem;         ///< The 1-minimal PPP, its metadata saying where it came from (shrunk_from, ...).
+  FailureToKeep kept;      ///< The failure kept.
+  RunsOutcome before;      ///< The original's runs.
+  RunsOutcome after;       ///< The shrunk PPP's runs.
+  int evaluations = 0;     ///< Candidates judged.
+  int descriptors_before = 0;  ///< Descriptors of the original.
+  int descriptors_after = 0;   ///< And of the result.
+  int cells_before = 0;        ///< Obstacle cells of the original's grid.
+  int cells_after = 0;         ///< And of the result's.
+};
+
+/// Shrinks `problem` (named `source` in the result's metadata) for `judging`'s agent and runs, keeping
+/// failureShown() of the original's runs, at least `min_rate` of them when given (shrinkProblem() over `units`).
+/// The result's metadata drops the original's measures (fitness_value, character.*) and adds shrunk_from,
+/// shrink_agent, shrink_seeds, shrink_kind, shrink_failed ("3 of 3"), descriptors_before/after,
+/// obstacle_cells_before/after and shrink_evaluations.
+/// @throws InvalidArgument naming "problem" when the original does not fail so (nothing to shrink) or is not
+/// solvable for the robot, as FailureJudging::validate(); Interrupted when `stop` says stop.
+ShrunkFailure shrinkFailure(const Problem& problem, const std::string& source, const FailureJudging& judging,
+                            ShrinkUnits units, const StopCheck& stop = {});
+
+}  // namespace simulator
+}  // namespace ppp
