@@ -223,6 +223,11 @@ const std::vector<OptionSpec<ExperimentConfig>>& experimentOptionSpecs() {
                                  "most frames of a failing run's animation in the report (longer runs: every k-th step)",
                                  +[](X& x) -> int& { return x.animation_frames; }, Bounds{2, kMaxAnimationFrames})
                        .notAffectingResults());
+    list.push_back(declareOption("shrink_worst",
+                                 "the report shows each built-in agent's pictured worst PPP shrunk to the smallest "
+                                 "PPP on which the pictured run still fails the same way (ppp shrink)",
+                                 +[](X& x) -> bool& { return x.shrink_worst; })
+                       .notAffectingResults());
     return list;
   }();
   return specs;

@@ -10,6 +10,7 @@
 #include "ppp_core/csv.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_agents/episode_runner.hpp"
+#include "ppp_simulator/failure_shrink.hpp"
 #include "ppp_simulator/report/episode_animation.hpp"
 #include "ppp_simulator/report/pass_rates.hpp"
 
@@ -52,6 +53,44 @@ FailureExample replayedRun(const ExperimentConfig& config, const agents::Prepare
   example.replay_flags = optionFlags(agents::agentPlayOptionSpecs(), agent_config, agents::AgentConfig{});
   const std::string episode_flags = optionFlags(episodeOptionSpecs(), config.episode, EpisodeOptions{});
   if (!episode_flags.empty()) example.replay_flags += " " + episode_flags;
+  return example;
+}
+
+/// The PPP of the pictured run `run` of the built-in `agent` shrunk for that run's seed (shrinkFailure()), with
+/// the run on it; nothing when it does not fail there the way it is diagnosed (a soft failure, say).
+std::optional<ShrunkExample> shrunkRun(const ExperimentConfig& config, const agents::AgentConfig& agent,
+                                       const FailureExample& run, const StopCheck& stop) {
+  const EpisodeOptions& episode = config.episode;
+  FailureJudging judging;
+  judging.agent = agent;
+  judging.episode = episode;
+  judging.seeds = {run.seed};
+  ShrunkFailure shrunk;
+  try {
+    shrunk = shrinkFailure(run.ppp, run.set + "/" + run.problem + ".ppp", judging, ShrinkUnits::Descriptors, stop);
+  } catch (const InvalidArgument& e) {
+    if (e.name() != "problem") throw;
+    return std::nullopt;
+  }
+  ShrunkExample example;
+  const Grid grid = decodeGrid(shrunk.problem);
+  EpisodeOutcome outcome;
+  if (std::max(shrunk.problem.width, shrunk.problem.height) <= kReportAnimationMaxSide) {
+    AnimationOptions animation;
+    animation.max_frames = config.animation_frames;
+    EpisodeAnimation animated = animateEpisode(shrunk.problem, grid, agent, episode, run.seed, animation, stop);
+    outcome = std::move(animated.outcome);
+    example.animation_gif = std::move(animated.gif);
+  } else {
+    outcome = agents::recordEpisode(shrunk.problem, grid, agent, episode, run.seed);
+  }
+  example.ppp = shrunk.problem;
+  example.path = outcome.path;
+  example.cycle = cycleCells(diagnoseRun(outcome.passed, false, outcome.reason, outcome.cells), outcome.cells);
+  example.summary = std::to_string(shrunk.descriptors_after) + " of " + std::to_string(shrunk.descriptors_before) +
+                    " descriptors, " + std::to_string(shrunk.cells_after) + " of " + std::to_string(shrunk.cells_before) +
+                    " obstacle cells, still " + shrunk.kept.kind + " in " +
+                    *findMetadata(shrunk.problem.metadata, "shrink_failed") + " run";
   return example;
 }
 
@@ -176,6 +215,7 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
     }
     if (at.first < 0) continue;
     if (std::optional<FailureExample> run = failingRun(config, sets[at.first], at.second, agent, groups, stop)) {
+      if (config.shrink_worst && !run->recorded) run->shrunk = shrunkRun(config, agent, *run, stop);
       worst.push_back(std::move(*run));
     }
   }

@@ -16,6 +16,10 @@ for f in experiment.yaml summary.csv report.md report.html sets/turns/set.csv se
   [ -s "$work/a/$f" ] && pass || fail "experiment did not write $f"
 done
 ls "$work/a/pictures/"*.png > /dev/null 2>&1 && pass || fail "report has no pictures"
+# Each pictured worst PPP of a built-in agent is shown shrunk too, with its file (shrink_worst, on by default).
+shrunk_lines=$(grep -c "^- shrunk: " "$work/a/report.md")
+[ "$shrunk_lines" -ge 1 ] && [ "$(ls "$work/a/ppps/"*_shrunk.ppp | wc -l)" -eq "$shrunk_lines" ] && pass || \
+  fail "the report shows $shrunk_lines shrunk PPPs: $(ls "$work/a/ppps")"
 # Every failing run pictured is also animated, beside the picture and inline in the HTML.
 for png in "$work/a/pictures/"*.png; do
   [ -s "${png%.png}.gif" ] && pass || fail "no animation beside $png"

@@ -243,6 +243,31 @@ TEST_F(ReportTest, DiagnosesAreTabledPerAgentAndSetAndSaidBesideEachPicture) {
   EXPECT_NE(read("report.html").find("<li>diagnosis loop: from step 1"), std::string::npos);
 }
 
+TEST_F(ReportTest, AShrunkWorstPppIsShownBesideItWithItsFileAndReplayCommand) {
+  ReportInput input = handMadeInput();
+  FailureExample worst = input.failures[0];
+  ShrunkExample shrunk;
+  shrunk.ppp = Problem::empty(5, 5, 4);
+  shrunk.ppp.obstacles.push_back(Obstacle{Shape::VerticalBar, 2, 1, 1, 1});
+  shrunk.path = {{0, 0}, {1, 0}, {1, 1}};
+  shrunk.cycle = {{1, 0}, {1, 1}};
+  shrunk.summary = "1 of 1 descriptors, 1 of 4 obstacle cells, still loop in 1 of 1 run";
+  worst.problem = "q2";
+  worst.shrunk = shrunk;
+  input.worst = {worst};
+  writeReport(dir_, input);
+  const std::string md = read("report.md");
+  EXPECT_NE(md.find("- shrunk: 1 of 1 descriptors, 1 of 4 obstacle cells, still loop in 1 of 1 run "
+                    "(`ppps/beta_q2_random_shrunk.ppp`; replay: `ppp replay ppps/beta_q2_random_shrunk.ppp --agent "
+                    "random --seed 12345 -o path.png`)"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("](pictures/beta_q2_random_shrunk.png)"), std::string::npos) << md;
+  EXPECT_EQ(parsePpp(read("ppps/beta_q2_random_shrunk.ppp"), "shrunk.ppp"), shrunk.ppp);
+  EXPECT_TRUE(fs::is_regular_file(dir_ + "/pictures/beta_q2_random_shrunk.png"));
+  EXPECT_NE(read("report.html").find("<li>shrunk: 1 of 1 descriptors"), std::string::npos);
+}
+
 TEST_F(ReportTest, AFailureWithAnAnimationShowsItBesideThePictureAndWritesItsFile) {
   GifAnimation run(7, 5, {{255, 255, 255}, {0, 0, 0}});
   run.addFrame(std::vector<std::uint8_t>(35, 0), 10);

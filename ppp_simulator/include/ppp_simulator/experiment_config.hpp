@@ -28,6 +28,7 @@ struct ExperimentConfig {
   int threads = 0;             ///< Worker threads; 0 = every core.
   int hardest = 6;             ///< Pictures of the hardest PPPs in the report.
   int animation_frames = 301;  ///< Most frames of a failing run's animation in the report (default: budget 300 whole).
+  bool shrink_worst = true;    ///< The report shows each built-in agent's pictured worst PPP shrunk (ppp shrink).
   std::vector<SetSpec> sets;   ///< The PPP sets, in report order.
   std::vector<agents::AgentConfig> agents;  ///< The agent configurations, in report order.
   std::vector<ReferenceRate> reference;     ///< Published pass rates shown beside the measured ones, in YAML order

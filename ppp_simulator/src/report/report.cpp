@@ -144,6 +144,12 @@ struct Picture {
   std::string png;       // PNG bytes
   int width = 0;
   int height = 0;
+  std::string shrunk_png_file;  // the shrunk PPP's picture, animation and file (FailureExample::shrunk), else empty
+  std::string shrunk_gif_file;
+  std::string shrunk_ppp_file;
+  std::string shrunk_png;
+  int shrunk_width = 0;
+  int shrunk_height = 0;
 };
 
 struct SetSummary {
@@ -290,6 +296,21 @@ std::vector<Picture> makePictures(const std::vector<FailureExample>& failures, c
           "ppps/" + ppp_names.claim(safeStem(failure.set) + "_" + safeStem(failure.problem), ".ppp");
       if (known == ppp_files.end()) ppp_files.emplace(key, std::make_pair(picture.ppp_file, failure.ppp));
     }
+    if (failure.shrunk) {
+      const ShrunkExample& shrunk = *failure.shrunk;
+      const PictureOptions options = pictureOptions(shrunk.ppp);
+      picture.shrunk_png = encodePng(renderProblemRgb(shrunk.ppp, shrunk.path, options, shrunk.cycle),
+                                     pictureWidth(shrunk.ppp.width, options), pictureHeight(shrunk.ppp.height, options));
+      picture.shrunk_width = pictureWidth(shrunk.ppp.width, options);
+      picture.shrunk_height = pictureHeight(shrunk.ppp.height, options);
+      picture.shrunk_png_file = picture.png_file.substr(0, picture.png_file.size() - 4) + "_shrunk.png";
+      if (!shrunk.animation_gif.empty()) {
+        picture.shrunk_gif_file = picture.shrunk_png_file.substr(0, picture.shrunk_png_file.size() - 4) + ".gif";
+      }
+      picture.shrunk_ppp_file = "ppps/" + ppp_names.claim(safeStem(failure.set) + "_" + safeStem(failure.problem) + "_" +
+                                                              safeStem(failure.agent) + "_shrunk",
+                                                          ".ppp");
+    }
     if (!failure.animation_gif.empty()) {
       if (!gifScreenSize(failure.animation_gif, &picture.gif_width, &picture.gif_height)) {
         throw InvalidArgument("failures", "example " + std::to_string(i) + " (" + failure.set + " / " +
@@ -338,11 +359,11 @@ std::string animationGuide(const std::vector<FailureExample>& examples) {
          "-o run.gif).";
 }
 
-std::string replayCommand(const FailureExample& failure, const Picture& picture) {
+/// How to play `failure`'s run again on the PPP in `ppp_file` (its own, or its shrunk one).
+std::string replayCommand(const FailureExample& failure, const std::string& ppp_file) {
   if (failure.recorded) return "its moves: planner_moves.csv, run " + std::to_string(failure.run);
   const std::string flags = failure.replay_flags.empty() ? "--agent " + shellWord(failure.agent) : failure.replay_flags;
-  return "ppp replay " + shellWord(picture.ppp_file) + " " + flags + " --seed " + std::to_string(failure.seed) +
-         " -o path.png";
+  return "ppp replay " + shellWord(ppp_file) + " " + flags + " --seed " + std::to_string(failure.seed) + " -o path.png";
 }
 
 std::string readingGuide(const ReportInput& input) {
@@ -588,7 +609,7 @@ void failureEntry(const FailureExample& failure, const Picture& picture, const s
   const std::string grid = std::to_string(failure.ppp.width) + "\xC3\x97" + std::to_string(failure.ppp.height) +
                            ", start " + cellText(failure.ppp.start) + ", goal " + cellText(failure.ppp.goal) +
                            ", " + std::to_string(decodeGrid(failure.ppp).obstacleCount()) + " obstacle cells";
-  const std::string command = replayCommand(failure, picture);
+  const std::string command = replayCommand(failure, picture.ppp_file);
 
   out->md += "### " + number + mdCode(failure.set, false) + " / " + mdCode(failure.problem, false) +
              " \xE2\x80\x94 " + mdCode(failure.agent, false) + "\n\n";
@@ -601,7 +622,19 @@ void failureEntry(const FailureExample& failure, const Picture& picture, const s
   if (!diagnosis.empty()) out->md += "- diagnosis " + mdText(diagnosis) + "\n";
   out->md += "- grid " + mdText(grid) + "\n";
   out->md += "- path " + mdText(pathText(failure)) + "\n";
-  out->md += "- replay: " + mdCode(command, false) + "\n\n";
+  out->md += "- replay: " + mdCode(command, false) + "\n";
+  std::string shrunk_command;
+  if (failure.shrunk) {
+    shrunk_command = replayCommand(failure, picture.shrunk_ppp_file);
+    out->md += "- shrunk: " + mdText(failure.shrunk->summary) + " (" + mdCode(picture.shrunk_ppp_file, false) +
+               "; replay: " + mdCode(shrunk_command, false) + ")\n\n  ![" +
+               mdText("The same run on the shrunk PPP") + "](" + picture.shrunk_png_file + ")";
+    if (!picture.shrunk_gif_file.empty()) {
+      out->md += " ![" + mdText("The same run on the shrunk PPP, step by step") + "](" + picture.shrunk_gif_file + ")";
+    }
+    out->md += "\n";
+  }
+  out->md += "\n";
 
   out->html += "<h3>" + escapeMarkup(number) + "<code>" + escapeMarkup(failure.set) + "</code> / <code>" +
                escapeMarkup(failure.problem) + "</code> \xE2\x80\x94 <code>" + escapeMarkup(failure.agent) +
@@ -627,7 +660,21 @@ void failureEntry(const FailureExample& failure, const Picture& picture, const s
                (picture.gif_file.empty() ? "" : ", animation <code>" + escapeMarkup(picture.gif_file) + "</code>") +
                ", PPP file <code>" +
                escapeMarkup(picture.ppp_file) + "</code></li>\n";
-  out->html += "<li>replay: <code>" + escapeMarkup(command) + "</code></li>\n</ul>\n</div>\n";
+  out->html += "<li>replay: <code>" + escapeMarkup(command) + "</code></li>\n";
+  if (failure.shrunk) {
+    out->html += "<li>shrunk: " + escapeMarkup(failure.shrunk->summary) + " (<code>" +
+                 escapeMarkup(picture.shrunk_ppp_file) + "</code>; replay: <code>" + escapeMarkup(shrunk_command) +
+                 "</code>)<br><img src=\"data:image/png;base64," + generator::base64Encode(picture.shrunk_png) +
+                 "\" width=\"" + std::to_string(picture.shrunk_width) + "\" height=\"" +
+                 std::to_string(picture.shrunk_height) + "\" alt=\"" + escapeMarkup("The same run on the shrunk PPP") +
+                 "\">";
+    if (!picture.shrunk_gif_file.empty()) {
+      out->html += "<img src=\"data:image/gif;base64," + generator::base64Encode(failure.shrunk->animation_gif) +
+                   "\" alt=\"" + escapeMarkup("The same run on the shrunk PPP, step by step") + "\">";
+    }
+    out->html += "</li>\n";
+  }
+  out->html += "</ul>\n</div>\n";
 }
 
 void failureSection(const ReportInput& input, const std::vector<Picture>& pictures, Text* out) {
@@ -858,6 +905,13 @@ void writeReport(const std::string& dir, const ReportInput& input, const StopChe
     write(all_pictures[i].png_file, all_pictures[i].png);
     if (!all_pictures[i].gif_file.empty()) write(all_pictures[i].gif_file, shown[i].animation_gif);
     if (written_ppps.insert(all_pictures[i].ppp_file).second) write(all_pictures[i].ppp_file, formatPpp(shown[i].ppp));
+    if (shown[i].shrunk) {
+      write(all_pictures[i].shrunk_png_file, all_pictures[i].shrunk_png);
+      if (!all_pictures[i].shrunk_gif_file.empty()) {
+        write(all_pictures[i].shrunk_gif_file, shown[i].shrunk->animation_gif);
+      }
+      write(all_pictures[i].shrunk_ppp_file, formatPpp(shown[i].shrunk->ppp));
+    }
   }
   write("report.md", text.md);
   write("report.html", text.html);

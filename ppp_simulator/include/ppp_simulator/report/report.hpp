@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,6 +16,15 @@
 
 namespace ppp {
 namespace simulator {
+
+/// A pictured run's PPP shrunk to the smallest on which the run still fails the same way (ppp shrink).
+struct ShrunkExample {
+  ppp::Problem ppp;              ///< The 1-minimal PPP; its metadata says where it came from.
+  std::vector<ppp::Cell> path;   ///< The run's cells on it, from the start.
+  std::vector<ppp::Cell> cycle;  ///< A loop's cycle cells, pink on its picture; else empty.
+  std::string summary;           ///< "1 of 10 descriptors, 1 of 54 obstacle cells, still loop in 1 of 1 runs".
+  std::string animation_gif;     ///< The run on it frame by frame; empty when the map is too large to animate.
+};
 
 /// A failed run on one of the hardest PPPs (the runner chooses them), with what a test engineer needs to
 /// see the failure and replay it.
@@ -34,6 +44,7 @@ struct FailureExample {
   std::string animation_gif;    ///< The run frame by frame (animateEpisode's GIF bytes); empty when there is none.
   bool recorded = false;        ///< A planner's run, drawn from its moves in planner_moves.csv (`ppp replay`
                                 ///< cannot play a planner).
+  std::optional<ShrunkExample> shrunk;  ///< Its PPP shrunk, when the report shows it.
 };
 
 /// What the report says about a set besides its pass rates.
