@@ -1,5 +1,8 @@
 // `ppp shrink`: the smallest PPP on which an agent still fails the same way, for one PPP or a whole set.
+#include <algorithm>
 #include <filesystem>
+#include <map>
+#include <optional>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -17,6 +20,7 @@
 #include "ppp_core/text_format.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_simulator/failure_shrink.hpp"
+#include "ppp_simulator/results_file.hpp"
 #include "stop_signals.hpp"
 
 namespace ppp {
@@ -37,7 +41,24 @@ struct ShrinkFlags {
   bool any_kind = false;
   double min_rate = 0;
   std::string units;
+  std::string results;
 };
+
+/// The failing runs' seeds of results.csv, per (set, PPP), for the agent shrunk for.
+using FailingSeeds = std::map<std::pair<std::string, std::string>, std::vector<std::uint64_t>>;
+
+/// The seeds of `agent`'s failed runs in the results file `path`, in run order, at most `most` per PPP.
+FailingSeeds failingSeeds(const std::string& path, const std::string& agent, int most) {
+  std::vector<agents::EpisodeResult> rows = simulator::readResultsFile(path);
+  std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.run < b.run; });
+  FailingSeeds seeds;
+  for (const agents::EpisodeResult& r : rows) {
+    if (r.agent != agent || r.passed) continue;
+    std::vector<std::uint64_t>& list = seeds[{r.set, r.problem}];
+    if (static_cast<int>(list.size()) < most) list.push_back(r.seed);
+  }
+  return seeds;
+}
 
 /// The agent to shrink for: the flags' built-in type, or the entry named by --agent in --agents-file.
 agents::AgentConfig agentToShrinkFor(const ShrinkFlags& f) {
@@ -59,12 +80,13 @@ agents::AgentConfig agentToShrinkFor(const ShrinkFlags& f) {
   throw InvalidArgument("--agent", "no agent '" + name + "' in " + f.agents_file + "; it has: " + joinNames(names));
 }
 
-/// The run seeds judged: --seed alone, or --runs seeds derived from it as `ppp simulate` derives them.
+/// The run seeds judged: --seed alone, or --runs seeds derived from it as `ppp simulate` derives them (with
+/// --results, each PPP's failing runs' seeds replace them).
 std::vector<std::uint64_t> judgedSeeds(const ShrinkFlags& f) {
-  if (f.command->count("--runs") == 0) return {f.seed};
-  if (f.runs < 1 || f.runs > 100000) {
+  if (f.command->count("--runs") > 0 && (f.runs < 1 || f.runs > 100000)) {
     throw InvalidArgument("--runs", "expected a number of runs in [1, 100000], got " + std::to_string(f.runs));
   }
+  if (f.command->count("--runs") == 0) return {f.seed};
   std::vector<std::uint64_t> seeds;
   for (int run = 0; run < f.runs; ++run) seeds.push_back(deriveSeed(f.seed, {static_cast<std::uint64_t>(run)}));
   return seeds;
@@ -86,7 +108,23 @@ std::string summary(const simulator::ShrunkFailure& s, double seconds) {
          std::to_string(s.evaluations) + " candidates, " + formatFixed(seconds * 1000, 1) + " ms)";
 }
 
-int shrinkOne(const ShrinkFlags& f, const simulator::FailureJudging& judging, const StopCheck& stop) {
+/// The name of the directory `path` is (a set's name, as results.csv has it).
+std::string directoryName(const fs::path& path) {
+  return path.filename().empty() ? path.parent_path().filename().string() : path.filename().string();
+}
+
+int shrinkOne(const ShrinkFlags& f, simulator::FailureJudging judging, const FailingSeeds* failing,
+              const StopCheck& stop) {
+  if (failing != nullptr) {
+    const std::string set = directoryName(fs::absolute(f.input).parent_path());
+    const std::string id = fs::path(f.input).stem().string();
+    const auto found = failing->find({set, id});
+    if (found == failing->end()) {
+      throw InvalidArgument("--results", "no failed run of " + judging.agent.name + " on " + set + "/" + id + " in " +
+                                             f.results);
+    }
+    judging.seeds = found->second;
+  }
   const Problem problem = readProblemFile(f.input);
   const double start = steadySeconds();
   const simulator::ShrunkFailure shrunk =
@@ -97,8 +135,9 @@ int shrinkOne(const ShrinkFlags& f, const simulator::FailureJudging& judging, co
   return 0;
 }
 
-int shrinkSet(const ShrinkFlags& f, const simulator::FailureJudging& judging, const StopCheck& stop) {
-  const std::vector<std::uint64_t>& seeds = judging.seeds;
+int shrinkSet(const ShrinkFlags& f, simulator::FailureJudging judging, const FailingSeeds* failing,
+              const StopCheck& stop) {
+  const std::size_t runs = judging.seeds.size();
   if (fs::exists(f.output) && !(fs::is_directory(f.output) && fs::is_empty(f.output))) {
     throw InvalidArgument("--output", "'" + f.output + "' exists and is not an empty directory");
   }
@@ -107,6 +146,14 @@ int shrinkSet(const ShrinkFlags& f, const simulator::FailureJudging& judging, co
   for (std::size_t i = 0; i < set.problems.size(); ++i) {
     const std::string name = set.ids[i] + ".ppp";
     const double start = steadySeconds();
+    if (failing != nullptr) {
+      const auto found = failing->find({directoryName(f.input), set.ids[i]});
+      if (found == failing->end()) {
+        std::cout << name << ": no failed run of " << judging.agent.name << " in " << f.results << ", kept out\n";
+        continue;
+      }
+      judging.seeds = found->second;
+    }
     try {
       const simulator::ShrunkFailure s =
           simulator::shrinkFailure(set.problems[i], name, judging, unitsFor(f, name), stop);
@@ -119,7 +166,8 @@ int shrinkSet(const ShrinkFlags& f, const simulator::FailureJudging& judging, co
   }
   if (shrunk.empty()) {
     std::cerr << "ppp: " << judging.agent.name << " fails none of the " << set.problems.size() << " PPPs of " << f.input
-              << " in the " << seeds.size() << " runs judged: nothing to shrink, nothing written\n";
+              << (failing != nullptr ? " with a failed run in " + f.results : " in the " + std::to_string(runs) + " runs judged")
+              << ": nothing to shrink, nothing written\n";
     return 1;
   }
   fs::create_directories(f.output);
@@ -140,9 +188,12 @@ int runShrink(const ShrinkFlags& f) {
   }
   unitsFor(f, f.input);  // a bad --by is refused before any run
   if (!fs::exists(f.input)) throw InvalidArgument("input", "'" + f.input + "' does not exist");
+  std::optional<FailingSeeds> failing;
+  if (!f.results.empty()) failing = failingSeeds(f.results, judging.agent.name, f.command->count("--runs") > 0 ? f.runs : 3);
   const StopCheck stop = stopOnSignals();
   try {
-    return fs::is_directory(f.input) ? shrinkSet(f, judging, stop) : shrinkOne(f, judging, stop);
+    const FailingSeeds* seeds = failing ? &*failing : nullptr;
+    return fs::is_directory(f.input) ? shrinkSet(f, judging, seeds, stop) : shrinkOne(f, judging, seeds, stop);
   } catch (const Interrupted&) {
     std::cerr << "ppp: interrupted; nothing written\n";
     return 130;
@@ -173,7 +224,12 @@ void addShrinkCommand(CLI::App& app) {
                       "The failing run's seed (results.csv's seed column); with --runs, the seed their seeds derive "
                       "from, as in ppp simulate")
       ->capture_default_str();
-  command->add_option("--runs", flags->runs, "Judge this many runs, seeded as ppp simulate seeds them");
+  command->add_option("--runs", flags->runs,
+                      "Judge this many runs, seeded as ppp simulate seeds them (with --results: at most this many of "
+                      "each PPP's failed runs, default 3)");
+  command->add_option("--results", flags->results,
+                      "An experiment's results.csv: judge each PPP on the seeds of the agent's failed runs there "
+                      "(the set is the PPP's directory name)");
   command->add_option("--min-rate", flags->min_rate,
                       "Keep only candidates on which at least this share of the runs fail so, in (0, 1] (default: "
                       "the original's share)");

@@ -69,6 +69,17 @@ grep -q "resumed" "$work/out" && pass || fail "no resume reported: $(cat "$work/
 cmp -s "$work/a/results.csv" "$work/b/results.csv" && pass || fail "results after SIGKILL + resume differ from an uninterrupted run"
 cmp -s "$work/a/summary.csv" "$work/b/summary.csv" && pass || fail "summary after SIGKILL + resume differs"
 
+# ppp shrink on the experiment's set, judged on the seeds of the agent's failed runs in its results.csv.
+expect_ok "shrink with results" "$ppp" shrink "$work/a/sets/turns" --agents-file "$work/agents.yaml" \
+  --agent explorer_memory_5x5 --results "$work/a/results.csv" --runs 2 -o "$work/shrunk_turns"
+first=$(ls "$work/shrunk_turns" | head -1)
+seeds=$(sed -n 's/^meta shrink_seeds //p' "$work/shrunk_turns/$first")
+expected=$(awk -F, -v id="${first%.ppp}" '$1 == "turns" && $2 == id && $3 == "explorer_memory_5x5" && $6 == 0 { print $4, $5 }' \
+  "$work/a/results.csv" | sort -n | head -2 | cut -d' ' -f2 | paste -sd,)
+[ -n "$seeds" ] && [ "$seeds" = "$expected" ] && pass || fail "shrunk $first on seeds '$seeds', its failed runs' are '$expected'"
+expect_error "shrink without a failed run" "--results: no failed run of astar on turns/ppp_000 in" \
+  "$ppp" shrink "$work/a/sets/turns/ppp_000.ppp" --agent astar --results "$work/a/results.csv" -o "$work/none.ppp"
+
 # Runs lost to the agent link (rows a ROS run records as timeout or agent_lost) are played again on a resume, and
 # their new rows replace them: here every 997th run of the finished experiment is recorded as lost instead.
 cp -r "$work/a" "$work/l"
