@@ -49,11 +49,13 @@ using FailingSeeds = std::map<std::pair<std::string, std::string>, std::vector<s
 
 /// The seeds of `agent`'s failed runs in the results file `path`, in run order, at most `most` per PPP.
 FailingSeeds failingSeeds(const std::string& path, const std::string& agent, int most) {
-  std::vector<agents::EpisodeResult> rows = simulator::readResultsFile(path);
-  std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.run < b.run; });
+  std::vector<agents::EpisodeResult> failed = simulator::readResultsFile(path);
+  failed.erase(std::remove_if(failed.begin(), failed.end(),
+                              [&](const agents::EpisodeResult& r) { return r.agent != agent || r.passed; }),
+               failed.end());
+  std::sort(failed.begin(), failed.end(), [](const auto& a, const auto& b) { return a.run < b.run; });
   FailingSeeds seeds;
-  for (const agents::EpisodeResult& r : rows) {
-    if (r.agent != agent || r.passed) continue;
+  for (const agents::EpisodeResult& r : failed) {
     std::vector<std::uint64_t>& list = seeds[{r.set, r.problem}];
     if (static_cast<int>(list.size()) < most) list.push_back(r.seed);
   }
