@@ -67,5 +67,13 @@ PreparedSet prepareSet(const std::string& name, ProblemSet set, const EpisodeOpt
   return p;
 }
 
+PreparedSet prepareSingle(const std::string& name, const std::string& id, const Problem& problem,
+                          const EpisodeOptions& episode) {
+  ProblemSet single;
+  single.ids = {id};
+  single.problems = {problem};
+  return prepareSet(name, std::move(single), episode);
+}
+
 }  // namespace agents
 }  // namespace ppp

@@ -126,10 +126,7 @@ void runReplay(const ReplayFlags& f) {
     drawn = "path drawn in " + f.output;
   }
   // The run as results.csv has it, diagnosis included.
-  ProblemSet single;
-  single.ids = {"replayed"};
-  single.problems = {problem};
-  const agents::PreparedSet set = agents::prepareSet("replay", std::move(single), options);
+  const agents::PreparedSet set = agents::prepareSingle("replay", "replayed", problem, options);
   const Diagnosis diagnosis = agents::diagnosisOf(agents::episodeResult(set, 0, config.name, 0, f.seed, outcome));
   const std::vector<Cell> cycle = cycleCells(diagnosis, outcome.cells);
   if (!animated) writeProblemPng(problem, outcome.path, f.output, PictureOptions{}, cycle);

@@ -32,12 +32,9 @@ std::string seedList(const std::vector<std::uint64_t>& seeds) {
 RunsOutcome playRuns(const Problem& problem, const agents::AgentConfig& agent, const EpisodeOptions& episode,
                      const std::vector<std::uint64_t>& seeds) {
   RunsOutcome outcome;
-  ProblemSet single;
-  single.ids = {"candidate"};
-  single.problems = {problem};
   std::optional<agents::PreparedSet> set;
   try {
-    set.emplace(agents::prepareSet("shrink", std::move(single), episode));
+    set.emplace(agents::prepareSingle("shrink", "candidate", problem, episode));
   } catch (const InvalidArgument&) {  // unsolvable for the robot
     outcome.valid = false;
     return outcome;

@@ -52,6 +52,11 @@ EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::stri
                             std::uint64_t seed, const EpisodeOutcome& outcome,
                             const std::vector<std::uint64_t>& states = {}, const char* reported_kind = nullptr);
 
+/// prepareSet() of a set holding `problem` alone, as PPP `id` of set `name` (one PPP replayed or judged).
+/// @throws InvalidArgument as prepareSet().
+PreparedSet prepareSingle(const std::string& name, const std::string& id, const Problem& problem,
+                          const EpisodeOptions& episode);
+
 /// A set ready to play under `episode`'s rules: its grids, optima (optimumOf()), budgets and window atlases at
 /// the sensor range.
 /// @throws InvalidArgument naming "sets" for a PPP unsolvable for the robot (4-connected, with its body).
