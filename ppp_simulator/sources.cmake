@@ -21,4 +21,5 @@ set(PPP_SIMULATOR_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/experiment_graph.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/simulator_options.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/failure_shrink.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/shrink_job.cpp
 )

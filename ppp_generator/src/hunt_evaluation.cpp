@@ -13,11 +13,16 @@ std::string candidateId(std::size_t index) { return "c" + std::to_string(index);
 }  // namespace
 
 HuntEvaluation::HuntEvaluation(const std::vector<Problem>& problems, const std::vector<agents::AgentConfig>& panel,
-                               const EpisodeOptions& episode, int runs, std::uint64_t generator_seed, int batch_size)
+                               const EpisodeOptions& episode, int runs, std::uint64_t generator_seed, int batch_size,
+                               const std::vector<std::uint64_t>& run_seeds)
     : runs_(runs) {
   if (runs < 1 || runs > generator::kMaxRunsPerEval) {
     throw InvalidArgument("runs", "expected runs in [1, " + std::to_string(generator::kMaxRunsPerEval) + "], got " +
                                       std::to_string(runs));
+  }
+  if (!run_seeds.empty() && run_seeds.size() != static_cast<std::size_t>(runs)) {
+    throw InvalidArgument("run_seeds", "expected one seed per run (" + std::to_string(runs) + "), got " +
+                                           std::to_string(run_seeds.size()));
   }
   ProblemSet set;
   for (std::size_t i = 0; i < problems.size(); ++i) {
@@ -37,7 +42,8 @@ HuntEvaluation::HuntEvaluation(const std::vector<Problem>& problems, const std::
     for (int instance = 0; instance < instances; ++instance) {
       lanes_.push_back(std::make_unique<agents::AgentLane>(
           panel[a], episode, sets_,
-          [hashes, generator_seed, name = panel[a].name](int, int problem, int run) {
+          [hashes, generator_seed, run_seeds, name = panel[a].name](int, int problem, int run) {
+            if (!run_seeds.empty()) return run_seeds[static_cast<std::size_t>(run)];
             return failureRunSeed(generator_seed, hashes[static_cast<std::size_t>(problem)], name, run);
           },
           runs, batch_size, agents::AgentLane::SkipFunction{}, agents::LaneShare{instance, instances}));
@@ -56,6 +62,8 @@ void HuntEvaluation::record(const std::vector<agents::EpisodeResult>& ended) {
     ++e.episodes;
     const bool passed = r.passed && !r.soft_failure;
     tallies_[p].add(a, passed, r.steps, sets_[0].budgets[p], sets_[0].moves[p]);
+    if (!r.diagnosis.empty()) ++e.diagnoses[r.diagnosis];
+    if (r.endless_step >= 0) ++e.endless;
     if (!passed) {
       ++e.failed;
       ++e.reasons[r.soft_failure ? kSoftFailureReason : r.reason];

@@ -23,22 +23,64 @@ struct LaunchFileFlags {
   std::string output;
   simulator::GraphOptions graph;
   std::map<std::string, std::string> simulator_flags;
+  std::map<std::string, std::string> shrink_flags;
   bool large = false;
   bool json = false;
 };
+
+/// The shrink's options `ppp launch-file` takes as flags (--shrink INPUT, --agent NAME, --runs N, ...); the config
+/// and the output are its own.
+const std::vector<OptionSpec<simulator::ShrinkTask>>& shrinkFlagSpecs() {
+  static const std::vector<OptionSpec<simulator::ShrinkTask>> specs = [] {
+    std::vector<OptionSpec<simulator::ShrinkTask>> list = selectOptions(
+        simulator::shrinkTaskSpecs(), {"input", "agent", "seed", "runs", "results", "min_rate", "any_kind", "by"});
+    list[0].flag = "shrink";
+    list[0].doc = "INPUT: the graph of the shrink of this PPP file or set directory (absolute) into OUTPUT instead, "
+                  "judged on --agent's nodes through the simulator (the other shrink flags: ppp shrink's)";
+    return list;
+  }();
+  return specs;
+}
+
+/// The shrink the flags ask for, if any. @throws InvalidArgument naming the flag.
+void applyShrinkFlags(const LaunchFileFlags& flags, simulator::GraphOptions* graph) {
+  applyOptionFlags(*flags.command, shrinkFlagSpecs(), flags.shrink_flags, &graph->shrink);
+  if (graph->shrink.input.empty()) {
+    for (const auto& spec : shrinkFlagSpecs()) {
+      if (flags.command->count(flagName(spec)) > 0) {
+        throw InvalidArgument(flagName(spec), "only a shrink takes it: give --shrink INPUT too");
+      }
+    }
+    return;
+  }
+  graph->shrink.config = graph->config_path;
+  graph->shrink.output = graph->output_dir;
+  if (!std::filesystem::exists(graph->shrink.input)) {
+    throw InvalidArgument("--shrink", "'" + graph->shrink.input + "' does not exist");
+  }
+}
 
 void runLaunchFile(LaunchFileFlags flags) {
   namespace fs = std::filesystem;
   simulator::ExperimentConfig config = simulator::loadExperimentConfig(flags.config);
   simulator::assignPlanners(&config, flags.graph.planners);
-  if (flags.graph.hunt.empty()) simulator::checkWork(simulator::estimateWork(config), flags.large);
   applyAndValidateFlags(*flags.command, simulator::simulatorOptionSpecs(), flags.simulator_flags,
                         &flags.graph.simulator);
   flags.graph.config_path = fs::absolute(flags.config).lexically_normal().string();
   flags.graph.output_dir = fs::absolute(flags.output).lexically_normal().string();
-  if (flags.graph.hunt.empty()) simulator::checkExperimentDirectory(config, flags.graph.output_dir);
+  applyShrinkFlags(flags, &flags.graph);
+  const bool experiment = flags.graph.hunt.empty() && flags.graph.shrink.input.empty();
+  if (experiment) {
+    simulator::checkWork(simulator::estimateWork(config), flags.large);
+    simulator::checkExperimentDirectory(config, flags.graph.output_dir);
+  }
   if (!flags.graph.hunt.empty()) generator::checkOutputDirectory(flags.graph.output_dir);
-  const ppp_msgs::LaunchGraph graph = simulator::experimentGraph(config, flags.graph);
+  ppp_msgs::LaunchGraph graph;
+  try {
+    graph = simulator::experimentGraph(config, flags.graph);
+  } catch (const InvalidArgument& e) {
+    throw namingTheFlag(*flags.command, shrinkFlagSpecs(), e);
+  }
   std::cout << (flags.json ? ppp_msgs::launchJson(graph) : ppp_msgs::launchXml(graph));
 }
 
@@ -60,6 +102,7 @@ void addLaunchFileCommand(CLI::App& app) {
   command->add_option("--hunt", flags->graph.hunt,
                       "SET: the graph of the hunt of this set of the config (fitness failure or regret) into OUTPUT "
                       "instead (panel agents only)");
+  addOptionFlags(command, shrinkFlagSpecs(), &flags->graph.shrink, &flags->shrink_flags);
   command->add_option("--env-loader", flags->graph.env_loader,
                       "Script remote machines run nodes through (the workspace's devel/env.sh, same path there)");
   command->add_flag("--large", flags->large,

@@ -9,6 +9,7 @@
 #include "ppp_generator/generator_node_options.hpp"
 #include "ppp_generator/generator_options.hpp"
 #include "ppp_simulator/experiment_config.hpp"
+#include "ppp_simulator/shrink_job.hpp"
 #include "ppp_simulator/simulator_options.hpp"
 
 namespace ppp {
@@ -81,6 +82,12 @@ std::string optionsReference() {
       << "\nWhat the node runs, set by the graph `ppp launch-file` writes (`~mode`, `~config`, `~output_dir`,\n"
       << "`~generator_nodes`):\n\n"
       << optionsMarkdownTable(simulator::simulatorTaskSpecs(), simulator::SimulatorTask{}, &parameter)
+      << "\n## Shrink node\n\n"
+      << "`shrink_node` `~` parameters ([shrink a failure](../how-to/shrink-a-failure.md)): `ppp shrink` for any\n"
+      << "agent of an experiment, judged through the simulator serving hunts. `launch/shrink.launch` sets them\n"
+      << "from `ppp launch-file --shrink INPUT --agent NAME` and that command's flags of the same names;\n"
+      << "`ppp shrink` takes `--results`, `--min-rate` and `--by`.\n\n"
+      << optionsMarkdownTable(simulator::shrinkTaskSpecs(), simulator::ShrinkTask{}, &parameter)
       << "\n## Planner bridge node\n\n"
       << "`planner_bridge_node` `~` parameters besides its agent's `~name`, `~memory` and `~sensor_noise`\n"
       << "([the planner interface](planner-interface.md)).\n\n"

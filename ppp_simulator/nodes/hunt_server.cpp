@@ -23,7 +23,7 @@ bool HuntServer::evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs
     std::vector<Problem> problems;
     for (const ppp_msgs::Problem& m : request.problems) problems.push_back(ppp_msgs::fromMessage(m));
     generator::HuntEvaluation evaluation(problems, panel, config_.episode, static_cast<int>(request.runs), request.seed,
-                              parameters_.batch_size);
+                                         parameters_.batch_size, request.run_seeds);
     std::vector<LaneRunner*> runners;  // one per lane: the panel's agents' instances, in panel order
     for (const agents::AgentConfig& agent : panel) {
       for (const auto& runner : runnersFor(agent)) runners.push_back(runner.get());
@@ -78,6 +78,11 @@ ppp_msgs::ProblemEvaluation HuntServer::toMessage(const generator::PanelEvaluati
     m.reasons.push_back(reason);
     m.reason_counts.push_back(static_cast<std::uint32_t>(count));
   }
+  for (const auto& [kind, count] : e.diagnoses) {
+    m.diagnoses.push_back(kind);
+    m.diagnosis_counts.push_back(static_cast<std::uint32_t>(count));
+  }
+  m.endless_loops = static_cast<std::uint32_t>(e.endless);
   return m;
 }
 

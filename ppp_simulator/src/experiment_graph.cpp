@@ -16,11 +16,16 @@ namespace simulator {
 
 namespace {
 
-/// The roslaunch param type of a declared option ("int", "double", "bool", "yaml" for a list; else "str").
+/// The roslaunch param type of a declared option with `value` ("int", "double", "bool", "yaml" for a list; else
+/// "str", as for an integer beyond XML-RPC's 32 bits, a 64-bit seed say).
 template <typename Options>
-std::string parameterType(const OptionSpec<Options>& spec) {
+std::string parameterType(const OptionSpec<Options>& spec, const std::string& value) {
   switch (spec.kind) {
-    case OptionKind::Integer: return "int";
+    case OptionKind::Integer: {
+      const bool fits = value.size() < 10 || (value.size() == 10 && value <= "2147483647") ||
+                        (value.size() == 11 && value[0] == '-' && value <= "-2147483648");
+      return fits ? "int" : "str";
+    }
     case OptionKind::Number: return "double";
     case OptionKind::Boolean: return "bool";
     case OptionKind::TextList: return "yaml";  // its plain text is a YAML flow list
@@ -32,7 +37,8 @@ std::string parameterType(const OptionSpec<Options>& spec) {
 template <typename Options>
 void addParams(const std::vector<OptionSpec<Options>>& specs, const Options& values, ppp_msgs::GraphNode* node) {
   for (const OptionSpec<Options>& spec : specs) {
-    node->params.push_back({spec.name, parameterType(spec), spec.plainText(values)});
+    const std::string value = spec.plainText(values);
+    node->params.push_back({spec.name, parameterType(spec, value), value});
   }
 }
 
@@ -149,6 +155,27 @@ const SetSpec& huntedSet(const ExperimentConfig& config, const std::string& name
                                     (hunted.empty() ? "none" : joinNames(hunted)) + ")");
 }
 
+/// The shrink node of `task` (required: the graph ends with it).
+ppp_msgs::GraphNode shrinkNode(const ShrinkTask& task) {
+  ppp_msgs::GraphNode node{"ppp_simulator", "shrink_node", ppp_msgs::nodes::kShrink};
+  node.required = true;
+  addParams(shrinkTaskSpecs(), task, &node);
+  return node;
+}
+
+/// Checks the shrink of `options` against `config`. @throws InvalidArgument naming "hunt" (both asked for),
+/// "agent" (not the config's) or the option.
+void checkShrink(const ExperimentConfig& config, const GraphOptions& options) {
+  if (!options.hunt.empty()) throw InvalidArgument("hunt", "a graph hunts or shrinks, not both");
+  options.shrink.validate();
+  std::vector<std::string> names;
+  for (const agents::AgentConfig& agent : config.agents) {
+    if (agent.name == options.shrink.agent) return;
+    names.push_back(agent.name);
+  }
+  throw InvalidArgument("agent", "the config has no agent '" + options.shrink.agent + "'; it has: " + joinNames(names));
+}
+
 }  // namespace
 
 void GraphOptions::validate(const ExperimentConfig& config) const {
@@ -202,21 +229,30 @@ std::string setTopic(const std::string& set_name) {
 ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const GraphOptions& options) {
   config.validate();
   options.validate(config);
+  const bool shrink = !options.shrink.input.empty();
+  if (shrink) checkShrink(config, options);
   const SetSpec* hunted = options.hunt.empty() ? nullptr : &huntedSet(config, options.hunt);
   ppp_msgs::LaunchGraph graph;
-  graph.comment = "The ROS graph of " + (hunted ? "the hunt of set " + hunted->name + " of " : std::string()) +
+  graph.comment = "The ROS graph of " +
+                  (hunted   ? "the hunt of set " + hunted->name + " of "
+                   : shrink ? "the shrink of " + options.shrink.input + " for agent " + options.shrink.agent + " of "
+                            : std::string()) +
                   "the experiment " + options.config_path + ", written by `ppp launch-file`.";
   std::vector<agents::AgentConfig> agents;
   for (const agents::AgentConfig& agent : config.agents) {
     const std::vector<std::string>* panel = hunted ? &hunted->generator->agents : nullptr;
-    if (!panel || std::find(panel->begin(), panel->end(), agent.name) != panel->end()) agents.push_back(agent);
+    const bool played = shrink ? agent.name == options.shrink.agent
+                               : !panel || std::find(panel->begin(), panel->end(), agent.name) != panel->end();
+    if (played) agents.push_back(agent);
   }
   std::set<std::string> hosts;
   for (const agents::AgentConfig& agent : agents) {
     if (agent.host.empty() || !hosts.insert(agent.host).second) continue;
     graph.machines.push_back({machineName(agent.host), agent.host, options.env_loader});
   }
-  if (hunted) {
+  if (shrink) {
+    graph.nodes.push_back(shrinkNode(options.shrink));
+  } else if (hunted) {
     graph.nodes.push_back(generatorNode(config, *hunted, options.output_dir, options.output_dir, true));
   } else {
     for (const SetSpec& set : config.sets) {
@@ -227,12 +263,13 @@ ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const Grap
     }
   }
   ppp_msgs::GraphNode simulator{"ppp_simulator", "simulator_node", ppp_msgs::nodes::kSimulator};
-  simulator.required = !hunted;
+  const bool serving = hunted || shrink;  // the simulator serves ~evaluate, and the graph ends with its client
+  simulator.required = !serving;
   SimulatorTask task;
-  task.mode = hunted ? kHuntMode : kExperimentMode;
+  task.mode = serving ? kHuntMode : kExperimentMode;
   task.config = options.config_path;
-  task.output_dir = hunted ? "" : options.output_dir;
-  task.generator_nodes = !hunted;
+  task.output_dir = serving ? "" : options.output_dir;
+  task.generator_nodes = !serving;
   task.planners = options.planners;
   addParams(simulatorTaskSpecs(), task, &simulator);
   // A bridge connects to the simulator once its planner is there: the simulator waits as long as the bridges do,

@@ -89,7 +89,7 @@ std::optional<ShrunkExample> shrunkRun(const ExperimentConfig& config, const age
   example.cycle = cycleCells(diagnoseRun(outcome.passed, false, outcome.reason, outcome.cells), outcome.cells);
   example.summary = std::to_string(shrunk.descriptors_after) + " of " + std::to_string(shrunk.descriptors_before) +
                     " descriptors, " + std::to_string(shrunk.cells_after) + " of " + std::to_string(shrunk.cells_before) +
-                    " obstacle cells, still " + shrunk.kept.kind + " in " +
+                    " obstacle cells, still " + shrunk.kept.text() + " in " +
                     *findMetadata(shrunk.problem.metadata, "shrink_failed") + " run";
   return example;
 }

@@ -15,10 +15,15 @@ namespace simulator {
 namespace {
 
 /// "3 of 3": how many of the runs show `keep`.
+/// How many of the runs of `outcome` show `keep`.
+int shownRuns(const RunsOutcome& outcome, const FailureToKeep& keep) {
+  if (keep.kind.empty()) return outcome.failed;
+  const int kind = outcome.kinds[static_cast<std::size_t>(diagnosis::kindIndex(keep.kind))];
+  return keep.endless ? std::min(kind, outcome.endless) : kind;
+}
+
 std::string shownText(const RunsOutcome& outcome, const FailureToKeep& keep) {
-  const int shown = keep.kind.empty() ? outcome.failed
-                                      : outcome.kinds[static_cast<std::size_t>(diagnosis::kindIndex(keep.kind))];
-  return std::to_string(shown) + " of " + std::to_string(outcome.runs);
+  return std::to_string(shownRuns(outcome, keep)) + " of " + std::to_string(outcome.runs);
 }
 
 std::string seedList(const std::vector<std::uint64_t>& seeds) {
@@ -48,6 +53,7 @@ RunsOutcome playRuns(const Problem& problem, const agents::AgentConfig& agent, c
     if (row.diagnosis.empty()) continue;
     ++outcome.failed;
     ++outcome.kinds[static_cast<std::size_t>(diagnosis::kindIndex(row.diagnosis))];
+    if (row.endless_step >= 0) ++outcome.endless;
   }
   return outcome;
 }
@@ -61,14 +67,18 @@ FailureToKeep failureShown(const RunsOutcome& outcome, bool any_kind) {
   const auto most = std::max_element(outcome.kinds.begin(), outcome.kinds.end());  // the first of equals
   keep.failures = *most;
   if (*most > 0) keep.kind = diagnosis::kKinds[most - outcome.kinds.begin()];
+  keep.endless = keep.kind == diagnosis::kLoop && outcome.endless >= keep.failures;
   return keep;
+}
+
+std::string FailureToKeep::text() const {
+  if (kind.empty()) return "any failure";
+  return endless ? "endless " + kind : kind;
 }
 
 bool stillShows(const RunsOutcome& outcome, const FailureToKeep& keep) {
   if (!outcome.valid || keep.failures <= 0) return false;
-  const int shown = keep.kind.empty() ? outcome.failed
-                                      : outcome.kinds[static_cast<std::size_t>(diagnosis::kindIndex(keep.kind))];
-  return shown >= keep.failures;
+  return shownRuns(outcome, keep) >= keep.failures;
 }
 
 void FailureJudging::validate() const {
@@ -83,10 +93,12 @@ ShrunkFailure shrinkFailure(const Problem& problem, const std::string& source, c
                             ShrinkUnits units, const StopCheck& stop) {
   judging.validate();
   const agents::AgentConfig& agent = judging.agent;
-  const EpisodeOptions& episode = judging.episode;
   const std::vector<std::uint64_t>& seeds = judging.seeds;
+  const RunsPlayer play = judging.play ? judging.play : [&](const Problem& p, const std::vector<std::uint64_t>& s) {
+    return playRuns(p, agent, judging.episode, s);
+  };
   ShrunkFailure shrunk;
-  shrunk.before = playRuns(problem, agent, episode, seeds);
+  shrunk.before = play(problem, seeds);
   if (!shrunk.before.valid) {
     throw InvalidArgument("problem", source + " cannot be solved by the robot (robot_radius): nothing to shrink");
   }
@@ -99,18 +111,17 @@ ShrunkFailure shrinkFailure(const Problem& problem, const std::string& source, c
     const int needed = static_cast<int>(std::ceil(judging.min_rate * static_cast<double>(seeds.size()) - 1e-9));
     if (shrunk.kept.failures < needed) {
       throw InvalidArgument("problem", agent.name + " fails " + source + " " +
-                                           (shrunk.kept.kind.empty() ? "" : "as " + shrunk.kept.kind + " ") +
+                                           (shrunk.kept.kind.empty() ? "" : "as " + shrunk.kept.text() + " ") +
                                            "in " + shownText(shrunk.before, shrunk.kept) +
                                            " runs, below the rate asked for: nothing to shrink");
     }
     shrunk.kept.failures = std::max(needed, 1);
   }
   const ShrinkResult result = shrinkProblem(
-      problem, [&](const Problem& p) { return stillShows(playRuns(p, agent, episode, seeds), shrunk.kept); }, units,
-      stop);
+      problem, [&](const Problem& p) { return stillShows(play(p, seeds), shrunk.kept); }, units, stop);
   shrunk.problem = result.problem;
   shrunk.evaluations = result.evaluations;
-  shrunk.after = playRuns(shrunk.problem, agent, episode, seeds);
+  shrunk.after = play(shrunk.problem, seeds);
   shrunk.descriptors_before = static_cast<int>(problem.obstacles.size());
   shrunk.descriptors_after = static_cast<int>(shrunk.problem.obstacles.size());
   shrunk.cells_before = decodeGrid(problem).obstacleCount();
@@ -127,6 +138,7 @@ ShrunkFailure shrinkFailure(const Problem& problem, const std::string& source, c
   setMetadata(&meta, "shrink_seeds", seedList(seeds));
   setMetadata(&meta, "shrink_kind", shrunk.kept.kind.empty() ? "any" : shrunk.kept.kind);
   setMetadata(&meta, "shrink_failed", shownText(shrunk.after, shrunk.kept));
+  if (shrunk.kept.endless) setMetadata(&meta, "shrink_endless", "true");
   setMetadata(&meta, "descriptors_before", std::to_string(shrunk.descriptors_before));
   setMetadata(&meta, "descriptors_after", std::to_string(shrunk.descriptors_after));
   setMetadata(&meta, "obstacle_cells_before", std::to_string(shrunk.cells_before));

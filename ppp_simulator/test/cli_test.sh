@@ -266,7 +266,7 @@ expect_error "shrink a planner of an agents file" "'optimistic' is a planner age
   "$ppp" shrink "$work/open.ppp" --agents-file "$config_dir/agents.yaml" --agent optimistic -o "$work/none.ppp"
 expect_error "shrink runs 0" "--runs: expected a number of runs in [1, 100000], got 0" \
   "$ppp" shrink "$work/open.ppp" --agent bumper --runs 0 -o "$work/none.ppp"
-expect_error "shrink negative rate" "--min-rate: expected a share of the runs in (0, 1], got -0.5" \
+expect_error "shrink negative rate" "--min-rate: expected a share of runs in (0, 1], or 0 for the original's, got -0.5" \
   "$ppp" shrink "$work/open.ppp" --agent bumper --min-rate -0.5 -o "$work/none.ppp"
 expect_error "shrink by what" "--by: expected descriptors or cells, got 'rows'" \
   "$ppp" shrink "$work/open.ppp" --agent bumper --by rows -o "$work/none.ppp"

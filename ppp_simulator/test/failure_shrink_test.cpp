@@ -140,6 +140,54 @@ TEST(FailureShrinkTest, TheKindKeptIsTheMostCommonDiagnosisAndTiesGoToTheFirstKi
   EXPECT_FALSE(stillShows(outcome, any));
   outcome.valid = false;
   EXPECT_FALSE(stillShows(outcome, keep));  // an unsolvable candidate never counts
+  outcome.valid = true;
+  outcome.endless = 1;  // one of the two loops proven endless: the loops kept need not be
+  EXPECT_FALSE(failureShown(outcome, false).endless);
+  outcome.endless = 2;
+  const FailureToKeep endless = failureShown(outcome, false);
+  EXPECT_TRUE(endless.endless);
+  outcome.endless = 1;
+  EXPECT_FALSE(stillShows(outcome, endless));
+}
+
+/// A player standing in for a planner judged through ROS: every run on a PPP with an obstacle at `loop_at` is a
+/// loop, proven endless when `endless_at` is an obstacle too; every other run passes.
+RunsPlayer loopingPlanner(Cell loop_at, Cell endless_at) {
+  return [=](const Problem& problem, const std::vector<std::uint64_t>& seeds) {
+    const Grid grid = decodeGrid(problem);
+    RunsOutcome outcome;
+    outcome.runs = static_cast<int>(seeds.size());
+    if (!grid.isObstacle(loop_at)) return outcome;
+    outcome.failed = outcome.runs;
+    outcome.kinds[static_cast<std::size_t>(diagnosis::kindIndex(diagnosis::kLoop))] = outcome.runs;
+    if (grid.isObstacle(endless_at)) outcome.endless = outcome.runs;
+    return outcome;
+  };
+}
+
+TEST(FailureShrinkTest, AnEndlessLoopIsKeptEndless) {
+  // Three single-cell blocks: the loop needs the one at (5, 5); it is proven endless only while the one at (8, 8)
+  // stands too; (3, 3) matters for nothing. Shrinking an endless loop keeps both; a loop that was never proven
+  // endless needs only (5, 5).
+  Problem p = Problem::empty(10, 10, 3);
+  p.goal = Cell{9, 9};
+  for (const int at : {3, 5, 8}) p.obstacles.push_back(Obstacle{Shape::Block, at, at, 1, 1});
+  FailureJudging judging;
+  judging.agent = agent("planner");
+  judging.seeds = {7, 8};
+  judging.play = loopingPlanner(Cell{5, 5}, Cell{8, 8});
+  const ShrunkFailure endless = shrinkFailure(p, "three.ppp", judging, ShrinkUnits::Descriptors);
+  EXPECT_TRUE(endless.kept.endless);
+  EXPECT_EQ(endless.kept.text(), "endless loop");
+  EXPECT_EQ(endless.problem.obstacles, (std::vector<Obstacle>{p.obstacles[1], p.obstacles[2]}));
+  EXPECT_EQ(*findMetadata(endless.problem.metadata, "shrink_kind"), "loop");
+  EXPECT_EQ(*findMetadata(endless.problem.metadata, "shrink_endless"), "true");
+  EXPECT_EQ(*findMetadata(endless.problem.metadata, "shrink_failed"), "2 of 2");
+  judging.play = loopingPlanner(Cell{5, 5}, Cell{0, 9});  // (0, 9) is never an obstacle: no loop proven endless
+  const ShrunkFailure loop = shrinkFailure(p, "three.ppp", judging, ShrinkUnits::Descriptors);
+  EXPECT_FALSE(loop.kept.endless);
+  EXPECT_EQ(loop.problem.obstacles, (std::vector<Obstacle>{p.obstacles[1]}));
+  EXPECT_EQ(findMetadata(loop.problem.metadata, "shrink_endless"), nullptr);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "ppp_agents/protocol/batch_codec.hpp"
 #include "ppp_agents/protocol/batch_responder.hpp"
 #include "ppp_generator/failure_fitness.hpp"
+#include "ppp_simulator/failure_shrink.hpp"
 
 namespace ppp {
 namespace generator {
@@ -88,6 +89,41 @@ TEST(HuntEvaluationTest, EstimatesEqualTheInProcessFailureFitness) {
     EXPECT_EQ(got[p].failed, static_cast<int>(expected[p].failure_rate * 10 + 0.5)) << p;
   }
   EXPECT_LT(got[0].estimate.failure_rate, got[2].estimate.failure_rate);
+}
+
+TEST(HuntEvaluationTest, GivenRunSeedsEveryCandidateIsPlayedOnThemAndDiagnosedAsInProcess) {
+  // A shrink's judging through ROS: the random agent in 12 moves on the seeds of four failed runs. Each
+  // candidate's failures and their diagnoses are those of the same seeds played in process (playRuns).
+  EpisodeOptions episode;
+  episode.budget = 12;
+  const std::vector<Problem> problems = candidates();
+  const std::vector<std::uint64_t> seeds = {11, 12, 13, 99};
+  HuntEvaluation evaluation(problems, {agent("random")}, episode, 4, 7, 16, seeds);
+  evaluation.record(play(*evaluation.lanes()[0]));
+  const std::vector<PanelEvaluation> got = evaluation.evaluations();
+  ASSERT_EQ(got.size(), 3u);
+  int diagnosed = 0;
+  for (std::size_t p = 0; p < problems.size(); ++p) {
+    const simulator::RunsOutcome expected = simulator::playRuns(problems[p], agent("random"), episode, seeds);
+    EXPECT_EQ(got[p].episodes, 4);
+    EXPECT_EQ(got[p].failed, expected.failed) << p;
+    std::map<std::string, int> kinds;
+    for (std::size_t k = 0; k < diagnosis::kKindCount; ++k) {
+      if (expected.kinds[k] > 0) kinds[diagnosis::kKinds[k]] = expected.kinds[k];
+    }
+    EXPECT_EQ(got[p].diagnoses, kinds) << p;
+    diagnosed += got[p].failed;
+  }
+  EXPECT_GT(diagnosed, 0);  // the far goal is not reached in 12 random moves every time
+}
+
+TEST(HuntEvaluationTest, RunSeedsMustBeOnePerRun) {
+  try {
+    HuntEvaluation evaluation(candidates(), {agent("random")}, EpisodeOptions{}, 3, 7, 16, {1, 2});
+    FAIL() << "two seeds for three runs were taken";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.name(), "run_seeds");
+  }
 }
 
 }  // namespace

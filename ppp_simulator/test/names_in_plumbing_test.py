@@ -33,6 +33,13 @@ OWN_FLAGS = {
     ('ppp_simulator/cli/launch_file_command.cpp', '--planner'): "AGENT=PACKAGE/EXECUTABLE, the planner to start (the "
                                                                "OMPL node's ~planner is its algorithm)",
     ('ppp_simulator/cli/scenarios_command.cpp', '--seed'): "the seed scenario seeds derive from",
+    ('ppp_generator/cli/generate_command.cpp', '--output'): "the set directory it writes (a shrink's ~output is the "
+                                                            "shrunk PPP)",
+    ('ppp_simulator/cli/simulate_command.cpp', '--output'): "the replayed episode's picture or animation",
+    ('ppp_simulator/cli/shrink_command.cpp', '--agent'): "the agent's type, or its name in --agents-file (the shrink "
+                                                        "node's ~agent names an experiment's agent)",
+    ('ppp_simulator/cli/shrink_command.cpp', '--any-kind'): "a switch without a value (the table's any_kind takes "
+                                                           "true or false)",
     ('ppp_simulator/cli/shrink_command.cpp', '--agents-file'): "the agents file --agent is looked up in (a hunt's "
                                                               "agents_file holds its panel)",
     ('ppp_simulator/cli/shrink_command.cpp', '--runs'): "runs judged per candidate, seeded as ppp simulate seeds them",

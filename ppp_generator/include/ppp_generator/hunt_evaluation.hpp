@@ -25,18 +25,23 @@ struct PanelEvaluation {
   int episodes = 0;                     ///< Runs played.
   int failed = 0;                       ///< Of them, failed.
   std::map<std::string, int> reasons;   ///< Failed runs per reason (budget_exhausted, soft_failure, ...).
+  std::map<std::string, int> diagnoses; ///< Failed and soft-failed runs per diagnosis (loop, detour, ...).
+  int endless = 0;                      ///< Of the loops, those proven endless (EpisodeResult::endless_step).
 };
 
 /// One evaluation request of a hunt, played through agent lanes (the simulator node's ~evaluate): per panel agent
-/// one lane per instance (agents::instanceCount, each its share) of `runs` runs on every candidate, seeded by failureRunSeed() exactly as the in-process failure
-/// fitness, so built-in agents give the same estimates through ROS as in process. Lanes may be played on
-/// separate threads; record() is thread-safe.
+/// one lane per instance (agents::instanceCount, each its share) of `runs` runs on every candidate, seeded by
+/// failureRunSeed() exactly as the in-process failure fitness, so built-in agents give the same estimates through
+/// ROS as in process; or, given `run_seeds`, run r seeded run_seeds[r] on every candidate (a shrink judging a
+/// failure on its own seeds). Lanes may be played on separate threads; record() is thread-safe.
 class HuntEvaluation {
  public:
   /// Prepares the candidates (each must be solvable) and the lanes of every panel agent.
-  /// @throws InvalidArgument naming "problems" (an unsolvable or invalid PPP), "runs" or the lane's options.
+  /// @throws InvalidArgument naming "problems" (an unsolvable or invalid PPP), "runs", "run_seeds" (not `runs`
+  /// of them) or the lane's options.
   HuntEvaluation(const std::vector<Problem>& problems, const std::vector<agents::AgentConfig>& panel,
-                 const EpisodeOptions& episode, int runs, std::uint64_t generator_seed, int batch_size);
+                 const EpisodeOptions& episode, int runs, std::uint64_t generator_seed, int batch_size,
+                 const std::vector<std::uint64_t>& run_seeds = {});
   /// The lanes in panel order, agents::instanceCount(agent) consecutive ones per panel agent.
   std::vector<std::unique_ptr<agents::AgentLane>>& lanes() { return lanes_; }
   /// Takes finished episodes of any lane.

@@ -5,6 +5,7 @@
 
 #include "ppp_msgs/launch_graph.h"
 #include "ppp_simulator/experiment_config.hpp"
+#include "ppp_simulator/shrink_job.hpp"
 #include "ppp_simulator/simulator_options.hpp"
 
 namespace ppp {
@@ -18,6 +19,9 @@ struct GraphOptions {
   /// When set, the graph of a hunt instead: only this set of the config, evolved with a panel fitness (failure
   /// or regret), is evolved, into OUTPUT_DIR.
   std::string hunt;
+  /// When its input is set, the graph of a shrink instead: the shrink node (required) judging its candidates
+  /// through the simulator serving hunts, which plays them on the nodes of `shrink.agent` only.
+  ShrinkTask shrink;
   /// The env-loader script remote machines run nodes through (the workspace's devel/env.sh at the same path).
   std::string env_loader;
   /// The planner nodes assigned over the config file's (assignPlanners), which the config given to experimentGraph
@@ -48,7 +52,8 @@ std::string setTopic(const std::string& set_name);
 /// generator nodes publish), one agent_node per built-in agent and a planner_bridge_node (plus the planner
 /// when one is named) per planner agent, each on its agent's host. With `options.hunt`, the graph of that
 /// set's hunt: its generator node (required, writing OUTPUT_DIR), the simulator serving hunts, and the nodes of
-/// the panel's agents only. @throws InvalidArgument.
+/// the panel's agents only; with `options.shrink`, the graph of that shrink (its agent's nodes only).
+/// @throws InvalidArgument.
 ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const GraphOptions& options);
 
 }  // namespace simulator

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@ struct RunsOutcome {
   int runs = 0;       ///< Runs played.
   int failed = 0;     ///< Of them, failed or soft-failed (diagnosed).
   std::array<int, diagnosis::kKindCount> kinds{};  ///< Failed and soft-failed runs per diagnosis kind.
+  int endless = 0;    ///< Of the loops, those proven endless (a lockstep planner's; never a built-in agent's).
 };
 
 /// Plays the built-in agent `agent` on `problem` once per seed of `seeds` (results.csv's run seeds) under
@@ -28,21 +30,30 @@ struct RunsOutcome {
 RunsOutcome playRuns(const Problem& problem, const agents::AgentConfig& agent, const EpisodeOptions& episode,
                      const std::vector<std::uint64_t>& seeds);
 
+/// Plays the agent a shrink judges on a PPP once per seed: playRuns() in process for a built-in agent; through the
+/// simulator's evaluation service for any agent of an experiment, planners included.
+using RunsPlayer = std::function<RunsOutcome(const Problem& problem, const std::vector<std::uint64_t>& seeds)>;
+
 /// The failure a shrink keeps: at least `failures` of the judged runs fail, with diagnosis `kind` unless it is
-/// empty.
+/// empty, as loops proven endless when `endless`.
 struct FailureToKeep {
-  std::string kind;  ///< A diagnosis:: kind, or "" for any failure.
-  int failures = 0;  ///< Runs that must fail (so).
+  std::string kind;      ///< A diagnosis:: kind, or "" for any failure.
+  int failures = 0;      ///< Runs that must fail (so).
+  bool endless = false;  ///< Only with kind loop: those runs' loops must be proven endless.
+  /// The failure in words: "loop", "endless loop", "any failure".
+  std::string text() const;
 };
 
 /// What `outcome` shows: with `any_kind`, its failures of any kind; otherwise the most common diagnosis among its
-/// failed runs (a tie goes to the kind first in diagnosis::kKinds) and how many runs it had.
+/// failed runs (a tie goes to the kind first in diagnosis::kKinds) and how many runs it had, as endless loops when
+/// every loop among them was proven endless.
 FailureToKeep failureShown(const RunsOutcome& outcome, bool any_kind);
 
 /// How a shrink judges its candidates: one agent's runs with given seeds.
 struct FailureJudging {
-  agents::AgentConfig agent;         ///< A built-in agent (planners play through ROS).
+  agents::AgentConfig agent;         ///< The agent (a built-in one unless `play` is given).
   EpisodeOptions episode;            ///< The episode's rules.
+  RunsPlayer play;                   ///< How its runs are played; empty: playRuns() in process.
   std::vector<std::uint64_t> seeds;  ///< The run seeds (results.csv's seed column).
   bool any_kind = false;             ///< Keep any failure, not only the original's most common diagnosis.
   /// Keep candidates on which at least this share of the runs fail so, in (0, 1]; 0: the original's share.
@@ -70,7 +81,8 @@ struct ShrunkFailure {
 /// Shrinks `problem` (named `source` in the result's metadata) for `judging`'s agent and runs, keeping
 /// failureShown() of the original's runs, at least `min_rate` of them when given (shrinkProblem() over `units`).
 /// The result's metadata drops the original's measures (fitness_value, character.*) and adds shrunk_from,
-/// shrink_agent, shrink_seeds, shrink_kind, shrink_failed ("3 of 3"), descriptors_before/after,
+/// shrink_agent, shrink_seeds, shrink_kind, shrink_failed ("3 of 3"), shrink_endless (true, for endless loops
+/// kept), descriptors_before/after,
 /// obstacle_cells_before/after and shrink_evaluations.
 /// @throws InvalidArgument naming "problem" when the original does not fail so (nothing to shrink) or is not
 /// solvable for the robot, as FailureJudging::validate(); Interrupted when `stop` says stop.

@@ -1,0 +1,220 @@
+#include "ppp_simulator/shrink_job.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <ostream>
+
+#include "ppp_core/error.hpp"
+#include "ppp_core/option_yaml.hpp"
+#include "ppp_core/ppp_file.hpp"
+#include "ppp_core/problem_io.hpp"
+#include "ppp_core/progress_meter.hpp"
+#include "ppp_core/rng.hpp"
+#include "ppp_core/text_file.hpp"
+#include "ppp_core/text_format.hpp"
+#include "ppp_generator/problem_set.hpp"
+#include "ppp_simulator/results_file.hpp"
+
+namespace ppp {
+namespace simulator {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The failing runs' seeds of results.csv, per (set, PPP), for the agent shrunk for.
+using FailingSeeds = std::map<std::pair<std::string, std::string>, std::vector<std::uint64_t>>;
+
+/// The seeds of `agent`'s failed runs in the results file `path`, in run order, at most `most` per PPP.
+FailingSeeds failingSeeds(const std::string& path, const std::string& agent, int most) {
+  std::vector<agents::EpisodeResult> failed = readResultsFile(path);
+  failed.erase(std::remove_if(failed.begin(), failed.end(),
+                              [&](const agents::EpisodeResult& r) { return r.agent != agent || r.passed; }),
+               failed.end());
+  std::sort(failed.begin(), failed.end(), [](const auto& a, const auto& b) { return a.run < b.run; });
+  FailingSeeds seeds;
+  for (const agents::EpisodeResult& r : failed) {
+    std::vector<std::uint64_t>& list = seeds[{r.set, r.problem}];
+    if (static_cast<int>(list.size()) < most) list.push_back(r.seed);
+  }
+  return seeds;
+}
+
+/// What a file is shrunk over: the job's units, else descriptors for .ppp files and cells for imported maps.
+ShrinkUnits unitsFor(const ShrinkJob& job, const std::string& path) {
+  if (job.units == "descriptors") return ShrinkUnits::Descriptors;
+  if (job.units == "cells") return ShrinkUnits::Cells;
+  if (!job.units.empty()) throw InvalidArgument("by", "expected descriptors or cells, got '" + job.units + "'");
+  return fileExtension(path) == ".ppp" ? ShrinkUnits::Descriptors : ShrinkUnits::Cells;
+}
+
+std::string summary(const ShrunkFailure& s, double seconds) {
+  const std::string kind = s.kept.text();
+  return std::to_string(s.descriptors_before) + " -> " + std::to_string(s.descriptors_after) + " descriptors, " +
+         std::to_string(s.cells_before) + " -> " + std::to_string(s.cells_after) + " obstacle cells, still " +
+         kind + " in " + *findMetadata(s.problem.metadata, "shrink_failed") + " runs (" +
+         std::to_string(s.evaluations) + " candidates, " + formatFixed(seconds * 1000, 1) + " ms)";
+}
+
+/// The name of the directory `path` is (a set's name, as results.csv has it).
+std::string directoryName(const fs::path& path) {
+  return path.filename().empty() ? path.parent_path().filename().string() : path.filename().string();
+}
+
+int shrinkOne(const ShrinkJob& job, FailureJudging judging, const FailingSeeds* failing, const StopCheck& stop,
+              std::ostream& out) {
+  if (failing != nullptr) {
+    const std::string set = directoryName(fs::absolute(job.input).parent_path());
+    const std::string id = fs::path(job.input).stem().string();
+    const auto found = failing->find({set, id});
+    if (found == failing->end()) {
+      throw InvalidArgument("results", "no failed run of " + judging.agent.name + " on " + set + "/" + id + " in " +
+                                             job.results);
+    }
+    judging.seeds = found->second;
+  }
+  const Problem problem = readProblemFile(job.input);
+  const double start = steadySeconds();
+  const ShrunkFailure shrunk =
+      shrinkFailure(problem, fs::path(job.input).filename().string(), judging, unitsFor(job, job.input), stop);
+  writePppFile(shrunk.problem, job.output);
+  out << judging.agent.name << " on " << job.input << ": " << summary(shrunk, steadySeconds() - start)
+      << "; written to " << job.output << "\n";
+  return 0;
+}
+
+int shrinkSet(const ShrinkJob& job, FailureJudging judging, const FailingSeeds* failing, const StopCheck& stop,
+              std::ostream& out, std::ostream& err) {
+  const std::size_t runs = judging.seeds.size();
+  const ProblemSet set = generator::readProblemSetDirectory(job.input);
+  std::vector<std::pair<std::string, Problem>> shrunk;  // written only once every PPP is done
+  for (std::size_t i = 0; i < set.problems.size(); ++i) {
+    const std::string name = set.ids[i] + ".ppp";
+    const double start = steadySeconds();
+    if (failing != nullptr) {
+      const auto found = failing->find({directoryName(job.input), set.ids[i]});
+      if (found == failing->end()) {
+        out << name << ": no failed run of " << judging.agent.name << " in " << job.results << ", kept out\n";
+        continue;
+      }
+      judging.seeds = found->second;
+    }
+    try {
+      const ShrunkFailure s = shrinkFailure(set.problems[i], name, judging, unitsFor(job, name), stop);
+      out << name << ": " << summary(s, steadySeconds() - start) << "\n" << std::flush;
+      shrunk.emplace_back(name, s.problem);
+    } catch (const InvalidArgument& e) {
+      if (e.name() != "problem") throw;
+      out << name << ": " << e.problem() << ", kept out\n";
+    }
+  }
+  if (shrunk.empty()) {
+    err << "ppp: " << judging.agent.name << " fails none of the " << set.problems.size() << " PPPs of " << job.input
+        << (failing != nullptr ? " with a failed run in " + job.results
+                               : " in the " + std::to_string(runs) + " runs judged")
+        << ": nothing to shrink, nothing written\n";
+    return 1;
+  }
+  fs::create_directories(job.output);
+  for (const auto& [name, problem] : shrunk) writePppFile(problem, (fs::path(job.output) / name).string());
+  out << shrunk.size() << " of " << set.problems.size() << " PPPs shrunk into " << job.output << "\n";
+  return 0;
+}
+
+}  // namespace
+
+void ShrinkJob::validate() const {
+  judging.validate();
+  unitsFor(*this, input);  // a bad --by is refused before any run
+  if (!fs::exists(input)) throw InvalidArgument("input", "'" + input + "' does not exist");
+  if (fs::is_directory(input) && fs::exists(output) && !(fs::is_directory(output) && fs::is_empty(output))) {
+    throw InvalidArgument("output", "'" + output + "' exists and is not an empty directory");
+  }
+}
+
+int runShrinkJob(const ShrinkJob& job, const StopCheck& stop, std::ostream& out, std::ostream& err) {
+  job.validate();
+  std::optional<FailingSeeds> failing;
+  if (!job.results.empty()) failing = failingSeeds(job.results, job.judging.agent.name, job.results_runs);
+  try {
+    const FailingSeeds* seeds = failing ? &*failing : nullptr;
+    return fs::is_directory(job.input) ? shrinkSet(job, job.judging, seeds, stop, out, err)
+                                       : shrinkOne(job, job.judging, seeds, stop, out);
+  } catch (const Interrupted&) {
+    err << "ppp: interrupted; nothing written\n";
+    return 130;
+  } catch (const InvalidArgument& e) {
+    if (e.name() != "problem") throw;
+    err << "ppp: " << e.problem() << "; nothing written\n";
+    return 1;
+  }
+}
+
+std::vector<std::uint64_t> derivedRunSeeds(std::uint64_t seed, int runs) {
+  if (runs < 1 || runs > kMaxJudgedRuns) {
+    throw InvalidArgument("runs", "expected a number of runs in [1, " + std::to_string(kMaxJudgedRuns) + "], got " +
+                                        std::to_string(runs));
+  }
+  std::vector<std::uint64_t> seeds;
+  for (int run = 0; run < runs; ++run) seeds.push_back(deriveSeed(seed, {static_cast<std::uint64_t>(run)}));
+  return seeds;
+}
+
+void ShrinkTask::validate() const {
+  checkOptionRanges(shrinkTaskSpecs(), *this);
+  for (const auto& [name, value] : {std::pair<const char*, const std::string*>{"config", &config},
+                                    {"input", &input}, {"output", &output}, {"agent", &agent}}) {
+    if (value->empty()) throw InvalidArgument(name, "required");
+  }
+}
+
+const std::vector<OptionSpec<ShrinkTask>>& shrinkTaskSpecs() {
+  using T = ShrinkTask;
+  static const std::vector<OptionSpec<T>> specs = {
+      declareOption("config", "the experiment YAML: its agents and episode rules",
+                    +[](T& t) -> std::string& { return t.config; }),
+      declareOption("input", "the .ppp, map_server .yaml or MovingAI .map file, or the set directory, to shrink",
+                    +[](T& t) -> std::string& { return t.input; }),
+      declareOption("output", "the shrunk .ppp file (a new directory for a set)",
+                    +[](T& t) -> std::string& { return t.output; }),
+      declareOption("agent", "the config's agent whose failure is shrunk (planner agents included)",
+                    +[](T& t) -> std::string& { return t.agent; }),
+      declareOption("seed", "the failing run's seed (results.csv's seed column); with runs, the seed theirs derive from",
+                    +[](T& t) -> std::uint64_t& { return t.seed; }),
+      declareOption("runs", "judge this many runs seeded from seed, as ppp simulate seeds them (0: seed alone; with "
+                    "results: at most this many of each PPP's failed runs, 3 when 0)",
+                    +[](T& t) -> int& { return t.runs; }, Bounds{0, kMaxJudgedRuns}),
+      declareOption("results", "an experiment's results.csv: judge each PPP on the seeds of the agent's failed runs "
+                    "there", +[](T& t) -> std::string& { return t.results; }),
+      declareOption("min_rate", "keep only candidates on which at least this share of the runs fail so (0: the "
+                    "original's share)", +[](T& t) -> double& { return t.min_rate; }, Bounds{0, 1}),
+      declareOption("any_kind", "keep any failure, not only the diagnosis most of the failing runs had",
+                    +[](T& t) -> bool& { return t.any_kind; }),
+      declareOption("by", "what is removed: descriptors or cells (\"\": descriptors for .ppp files, cells for "
+                    "imported maps)", +[](T& t) -> std::string& { return t.by; }),
+  };
+  return specs;
+}
+
+ShrinkJob shrinkJobOf(const ShrinkTask& task, const agents::AgentConfig& agent, const EpisodeOptions& episode,
+                      RunsPlayer play) {
+  ShrinkJob job;
+  job.input = task.input;
+  job.output = task.output;
+  job.judging.agent = agent;
+  job.judging.episode = episode;
+  job.judging.play = std::move(play);
+  job.judging.seeds = task.runs > 0 ? derivedRunSeeds(task.seed, task.runs) : std::vector<std::uint64_t>{task.seed};
+  job.judging.any_kind = task.any_kind;
+  job.judging.min_rate = task.min_rate;
+  job.results = task.results;
+  if (task.runs > 0) job.results_runs = task.runs;
+  job.units = task.by;
+  job.validate();
+  return job;
+}
+
+}  // namespace simulator
+}  // namespace ppp
