@@ -69,6 +69,12 @@ void HuntEvaluation::record(const std::vector<agents::EpisodeResult>& ended) {
       ++e.reasons[r.soft_failure ? kSoftFailureReason : r.reason];
     }
   }
+  rows_.insert(rows_.end(), ended.begin(), ended.end());
+}
+
+std::vector<agents::EpisodeResult> HuntEvaluation::rows() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return rows_;
 }
 
 std::vector<PanelEvaluation> HuntEvaluation::evaluations() const {

@@ -1,5 +1,6 @@
 #include "hunt_server.hpp"
 
+#include <algorithm>
 #include <exception>
 #include <thread>
 
@@ -24,31 +25,7 @@ bool HuntServer::evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs
     for (const ppp_msgs::Problem& m : request.problems) problems.push_back(ppp_msgs::fromMessage(m));
     generator::HuntEvaluation evaluation(problems, panel, config_.episode, static_cast<int>(request.runs), request.seed,
                                          parameters_.batch_size, request.run_seeds);
-    std::vector<LaneRunner*> runners;  // one per lane: the panel's agents' instances, in panel order
-    for (const agents::AgentConfig& agent : panel) {
-      for (const auto& runner : runnersFor(agent)) runners.push_back(runner.get());
-    }
-    target_ = &evaluation;  // the runners' sink
-    std::vector<std::exception_ptr> failures(runners.size());
-    std::vector<std::thread> threads;
-    for (std::size_t i = 0; i < runners.size(); ++i) {
-      agents::AgentLane* lane = evaluation.lanes().at(i).get();
-      threads.emplace_back([runner = runners[i], lane, failure = &failures[i]] {
-        try {
-          runner->run(lane);
-        } catch (...) {
-          *failure = std::current_exception();
-        }
-      });
-    }
-    for (std::thread& t : threads) t.join();
-    target_ = nullptr;
-    for (const std::exception_ptr& failure : failures) {
-      if (failure) std::rethrow_exception(failure);
-    }
-    for (const auto& lane : evaluation.lanes()) {
-      if (!lane->finished()) throw IoError("~evaluate", "shutting down before every run was played");
-    }
+    play(evaluation, panel);
     for (const generator::PanelEvaluation& e : evaluation.evaluations()) response.evaluations.push_back(toMessage(e));
     episodes_ += static_cast<long>(problems.size() * panel.size()) * request.runs;
     ++requests_;
@@ -65,6 +42,50 @@ bool HuntServer::evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs
     ROS_ERROR("evaluation failed: %s", e.what());
   }
   return true;
+}
+
+std::vector<agents::EpisodeResult> HuntServer::playRows(const agents::AgentConfig& agent, const Problem& problem,
+                                                        const std::vector<std::uint64_t>& seeds) {
+  std::lock_guard<std::mutex> serving(serving_);
+  generator::HuntEvaluation evaluation({problem}, {agent}, config_.episode, static_cast<int>(seeds.size()), 0,
+                                       parameters_.batch_size, seeds);
+  try {
+    play(evaluation, {agent});
+  } catch (const IoError&) {
+    if (!ros::ok()) throw Interrupted();  // shut down mid-run: the caller's stop, not a broken link
+    throw;
+  }
+  std::vector<agents::EpisodeResult> rows = evaluation.rows();
+  std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.run < b.run; });
+  return rows;
+}
+
+void HuntServer::play(generator::HuntEvaluation& evaluation, const std::vector<agents::AgentConfig>& panel) {
+  std::vector<LaneRunner*> runners;  // one per lane: the panel's agents' instances, in panel order
+  for (const agents::AgentConfig& agent : panel) {
+    for (const auto& runner : runnersFor(agent)) runners.push_back(runner.get());
+  }
+  target_ = &evaluation;  // the runners' sink
+  std::vector<std::exception_ptr> failures(runners.size());
+  std::vector<std::thread> threads;
+  for (std::size_t i = 0; i < runners.size(); ++i) {
+    agents::AgentLane* lane = evaluation.lanes().at(i).get();
+    threads.emplace_back([runner = runners[i], lane, failure = &failures[i]] {
+      try {
+        runner->run(lane);
+      } catch (...) {
+        *failure = std::current_exception();
+      }
+    });
+  }
+  for (std::thread& t : threads) t.join();
+  target_ = nullptr;
+  for (const std::exception_ptr& failure : failures) {
+    if (failure) std::rethrow_exception(failure);
+  }
+  for (const auto& lane : evaluation.lanes()) {
+    if (!lane->finished()) throw IoError("~evaluate", "shutting down before every run was played");
+  }
 }
 
 ppp_msgs::ProblemEvaluation HuntServer::toMessage(const generator::PanelEvaluation& e) {

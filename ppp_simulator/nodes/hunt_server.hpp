@@ -34,8 +34,17 @@ class HuntServer {
   /// The service callback: plays one request (one at a time).
   bool evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs::EvaluateProblems::Response& response);
 
+  /// Plays `agent` (of ~config) on `problem` (solvable for the robot) once per seed of `seeds`, as the service
+  /// would; returns the rows in run order (a planner's with its actions). @throws Interrupted when ROS shuts down
+  /// first.
+  std::vector<agents::EpisodeResult> playRows(const agents::AgentConfig& agent, const Problem& problem,
+                                              const std::vector<std::uint64_t>& seeds);
+
  private:
   static ppp_msgs::ProblemEvaluation toMessage(const generator::PanelEvaluation& e);
+  /// Plays every lane of `evaluation` (the panel's, in panel order) on the panel's runners, one thread each.
+  /// @throws what a runner threw; IoError when ROS shut down before every run was played.
+  void play(generator::HuntEvaluation& evaluation, const std::vector<agents::AgentConfig>& panel);
   /// The runners of the agent's instances (agents::instanceCount), made on first use.
   const std::vector<std::unique_ptr<LaneRunner>>& runnersFor(const agents::AgentConfig& agent);
 

@@ -2,7 +2,6 @@
 
 #include <memory>
 
-#include "ppp_agents/prepared_set.hpp"
 #include "ppp_core/diagnosis.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/stop.hpp"
@@ -38,9 +37,7 @@ RunsPlayer remoteRunsPlayer(ros::NodeHandle& nh, const std::string& service, con
   }
   auto client = std::make_shared<ros::ServiceClient>(nh.serviceClient<ppp_msgs::EvaluateProblems>(service, true));
   return [client, service, agent, episode](const Problem& problem, const std::vector<std::uint64_t>& seeds) {
-    try {
-      agents::prepareSingle("shrink", "candidate", problem, episode);
-    } catch (const InvalidArgument&) {  // unsolvable for the robot: nothing to play
+    if (!solvableForRobot(problem, episode)) {  // nothing to play
       RunsOutcome invalid;
       invalid.valid = false;
       return invalid;

@@ -113,14 +113,22 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
     for (std::thread& t : threads) t.join();
   }
   if (failed) return 1;
+  runners.clear();  // their agents are free for the report's planner runs
   recorder.close();
   if (!ros::ok()) {
     ROS_WARN("interrupted: every finished run is in results.csv; restart on the same output_dir to resume");
     return 130;
   }
+  // The report shrinks each planner's worst PPP by playing candidates on the planner's bridges, as a hunt does.
+  std::unique_ptr<HuntServer> planner_runs;
+  const PlannerRows planner_rows = [&](const agents::AgentConfig& agent, const Problem& problem,
+                                       const std::vector<std::uint64_t>& seeds) {
+    if (!planner_runs) planner_runs = std::make_unique<HuntServer>(nh, parameters);
+    return planner_runs->playRows(agent, problem, seeds);
+  };
   try {
     finishExperiment(config, config_text, parameters.output_dir, sets, &results, [] { return !ros::ok(); },
-                     [](const std::string& line) { ROS_INFO("%s", line.c_str()); });
+                     [](const std::string& line) { ROS_INFO("%s", line.c_str()); }, planner_rows);
   } catch (const Interrupted&) {
     ROS_WARN("interrupted while writing the report: restart on the same output_dir to write it");
     return 130;

@@ -56,15 +56,23 @@ FailureExample replayedRun(const ExperimentConfig& config, const agents::Prepare
   return example;
 }
 
-/// The PPP of the pictured run `run` of the built-in `agent` shrunk for that run's seed (shrinkFailure()), with
-/// the run on it; nothing when it does not fail there the way it is diagnosed (a soft failure, say).
+/// The PPP of the pictured run `run` of `agent` shrunk for that run's seed (shrinkFailure()), with the run on it:
+/// a built-in agent's played in process, a planner's by `planner_rows` (and drawn from the actions of its row);
+/// nothing when it does not fail there the way it is diagnosed (a soft failure, say).
 std::optional<ShrunkExample> shrunkRun(const ExperimentConfig& config, const agents::AgentConfig& agent,
-                                       const FailureExample& run, const StopCheck& stop) {
+                                       const FailureExample& run, const PlannerRows& planner_rows,
+                                       const StopCheck& stop) {
   const EpisodeOptions& episode = config.episode;
+  const bool planner = agents::isPlanner(agent);
+  const RowsPlayer rows = planner ? RowsPlayer([&](const Problem& p, const std::vector<std::uint64_t>& seeds) {
+    return planner_rows(agent, p, seeds);
+  })
+                                  : RowsPlayer();
   FailureJudging judging;
   judging.agent = agent;
   judging.episode = episode;
   judging.seeds = {run.seed};
+  if (planner) judging.play = playerOfRows(rows, episode);
   ShrunkFailure shrunk;
   try {
     shrunk = shrinkFailure(run.ppp, run.set + "/" + run.problem + ".ppp", judging, ShrinkUnits::Descriptors, stop);
@@ -75,18 +83,30 @@ std::optional<ShrunkExample> shrunkRun(const ExperimentConfig& config, const age
   ShrunkExample example;
   const Grid grid = decodeGrid(shrunk.problem);
   EpisodeOutcome outcome;
-  if (std::max(shrunk.problem.width, shrunk.problem.height) <= kReportAnimationMaxSide) {
-    AnimationOptions animation;
-    animation.max_frames = config.animation_frames;
-    EpisodeAnimation animated = animateEpisode(shrunk.problem, grid, agent, episode, run.seed, animation, stop);
-    outcome = std::move(animated.outcome);
-    example.animation_gif = std::move(animated.gif);
+  Diagnosis diagnosis;
+  AnimationOptions animation;
+  animation.max_frames = config.animation_frames;
+  const bool animated = std::max(shrunk.problem.width, shrunk.problem.height) <= kReportAnimationMaxSide;
+  if (planner) {  // its run again, through the simulator's lanes: drawn from its actions
+    const std::vector<agents::EpisodeResult> played = rows(shrunk.problem, {run.seed});
+    EpisodeAnimation recorded = animateRecordedEpisode(shrunk.problem, grid, agent, episode, run.seed,
+                                                       played.at(0).actions, played.at(0).reason, animation, stop);
+    outcome = std::move(recorded.outcome);
+    if (animated) example.animation_gif = std::move(recorded.gif);
+    diagnosis = agents::diagnosisOf(played.at(0));
   } else {
-    outcome = agents::recordEpisode(shrunk.problem, grid, agent, episode, run.seed);
+    if (animated) {
+      EpisodeAnimation replayed = animateEpisode(shrunk.problem, grid, agent, episode, run.seed, animation, stop);
+      outcome = std::move(replayed.outcome);
+      example.animation_gif = std::move(replayed.gif);
+    } else {
+      outcome = agents::recordEpisode(shrunk.problem, grid, agent, episode, run.seed);
+    }
+    diagnosis = diagnoseRun(outcome.passed, false, outcome.reason, outcome.cells);
   }
   example.ppp = shrunk.problem;
   example.path = outcome.path;
-  example.cycle = cycleCells(diagnoseRun(outcome.passed, false, outcome.reason, outcome.cells), outcome.cells);
+  example.cycle = cycleCells(diagnosis, outcome.cells);
   example.summary = std::to_string(shrunk.descriptors_after) + " of " + std::to_string(shrunk.descriptors_before) +
                     " descriptors, " + std::to_string(shrunk.cells_after) + " of " + std::to_string(shrunk.cells_before) +
                     " obstacle cells, still " + shrunk.kept.text() + " in " +
@@ -188,7 +208,8 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
 }
 
 std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets,
-                                          const std::vector<ResultGroup>& groups, const StopCheck& stop) {
+                                          const std::vector<ResultGroup>& groups, const StopCheck& stop,
+                                          const PlannerRows& planner_rows) {
   std::map<std::string, int> set_index;
   std::vector<std::map<std::string, int>> problem_index(sets.size());
   for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
@@ -215,7 +236,9 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
     }
     if (at.first < 0) continue;
     if (std::optional<FailureExample> run = failingRun(config, sets[at.first], at.second, agent, groups, stop)) {
-      if (config.shrink_worst && !run->recorded) run->shrunk = shrunkRun(config, agent, *run, stop);
+      if (config.shrink_worst && (!run->recorded || planner_rows)) {
+        run->shrunk = shrunkRun(config, agent, *run, planner_rows, stop);
+      }
       worst.push_back(std::move(*run));
     }
   }
@@ -245,7 +268,7 @@ std::vector<FailureExample> longestDetours(const ExperimentConfig& config, const
 
 void writeExperimentReport(const std::string& dir, const ExperimentConfig& config, const std::string& config_text,
                            const std::vector<agents::PreparedSet>& sets, const std::vector<agents::EpisodeResult>& rows,
-                           const StopCheck& stop) {
+                           const StopCheck& stop, const PlannerRows& planner_rows) {
   std::vector<std::string> set_names, agent_names;
   for (const agents::PreparedSet& s : sets) set_names.push_back(s.name);
   // Agents with no rows (planners in an in-process run) are left out of the tables.
@@ -278,7 +301,7 @@ void writeExperimentReport(const std::string& dir, const ExperimentConfig& confi
   stopIfAsked(stop);
   input.failures = hardestFailures(config, sets, groups, config.hardest, stop);
   stopIfAsked(stop);
-  input.worst = worstFailures(config, sets, groups, stop);
+  input.worst = worstFailures(config, sets, groups, stop, planner_rows);
   stopIfAsked(stop);
   input.detours = detourStats(rows, set_names, agent_names);
   input.detour_examples = longestDetours(config, sets, input.detours, stop);

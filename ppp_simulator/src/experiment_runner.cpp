@@ -145,7 +145,7 @@ std::string resultsPath(const std::string& dir) { return (fs::path(dir) / kResul
 
 void finishExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
                       const std::vector<agents::PreparedSet>& sets, ResultsFile* results, const StopCheck& stop,
-                      const std::function<void(const std::string&)>& log) {
+                      const std::function<void(const std::string&)>& log, const PlannerRows& planner_rows) {
   stopIfAsked(stop);
   say(log, "finishing: results.csv in run order");
   std::vector<agents::EpisodeResult> rows = readResultsFile(resultsPath(dir), stop);
@@ -162,7 +162,7 @@ void finishExperiment(const ExperimentConfig& config, const std::string& config_
     writePlannerMoves(moves, rows, stop);
   }
   say(log, "writing the report");
-  writeExperimentReport(dir, config, config_text, sets, rows, stop);
+  writeExperimentReport(dir, config, config_text, sets, rows, stop, planner_rows);
 }
 
 ExperimentReport runExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,

@@ -34,21 +34,9 @@ std::string seedList(const std::vector<std::uint64_t>& seeds) {
 
 }  // namespace
 
-RunsOutcome playRuns(const Problem& problem, const agents::AgentConfig& agent, const EpisodeOptions& episode,
-                     const std::vector<std::uint64_t>& seeds) {
+RunsOutcome outcomeOfRows(const std::vector<agents::EpisodeResult>& rows) {
   RunsOutcome outcome;
-  std::optional<agents::PreparedSet> set;
-  try {
-    set.emplace(agents::prepareSingle("shrink", "candidate", problem, episode));
-  } catch (const InvalidArgument&) {  // unsolvable for the robot
-    outcome.valid = false;
-    return outcome;
-  }
-  agents::EpisodeRunner runner(agent, episode);
-  const std::unique_ptr<agents::Agent> player = agents::makeAgent(agent);
-  for (const std::uint64_t seed : seeds) {
-    const EpisodeOutcome o = runner.run(set->set.problems[0], set->grids[0], *player, seed, false, agents::windowsOf(*set, 0));
-    const agents::EpisodeResult row = agents::episodeResult(*set, 0, agent.name, outcome.runs, seed, o);
+  for (const agents::EpisodeResult& row : rows) {
     ++outcome.runs;
     if (row.diagnosis.empty()) continue;
     ++outcome.failed;
@@ -56,6 +44,46 @@ RunsOutcome playRuns(const Problem& problem, const agents::AgentConfig& agent, c
     if (row.endless_step >= 0) ++outcome.endless;
   }
   return outcome;
+}
+
+bool solvableForRobot(const Problem& problem, const EpisodeOptions& episode) {
+  try {
+    agents::prepareSingle("shrink", "candidate", problem, episode);
+    return true;
+  } catch (const InvalidArgument&) {
+    return false;
+  }
+}
+
+RunsOutcome playRuns(const Problem& problem, const agents::AgentConfig& agent, const EpisodeOptions& episode,
+                     const std::vector<std::uint64_t>& seeds) {
+  std::optional<agents::PreparedSet> set;
+  try {
+    set.emplace(agents::prepareSingle("shrink", "candidate", problem, episode));
+  } catch (const InvalidArgument&) {  // unsolvable for the robot
+    RunsOutcome invalid;
+    invalid.valid = false;
+    return invalid;
+  }
+  agents::EpisodeRunner runner(agent, episode);
+  const std::unique_ptr<agents::Agent> player = agents::makeAgent(agent);
+  std::vector<agents::EpisodeResult> rows;
+  for (const std::uint64_t seed : seeds) {
+    const EpisodeOutcome o = runner.run(set->set.problems[0], set->grids[0], *player, seed, false, agents::windowsOf(*set, 0));
+    rows.push_back(agents::episodeResult(*set, 0, agent.name, static_cast<int>(rows.size()), seed, o));
+  }
+  return outcomeOfRows(rows);
+}
+
+RunsPlayer playerOfRows(RowsPlayer rows, const EpisodeOptions& episode) {
+  return [rows = std::move(rows), episode](const Problem& problem, const std::vector<std::uint64_t>& seeds) {
+    if (!solvableForRobot(problem, episode)) {
+      RunsOutcome invalid;
+      invalid.valid = false;
+      return invalid;
+    }
+    return outcomeOfRows(rows(problem, seeds));
+  };
 }
 
 FailureToKeep failureShown(const RunsOutcome& outcome, bool any_kind) {

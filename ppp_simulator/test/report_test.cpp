@@ -266,6 +266,14 @@ TEST_F(ReportTest, AShrunkWorstPppIsShownBesideItWithItsFileAndReplayCommand) {
   EXPECT_EQ(parsePpp(read("ppps/beta_q2_random_shrunk.ppp"), "shrunk.ppp"), shrunk.ppp);
   EXPECT_TRUE(fs::is_regular_file(dir_ + "/pictures/beta_q2_random_shrunk.png"));
   EXPECT_NE(read("report.html").find("<li>shrunk: 1 of 1 descriptors"), std::string::npos);
+  // A planner's run (recorded: it plays only through ROS) is checked on its shrunk PPP through ROS instead.
+  worst.recorded = true;
+  input.worst = {worst};
+  writeReport(dir_, input);
+  EXPECT_NE(read("report.md").find("replay: `roslaunch launch/shrink.launch input:=ppps/beta_q2_random_shrunk.ppp "
+                                   "agent:=random output:=check.ppp config:=EXPERIMENT.yaml args:=\"--seed 12345\"`"),
+            std::string::npos)
+      << read("report.md");
 }
 
 TEST_F(ReportTest, AFailureWithAnAnimationShowsItBesideThePictureAndWritesItsFile) {

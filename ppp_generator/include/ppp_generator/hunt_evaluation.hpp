@@ -48,6 +48,8 @@ class HuntEvaluation {
   void record(const std::vector<agents::EpisodeResult>& ended);
   /// Per candidate, in request order: what the recorded runs came to.
   std::vector<PanelEvaluation> evaluations() const;
+  /// The recorded runs, in the order they ended (their `problem` is the candidate's id, "c0", "c1", ...).
+  std::vector<agents::EpisodeResult> rows() const;
 
  private:
   int runs_;
@@ -56,6 +58,7 @@ class HuntEvaluation {
   mutable std::mutex mutex_;
   std::vector<PanelTally> tallies_;
   std::vector<PanelEvaluation> evaluations_;
+  std::vector<agents::EpisodeResult> rows_;
   std::map<std::string, int> agent_index_;
 };
 

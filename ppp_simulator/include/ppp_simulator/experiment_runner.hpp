@@ -53,12 +53,18 @@ std::vector<agents::PreparedSet> beginExperiment(const ExperimentConfig& config,
 /// The path of an experiment directory's results.csv.
 std::string resultsPath(const std::string& dir);
 
+/// Plays a planner agent of the experiment on one PPP once per seed, giving the rows as results.csv has them (the
+/// simulator node's lanes), so the report can shrink planners' failures too; empty where planners cannot play
+/// (`ppp experiment`).
+using PlannerRows = std::function<std::vector<agents::EpisodeResult>(
+    const agents::AgentConfig& agent, const Problem& problem, const std::vector<std::uint64_t>& seeds)>;
+
 /// Puts every row of results.csv in canonical order and writes summary.csv and the report (the second half);
 /// `stop` is asked while reading and between the steps, each of which replaces its files whole; `log` hears
 /// each step begin. @throws IoError, ParseError, Interrupted.
 void finishExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,
                       const std::vector<agents::PreparedSet>& sets, ResultsFile* results, const StopCheck& stop = {},
-                      const std::function<void(const std::string&)>& log = {});
+                      const std::function<void(const std::string&)>& log = {}, const PlannerRows& planner_rows = {});
 
 /// What runExperiment() did.
 struct ExperimentReport {

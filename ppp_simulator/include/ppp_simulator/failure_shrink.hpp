@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ppp_agents/agent_config.hpp"
+#include "ppp_agents/episode_result.hpp"
 #include "ppp_core/diagnosis.hpp"
 #include "ppp_core/episode_options.hpp"
 #include "ppp_core/problem.hpp"
@@ -25,6 +26,13 @@ struct RunsOutcome {
   int endless = 0;    ///< Of the loops, those proven endless (a lockstep planner's; never a built-in agent's).
 };
 
+/// What the runs `rows` (one agent's on one PPP, as results.csv has them) came to.
+RunsOutcome outcomeOfRows(const std::vector<agents::EpisodeResult>& rows);
+
+/// Whether the robot can solve `problem` under `episode` (its goal reachable, for its body): a shrink's candidates
+/// must be.
+bool solvableForRobot(const Problem& problem, const EpisodeOptions& episode);
+
 /// Plays the built-in agent `agent` on `problem` once per seed of `seeds` (results.csv's run seeds) under
 /// `episode`, each run diagnosed as in an experiment.
 RunsOutcome playRuns(const Problem& problem, const agents::AgentConfig& agent, const EpisodeOptions& episode,
@@ -33,6 +41,15 @@ RunsOutcome playRuns(const Problem& problem, const agents::AgentConfig& agent, c
 /// Plays the agent a shrink judges on a PPP once per seed: playRuns() in process for a built-in agent; through the
 /// simulator's evaluation service for any agent of an experiment, planners included.
 using RunsPlayer = std::function<RunsOutcome(const Problem& problem, const std::vector<std::uint64_t>& seeds)>;
+
+/// Plays an agent on a solvable PPP once per seed and gives the rows, as results.csv has them (a planner's with its
+/// actions): the simulator node's planner lanes, for the report's shrunk planner failures.
+using RowsPlayer =
+    std::function<std::vector<agents::EpisodeResult>(const Problem& problem, const std::vector<std::uint64_t>& seeds)>;
+
+/// A RunsPlayer on `rows`: outcomeOfRows() of its rows, a PPP the robot cannot solve under `episode` judged invalid
+/// without playing it.
+RunsPlayer playerOfRows(RowsPlayer rows, const EpisodeOptions& episode);
 
 /// The failure a shrink keeps: at least `failures` of the judged runs fail, with diagnosis `kind` unless it is
 /// empty, as loops proven endless when `endless`.

@@ -366,6 +366,14 @@ std::string replayCommand(const FailureExample& failure, const std::string& ppp_
   return "ppp replay " + shellWord(ppp_file) + " " + flags + " --seed " + std::to_string(failure.seed) + " -o path.png";
 }
 
+/// How to play `failure`'s run again on its shrunk PPP in `ppp_file`: ppp replay, or for a planner (which plays only
+/// through ROS) the shrink of that PPP through ROS on the run's seed, which says whether it still fails so.
+std::string shrunkReplayCommand(const FailureExample& failure, const std::string& ppp_file) {
+  if (!failure.recorded) return replayCommand(failure, ppp_file);
+  return "roslaunch launch/shrink.launch input:=" + shellWord(ppp_file) + " agent:=" + shellWord(failure.agent) +
+         " output:=check.ppp config:=EXPERIMENT.yaml args:=\"--seed " + std::to_string(failure.seed) + "\"";
+}
+
 std::string readingGuide(const ReportInput& input) {
   std::string guide =
       "Every agent ran many times, each run with its own seed, on every PPP (path-planning problem) of every set. "
@@ -625,7 +633,7 @@ void failureEntry(const FailureExample& failure, const Picture& picture, const s
   out->md += "- replay: " + mdCode(command, false) + "\n";
   std::string shrunk_command;
   if (failure.shrunk) {
-    shrunk_command = replayCommand(failure, picture.shrunk_ppp_file);
+    shrunk_command = shrunkReplayCommand(failure, picture.shrunk_ppp_file);
     out->md += "- shrunk: " + mdText(failure.shrunk->summary) + " (" + mdCode(picture.shrunk_ppp_file, false) +
                "; replay: " + mdCode(shrunk_command, false) + ")\n\n  ![" +
                mdText("The same run on the shrunk PPP") + "](" + picture.shrunk_png_file + ")";

@@ -3,10 +3,11 @@
 # First a small config (one set, two agents): exactly its nodes start, OUTPUT_DIR/sets holds only its set,
 # results.csv equals `ppp experiment`'s byte for byte, a rerun resumes from the generator's stored set, and
 # configs naming an unknown agent type or an unreachable host stop before any node starts; launch/hunt.launch
-# hunts a small set with only its panel's nodes.
+# hunts a small set with only its panel's nodes, and launch/shrink.launch shrinks its failures as ppp shrink does.
 # Then the default config with 2 runs (three sets of 60 PPPs from three generator nodes, one of them hunting
 # through the simulator; the ten agents with 2 runs each and the three example planners with their own 3):
-# exactly sets x PPPs x agents x runs rows, the report and bag exist, and rviz (headless) shows the recorded map.
+# exactly sets x PPPs x agents x runs rows, the report and bag exist, MRPT's endless loop shrinks through ROS, and
+# rviz (headless) shows the recorded map.
 # Usage: launch_experiment_test.sh DEVEL_DIR
 source "$(dirname "${BASH_SOURCE[0]}")/ros_harness.sh"
 
@@ -75,6 +76,27 @@ timeout 300 roslaunch -p "$port" "$root/launch/hunt.launch" output_dir:="$work/s
 diff -r "$work/small/hunt" "$work/small/hunt_cli" > /dev/null && pass || \
   fail "the hunt through ROS differs from ppp generate's: $(tail -20 "$work/small/hunt.log")"
 
+# launch/shrink.launch: a built-in agent's failures of that set shrunk through ROS (only the shrink node, the
+# simulator and that agent's node start) are `ppp shrink`'s byte for byte: the same seeds, the same diagnoses.
+timeout 300 roslaunch -p "$port" "$root/launch/shrink.launch" input:="$work/small/hunt" agent:=bumper \
+  output:="$work/small/shrunk" config:="$work/small/hunt.yaml" args:="--runs 2" > "$work/small/shrink.log" 2>&1
+status=$?
+[ "$(started "$work/small/shrink.log")" = "bumper rosout shrink shrink_launch simulator " ] && pass || \
+  fail "the shrink started other processes: $(started "$work/small/shrink.log")"
+sed -n '/^agents:/,/^sets:/p' "$work/small/hunt.yaml" | grep -v '^sets:' > "$work/small/hunt_agents.yaml"
+"$devel/lib/ppp_simulator/ppp" shrink "$work/small/hunt" --agents-file "$work/small/hunt_agents.yaml" --agent bumper \
+  --runs 2 -o "$work/small/shrunk_cli" > "$work/small/shrink_cli.log" 2>&1
+[ "$status" -eq 0 ] && [ -n "$(ls "$work/small/shrunk" 2>/dev/null)" ] && pass || \
+  fail "the shrink through ROS exited $status: $(grep -v '^\s*$' "$work/small/shrink.log" | tail -20)"
+diff -r "$work/small/shrunk" "$work/small/shrunk_cli" > /dev/null && pass || \
+  fail "the shrink through ROS differs from ppp shrink's: $(diff -r "$work/small/shrunk" "$work/small/shrunk_cli" | head)"
+# A shrink naming an agent the config lacks stops before any node of its graph starts.
+timeout 120 roslaunch -p "$port" "$root/launch/shrink.launch" input:="$work/small/hunt" agent:=nobody \
+  output:="$work/small/nobody" config:="$work/small/hunt.yaml" > "$work/small/nobody.log" 2>&1
+grep -qF -- "--agent: the config has no agent 'nobody'; it has: wall_follower_left, bumper, astar" \
+  "$work/small/nobody.log" && [ "$(started "$work/small/nobody.log")" = "rosout shrink_launch " ] && \
+  [ ! -e "$work/small/nobody" ] && pass || fail "an unknown agent's shrink: $(tail "$work/small/nobody.log")"
+
 sed 's/^runs: 1000 .*/runs: 2/' "$root/config/experiment.yaml" > "$work/experiment.yaml"
 cp "$root/config/agents.yaml" "$root/config/generator.yaml" "$work/"
 timeout 600 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/out" config:="$work/experiment.yaml" \
@@ -109,6 +131,21 @@ mrpt_loops=$(awk -F, '$1 == "turns" && $2 == "ppp_011" && $3 == "mrpt" && $13 ==
   "$work/out/results.csv" | wc -l)
 [ "$mrpt_loops" -eq 3 ] && pass || fail "mrpt on turns/ppp_011 is not an endless loop of period 2 in 3 runs: \
 $(grep ',ppp_011,mrpt,' "$work/out/results.csv")"
+
+# MRPT's endless loop shrunk through ROS (launch/shrink.launch, the planner judged through its bridge) on the seed
+# of its first failed run there: still a loop proven endless, on fewer obstacle cells.
+timeout 600 roslaunch -p "$port" "$root/launch/shrink.launch" input:="$work/out/sets/turns/ppp_011.ppp" agent:=mrpt \
+  output:="$work/mrpt_011.ppp" config:="$work/experiment.yaml" results:="$work/out/results.csv" args:="--runs 1" \
+  > "$work/shrink_mrpt.log" 2>&1
+meta() { sed -n "s/^meta $1 //p" "$work/mrpt_011.ppp"; }
+[ "$(meta shrink_kind) $(meta shrink_endless) $(meta shrink_failed)" = "loop true 1 of 1" ] && \
+  [ "$(meta obstacle_cells_after)" -lt "$(meta obstacle_cells_before)" ] && pass || \
+  fail "mrpt's loop on turns/ppp_011 did not shrink to an endless loop: $(grep -v '^\s*$' "$work/shrink_mrpt.log" | tail)"
+
+# The report shows MRPT's worst PPP shrunk through its bridge for the pictured run's seed: still an endless loop.
+grep -q '^- shrunk: .* obstacle cells, still endless loop in 1 of 1 run (`ppps/turns_ppp_011_mrpt_shrunk.ppp`' \
+  "$work/out/report.md" && [ -s "$work/out/pictures/turns_ppp_011_mrpt_shrunk.png" ] && pass || \
+  fail "the report does not show mrpt's loop shrunk: $(grep -A8 'ppp_011. .* .mrpt' "$work/out/report.md")"
 
 # Every planner run that moved has its moves recorded, one action per step (the report draws planner runs from
 # them); a report entry of a planner says so.
