@@ -224,8 +224,9 @@ const std::vector<OptionSpec<ExperimentConfig>>& experimentOptionSpecs() {
                                  +[](X& x) -> int& { return x.animation_frames; }, Bounds{2, kMaxAnimationFrames})
                        .notAffectingResults());
     list.push_back(declareOption("shrink_worst",
-                                 "the report shows each built-in agent's pictured worst PPP shrunk to the smallest "
-                                 "PPP on which the pictured run still fails the same way (ppp shrink)",
+                                 "the report shows each agent's pictured worst PPP shrunk to the smallest PPP on "
+                                 "which the pictured run still fails the same way (ppp shrink; a planner's only "
+                                 "through ROS, played on its bridges)",
                                  +[](X& x) -> bool& { return x.shrink_worst; })
                        .notAffectingResults());
     return list;

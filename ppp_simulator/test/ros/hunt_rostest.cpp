@@ -103,6 +103,10 @@ TEST_F(HuntTest, ASilentPlannerFailsEveryRunWithItsReason) {
     ASSERT_EQ(e.reasons.size(), 1u);
     EXPECT_EQ(e.reasons[0], "planner_timeout");
     EXPECT_EQ(e.reason_counts[0], 2u);
+    // A planner-reported ending is diagnosed as such; no loop, so none endless.
+    EXPECT_EQ(e.diagnoses, std::vector<std::string>{"reported"});
+    EXPECT_EQ(e.diagnosis_counts, std::vector<std::uint32_t>{2u});
+    EXPECT_EQ(e.endless_loops, 0u);
   }
 }
 
@@ -117,6 +121,10 @@ TEST_F(HuntTest, BadRequestsAreRefusedNamingWhatIsWrong) {
   call = request({"bumper"}, 0);
   ASSERT_TRUE(ros::service::call("/simulator/evaluate", call));
   EXPECT_EQ(call.response.error, "runs: expected runs in [1, 10000], got 0");
+  call = request({"bumper"}, 3);
+  call.request.run_seeds = {1, 2};
+  ASSERT_TRUE(ros::service::call("/simulator/evaluate", call));
+  EXPECT_EQ(call.response.error, "run_seeds: expected one seed per run (3), got 2");
   call = request({"bumper"}, 1);
   call.request.problems[1].map.data[0] = 100;  // the map disagrees with the genotype
   ASSERT_TRUE(ros::service::call("/simulator/evaluate", call));
