@@ -160,8 +160,12 @@ void checkOutputDirectory(const std::string& dir) {
   fs::remove(probe, error);
 }
 
-void writeProblemSetDirectory(const std::string& dir, const ProblemSet& set, const GeneratorOptions& options,
-                              const std::map<std::string, std::string>& extra_files) {
+namespace {
+
+/// writeProblemSetDirectory(), with generator.yaml only when `options` is given (the taxonomy over the default
+/// characters otherwise).
+void writeSetDirectory(const std::string& dir, const ProblemSet& set, const GeneratorOptions* options,
+                       const std::map<std::string, std::string>& extra_files) {
   checkOutputDirectory(dir);
   const fs::path root(dir);
   const fs::path parent = root.has_parent_path() ? root.parent_path() : fs::path(".");
@@ -180,13 +184,24 @@ void writeProblemSetDirectory(const std::string& dir, const ProblemSet& set, con
       csv.write(row);
     }
   }
-  writeText(staging / kOptionsFile, generatorOptionsYaml(options));
+  if (options != nullptr) writeText(staging / kOptionsFile, generatorOptionsYaml(*options));
   for (const auto& [name, contents] : extra_files) writeText(staging / name, contents);
-  writeTreeFiles(staging.string(), set, buildTaxonomy(set, parseCharacterSet(options.characters)));
+  const GeneratorOptions defaults;
+  const std::string& characters = (options != nullptr ? *options : defaults).characters;
+  writeTreeFiles(staging.string(), set, buildTaxonomy(set, parseCharacterSet(characters)));
   if (fs::exists(root)) fs::remove_all(root, error);
   fs::rename(staging, root, error);
   if (error) throw IoError(dir, "cannot move the finished set into place: " + error.message());
 }
+
+}  // namespace
+
+void writeProblemSetDirectory(const std::string& dir, const ProblemSet& set, const GeneratorOptions& options,
+                              const std::map<std::string, std::string>& extra_files) {
+  writeSetDirectory(dir, set, &options, extra_files);
+}
+
+void writeDerivedSetDirectory(const std::string& dir, const ProblemSet& set) { writeSetDirectory(dir, set, nullptr, {}); }
 
 std::vector<std::string> problemSetFiles(const std::string& dir) {
   const fs::path root(dir);

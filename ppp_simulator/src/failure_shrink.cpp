@@ -161,6 +161,10 @@ ShrunkFailure shrinkFailure(const Problem& problem, const std::string& source, c
                               return entry.first == "fitness_value" || entry.first.rfind("character.", 0) == 0;
                             }),
              meta.end());
+  // Its fitness is now the failure fitness's measure: the share of the judged runs that still fail so.
+  setMetadata(&meta, "fitness", "failure");
+  setMetadata(&meta, "fitness_value",
+              formatShortest(static_cast<double>(shownRuns(shrunk.after, shrunk.kept)) / std::max(1, shrunk.after.runs)));
   setMetadata(&meta, "shrunk_from", source);
   setMetadata(&meta, "shrink_agent", agent.name);
   setMetadata(&meta, "shrink_seeds", seedList(seeds));

@@ -89,7 +89,7 @@ int shrinkSet(const ShrinkJob& job, FailureJudging judging, const FailingSeeds* 
               std::ostream& out, std::ostream& err) {
   const std::size_t runs = judging.seeds.size();
   const ProblemSet set = generator::readProblemSetDirectory(job.input);
-  std::vector<std::pair<std::string, Problem>> shrunk;  // written only once every PPP is done
+  std::vector<Problem> shrunk;  // written only once every PPP is done, as a set
   for (std::size_t i = 0; i < set.problems.size(); ++i) {
     const std::string name = set.ids[i] + ".ppp";
     const double start = steadySeconds();
@@ -104,7 +104,7 @@ int shrinkSet(const ShrinkJob& job, FailureJudging judging, const FailingSeeds* 
     try {
       const ShrunkFailure s = shrinkFailure(set.problems[i], name, judging, unitsFor(job, name), stop);
       out << name << ": " << summary(s, steadySeconds() - start) << "\n" << std::flush;
-      shrunk.emplace_back(name, s.problem);
+      shrunk.push_back(s.problem);
     } catch (const InvalidArgument& e) {
       if (e.name() != "problem") throw;
       out << name << ": " << e.problem() << ", kept out\n";
@@ -117,9 +117,9 @@ int shrinkSet(const ShrinkJob& job, FailureJudging judging, const FailingSeeds* 
         << ": nothing to shrink, nothing written\n";
     return 1;
   }
-  fs::create_directories(job.output);
-  for (const auto& [name, problem] : shrunk) writePppFile(problem, (fs::path(job.output) / name).string());
-  out << shrunk.size() << " of " << set.problems.size() << " PPPs shrunk into " << job.output << "\n";
+  const std::size_t count = shrunk.size();
+  generator::writeDerivedSetDirectory(job.output, generator::problemSetFromProblems(std::move(shrunk), {}, job.input));
+  out << count << " of " << set.problems.size() << " PPPs shrunk into " << job.output << "\n";
   return 0;
 }
 

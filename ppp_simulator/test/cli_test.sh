@@ -248,8 +248,15 @@ seed=$(sed -n 's/^meta shrink_seeds \([0-9]*\),.*/\1/p' "$work/small.ppp")
 expect_ok "replay the shrunk PPP" "$ppp" replay "$work/small.ppp" --agent wall_follower_left --seed "$seed" -o "$work/small.png"
 grep -q "^diagnosis: loop" "$work/out" && pass || fail "the shrunk PPP's run is not a loop: $(cat "$work/out")"
 expect_ok "shrink a set" "$ppp" shrink "$work/hunt_a" --agent bumper --runs 2 -o "$work/small_set"
-[ "$(ls "$work/small_set" | wc -l)" -eq "$(grep -c "obstacle cells, still" "$work/out")" ] && pass || \
+[ "$(ls "$work/small_set" | grep -c '\.ppp$')" -eq "$(grep -c "obstacle cells, still" "$work/out")" ] && pass || \
   fail "the shrunk set's files do not match what shrink printed"
+# The shrunk PPPs are a set an experiment can play (set.csv, tree), each with the failure fitness it kept.
+[ "$(($(wc -l < "$work/small_set/set.csv") - 1))" -eq "$(grep -c "obstacle cells, still" "$work/out")" ] && \
+  [ -s "$work/small_set/tree.nwk" ] && [ ! -e "$work/small_set/generator.yaml" ] && pass || \
+  fail "the shrunk set has no set.csv and tree: $(ls "$work/small_set")"
+printf 'runs: 2\nagents: [{name: bumper, type: bumper}]\nsets: [{name: small, directory: %s}]\n' "$work/small_set" \
+  > "$work/small_set.yaml"
+expect_ok "an experiment on the shrunk set" "$ppp" experiment "$work/small_set.yaml" -o "$work/small_run" --quiet
 expect_ok "shrink with an agents file" "$ppp" shrink "$work/hunt_a/ppp_000.ppp" --agents-file "$config_dir/agents.yaml" \
   --agent explorer_memory_5x5 --runs 2 --any-kind -o "$work/small_m.ppp"
 printf 'ppp 1\nsize 6 6\nstart 0 0\ngoal 5 5\nmax_obstacles 1\nobstacles 0\ngrid\nS.....\n......\n......\n......\n......\n.....G\nend\n' \

@@ -83,7 +83,10 @@ TEST(FailureShrinkTest, HuntedFailuresShrinkToOneMinimalPppsThatStillFailTheSame
       EXPECT_EQ(*findMetadata(s.problem.metadata, "shrunk_from"), set.ids[i] + ".ppp");
       EXPECT_EQ(*findMetadata(s.problem.metadata, "shrink_kind"), s.kept.kind);
       EXPECT_EQ(findMetadata(s.problem.metadata, "character.obstacles"), nullptr);  // the original's measures go
-      EXPECT_EQ(findMetadata(s.problem.metadata, "fitness_value"), nullptr);
+      EXPECT_EQ(*findMetadata(s.problem.metadata, "fitness"), "failure");  // the share of judged runs failing so
+      EXPECT_EQ(*findMetadata(s.problem.metadata, "fitness_value"),
+                formatShortest(s.after.kinds[static_cast<std::size_t>(diagnosis::kindIndex(s.kept.kind))] / 2.0))
+          << where;
       if (shrunk_count % 7 == 0) {  // deterministic: the same bytes again (checked on a sample: it doubles the work)
         EXPECT_EQ(formatPpp(shrinkFailure(set.problems[i], set.ids[i] + ".ppp", judging, ShrinkUnits::Descriptors).problem),
                   formatPpp(s.problem))

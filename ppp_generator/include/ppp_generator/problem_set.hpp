@@ -39,6 +39,11 @@ Taxonomy buildTaxonomy(const ProblemSet& set, CharacterSet characters);
 void writeProblemSetDirectory(const std::string& dir, const ProblemSet& set, const GeneratorOptions& options,
                               const std::map<std::string, std::string>& extra_files = {});
 
+/// Writes a set the generator did not evolve (PPPs shrunk from another set's, say) as writeProblemSetDirectory()
+/// does, without generator.yaml: its taxonomy over the default characters. An experiment reads it as a
+/// `directory` set. @throws IoError as writeProblemSetDirectory().
+void writeDerivedSetDirectory(const std::string& dir, const ProblemSet& set);
+
 /// Checks, before a long run, that `dir` can be created or replaced. @throws IoError saying why not.
 void checkOutputDirectory(const std::string& dir);
 

@@ -97,7 +97,8 @@ struct ShrunkFailure {
 
 /// Shrinks `problem` (named `source` in the result's metadata) for `judging`'s agent and runs, keeping
 /// failureShown() of the original's runs, at least `min_rate` of them when given (shrinkProblem() over `units`).
-/// The result's metadata drops the original's measures (fitness_value, character.*) and adds shrunk_from,
+/// The result's metadata drops the original's measures (character.*), gives it the failure fitness (fitness
+/// failure, fitness_value the share of the judged runs failing so) and adds shrunk_from,
 /// shrink_agent, shrink_seeds, shrink_kind, shrink_failed ("3 of 3"), shrink_endless (true, for endless loops
 /// kept), descriptors_before/after,
 /// obstacle_cells_before/after and shrink_evaluations.
