@@ -8,7 +8,8 @@ arguments. The graph of config/experiment.yaml holds one agent node per built-in
 experiment starts, each in /NAME/instance_K when there are several), one generator node per set with that set's options,
 and the simulator taking the sets from them; a small config's graph holds only its own nodes, on the hosts it
 names. launch/inspect.launch must load with and without a bag. A hunt's graph holds its set's generator node,
-the simulator in hunt mode and the nodes of the panel's agents only.
+the simulator in hunt mode and the nodes of the panel's agents only; a shrink's, the shrink node, the simulator in
+hunt mode and the nodes of its agent only.
 Loads everything with roslaunch's own parser; starts nothing. Usage: launch_files_test.py REPOSITORY_ROOT PPP
 """
 import os
@@ -385,6 +386,55 @@ class HuntLaunchTest(unittest.TestCase):
         _, status, errors, _ = launch_file(os.path.join(ROOT, 'config', 'experiment.yaml'), '--hunt', 'turns')
         self.assertNotEqual(status, 0)
         self.assertIn("no set 'turns' evolved with a panel fitness (its hunted sets: hunted)", errors)
+
+
+class ShrinkLaunchTest(unittest.TestCase):
+    def test_the_entry_runs_the_launcher_with_the_shrink_flags_and_absolute_paths(self):
+        config = load('shrink.launch', 'input:=relative/ppp_011.ppp', 'agent:=mrpt', 'output:=small.ppp',
+                      'results:=run/results.csv', 'args:=--runs 2')
+        self.assertEqual([(n.type, n.name, n.required) for n in config.nodes],
+                         [('experiment_launcher', 'shrink_launch', True)])
+        args = shlex.split(config.nodes[0].args)
+        self.assertEqual(args[args.index('--output-dir') + 1], os.path.join(os.getcwd(), 'small.ppp'))
+        flags = shlex.split(next(a for a in args if a.startswith('--args='))[len('--args='):])
+        value = lambda flag: flags[flags.index(flag) + 1]
+        self.assertEqual(value('--shrink'), os.path.join(os.getcwd(), 'relative', 'ppp_011.ppp'))
+        self.assertEqual(value('--agent'), 'mrpt')
+        self.assertEqual(value('--results'), os.path.join(os.getcwd(), 'run', 'results.csv'))
+        self.assertEqual(value('--runs'), '2')
+
+    def test_the_shrink_graph_starts_the_shrink_node_the_simulator_and_the_agent_only(self):
+        ppp = os.path.join(ROOT, 'ppp_simulator', 'test', 'ros', 'planner_maps', 'wall.ppp')
+        config, out = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--shrink', ppp, '--agent', 'mrpt',
+                                 '--seed', '16126441926964728741', '--runs', '3')
+        params = {k: p.value for k, p in config.params.items()}
+        self.assertEqual(sorted((n.namespace, n.name, n.type) for n in config.nodes),
+                         sorted([('/', 'shrink', 'shrink_node'), ('/', 'simulator', 'simulator_node')] +
+                                [(ns, 'bridge', 'planner_bridge_node') for ns in instance_namespaces('mrpt', CORES)] +
+                                [(ns + 'robot/', 'planner', 'mrpt_planner_node')
+                                 for ns in instance_namespaces('mrpt', CORES)]))
+        self.assertTrue([n for n in config.nodes if n.name == 'shrink'][0].required)
+        self.assertFalse([n for n in config.nodes if n.name == 'simulator'][0].required)
+        self.assertEqual(params['/simulator/mode'], 'hunt')
+        self.assertEqual((params['/shrink/input'], params['/shrink/agent'], params['/shrink/output']), (ppp, 'mrpt', out))
+        self.assertEqual(params['/shrink/config'], os.path.join(ROOT, 'config', 'experiment.yaml'))
+        # A 64-bit seed is beyond an XML-RPC integer: it travels as text and is read back whole.
+        self.assertEqual(params['/shrink/seed'], '16126441926964728741')
+        self.assertEqual(params['/shrink/runs'], 3)
+
+    def test_bad_shrinks_are_refused_naming_the_flag(self):
+        ppp = os.path.join(ROOT, 'ppp_simulator', 'test', 'ros', 'planner_maps', 'wall.ppp')
+        config = os.path.join(ROOT, 'config', 'experiment.yaml')
+        for flags, error in ((['--shrink', ppp, '--agent', 'nobody'], "--agent: the config has no agent 'nobody'"),
+                             (['--shrink', '/no/such.ppp', '--agent', 'mrpt'], "--shrink: '/no/such.ppp' does not exist"),
+                             (['--agent', 'mrpt'], '--agent: only a shrink takes it: give --shrink INPUT too'),
+                             (['--shrink', ppp, '--agent', 'mrpt', '--runs', '-1'],
+                              '--runs: expected an integer in [0, 100000], got -1'),
+                             (['--shrink', ppp, '--agent', 'mrpt', '--min-rate', '2'],
+                              '--min-rate: expected a number in [0, 1], got 2')):
+            _, status, errors, _ = launch_file(config, *flags)
+            self.assertNotEqual(status, 0, flags)
+            self.assertIn(error, errors, flags)
 
 
 if __name__ == '__main__':
