@@ -7,6 +7,7 @@
 #include "ppp_core/stop.hpp"
 #include "ppp_msgs/EvaluateProblems.h"
 #include "ppp_msgs/conversions.h"
+#include "ppp_simulator/results_file.hpp"
 
 namespace ppp {
 namespace simulator {
@@ -55,7 +56,14 @@ RunsPlayer remoteRunsPlayer(ros::NodeHandle& nh, const std::string& service, con
     if (call.response.evaluations.size() != 1) {
       throw IoError(service, "answered " + std::to_string(call.response.evaluations.size()) + " evaluations for 1 PPP");
     }
-    return outcomeOf(call.response.evaluations[0], static_cast<int>(seeds.size()), service);
+    const ppp_msgs::ProblemEvaluation& evaluation = call.response.evaluations[0];
+    for (std::size_t i = 0; i < evaluation.reasons.size(); ++i) {
+      if (leavesAgentUnreachable(evaluation.reasons[i])) {  // the agent, not the candidate: judging cannot go on
+        throw IoError(service, "agent '" + agent + "' lost " + std::to_string(evaluation.reason_counts.at(i)) +
+                                   " runs as " + evaluation.reasons[i] + " (is its node or planner still up?)");
+      }
+    }
+    return outcomeOf(evaluation, static_cast<int>(seeds.size()), service);
   };
 }
 

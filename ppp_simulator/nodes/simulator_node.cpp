@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <atomic>
 #include <memory>
+#include <set>
 #include <thread>
 
 #include "episode_recorder.hpp"
@@ -119,12 +120,21 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
     ROS_WARN("interrupted: every finished run is in results.csv; restart on the same output_dir to resume");
     return 130;
   }
-  // The report shrinks each planner's worst PPP by playing candidates on the planner's bridges, as a hunt does.
+  // The report shrinks each planner's worst PPP by playing candidates on the planner's bridges, as a hunt does; a
+  // planner whose link is lost is not asked again (each try would wait for it to connect).
   std::unique_ptr<HuntServer> planner_runs;
+  std::set<std::string> unreachable;
   const PlannerRows planner_rows = [&](const agents::AgentConfig& agent, const Problem& problem,
                                        const std::vector<std::uint64_t>& seeds) {
+    if (unreachable.count(agent.name) > 0) throw AgentUnreachable(agent.name, "lost during the report");
     if (!planner_runs) planner_runs = std::make_unique<HuntServer>(nh, parameters);
-    return planner_runs->playRows(agent, problem, seeds);
+    std::vector<agents::EpisodeResult> rows = planner_runs->playRows(agent, problem, seeds);
+    if (std::any_of(rows.begin(), rows.end(), [](const auto& r) { return leavesAgentUnreachable(r.reason); })) {
+      unreachable.insert(agent.name);
+      ROS_WARN("agent '%s' is gone: its worst PPP is not shrunk in the report", agent.name.c_str());
+      throw AgentUnreachable(agent.name, "lost during the report");
+    }
+    return rows;
   };
   try {
     finishExperiment(config, config_text, parameters.output_dir, sets, &results, [] { return !ros::ok(); },

@@ -79,6 +79,8 @@ std::optional<ShrunkExample> shrunkRun(const ExperimentConfig& config, const age
   } catch (const InvalidArgument& e) {
     if (e.name() != "problem") throw;
     return std::nullopt;
+  } catch (const AgentUnreachable&) {  // a planner gone since its runs: its worst PPP stays unshrunk
+    return std::nullopt;
   }
   ShrunkExample example;
   const Grid grid = decodeGrid(shrunk.problem);
@@ -236,7 +238,8 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
     }
     if (at.first < 0) continue;
     if (std::optional<FailureExample> run = failingRun(config, sets[at.first], at.second, agent, groups, stop)) {
-      if (config.shrink_worst && (!run->recorded || planner_rows)) {
+      // A run lost to the agent link, or to its planner's end, cannot be judged again: there is nothing to shrink.
+      if (config.shrink_worst && (!run->recorded || planner_rows) && !leavesAgentUnreachable(run->reason)) {
         run->shrunk = shrunkRun(config, agent, *run, planner_rows, stop);
       }
       worst.push_back(std::move(*run));

@@ -58,7 +58,13 @@ std::size_t parseRows(const std::string& text, const std::string& path, std::vec
 
 RunKey runKey(const agents::EpisodeResult& row) { return RunKey{row.set, row.problem, row.agent, row.run}; }
 
-bool isLostRun(const agents::EpisodeResult& row) { return row.reason == reason::kTimeout || row.reason == reason::kAgentLost; }
+bool isLostReason(const std::string& reason) { return reason == reason::kTimeout || reason == reason::kAgentLost; }
+
+bool isLostRun(const agents::EpisodeResult& row) { return isLostReason(row.reason); }
+
+bool leavesAgentUnreachable(const std::string& reason) {
+  return isLostReason(reason) || reason == reason::kPlannerLost;
+}
 
 std::vector<agents::EpisodeResult> standingRows(std::vector<agents::EpisodeResult> rows) {
   if (std::none_of(rows.begin(), rows.end(), isLostRun)) return rows;  // no run was played twice

@@ -320,6 +320,11 @@ TEST_F(ResultsFileTest, RowsWithoutLostRunsAllStand) {
   EXPECT_FALSE(isLostRun(rows[2]));
   EXPECT_TRUE(isLostRun(lost(1, "timeout")));
   EXPECT_FALSE(isLostRun(lost(1, "planner_timeout")));  // a planner's own failure is a verdict on the planner
+  EXPECT_TRUE(isLostReason("agent_lost"));
+  EXPECT_FALSE(isLostReason("planner_lost"));
+  EXPECT_TRUE(leavesAgentUnreachable("planner_lost"));
+  EXPECT_TRUE(leavesAgentUnreachable("timeout"));
+  EXPECT_FALSE(leavesAgentUnreachable("planner_timeout"));
 }
 
 /// The runs of the rows in results.csv, in file order.

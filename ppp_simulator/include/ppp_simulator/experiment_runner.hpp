@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "ppp_core/error.hpp"
 #include "ppp_core/window_atlas.hpp"
 #include "ppp_agents/agent_lane.hpp"
 #include "ppp_agents/prepared_set.hpp"
@@ -55,9 +56,15 @@ std::string resultsPath(const std::string& dir);
 
 /// Plays a planner agent of the experiment on one PPP once per seed, giving the rows as results.csv has them (the
 /// simulator node's lanes), so the report can shrink planners' failures too; empty where planners cannot play
-/// (`ppp experiment`).
+/// (`ppp experiment`). Throws AgentUnreachable when the planner is gone (a run lost to its link).
 using PlannerRows = std::function<std::vector<agents::EpisodeResult>(
     const agents::AgentConfig& agent, const Problem& problem, const std::vector<std::uint64_t>& seeds)>;
+
+/// What a PlannerRows throws when the agent's link is lost: the report then leaves that agent's PPP unshrunk.
+class AgentUnreachable : public IoError {
+ public:
+  using IoError::IoError;
+};
 
 /// Puts every row of results.csv in canonical order and writes summary.csv and the report (the second half);
 /// `stop` is asked while reading and between the steps, each of which replaces its files whole; `log` hears

@@ -26,6 +26,13 @@ RunKey runKey(const agents::EpisodeResult& row);
 /// row says nothing about the agent, so a resume plays the run again and its new row supersedes this one.
 bool isLostRun(const agents::EpisodeResult& row);
 
+/// Whether `reason` is a lost run's (isLostRun()): timeout or agent_lost.
+bool isLostReason(const std::string& reason);
+
+/// Whether a run ending for `reason` leaves the agent unable to play on: a lost run's, or planner_lost (a planner
+/// that went away stays away). A shrink through ROS cannot judge candidates after one.
+bool leavesAgentUnreachable(const std::string& reason);
+
 /// The rows of `rows` that stand, in their order: of several rows of one run (a lost run played again), the last.
 std::vector<agents::EpisodeResult> standingRows(std::vector<agents::EpisodeResult> rows);
 
