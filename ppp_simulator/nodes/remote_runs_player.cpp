@@ -38,11 +38,7 @@ RunsPlayer remoteRunsPlayer(ros::NodeHandle& nh, const std::string& service, con
   }
   auto client = std::make_shared<ros::ServiceClient>(nh.serviceClient<ppp_msgs::EvaluateProblems>(service, true));
   return [client, service, agent, episode](const Problem& problem, const std::vector<std::uint64_t>& seeds) {
-    if (!solvableForRobot(problem, episode)) {  // nothing to play
-      RunsOutcome invalid;
-      invalid.valid = false;
-      return invalid;
-    }
+    if (!solvableForRobot(problem, episode)) return RunsOutcome{false};  // nothing to play
     ppp_msgs::EvaluateProblems call;
     call.request.problems.push_back(ppp_msgs::toMessage(problem, "candidate", 1.0));
     call.request.agents = {agent};

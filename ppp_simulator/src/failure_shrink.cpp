@@ -14,7 +14,6 @@ namespace simulator {
 
 namespace {
 
-/// "3 of 3": how many of the runs show `keep`.
 /// How many of the runs of `outcome` show `keep`.
 int shownRuns(const RunsOutcome& outcome, const FailureToKeep& keep) {
   if (keep.kind.empty()) return outcome.failed;
@@ -22,6 +21,7 @@ int shownRuns(const RunsOutcome& outcome, const FailureToKeep& keep) {
   return keep.endless ? std::min(kind, outcome.endless) : kind;
 }
 
+/// "3 of 3": how many of the runs show `keep`.
 std::string shownText(const RunsOutcome& outcome, const FailureToKeep& keep) {
   return std::to_string(shownRuns(outcome, keep)) + " of " + std::to_string(outcome.runs);
 }
@@ -61,9 +61,7 @@ RunsOutcome playRuns(const Problem& problem, const agents::AgentConfig& agent, c
   try {
     set.emplace(agents::prepareSingle("shrink", "candidate", problem, episode));
   } catch (const InvalidArgument&) {  // unsolvable for the robot
-    RunsOutcome invalid;
-    invalid.valid = false;
-    return invalid;
+    return RunsOutcome{false};
   }
   agents::EpisodeRunner runner(agent, episode);
   const std::unique_ptr<agents::Agent> player = agents::makeAgent(agent);
@@ -77,11 +75,7 @@ RunsOutcome playRuns(const Problem& problem, const agents::AgentConfig& agent, c
 
 RunsPlayer playerOfRows(RowsPlayer rows, const EpisodeOptions& episode) {
   return [rows = std::move(rows), episode](const Problem& problem, const std::vector<std::uint64_t>& seeds) {
-    if (!solvableForRobot(problem, episode)) {
-      RunsOutcome invalid;
-      invalid.valid = false;
-      return invalid;
-    }
+    if (!solvableForRobot(problem, episode)) return RunsOutcome{false};
     return outcomeOfRows(rows(problem, seeds));
   };
 }
