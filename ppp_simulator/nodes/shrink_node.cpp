@@ -11,7 +11,6 @@
 #include <string>
 
 #include "ppp_core/error.hpp"
-#include "ppp_core/text_format.hpp"
 #include "ppp_msgs/graph_names.h"
 #include "ppp_msgs/node_parameters.h"
 #include "ppp_simulator/experiment_config.hpp"
@@ -25,23 +24,17 @@ namespace {
 /// Seconds to wait for the simulator's evaluation service.
 constexpr double kServiceWaitSeconds = 120.0;
 
-/// The config's agent named `name`. @throws InvalidArgument naming ~agent.
-agents::AgentConfig agentNamed(const ExperimentConfig& config, const std::string& name) {
-  std::vector<std::string> names;
-  for (const agents::AgentConfig& agent : config.agents) {
-    if (agent.name == name) return agent;
-    names.push_back(agent.name);
-  }
-  throw ppp_msgs::parameterError(
-      InvalidArgument("agent", "the config has no agent '" + name + "'; it has: " + joinNames(names)));
-}
-
 int runShrinkNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh) {
   ShrinkTask task;
   ppp_msgs::readOptionParameters(private_nh, shrinkTaskSpecs(), &task);
   ppp_msgs::validateParameters(task);
   const ExperimentConfig config = loadExperimentConfig(task.config);
-  const agents::AgentConfig agent = agentNamed(config, task.agent);
+  agents::AgentConfig agent;
+  try {
+    agent = shrinkAgent(task, config);
+  } catch (const InvalidArgument& e) {
+    throw ppp_msgs::parameterError(e);  // "~agent: ..."
+  }
   const ShrinkJob job = shrinkJobOf(
       task, agent, config.episode,
       remoteRunsPlayer(nh, ppp_msgs::topics::kEvaluator, agent.name, config.episode, kServiceWaitSeconds));

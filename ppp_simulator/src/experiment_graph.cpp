@@ -168,12 +168,7 @@ ppp_msgs::GraphNode shrinkNode(const ShrinkTask& task) {
 void checkShrink(const ExperimentConfig& config, const GraphOptions& options) {
   if (!options.hunt.empty()) throw InvalidArgument("hunt", "a graph hunts or shrinks, not both");
   options.shrink.validate();
-  std::vector<std::string> names;
-  for (const agents::AgentConfig& agent : config.agents) {
-    if (agent.name == options.shrink.agent) return;
-    names.push_back(agent.name);
-  }
-  throw InvalidArgument("agent", "the config has no agent '" + options.shrink.agent + "'; it has: " + joinNames(names));
+  shrinkAgent(options.shrink, config);
 }
 
 }  // namespace

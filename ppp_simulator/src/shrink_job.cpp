@@ -198,6 +198,15 @@ const std::vector<OptionSpec<ShrinkTask>>& shrinkTaskSpecs() {
   return specs;
 }
 
+agents::AgentConfig shrinkAgent(const ShrinkTask& task, const ExperimentConfig& config) {
+  std::vector<std::string> names;
+  for (const agents::AgentConfig& agent : config.agents) {
+    if (agent.name == task.agent) return agent;
+    names.push_back(agent.name);
+  }
+  throw InvalidArgument("agent", "the config has no agent '" + task.agent + "'; it has: " + joinNames(names));
+}
+
 ShrinkJob shrinkJobOf(const ShrinkTask& task, const agents::AgentConfig& agent, const EpisodeOptions& episode,
                       RunsPlayer play) {
   ShrinkJob job;

@@ -7,6 +7,7 @@
 
 #include "ppp_core/option_spec.hpp"
 #include "ppp_core/stop.hpp"
+#include "ppp_simulator/experiment_config.hpp"
 #include "ppp_simulator/failure_shrink.hpp"
 
 namespace ppp {
@@ -60,6 +61,9 @@ struct ShrinkTask {
   /// @throws InvalidArgument naming the option.
   void validate() const;
 };
+
+/// The agent of `config` that `task` shrinks for. @throws InvalidArgument naming "agent" when it has none so named.
+agents::AgentConfig shrinkAgent(const ShrinkTask& task, const ExperimentConfig& config);
 
 /// One declaration per ShrinkTask option.
 const std::vector<OptionSpec<ShrinkTask>>& shrinkTaskSpecs();
