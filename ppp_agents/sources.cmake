@@ -18,5 +18,6 @@ set(PPP_AGENTS_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/agent_lane.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/planner_episode.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/planner_bridge_options.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/velocity_command.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/protocol/batch_types.cpp
 )

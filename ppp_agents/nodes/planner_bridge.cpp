@@ -96,8 +96,11 @@ void PlannerBridge::reply(const ppp_msgs::ScanBatch& batch, const StepOutcome* o
     replies[0].action = outcome->action;
     replies[0].failure = outcome->failure;
     replies[0].diagnosis = outcome->diagnosis;
-    // In lockstep the bridge's state decides the next move: its digest can prove a loop endless.
-    if (parameters_.lockstep && outcome->failure == nullptr) replies[0].state = episode_.stateDigest(following_);
+    // In lockstep the bridge's state decides the next move: its digest can prove a loop endless, when the planner
+    // has no memory of its own.
+    if (parameters_.lockstep && parameters_.endless_proof && outcome->failure == nullptr) {
+      replies[0].state = episode_.stateDigest(following_);
+    }
   }
   ppp_msgs::MoveBatch moves = protocol::encodeMoves(parameters_.config.name, batch.batch, replies);
   moves.header.stamp = ros::Time::now();
@@ -187,18 +190,43 @@ PlannerBridge::StepOutcome PlannerBridge::request() {
   // this step's map that arrived already is that answer).
   const Request& r = request_;
   link_.publishGoal(r.stamp, episode_);
-  const std::optional<nav_msgs::Path> path = link_.waitForPath(
-      r.stamp, [&](const nav_msgs::Path& p) { return answers(p, r.robot); },
-      [&](const ros::Time& again) {
-        link_.publishState(again, episode_, r.robot, r.cells.data(), r.range);
-        link_.publishGoal(again, episode_);
-      });
-  if (!path) {
+  const auto resend = [&](const ros::Time& again) {
+    link_.publishState(again, episode_, r.robot, r.cells.data(), r.range);
+    link_.publishGoal(again, episode_);
+  };
+  const auto silent = [&](const char* what) {
     if (!link_.alive()) return fail(reason::kPlannerLost, "the planner's process is gone");
-    return fail(reason::kPlannerTimeout, "no path within " + std::to_string(parameters_.plan_timeout) + " s");
+    return fail(reason::kPlannerTimeout,
+                std::string("no ") + what + " within " + std::to_string(parameters_.plan_timeout) + " s");
+  };
+  if (commandsVelocity(parameters_)) {
+    const std::optional<geometry_msgs::TwistStamped> command = link_.waitForCommand(r.stamp, resend);
+    return command ? takeCommand(*command) : silent("velocity command");
   }
+  const std::optional<nav_msgs::Path> path =
+      link_.waitForPath(r.stamp, [&](const nav_msgs::Path& p) { return answers(p, r.robot); }, resend);
+  return path ? followPath(*path) : silent("path");
+}
+
+PlannerBridge::StepOutcome PlannerBridge::takeCommand(const geometry_msgs::TwistStamped& command) {
+  const std::string frame = bareFrame(command.header.frame_id);
+  if (!frame.empty() && frame != bareFrame(parameters_.base_frame) && frame != bareFrame(parameters_.map_frame)) {
+    return fail(reason::kInvalidCommand, "the command is in frame '" + command.header.frame_id + "', not '" +
+                                             parameters_.base_frame + "' (or '" + parameters_.map_frame +
+                                             "', which is aligned with it)");
+  }
+  const geometry_msgs::Twist& t = command.twist;
+  const CommandedMove move = episode_.command(VelocityCommand{t.linear.x, t.linear.y, t.linear.z, t.angular.x,
+                                                              t.angular.y, t.angular.z});
+  if (!move.problem.empty()) return fail(reason::kInvalidCommand, move.problem);
+  following_ = {MapPoint{t.linear.x, t.linear.y}};
+  return StepOutcome{static_cast<std::uint8_t>(move.action), nullptr};
+}
+
+PlannerBridge::StepOutcome PlannerBridge::followPath(const nav_msgs::Path& path) {
+  const Request& r = request_;
   std::vector<MapPoint> points;
-  const std::string frame_problem = pathPoints(*path, parameters_.map_frame, &points);
+  const std::string frame_problem = pathPoints(path, parameters_.map_frame, &points);
   if (!frame_problem.empty()) return fail(reason::kInvalidPath, frame_problem);
   // The plan kept (the poses of the path being followed, sent again): the robot goes on from where it is along
   // it, rather than from the first place the path passes its cell (a path may pass a cell twice).

@@ -27,7 +27,8 @@ namespace agents {
 
 /// Plays one agent of type planner: for each step of the simulator's episode (ScanBatch of one scan) it
 /// publishes the robot's world to an external planner (map, odom, tf, scan, goal; docs/reference/planner-interface.md)
-/// and turns the planner's nav_msgs/Path into the step's move, or into a failure with its reason. A step that
+/// and turns the planner's nav_msgs/Path (or, from a local planner, its velocity command) into the step's move, or
+/// into a failure with its reason. A step that
 /// needs no plan request is answered in roscpp's network thread as its scan is read; a plan request is handed to
 /// a worker thread, which waits for the planner's path (read in the network thread) and answers.
 class PlannerBridge {
@@ -71,6 +72,10 @@ class PlannerBridge {
   std::optional<StepOutcome> step(const ppp_msgs::ScanBatch& batch);
   /// Asks the planner for request_'s state and waits for the answer.
   StepOutcome request();
+  /// Judges a path answering request_.
+  StepOutcome followPath(const nav_msgs::Path& path);
+  /// Judges a velocity command answering request_.
+  StepOutcome takeCommand(const geometry_msgs::TwistStamped& command);
   /// Ends the episode as failed for `reason`.
   StepOutcome fail(const char* reason, const std::string& detail);
   /// True when `path` is a usable answer for the robot at `robot`, or an empty or wrong-frame one (also final).
@@ -97,7 +102,9 @@ class PlannerBridge {
   bool active_ = false;
   std::uint32_t episode_id_ = 0;
   PlannerEpisode episode_;
-  std::vector<MapPoint> following_;  // the poses of the path the robot follows (a lockstep answer may keep it)
+  // The planner's last answer: the poses of the path the robot follows (a lockstep answer may keep it), or the
+  // velocity command as one point.
+  std::vector<MapPoint> following_;
 
   std::map<std::string, long> warnings_;
 };

@@ -38,9 +38,17 @@ PlannerLink::PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters
   odom_ = nh_.advertise<nav_msgs::Odometry>(ppp_msgs::topics::kPlannerOdom, 10);
   scan_ = nh_.advertise<sensor_msgs::LaserScan>(ppp_msgs::topics::kPlannerScan, 10);
   goal_ = nh_.advertise<geometry_msgs::PoseStamped>(ppp_msgs::topics::kPlannerGoal, 10);
-  // Without Nagle's algorithm (it would hold each path back 40 ms), in the network thread (no hand-over to a spinner).
-  plan_ = ppp_msgs::subscribeInline<nav_msgs::Path>(
-      nh_, ppp_msgs::topics::kPlannerPath, 10, [this](const nav_msgs::Path::ConstPtr& path) { onPlan(path); }, &queue_);
+  // Without Nagle's algorithm (it would hold each answer back 40 ms), in the network thread (no hand-over to a
+  // spinner).
+  if (commandsVelocity(parameters_)) {
+    answers_ = ppp_msgs::subscribeInline<geometry_msgs::TwistStamped>(
+        nh_, ppp_msgs::topics::kPlannerCommand, 10,
+        [this](const geometry_msgs::TwistStamped::ConstPtr& command) { onAnswer(&commands_, *command); }, &queue_);
+  } else {
+    answers_ = ppp_msgs::subscribeInline<nav_msgs::Path>(
+        nh_, ppp_msgs::topics::kPlannerPath, 10,
+        [this](const nav_msgs::Path::ConstPtr& path) { onAnswer(&paths_, *path); }, &queue_);
+  }
   // The robot's body as costmaps read it, in metres, for planners that plan with a footprint.
   const double radius = parameters_.robot_radius * parameters_.resolution;
   nh_.setParam(ppp_msgs::topics::kPlannerRobotRadius, radius);
@@ -58,7 +66,7 @@ PlannerLink::PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters
 
 std::string PlannerLink::topics() const {
   return map_.getTopic() + ", " + odom_.getTopic() + ", " + scan_.getTopic() + ", " + goal_.getTopic() + " -> " +
-         plan_.getTopic() + "; tf " + parameters_.map_frame + " -> " + parameters_.base_frame;
+         answers_.getTopic() + "; tf " + parameters_.map_frame + " -> " + parameters_.base_frame;
 }
 
 void PlannerLink::waitForPlanner() {
@@ -67,9 +75,9 @@ void PlannerLink::waitForPlanner() {
   for (int poll = 0; ros::ok(); ++poll) {
     if (goal_.getNumSubscribers() > 0 && connected()) return;
     if (poll % 10 == 0) {
-      const std::string type = advertisedType(plan_.getTopic());
-      if (!type.empty() && type != "nav_msgs/Path") {
-        wrong_type = plan_.getTopic() + " is published as " + type + "; expected nav_msgs/Path";
+      const std::string type = advertisedType(answers_.getTopic());
+      if (!type.empty() && type != answerType()) {
+        wrong_type = answers_.getTopic() + " is published as " + type + "; expected " + answerType();
         break;
       }
     }
@@ -79,7 +87,9 @@ void PlannerLink::waitForPlanner() {
   if (!ros::ok()) return;
   std::string missing = wrong_type;
   const auto add = [&missing](const std::string& text) { missing += (missing.empty() ? "" : "; ") + text; };
-  if (wrong_type.empty() && !connected()) add("nothing publishes " + plan_.getTopic() + " (nav_msgs/Path)");
+  if (wrong_type.empty() && !connected()) {
+    add("nothing publishes " + answers_.getTopic() + " (" + answerType() + ")");
+  }
   if (goal_.getNumSubscribers() == 0) {
     add("nothing subscribes to " + goal_.getTopic() +
         " (geometry_msgs/PoseStamped; a subscriber of another type cannot connect)");
@@ -88,24 +98,34 @@ void PlannerLink::waitForPlanner() {
                                        " or remap its topics to these names (docs/reference/planner-interface.md)");
 }
 
-void PlannerLink::onPlan(const nav_msgs::Path::ConstPtr& path) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  latest_ = *path;
-  ++received_;
-  arrived_.notify_one();
+const char* PlannerLink::answerType() const {
+  return commandsVelocity(parameters_) ? "geometry_msgs/TwistStamped" : "nav_msgs/Path";
+}
+
+template <class Message>
+void PlannerLink::onAnswer(AnswerInbox<Message>* inbox, const Message& answer) {
+  std::lock_guard<std::mutex> lock(inbox->mutex);
+  inbox->latest = answer;
+  ++inbox->received;
+  inbox->arrived.notify_one();
 }
 
 void PlannerLink::newEpisode() {
   answered_ = false;
-  std::lock_guard<std::mutex> lock(mutex_);
-  used_ = received_;  // a path sent for an earlier episode is not this one's
+  // An answer sent for an earlier episode is not this one's.
+  {
+    std::lock_guard<std::mutex> lock(paths_.mutex);
+    paths_.used = paths_.received;
+  }
+  std::lock_guard<std::mutex> lock(commands_.mutex);
+  commands_.used = commands_.received;
 }
 
 std::optional<nav_msgs::Path> PlannerLink::takeUnasked() {
-  std::lock_guard<std::mutex> lock(mutex_);
+  std::lock_guard<std::mutex> lock(paths_.mutex);
   std::optional<nav_msgs::Path> unasked;
-  if (received_ > used_) unasked = latest_;
-  used_ = received_;
+  if (paths_.received > paths_.used) unasked = paths_.latest;
+  paths_.used = paths_.received;
   return unasked;
 }
 
@@ -116,35 +136,36 @@ bool PlannerLink::gone() {
   const ros::WallTime now = ros::WallTime::now();
   if (now < next_probe_) return false;
   next_probe_ = now + ros::WallDuration(kProbePeriod);
-  return !ppp_msgs::publisherAlive(plan_.getTopic());
+  return !ppp_msgs::publisherAlive(answers_.getTopic());
 }
 
-bool PlannerLink::alive() const { return connected() && ppp_msgs::publisherAlive(plan_.getTopic()); }
+bool PlannerLink::alive() const { return connected() && ppp_msgs::publisherAlive(answers_.getTopic()); }
 
-std::optional<nav_msgs::Path> PlannerLink::waitForPath(const ros::Time& request,
-                                                       const std::function<bool(const nav_msgs::Path&)>& fits,
-                                                       const std::function<void(const ros::Time&)>& resend) {
+template <class Message>
+std::optional<Message> PlannerLink::waitFor(AnswerInbox<Message>* inbox, const ros::Time& request,
+                                            const std::function<bool(const Message&)>& fits,
+                                            const std::function<void(const ros::Time&)>& resend) {
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(parameters_.plan_timeout);
   ros::WallTime resend_at = ros::WallTime::now() + ros::WallDuration(1.0);
-  std::optional<nav_msgs::Path> unusable;  // the last path that does not fit the request
-  std::unique_lock<std::mutex> lock(mutex_);
+  std::optional<Message> unusable;  // the last answer that does not fit the request
+  std::unique_lock<std::mutex> lock(inbox->mutex);
   while (ros::ok()) {
-    if (received_ > used_) {
-      used_ = received_;
-      // A path stamped before the request answers an earlier one (stamp 0 means "now"). One that does not fit
-      // (not from the robot's cell, not to the goal, through a known wall) may still be a late answer to an
+    if (inbox->received > inbox->used) {
+      inbox->used = inbox->received;
+      // An answer stamped before the request answers an earlier one (stamp 0 means "now"). A path that does not
+      // fit (not from the robot's cell, not to the goal, through a known wall) may still be a late answer to an
       // earlier request carrying a newer map's stamp: wait for another, and judge it if none comes.
-      const nav_msgs::Path& path = *latest_;
-      const bool unstamped = path.header.stamp.isZero();
+      const Message& answer = *inbox->latest;
+      const bool unstamped = answer.header.stamp.isZero();
       if (unstamped && parameters_.lockstep) {
-        ROS_WARN_ONCE("an unstamped path does not answer a lockstep request: stamp it with the goal's stamp "
+        ROS_WARN_ONCE("an unstamped answer does not answer a lockstep request: stamp it with the goal's stamp "
                       "(docs/reference/planner-interface.md)");
-      } else if (unstamped || path.header.stamp >= request) {
-        if (fits(path)) {
+      } else if (unstamped || answer.header.stamp >= request) {
+        if (fits(answer)) {
           answered_ = true;
-          return path;
+          return answer;
         }
-        unusable = path;
+        unusable = answer;
       }
     }
     // A planner that answered in this episode and is gone now died mid-episode: no point waiting.
@@ -161,10 +182,22 @@ std::optional<nav_msgs::Path> PlannerLink::waitForPath(const ros::Time& request,
     }
     // Wake at least every 50 ms to see whether the planner is still connected (no event says it left).
     const ros::WallTime until = std::min({deadline, resend_at, now + ros::WallDuration(0.05)});
-    arrived_.wait_for(lock, std::chrono::nanoseconds((until - now).toNSec()));
+    inbox->arrived.wait_for(lock, std::chrono::nanoseconds((until - now).toNSec()));
   }
   if (unusable) answered_ = true;
   return unusable;
+}
+
+std::optional<nav_msgs::Path> PlannerLink::waitForPath(const ros::Time& request,
+                                                       const std::function<bool(const nav_msgs::Path&)>& fits,
+                                                       const std::function<void(const ros::Time&)>& resend) {
+  return waitFor(&paths_, request, fits, resend);
+}
+
+std::optional<geometry_msgs::TwistStamped> PlannerLink::waitForCommand(
+    const ros::Time& request, const std::function<void(const ros::Time&)>& resend) {
+  return waitFor<geometry_msgs::TwistStamped>(
+      &commands_, request, [](const geometry_msgs::TwistStamped&) { return true; }, resend);
 }
 
 void PlannerLink::publishState(const ros::Time& stamp, const PlannerEpisode& episode, Cell robot,

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "geometry_msgs/TwistStamped.h"
 #include "nav_msgs/Path.h"
 #include "planner_bridge_parameters.hpp"
 #include "ppp_agents/planner_episode.hpp"
@@ -18,14 +19,26 @@
 namespace ppp {
 namespace agents {
 
+/// The answers of one message type a planner sent (paths or velocity commands), as roscpp's network thread reads
+/// them: the newest, and how many came and were looked at.
+template <class Message>
+struct AnswerInbox {
+  std::mutex mutex;
+  std::condition_variable arrived;
+  std::optional<Message> latest;
+  std::uint64_t received = 0;
+  std::uint64_t used = 0;
+};
+
 /// The planner bridge's side towards the external planner (docs/reference/planner-interface.md): publishes what the robot
-/// knows (map, odom, tf, scan) and plan requests (goal) in robot/..., and takes the planner's paths on a callback
-/// queue of its own, so that a step can wait for one.
+/// knows (map, odom, tf, scan) and plan requests (goal) in robot/..., and takes the planner's answers (paths on
+/// `plan`, or velocity commands on `cmd_vel` as the bridge's `interface` says) on a callback queue of its own, so
+/// that a step can wait for one.
 class PlannerLink {
  public:
   /// Advertises and subscribes in `nh`'s robot/ namespace.
   PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters);
-  /// Waits up to connect_timeout for the planner to subscribe to the goal and publish the plan topic.
+  /// Waits up to connect_timeout for the planner to subscribe to the goal and publish its answer topic.
   /// @throws InvalidArgument naming each topic that is missing or has the wrong type.
   void waitForPlanner();
   /// The planner-side topic names, for the log.
@@ -49,6 +62,10 @@ class PlannerLink {
   std::optional<nav_msgs::Path> waitForPath(const ros::Time& request,
                                             const std::function<bool(const nav_msgs::Path&)>& fits,
                                             const std::function<void(const ros::Time&)>& resend);
+  /// Waits up to plan_timeout for a velocity command stamped at or after `request`, as waitForPath waits for a
+  /// path (every command fits).
+  std::optional<geometry_msgs::TwistStamped> waitForCommand(const ros::Time& request,
+                                                            const std::function<void(const ros::Time&)>& resend);
   /// True when the planner that answered in this episode is gone: disconnected, or its process dead
   /// (asked over XML-RPC at most every 0.2 s).
   bool gone();
@@ -56,24 +73,28 @@ class PlannerLink {
   bool alive() const;
 
  private:
-  void onPlan(const nav_msgs::Path::ConstPtr& path);
-  bool connected() const { return plan_.getNumPublishers() > 0; }
+  template <class Message>
+  void onAnswer(AnswerInbox<Message>* inbox, const Message& answer);
+  template <class Message>
+  std::optional<Message> waitFor(AnswerInbox<Message>* inbox, const ros::Time& request,
+                                 const std::function<bool(const Message&)>& fits,
+                                 const std::function<void(const ros::Time&)>& resend);
+  bool connected() const { return answers_.getNumPublishers() > 0; }
+  /// The answer topic's type, as the master names it.
+  const char* answerType() const;
 
   BridgeParameters parameters_;
   ros::NodeHandle nh_;  // robot/...
-  ppp_msgs::InlineCallbackQueue queue_;  // the plan subscription's: onPlan runs in roscpp's network thread
+  ppp_msgs::InlineCallbackQueue queue_;  // the answer subscription's: onAnswer runs in roscpp's network thread
   ros::Publisher map_, odom_, scan_, goal_;
-  ros::Subscriber plan_;
+  ros::Subscriber answers_;  // plan or cmd_vel
   tf2_ros::TransformBroadcaster tf_;
   bool answered_ = false;     // the planner sent a path during this episode
   ros::WallTime next_probe_;  // when gone() may ask the planner's process again
 
-  // Paths from the planner (written on the queue's thread).
-  std::mutex mutex_;
-  std::condition_variable arrived_;
-  std::optional<nav_msgs::Path> latest_;
-  std::uint64_t received_ = 0;
-  std::uint64_t used_ = 0;
+  // Answers from the planner (written on the queue's thread): one inbox is used, as `interface` says.
+  AnswerInbox<nav_msgs::Path> paths_;
+  AnswerInbox<geometry_msgs::TwistStamped> commands_;
 };
 
 }  // namespace agents

@@ -107,6 +107,13 @@ std::string agentPlanRequestsProblem(const AgentConfig& config) {
   return "only planner agents ask a planner for plans";
 }
 
+/// What is wrong with the planner interface asked for, or "" when nothing is.
+std::string agentInterfaceProblem(const AgentConfig& config) {
+  if (config.type == kPlannerType) return interfaceProblem(config.bridge);
+  if (commandsVelocity(config.bridge)) return "only planner agents answer through a planner interface";
+  return "";
+}
+
 /// What is wrong with the instances asked for, or "" when nothing is.
 std::string instancesProblem(const AgentConfig& config) {
   if (config.instances == 0 || config.type == kPlannerType) return "";
@@ -214,6 +221,7 @@ void AgentConfig::validate() const {
   if (!agentPlanRequestsProblem(*this).empty()) {
     throw InvalidArgument("plan_requests", agentPlanRequestsProblem(*this));
   }
+  if (!agentInterfaceProblem(*this).empty()) throw InvalidArgument("interface", agentInterfaceProblem(*this));
   if (!hostProblem(host).empty()) throw InvalidArgument("host", hostProblem(host));
 }
 
@@ -310,7 +318,7 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
             .notAffectingResults(),
     };
     const std::vector<OptionSpec<BridgeOptions>> per_agent =
-        selectOptions(bridgeOptionSpecs(), {"plan_timeout", "lockstep", "plan_requests", "cells_per_ppp_cell"});
+        selectOptions(bridgeOptionSpecs(), {"plan_timeout", "lockstep", "plan_requests", "interface", "endless_proof", "cells_per_ppp_cell"});
     for (OptionSpec<A>& spec : nestedOptions(per_agent, +[](A& a) -> BridgeOptions& { return a.bridge; })) {
       spec.doc = "planner agents: " + spec.doc;
       list.insert(list.end() - 1, spec);

@@ -12,6 +12,7 @@ namespace agents {
 void BridgeOptions::validate() const {
   checkOptionRanges(bridgeOptionSpecs(), *this);
   if (!planRequestsProblem(*this).empty()) throw InvalidArgument("plan_requests", planRequestsProblem(*this));
+  if (!interfaceProblem(*this).empty()) throw InvalidArgument("interface", interfaceProblem(*this));
   if (map_frame.empty()) throw InvalidArgument("map_frame", "expected a non-empty frame name");
   if (base_frame.empty()) throw InvalidArgument("base_frame", "expected a non-empty frame name");
 }
@@ -20,6 +21,16 @@ std::string planRequestsProblem(const BridgeOptions& options) {
   if (options.lockstep || asksEveryStep(options)) return "";
   return "a free-running bridge (lockstep: false) asks only when the robot's path is blocked; " +
          options.plan_requests + " needs lockstep: true";
+}
+
+std::string interfaceProblem(const BridgeOptions& options) {
+  if (!commandsVelocity(options)) return "";
+  if (!options.lockstep) return "a cmd_vel planner is played in lockstep only (lockstep: true)";
+  if (!asksEveryStep(options)) {
+    return "a cmd_vel planner is asked at every step (it gives no path to move along), not " +
+           options.plan_requests;
+  }
+  return "";
 }
 
 const std::vector<OptionSpec<BridgeOptions>>& bridgeOptionSpecs() {
@@ -51,6 +62,18 @@ const std::vector<OptionSpec<BridgeOptions>>& bridgeOptionSpecs() {
                         {kPlanRequestsOnBlocked,
                          "only when the robot did not move or its path gives it no move (blocked by a known "
                          "obstacle, or the robot off it), as a navigation stack re-plans when its path is blocked"}}),
+      declareOption("interface", "what the planner answers a request with",
+                    +[](B& b) -> std::string& { return b.interface; })
+          .withChoices("planner interface",
+                       {{kInterfacePath, "a path (nav_msgs/Path on plan), followed cell by cell"},
+                        {kInterfaceCmdVel,
+                         "a velocity command (geometry_msgs/TwistStamped on cmd_vel, stamped with the request's "
+                         "stamp): the robot takes the move nearest its direction"}}),
+      declareOption("endless_proof",
+                    "in lockstep, prove loops endless from the bridge's state and the planner's answer, which holds "
+                    "when the planner's answer is a function of its input (false for a planner with a memory of "
+                    "its own, such as MRPT's ND)",
+                    +[](B& b) -> bool& { return b.endless_proof; }),
       declareOption("connect_timeout",
                     "seconds to wait at start-up for the planner's topics (an experiment's graph sets 300 for a "
                     "planner the user starts, 20 for one it starts)",

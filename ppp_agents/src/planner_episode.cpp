@@ -10,6 +10,7 @@ namespace agents {
 void PlannerEpisode::start(const EpisodeInfo& info, const Grid* prior, int memory_window, double resolution) {
   frame_ = MapFrame{info.width, info.height, resolution};
   goal_ = info.goal;
+  connectivity_ = info.connectivity;
   has_prior_ = prior != nullptr;
   known_.width = info.width;
   known_.height = info.height;

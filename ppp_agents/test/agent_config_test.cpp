@@ -146,8 +146,9 @@ TEST(AgentConfigTest, ReadsConfigurationsWithDefaults) {
 TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, colour: red}\n"),
             "agents.yaml:2: agents[0].colour: unknown key; valid keys: bumper_turn, cells_per_ppp_cell, "
-            "explorer_idle, explorer_ties, frontier, goal_range, goal_seeking, goal_ties, host, instances, lockstep, "
-            "memory, memory_model, name, plan_requests, plan_timeout, planner_args, planner_node, prior_map, runs, "
+            "endless_proof, explorer_idle, explorer_ties, frontier, goal_range, goal_seeking, goal_ties, host, "
+            "instances, interface, lockstep, memory, memory_model, name, plan_requests, plan_timeout, planner_args, "
+            "planner_node, prior_map, runs, "
             "sensor_noise, type, wall_leave, wall_sense, wall_start");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),
             std::string("agents.yaml:3: agents[1].type: missing; valid: ") + kTypes);
@@ -371,6 +372,24 @@ TEST(AgentConfigTest, APlannerIsAskedEveryStepUnlessTheAgentSaysOtherwise) {
   }
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, plan_requests: on_change}\n"),
             "agents.yaml:2: agents[0].plan_requests: only planner agents ask a planner for plans");
+}
+
+TEST(AgentConfigTest, ALocalPlannerAnswersWithVelocityCommandsInLockstepAtEveryStep) {
+  const auto configs = read(
+      "agents:\n"
+      "  - {name: global, type: planner}\n"
+      "  - {name: local, type: planner, interface: cmd_vel}\n");
+  EXPECT_FALSE(commandsVelocity(configs[0].bridge));
+  EXPECT_TRUE(commandsVelocity(configs[1].bridge));
+  EXPECT_EQ(parseError("agents:\n  - {type: planner, interface: twist}\n"),
+            "agents.yaml:2: agents[0].interface: unknown planner interface 'twist'; valid: path, cmd_vel");
+  EXPECT_EQ(parseError("agents:\n  - {type: planner, interface: cmd_vel, lockstep: false}\n"),
+            "agents.yaml:2: agents[0].interface: a cmd_vel planner is played in lockstep only (lockstep: true)");
+  EXPECT_EQ(parseError("agents:\n  - {type: planner, interface: cmd_vel, plan_requests: on_change}\n"),
+            "agents.yaml:2: agents[0].interface: a cmd_vel planner is asked at every step (it gives no path to move "
+            "along), not on_change");
+  EXPECT_EQ(parseError("agents:\n  - {type: bumper, interface: cmd_vel}\n"),
+            "agents.yaml:2: agents[0].interface: only planner agents answer through a planner interface");
 }
 
 TEST(AgentConfigTest, LoadRejectsUnknownTopLevelKeysAndMissingFiles) {

@@ -61,9 +61,11 @@ TEST(BatchCodecTest, TheWiresReasonConstantsAreTheCoresReasons) {
   // the numeric ones in batch_codec.cpp.
   EXPECT_EQ(ppp_msgs::EpisodeFailure::NO_PATH, reason::kNoPath);
   EXPECT_EQ(ppp_msgs::EpisodeFailure::INVALID_PATH, reason::kInvalidPath);
+  EXPECT_EQ(ppp_msgs::EpisodeFailure::INVALID_COMMAND, reason::kInvalidCommand);
   EXPECT_EQ(ppp_msgs::EpisodeFailure::PLANNER_TIMEOUT, reason::kPlannerTimeout);
   EXPECT_EQ(ppp_msgs::EpisodeFailure::PLANNER_LOST, reason::kPlannerLost);
   for (const std::string& wire : {ppp_msgs::EpisodeFailure::NO_PATH, ppp_msgs::EpisodeFailure::INVALID_PATH,
+                                  ppp_msgs::EpisodeFailure::INVALID_COMMAND,
                                   ppp_msgs::EpisodeFailure::PLANNER_TIMEOUT, ppp_msgs::EpisodeFailure::PLANNER_LOST}) {
     ASSERT_NE(reason::agentReportedReason(wire), nullptr) << wire;
     EXPECT_EQ(reason::agentReportedReason(wire), wire);

@@ -111,7 +111,7 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, 
       selectOptions(agents::agentNodeOptionSpecs(), {"name", "memory"});
   static const std::vector<OptionSpec<agents::BridgeOptions>> written =
       selectOptions(agents::bridgeOptionSpecs(),
-                    {"plan_timeout", "lockstep", "plan_requests", "connect_timeout", "cells_per_ppp_cell",
+                    {"plan_timeout", "lockstep", "plan_requests", "interface", "endless_proof", "connect_timeout", "cells_per_ppp_cell",
                      "robot_radius"});
   std::vector<ppp_msgs::GraphNode> nodes;
   for (int instance = 0; instance < agents::instanceCount(agent); ++instance) {

@@ -19,6 +19,11 @@ inline constexpr const char* kPlanRequestsOnChange = "on_change";
 /// `plan_requests`: in lockstep, ask only when the robot's path gives it no move (or it did not move).
 inline constexpr const char* kPlanRequestsOnBlocked = "on_blocked";
 
+/// `interface`: the planner answers a request with a path (nav_msgs/Path on `plan`).
+inline constexpr const char* kInterfacePath = "path";
+/// `interface`: the planner answers a request with a velocity command (geometry_msgs/TwistStamped on `cmd_vel`).
+inline constexpr const char* kInterfaceCmdVel = "cmd_vel";
+
 /// The planner bridge's own `~` parameters (besides its agent's name and memory): what it publishes to the
 /// planner and how long it waits for it.
 struct BridgeOptions {
@@ -28,6 +33,8 @@ struct BridgeOptions {
   double plan_timeout = 5.0;                       ///< Seconds the planner has to answer a plan request.
   bool lockstep = true;                            ///< Move only on answers to requests (reproducible).
   std::string plan_requests = kPlanRequestsEveryStep;  ///< When a lockstep bridge asks (kPlanRequests...).
+  std::string interface = kInterfacePath;          ///< What the planner answers with (kInterface...).
+  bool endless_proof = true;  ///< Report the decision state that proves loops endless (a planner without memory).
   double connect_timeout = 20.0;                   ///< Seconds to wait at start-up for the planner's topics.
   std::string map_frame = ppp_msgs::frames::kMap;  ///< Frame of the map, poses and goal.
   std::string base_frame;  ///< The robot's frame (tf child, odom child, scan frame); "": defaultBridgeBaseFrame.
@@ -37,6 +44,12 @@ struct BridgeOptions {
 
 /// What is wrong with `options`' plan_requests beside its lockstep, or "" when nothing is.
 std::string planRequestsProblem(const BridgeOptions& options);
+
+/// What is wrong with `options`' interface beside its lockstep and plan requests, or "" when nothing is.
+std::string interfaceProblem(const BridgeOptions& options);
+
+/// True when the planner answers with velocity commands rather than paths.
+inline bool commandsVelocity(const BridgeOptions& options) { return options.interface == kInterfaceCmdVel; }
 
 /// True when a lockstep bridge with `options` asks the planner at every step.
 inline bool asksEveryStep(const BridgeOptions& options) { return options.plan_requests == kPlanRequestsEveryStep; }

@@ -9,6 +9,7 @@
 #include "ppp_agents/agent_memory.hpp"
 #include "ppp_agents/path_follower.hpp"
 #include "ppp_agents/planner_bridge_options.hpp"
+#include "ppp_agents/velocity_command.hpp"
 #include "ppp_core/grid.hpp"
 #include "ppp_core/map_frame.hpp"
 #include "ppp_core/sensor.hpp"
@@ -53,9 +54,14 @@ class PlannerEpisode {
   bool fits(const std::vector<MapPoint>& points, Cell robot) const;
   /// Judges the planner's answer to a request; a usable path is followed from now on.
   Answer answer(const std::vector<MapPoint>& points, Cell robot);
+  /// The move a local planner's velocity command gives the robot (commandedMove, with the episode's connectivity
+  /// and resolution).
+  CommandedMove command(const VelocityCommand& command) const {
+    return commandedMove(command, connectivity_, frame_.resolution);
+  }
   /// A digest of the episode's whole decision state (the robot's cell and the one before, whether the last scan
   /// changed what it knows, what it knows, the path it follows and its place on it) and `following`, the
-  /// waypoints of the planner's last answer: equal digests at two steps mean the bridge, and a planner that is
+  /// planner's last answer (its path's waypoints, or its velocity command as one point (linear x, linear y)): equal digests at two steps mean the bridge, and a planner that is
   /// a function of its input (pose, map, goal), will act the same from both.
   std::uint64_t stateDigest(const std::vector<MapPoint>& following) const;
   /// For a planner that answered "no path" with the robot at `robot`: diagnosis::kMissedRoute when the map it
@@ -72,6 +78,7 @@ class PlannerEpisode {
  private:
   MapFrame frame_;
   Cell goal_;
+  Connectivity connectivity_ = Connectivity::Four;
   bool has_prior_ = false;
   Cell position_{-1, -1};  // the robot's cell at the step last observed
   Cell previous_{-1, -1};  // and at the step before (none at an episode's first step)

@@ -42,6 +42,7 @@ constexpr const char* kPlannerOdom = "odom";               ///< nav_msgs/Odometr
 constexpr const char* kPlannerScan = "scan";               ///< sensor_msgs/LaserScan, bridge -> planner.
 constexpr const char* kPlannerGoal = "move_base_simple/goal";  ///< geometry_msgs/PoseStamped, bridge -> planner.
 constexpr const char* kPlannerPath = "plan";               ///< nav_msgs/Path, planner -> bridge.
+constexpr const char* kPlannerCommand = "cmd_vel";         ///< geometry_msgs/TwistStamped, local planner -> bridge.
 constexpr const char* kPlannerRobotRadius = "robot_radius";  ///< Parameter: the robot's radius in metres.
 constexpr const char* kPlannerFootprint = "footprint";       ///< Parameter: its footprint polygon, [[x, y], ...].
 

@@ -1,8 +1,9 @@
 // Planner agents end to end: simulator_node (started here) plays the bridges and planners of
 // planner_experiment.test. The example planners pass their maps, the optimistic one as two instances sharing its
 // runs as it plays them alone, one started after the simulator's step timeout loses no run; a silent planner, one publishing a path through a wall and one killed mid-episode
-// fail with their reasons while the next episode runs; a bridge without a planner, or with a plan topic of the
-// wrong type, exits naming the topics.
+// fail with their reasons while the next episode runs; local planners answering with velocity commands pass,
+// stick at a wall, or fail with the reason their commands earn; a bridge without a planner, or with a plan topic
+// of the wrong type, exits naming the topics.
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -47,7 +48,7 @@ TEST(PlannerExperimentTest, ExamplePlannersPassAndFaultyPlannersFailWithTheirRea
   std::string out;
   auto rows = runExperiment("planners", "planner_experiment.yaml", &out);
   attachPlannerMoves(out + "/" + kPlannerMovesFile, &rows);
-  ASSERT_EQ(rows.size(), 3u * 2 * 6 + 3u + 3u + 3u + 3u);
+  ASSERT_EQ(rows.size(), 3u * 2 * 7 + 3u * 8);  // 3 maps; 7 agents of 2 runs, 8 of 1
   auto r = reasons(rows);
   for (const char* map : {"open", "wall", "hidden"}) {
     // OMPL plans on the true map; the optimistic re-planner starts blind and must find the route behind the
@@ -61,11 +62,31 @@ TEST(PlannerExperimentTest, ExamplePlannersPassAndFaultyPlannersFailWithTheirRea
     EXPECT_EQ(r["unstamped_lockstep"][map]["planner_timeout"], 1) << map;
     EXPECT_EQ(r["unstamped_free"][map]["goal_reached"], 1) << map;
   }
+  // Local planners: steering along a path passes; steering straight at the goal passes the open map and pushes
+  // against the wall of the others until the budget is spent; a silent, a NaN and an absurdly fast command fail
+  // with their reasons.
+  for (const char* map : {"open", "wall", "hidden"}) {
+    EXPECT_EQ(r["cmd_vel_follow"][map]["goal_reached"], 2) << map;
+    EXPECT_EQ(r["cmd_vel_silent"][map]["planner_timeout"], 1) << map;
+    EXPECT_EQ(r["cmd_vel_nan"][map]["invalid_command"], 1) << map;
+    EXPECT_EQ(r["cmd_vel_fast"][map]["invalid_command"], 1) << map;
+  }
+  EXPECT_EQ(r["cmd_vel_straight"]["open"]["goal_reached"], 1);
+  EXPECT_EQ(r["cmd_vel_straight"]["wall"]["budget_exhausted"], 1);
+  EXPECT_EQ(r["cmd_vel_straight"]["hidden"]["budget_exhausted"], 1);
   EXPECT_EQ(r["straight_planner"]["open"]["goal_reached"], 1);
   EXPECT_EQ(r["straight_planner"]["wall"]["invalid_path"], 1);
   EXPECT_EQ(r["straight_planner"]["hidden"]["invalid_path"], 1);
   for (const agents::EpisodeResult& row : rows) {
     if (row.agent == "ompl") EXPECT_EQ(row.bumps, 0) << row.problem;
+    // Straight at the goal from (0, 0) to (9, 0): four moves east, then bumps into the wall at x = 5 to the end.
+    if (row.agent == "cmd_vel_straight" && row.problem != "open") {
+      ASSERT_GE(row.actions.size(), 5u) << row.problem;
+      for (int i = 0; i < 5; ++i) EXPECT_EQ(row.actions[i], Action::East) << row.problem << " action " << i;
+      EXPECT_EQ(row.diagnosis, "stuck") << row.problem;
+    }
+    // Steering along a breadth-first path from (0, 0) to (9, 9) takes the 18 moves of a shortest route.
+    if (row.agent == "cmd_vel_follow" && row.problem == "open") EXPECT_EQ(row.steps, 18);
     // Asked only when blocked, the robot still takes a shortest route where nothing blocks it.
     if (row.agent == "optimistic_blocked" && row.problem == "open") {
       EXPECT_EQ(static_cast<double>(row.steps), row.optimal_length);
@@ -118,6 +139,10 @@ TEST(PlannerExperimentTest, TheBridgeNamesMissingPlannerTopicsAndWrongTypes) {
        "nothing publishes /lonely/robot/plan (nav_msgs/Path); nothing subscribes to "
        "/lonely/robot/move_base_simple/goal"},
       {"__ns:=/typo _connect_timeout:=5", "/typo/robot/plan is published as nav_msgs/Odometry; expected nav_msgs/Path"},
+      {"__ns:=/local _interface:=cmd_vel _connect_timeout:=1",
+       "nothing publishes /local/robot/cmd_vel (geometry_msgs/TwistStamped)"},
+      {"__ns:=/bad _interface:=cmd_vel _lockstep:=false",
+       "~interface: a cmd_vel planner is played in lockstep only (lockstep: true)"},
       {"__ns:=/bad _plan_timeout:=-1", "~plan_timeout: expected a number in [0.001, 86400], got -1"},
       {"__ns:=/bad _memory:=4x4", "~memory: the window side must be odd"},
       {"_connect_timeout:=1", "~name: required when the bridge runs outside an agent's namespace"},

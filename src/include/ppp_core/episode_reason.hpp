@@ -15,6 +15,8 @@ constexpr const char* kAgentLost = "agent_lost";              ///< Fail (ROS): t
 constexpr const char* kInvalidAction = "invalid_action";      ///< Fail (ROS): the agent sent something unusable.
 constexpr const char* kNoPath = "no_path";                    ///< Fail (planner): it published an empty path.
 constexpr const char* kInvalidPath = "invalid_path";          ///< Fail (planner): its path was unusable.
+/// Fail (local planner): its velocity command was unusable (not a number, or an absurd speed).
+constexpr const char* kInvalidCommand = "invalid_command";
 constexpr const char* kPlannerTimeout = "planner_timeout";    ///< Fail (planner): no path in time.
 constexpr const char* kPlannerLost = "planner_lost";          ///< Fail (planner): its process went away.
 constexpr const char* kCollision = "collision";  ///< Fail (planner, robot with a body): it drove into an obstacle.
