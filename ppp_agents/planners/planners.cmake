@@ -15,8 +15,9 @@ target_include_directories(ppp_planners SYSTEM PUBLIC ${OMPL_INCLUDE_DIRS})
 target_link_libraries(ppp_planners PUBLIC ${ppp_core_LIBRARIES} ${OMPL_LIBRARIES})
 target_compile_options(ppp_planners PRIVATE -Wall -Wextra)
 
-# MRPT's wavefront planner, in a library of its own so only its node and test link MRPT.
-add_library(ppp_planners_mrpt STATIC planners/mrpt_grid_planner.cpp)
+# MRPT's wavefront planner and holonomic reactive navigators, in a library of their own so only their nodes and
+# tests link MRPT.
+add_library(ppp_planners_mrpt STATIC planners/mrpt_grid_planner.cpp planners/mrpt_reactive_navigator.cpp)
 target_link_libraries(ppp_planners_mrpt PUBLIC ppp_planners mrpt::nav)
 target_compile_options(ppp_planners_mrpt PRIVATE -Wall -Wextra)
 
@@ -50,6 +51,9 @@ if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(mrpt_grid_planner_test planners/test/mrpt_grid_planner_test.cpp)
   target_link_libraries(mrpt_grid_planner_test ppp_planners_mrpt GTest::gtest_main)
   target_compile_options(mrpt_grid_planner_test PRIVATE -Wall -Wextra)
+  catkin_add_gtest(mrpt_reactive_navigator_test planners/test/mrpt_reactive_navigator_test.cpp)
+  target_link_libraries(mrpt_reactive_navigator_test ppp_planners_mrpt ppp_agents GTest::gtest_main)
+  target_compile_options(mrpt_reactive_navigator_test PRIVATE -Wall -Wextra)
   catkin_add_gtest(planner_node_parameters_test planners/test/planner_node_parameters_test.cpp)
   target_link_libraries(planner_node_parameters_test ppp_planners_ros GTest::gtest_main)
 endif()

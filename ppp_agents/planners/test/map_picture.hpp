@@ -33,6 +33,17 @@ inline GridMap mapPicture(const std::vector<std::string>& rows, bool unknown_is_
                  unknown_is_free);
 }
 
+/// The robot's own world of a drawn map: '#' cells are obstacles, everything else free.
+inline Grid pictureGrid(const std::vector<std::string>& rows) {
+  Grid grid(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()));
+  for (int y = 0; y < grid.height(); ++y) {
+    for (int x = 0; x < grid.width(); ++x) {
+      grid.setObstacle(Cell{x, y}, rows[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)] == '#');
+    }
+  }
+  return grid;
+}
+
 /// The cell of the first `mark` in a drawn map.
 inline Cell markedCell(const std::vector<std::string>& rows, char mark) {
   for (std::size_t y = 0; y < rows.size(); ++y) {

@@ -23,18 +23,9 @@ std::vector<MapPoint> centres(const std::vector<Cell>& cells, const GridMap& map
   return points;
 }
 
-/// The robot's own world of a drawn map: '#' cells are obstacles, everything else free.
-Grid robotGrid(const Picture& picture) {
-  Grid grid(static_cast<int>(picture.front().size()), static_cast<int>(picture.size()));
-  for (int y = 0; y < grid.height(); ++y) {
-    for (int x = 0; x < grid.width(); ++x) grid.setObstacle(Cell{x, y}, picture[y][x] == '#');
-  }
-  return grid;
-}
-
 /// True when the 4-connected robot can walk from S to G.
 bool robotCanWalk(const Picture& picture) {
-  return fewestMoves(robotGrid(picture), test::markedCell(picture, 'S'), test::markedCell(picture, 'G'),
+  return fewestMoves(test::pictureGrid(picture), test::markedCell(picture, 'S'), test::markedCell(picture, 'G'),
                      Connectivity::Four) >= 0;
 }
 
