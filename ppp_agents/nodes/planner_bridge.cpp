@@ -137,6 +137,7 @@ void PlannerBridge::start(const ppp_msgs::EpisodeStart& s) {
                    parameters_.resolution);
     link_.newEpisode();
     following_.clear();
+    episode_stamp_ = ros::Time();
     active_ = true;
   } catch (const InvalidArgument& e) {
     warnOnce(e.name(), "rejected the start of episode " + std::to_string(s.episode) + ": " + e.what());
@@ -164,13 +165,14 @@ std::optional<PlannerBridge::StepOutcome> PlannerBridge::step(const ppp_msgs::Sc
     return rejected;
   }
   r.stamp = ros::Time::now();
+  if (episode_stamp_.isZero()) episode_stamp_ = r.stamp;
   if (const std::optional<Action> along = episode_.moveWithoutRequest(parameters_)) {
     // Nothing to ask the planner (plan_requests): the robot goes on along its path; the planner gets the pose.
     link_.publishPose(r.stamp, episode_, r.robot, r.cells.data(), r.range);
     if (link_.gone()) return fail(reason::kPlannerLost, "the planner's process is gone");
     return StepOutcome{static_cast<std::uint8_t>(*along), nullptr};
   }
-  link_.publishState(r.stamp, episode_, r.robot, r.cells.data(), r.range);
+  link_.publishState(r.stamp, episode_stamp_, episode_, r.robot, r.cells.data(), r.range);
   if (link_.gone()) return fail(reason::kPlannerLost, "the planner's process is gone");
   if (!parameters_.lockstep) {
     // Free-running: a path the planner published on its own (re-planning on the new map) replaces the current
@@ -191,7 +193,7 @@ PlannerBridge::StepOutcome PlannerBridge::request() {
   const Request& r = request_;
   link_.publishGoal(r.stamp, episode_);
   const auto resend = [&](const ros::Time& again) {
-    link_.publishState(again, episode_, r.robot, r.cells.data(), r.range);
+    link_.publishState(again, episode_stamp_, episode_, r.robot, r.cells.data(), r.range);
     link_.publishGoal(again, episode_);
   };
   const auto silent = [&](const char* what) {

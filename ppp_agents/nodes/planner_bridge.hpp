@@ -101,6 +101,7 @@ class PlannerBridge {
   // The episode being played.
   bool active_ = false;
   std::uint32_t episode_id_ = 0;
+  ros::Time episode_stamp_;  // the stamp of the episode's first step (zero before it)
   PlannerEpisode episode_;
   // The planner's last answer: the poses of the path the robot follows (a lockstep answer may keep it), or the
   // velocity command as one point.

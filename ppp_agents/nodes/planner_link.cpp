@@ -200,14 +200,14 @@ std::optional<geometry_msgs::TwistStamped> PlannerLink::waitForCommand(
       &commands_, request, [](const geometry_msgs::TwistStamped&) { return true; }, resend);
 }
 
-void PlannerLink::publishState(const ros::Time& stamp, const PlannerEpisode& episode, Cell robot,
-                               const std::int8_t* window, int range) {
+void PlannerLink::publishState(const ros::Time& stamp, const ros::Time& episode_stamp, const PlannerEpisode& episode,
+                               Cell robot, const std::int8_t* window, int range) {
   const MapFrame& frame = episode.frame();
   nav_msgs::OccupancyGrid map =
       ppp_msgs::toFinerOccupancyGrid(episode.known().cells, frame.width, frame.height, parameters_.resolution,
                                      parameters_.cells_per_ppp_cell, parameters_.map_frame);
   map.header.stamp = stamp;
-  map.info.map_load_time = stamp;
+  map.info.map_load_time = episode_stamp;
   map_.publish(map);
   publishPose(stamp, episode, robot, window, range);
 }

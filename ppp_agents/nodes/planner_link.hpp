@@ -43,9 +43,11 @@ class PlannerLink {
   void waitForPlanner();
   /// The planner-side topic names, for the log.
   std::string topics() const;
-  /// Publishes the robot's world at `stamp`: the episode's known map, then publishPose's messages.
-  void publishState(const ros::Time& stamp, const PlannerEpisode& episode, Cell robot, const std::int8_t* window,
-                    int range);
+  /// Publishes the robot's world at `stamp`: the episode's known map (its map_load_time `episode_stamp`, the stamp
+  /// of the episode's first step, so a planner with memory of its own sees a new episode start), then
+  /// publishPose's messages.
+  void publishState(const ros::Time& stamp, const ros::Time& episode_stamp, const PlannerEpisode& episode,
+                    Cell robot, const std::int8_t* window, int range);
   /// Publishes the robot's pose at `stamp` (tf and odom) and its scan.
   void publishPose(const ros::Time& stamp, const PlannerEpisode& episode, Cell robot, const std::int8_t* window,
                    int range);

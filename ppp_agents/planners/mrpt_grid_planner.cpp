@@ -1,6 +1,5 @@
 #include "mrpt_grid_planner.hpp"
 
-#include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/nav/planners/PlannerSimple2D.h>
 #include <mrpt/poses/CPose2D.h>
 
@@ -14,10 +13,6 @@
 namespace ppp {
 namespace planners {
 
-namespace {
-
-/// MRPT's occupancy grid of a GridMap: the same extent and resolution (MRPT's y axis points up, as the map
-/// frame's), cells free (probability of being free 1) where the GridMap is passable, occupied (0) elsewhere.
 mrpt::maps::COccupancyGridMap2D mrptGridOf(const GridMap& map) {
   const MapFrame& frame = map.frame();
   const auto resolution = static_cast<float>(frame.resolution);
@@ -36,8 +31,6 @@ mrpt::maps::COccupancyGridMap2D mrptGridOf(const GridMap& map) {
   }
   return grid;
 }
-
-}  // namespace
 
 MrptGridPlanner::MrptGridPlanner(double robot_radius) : robot_radius_(robot_radius) {
   if (!(robot_radius >= 0) || !std::isfinite(robot_radius)) {

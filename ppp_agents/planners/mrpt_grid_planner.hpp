@@ -2,11 +2,18 @@
 
 #include <vector>
 
+#include <mrpt/maps/COccupancyGridMap2D.h>
+
 #include "grid_map.hpp"
 #include "ppp_core/grid.hpp"
 
 namespace ppp {
 namespace planners {
+
+/// MRPT's occupancy grid of a GridMap: the same extent and resolution (MRPT's y axis points up, as the map
+/// frame's), cells free (probability of being free 1) where the GridMap is passable, occupied (0) elsewhere.
+/// @throws Error when MRPT makes a grid of another size.
+mrpt::maps::COccupancyGridMap2D mrptGridOf(const GridMap& map);
 
 /// MRPT's wavefront planner for circular robots (mrpt::nav::PlannerSimple2D) on a GridMap: passable cells are
 /// free for MRPT, every other cell an obstacle; MRPT grows the obstacles by `robot_radius` (its own way: ceil(R)

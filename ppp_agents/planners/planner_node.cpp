@@ -23,7 +23,8 @@ constexpr std::size_t kPosesKept = 64;
 /// How often run() looks at ros::ok() while idle.
 constexpr std::chrono::milliseconds kIdlePoll{100};
 
-/// The planner's view of a map message. @throws InvalidArgument when it does not follow the interface.
+}  // namespace
+
 GridMap gridMapOf(const nav_msgs::OccupancyGrid& map, bool unknown_is_free, double inflation) {
   const geometry_msgs::Point& origin = map.info.origin.position;
   if (origin.x != 0.0 || origin.y != 0.0) {
@@ -33,8 +34,6 @@ GridMap gridMapOf(const nav_msgs::OccupancyGrid& map, bool unknown_is_free, doub
   return GridMap(static_cast<int>(map.info.width), static_cast<int>(map.info.height), map.info.resolution, map.data,
                  unknown_is_free, inflation);
 }
-
-}  // namespace
 
 PlannerNode::PlannerNode(ros::NodeHandle& nh, PlannerNodeOptions options, PlanFunction plan)
     : options_(std::move(options)),

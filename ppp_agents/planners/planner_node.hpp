@@ -23,6 +23,10 @@ namespace planners {
 /// A planner's answer: map-frame waypoints from the robot's cell to the goal's, empty when it finds no path.
 using PlanFunction = std::function<std::vector<MapPoint>(const GridMap& map, Cell robot, Cell goal)>;
 
+/// The planner's view of a map message (`inflation` in map cells, as GridMap takes it).
+/// @throws InvalidArgument when it does not follow the interface (origin (0, 0)) or GridMap refuses it.
+GridMap gridMapOf(const nav_msgs::OccupancyGrid& map, bool unknown_is_free, double inflation);
+
 /// How a PlannerNode serves its planner.
 struct PlannerNodeOptions {
   PlannerFrames frames;         ///< The map and robot frames.

@@ -85,6 +85,31 @@ const std::vector<OptionSpec<MrptNodeParameters>>& mrptNodeOptionSpecs() {
   return specs;
 }
 
+void ReactiveNodeParameters::validate() const { checkOptionRanges(reactiveNodeOptionSpecs(), *this); }
+
+const std::vector<OptionSpec<ReactiveNodeParameters>>& reactiveNodeOptionSpecs() {
+  using R = ReactiveNodeParameters;
+  static const std::vector<OptionSpec<R>> specs = {
+      declareOption("method", "MRPT's holonomic reactive method", +[](R& r) -> std::string& { return r.method; })
+          .withChoices("holonomic method",
+                       {{"ND", "Nearness Diagram (mrpt::nav::CHolonomicND): it prefers the direction it chose last"},
+                        {"VFF", "virtual force field (CHolonomicVFF)"},
+                        {"FullEval", "full evaluation of every direction (CHolonomicFullEval)"}}),
+      declareOption("obstacles", "where the distances to obstacles per direction come from",
+                    +[](R& r) -> std::string& { return r.obstacles; })
+          .withChoices("obstacle source",
+                       {{kObstaclesFromScan, "the robot's scan (scan)"},
+                        {kObstaclesFromMemory, "rays cast on the robot's map (map): what it remembers, unknown cells free"}}),
+      declareOption("range",
+                    "metres the obstacle distances and the goal are given to the method as fractions of (0: the "
+                    "scan's range_max)",
+                    +[](R& r) -> double& { return r.range; }, Bounds{0, 1e6}),
+      declareOption("max_speed", "metres per second the method's full speed commands",
+                    +[](R& r) -> double& { return r.max_speed; }, Bounds{1e-6, 1e6}),
+  };
+  return specs;
+}
+
 std::string defaultBaseFrame(const std::string& node_namespace) {
   return ppp_msgs::frames::under(node_namespace, ppp_msgs::frames::kBaseLink);
 }

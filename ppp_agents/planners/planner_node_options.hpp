@@ -52,6 +52,24 @@ struct MrptNodeParameters {
 /// One declaration per `~` parameter of the MRPT planner node besides its frames and body.
 const std::vector<OptionSpec<MrptNodeParameters>>& mrptNodeOptionSpecs();
 
+/// `~obstacles` of the reactive node: obstacle distances from the robot's scan.
+inline constexpr const char* kObstaclesFromScan = "scan";
+/// `~obstacles` of the reactive node: obstacle distances cast on the robot's map (its memory).
+inline constexpr const char* kObstaclesFromMemory = "memory";
+
+/// What the MRPT reactive navigator node reads besides its frames.
+struct ReactiveNodeParameters {
+  std::string method = "ND";                  ///< ~method: the holonomic method (reactiveMethodNames()).
+  std::string obstacles = kObstaclesFromScan;  ///< ~obstacles: where obstacle distances come from.
+  double range = 0;                           ///< ~range: metres the distances are fractions of (0: the scan's range_max).
+  double max_speed = 1.0;                     ///< ~max_speed: metres per second at the method's full speed.
+  /// @throws InvalidArgument naming the parameter out of its declared range.
+  void validate() const;
+};
+
+/// One declaration per `~` parameter of the MRPT reactive navigator node besides its frames.
+const std::vector<OptionSpec<ReactiveNodeParameters>>& reactiveNodeOptionSpecs();
+
 /// The default ~base_frame of a node in `node_namespace`: the namespace without its leading slash, then
 /// "/base_link" ("/ompl/robot" -> "ompl/robot/base_link", "/" -> "base_link").
 std::string defaultBaseFrame(const std::string& node_namespace);

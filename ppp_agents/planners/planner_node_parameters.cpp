@@ -38,5 +38,9 @@ MrptNodeParameters readMrptNodeParameters(const ros::NodeHandle& private_nh) {
   return readDeclared(private_nh, mrptNodeOptionSpecs());
 }
 
+ReactiveNodeParameters readReactiveNodeParameters(const ros::NodeHandle& private_nh) {
+  return readDeclared(private_nh, reactiveNodeOptionSpecs());
+}
+
 }  // namespace planners
 }  // namespace ppp

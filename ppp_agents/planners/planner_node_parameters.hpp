@@ -24,5 +24,9 @@ OmplNodeParameters readOmplNodeParameters(const ros::NodeHandle& private_nh);
 /// @throws InvalidArgument naming the parameter and what was expected.
 MrptNodeParameters readMrptNodeParameters(const ros::NodeHandle& private_nh);
 
+/// Reads the MRPT reactive navigator node's declared parameters (reactiveNodeOptionSpecs()).
+/// @throws InvalidArgument naming the parameter and what was expected.
+ReactiveNodeParameters readReactiveNodeParameters(const ros::NodeHandle& private_nh);
+
 }  // namespace planners
 }  // namespace ppp

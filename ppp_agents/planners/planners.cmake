@@ -35,8 +35,11 @@ endforeach()
 add_executable(mrpt_planner_node planners/mrpt_planner_node.cpp)
 target_link_libraries(mrpt_planner_node ppp_planners_ros ppp_planners_mrpt)
 target_compile_options(mrpt_planner_node PRIVATE -Wall -Wextra)
+add_executable(mrpt_reactive_node planners/mrpt_reactive_node.cpp)
+target_link_libraries(mrpt_reactive_node ppp_planners_ros ppp_planners_mrpt)
+target_compile_options(mrpt_reactive_node PRIVATE -Wall -Wextra)
 
-install(TARGETS optimistic_planner_node ompl_planner_node mrpt_planner_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+install(TARGETS optimistic_planner_node ompl_planner_node mrpt_planner_node mrpt_reactive_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 # simple_planner.py, and two variants of it with a classic, rare fault each, for hunting
 # (docs/tutorials/hunt-your-planner.md).
 catkin_install_python(PROGRAMS scripts/simple_planner.py scripts/horizon_planner.py scripts/greedy_planner.py
@@ -54,6 +57,10 @@ if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(mrpt_reactive_navigator_test planners/test/mrpt_reactive_navigator_test.cpp)
   target_link_libraries(mrpt_reactive_navigator_test ppp_planners_mrpt ppp_agents GTest::gtest_main)
   target_compile_options(mrpt_reactive_navigator_test PRIVATE -Wall -Wextra)
+  # MRPT's wavefront planner sending a re-planning robot back and forth, and its input checks, called directly.
+  catkin_add_gtest(mrpt_livelock_test planners/test/mrpt_livelock_test.cpp)
+  target_link_libraries(mrpt_livelock_test ppp_planners_mrpt ppp_agents GTest::gtest_main)
+  target_compile_options(mrpt_livelock_test PRIVATE -Wall -Wextra)
   catkin_add_gtest(planner_node_parameters_test planners/test/planner_node_parameters_test.cpp)
   target_link_libraries(planner_node_parameters_test ppp_planners_ros GTest::gtest_main)
 endif()

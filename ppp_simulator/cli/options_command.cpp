@@ -101,7 +101,9 @@ std::string optionsReference() {
       << "\nand of `ompl_planner_node` alone:\n\n"
       << optionsMarkdownTable(planners::omplNodeOptionSpecs(), planners::OmplNodeParameters{}, &parameter)
       << "\nand of `mrpt_planner_node` alone (its `~inflation` is MRPT's own robot radius):\n\n"
-      << optionsMarkdownTable(planners::mrptNodeOptionSpecs(), planners::MrptNodeParameters{}, &parameter);
+      << optionsMarkdownTable(planners::mrptNodeOptionSpecs(), planners::MrptNodeParameters{}, &parameter)
+      << "\n`mrpt_reactive_node` (a local planner answering on `cmd_vel`) reads the frames above and:\n\n"
+      << optionsMarkdownTable(planners::reactiveNodeOptionSpecs(), planners::ReactiveNodeParameters{}, &parameter);
   return out.str();
 }
 
