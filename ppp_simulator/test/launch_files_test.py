@@ -160,7 +160,7 @@ class DefaultGraphTest(unittest.TestCase):
 
     def test_one_bridge_and_its_planner_per_instance_of_a_planner_agent(self):
         planners = [a for a in self.agents if a['type'] == 'planner']
-        self.assertEqual(len(planners), 3)
+        self.assertEqual(len(planners), 4)
         bridges = sorted(n.namespace for n in self.config.nodes if n.type == 'planner_bridge_node')
         self.assertEqual(bridges, sorted(ns for a in planners for ns in instance_namespaces(a['name'], CORES)))
         for agent in planners:
@@ -214,6 +214,7 @@ class DefaultGraphTest(unittest.TestCase):
                                'optimistic=ppp_agents/simple_planner.py', '--planner', 'ompl=')
         robots = sorted((n.namespace, n.type) for n in config.nodes if n.namespace.endswith('/robot/'))
         self.assertEqual(robots, [(ns + 'robot/', 'mrpt_planner_node') for ns in instance_namespaces('mrpt', CORES)] +
+                         [(ns + 'robot/', 'mrpt_reactive_node') for ns in instance_namespaces('mrpt_nd', CORES)] +
                          [(ns + 'robot/', 'simple_planner.py') for ns in instance_namespaces('optimistic', CORES)])
 
     def test_your_own_planner_gets_a_bridge_and_optionally_its_node(self):

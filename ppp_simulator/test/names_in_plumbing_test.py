@@ -33,6 +33,8 @@ OWN_FLAGS = {
     ('ppp_simulator/cli/launch_file_command.cpp', '--planner'): "AGENT=PACKAGE/EXECUTABLE, the planner to start (the "
                                                                "OMPL node's ~planner is its algorithm)",
     ('ppp_simulator/cli/scenarios_command.cpp', '--seed'): "the seed scenario seeds derive from",
+    ('src/cli/random_command.cpp', '--obstacles'): "the number of random obstacle descriptors (the reactive node's "
+                                                   "~obstacles is where its obstacle distances come from)",
     ('ppp_generator/cli/generate_command.cpp', '--output'): "the set directory it writes (a shrink's ~output is the "
                                                             "shrunk PPP)",
     ('ppp_simulator/cli/simulate_command.cpp', '--output'): "the replayed episode's picture or animation",

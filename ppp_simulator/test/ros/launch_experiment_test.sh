@@ -5,9 +5,9 @@
 # configs naming an unknown agent type or an unreachable host stop before any node starts; launch/hunt.launch
 # hunts a small set with only its panel's nodes, and launch/shrink.launch shrinks its failures as ppp shrink does.
 # Then the default config with 2 runs (three sets of 60 PPPs from three generator nodes, one of them hunting
-# through the simulator; the ten agents with 2 runs each and the three example planners with their own 3):
-# exactly sets x PPPs x agents x runs rows, the report and bag exist, MRPT's endless loop shrinks through ROS, and
-# rviz (headless) shows the recorded map.
+# through the simulator; the ten agents with 2 runs each and the four example planners with their own 3):
+# exactly sets x PPPs x agents x runs rows, the report and bag exist, MRPT's endless loop shrinks through ROS, the
+# local planner's failures are diagnosed and never claimed endless, and rviz (headless) shows the recorded map.
 # Usage: launch_experiment_test.sh DEVEL_DIR
 source "$(dirname "${BASH_SOURCE[0]}")/ros_harness.sh"
 
@@ -102,7 +102,7 @@ cp "$root/config/agents.yaml" "$root/config/generator.yaml" "$work/"
 timeout 600 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/out" config:="$work/experiment.yaml" \
   > "$work/launch.log" 2>&1
 rows=$(($(wc -l < "$work/out/results.csv") - 1))
-expected=$((3 * 60 * (10 * 2 + 3 * 3)))
+expected=$((3 * 60 * (10 * 2 + 4 * 3)))
 [ "$rows" -eq "$expected" ] && pass || fail "results.csv has $rows rows, expected $expected: $(tail -20 "$work/launch.log")"
 for f in summary.csv report.html report.md experiment.bag sets/turns/tree.html sets/difficulty/set.csv sets/hunted/set.csv; do
   [ -s "$work/out/$f" ] && pass || fail "the launched experiment did not write $f"
@@ -132,6 +132,16 @@ mrpt_loops=$(awk -F, '$1 == "turns" && $2 == "ppp_011" && $3 == "mrpt" && $13 ==
 [ "$mrpt_loops" -eq 3 ] && pass || fail "mrpt on turns/ppp_011 is not an endless loop of period 2 in 3 runs: \
 $(grep ',ppp_011,mrpt,' "$work/out/results.csv")"
 
+# MRPT's ND, a local planner steering by velocity commands, fails most PPPs (a reactive method has no route to
+# follow out of a pocket); every failure is diagnosed, none is claimed endless (ND remembers its last choice), and
+# the report shows its worst PPP shrunk.
+nd_undiagnosed=$(awk -F, '$3 == "mrpt_nd" && $6 == 0 && ($13 == "" || $16 != "")' "$work/out/results.csv" | wc -l)
+nd_failed=$(awk -F, '$3 == "mrpt_nd" && $6 == 0' "$work/out/results.csv" | wc -l)
+[ "$nd_failed" -gt 0 ] && [ "$nd_undiagnosed" -eq 0 ] && pass || \
+  fail "mrpt_nd: $nd_failed failed runs, $nd_undiagnosed without a diagnosis or claimed endless: $(reasons mrpt_nd)"
+grep -q '^- shrunk: .*(`ppps/[a-z]*_ppp_[0-9]*_mrpt_nd_shrunk.ppp`' "$work/out/report.md" && pass || \
+  fail "the report does not show mrpt_nd's worst PPP shrunk"
+
 # MRPT's endless loop shrunk through ROS (launch/shrink.launch, the planner judged through its bridge) on the seed
 # of its first failed run there: still a loop proven endless, on fewer obstacle cells.
 timeout 600 roslaunch -p "$port" "$root/launch/shrink.launch" input:="$work/out/sets/turns/ppp_011.ppp" agent:=mrpt \
@@ -150,13 +160,13 @@ grep -q '^- shrunk: .* obstacle cells, still endless loop in 1 of 1 run (`ppps/t
 # Every planner run that moved has its moves recorded, one action per step (the report draws planner runs from
 # them); a report entry of a planner says so.
 unmatched=$(awk -F, 'NR == FNR { if (FNR > 1) moves[$1 "," $2 "," $3 "," $4] = length($5); next }
-  FNR > 1 && ($3 == "ompl" || $3 == "optimistic" || $3 == "mrpt") && $7 > 0 && moves[$1 "," $2 "," $3 "," $4] != $7' \
+  FNR > 1 && ($3 == "ompl" || $3 == "optimistic" || $3 == "mrpt" || $3 == "mrpt_nd") && $7 > 0 && moves[$1 "," $2 "," $3 "," $4] != $7' \
   "$work/out/planner_moves.csv" "$work/out/results.csv" | wc -l)
 [ "$unmatched" -eq 0 ] && pass || fail "$unmatched planner runs without their moves in planner_moves.csv"
 
 # The same experiment in process gives the same rows (it runs no planner agents).
 "$devel/lib/ppp_simulator/ppp" experiment "$work/experiment.yaml" -o "$work/cli" --quiet > /dev/null 2>&1
-grep -v ",ompl,\|,optimistic,\|,mrpt," "$work/out/results.csv" > "$work/ros_built_in.csv"
+grep -v ",ompl,\|,optimistic,\|,mrpt,\|,mrpt_nd," "$work/out/results.csv" > "$work/ros_built_in.csv"
 cmp -s "$work/ros_built_in.csv" "$work/cli/results.csv" && pass || fail "roslaunch and ppp experiment results differ"
 
 # rviz, headless, on the recorded bag: the picture must show the map (pixels checked, not just a file).
