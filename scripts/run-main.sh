@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The main job: installs what is missing, builds, then runs the default experiment (config/experiment.yaml:
-# three sets of 60 PPPs, two evolved and one hunted, ten agents with 1,000 runs each and three example planners
+# three sets of 60 PPPs, two evolved and one hunted, ten agents with 1,000 runs each and four example planners
 # with 3) through ROS:
 # roslaunch launch/experiment.launch starts the config's graph: a generator node per set (the hunting one has the
 # simulator play its candidates on the agent nodes), the simulator node and one process per agent (a bridge and

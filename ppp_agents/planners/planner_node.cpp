@@ -160,6 +160,11 @@ void PlannerNode::serve(const Request& request) {
     const GridMap map = gridMapOf(*request.map, options_.unknown_is_free, options_.body.inflation);
     const Cell robot = map.cellOf(MapPoint{pose.pose.pose.position.x, pose.pose.pose.position.y});
     const Cell target = map.cellOf(MapPoint{goal.pose.position.x, goal.pose.position.y});
+    if (!map.contains(target)) {
+      ROS_WARN_THROTTLE(5, "the goal (%.3f, %.3f) lies off the map (%.3f x %.3f m): answering no path",
+                        goal.pose.position.x, goal.pose.position.y, map.frame().width * map.frame().resolution,
+                        map.frame().height * map.frame().resolution);
+    }
     if (request.replan && robot == target) {
       std::lock_guard<std::mutex> lock(mutex_);
       if (goal_ == request.goal) goal_reached_ = true;

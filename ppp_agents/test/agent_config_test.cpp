@@ -407,7 +407,7 @@ TEST(AgentConfigTest, LoadRejectsUnknownTopLevelKeysAndMissingFiles) {
   EXPECT_THROW(loadAgentConfigs(path + ".missing"), IoError);
 }
 
-TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgentsAndThreePlanners) {
+TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgentsAndFourPlanners) {
   const auto configs = loadAgentConfigs(std::string(PPP_CONFIG_DIR) + "/agents.yaml");
   struct Expected {
     const char* name;
@@ -429,6 +429,7 @@ TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgentsAndThreePlanners) {
       {"ompl", "planner", 0, 0.0},
       {"optimistic", "planner", 0, 0.0},
       {"mrpt", "planner", 0, 0.0},
+      {"mrpt_nd", "planner", 0, 0.0},
   };
   ASSERT_EQ(configs.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {

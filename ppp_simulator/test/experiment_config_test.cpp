@@ -34,7 +34,7 @@ TEST(ExperimentConfigTest, ShippedDefaultExperiment) {
   EXPECT_EQ(c.sets[2].generator->fitness, "failure");
   EXPECT_EQ(c.sets[2].generator->agents, (std::vector<std::string>{"wall_follower_left", "explorer", "bumper"}));
   EXPECT_EQ(c.sets[2].generator->runs_per_eval, 20);
-  ASSERT_EQ(c.agents.size(), 13u);  // the ten built-in agents and the three example planners
+  ASSERT_EQ(c.agents.size(), 14u);  // the ten built-in agents and the four example planners
   EXPECT_EQ(c.agents[6].name, "explorer_memory_5x5");
   EXPECT_EQ(c.agents[6].memory_window, 5);
   EXPECT_EQ(c.agents[7].sensor_noise, 0.1);
@@ -42,26 +42,29 @@ TEST(ExperimentConfigTest, ShippedDefaultExperiment) {
   EXPECT_EQ(c.agents[12].planner_node, "ppp_agents/mrpt_planner_node");
   EXPECT_EQ(c.agents[12].planner_args, "_inflation:=1");
   EXPECT_EQ(c.agents[12].bridge.cells_per_ppp_cell, 4);
+  EXPECT_EQ(c.agents[13].planner_node, "ppp_agents/mrpt_reactive_node");
+  EXPECT_EQ(c.agents[13].bridge.interface, "cmd_vel");
+  EXPECT_FALSE(c.agents[13].bridge.endless_proof);
 }
 
 TEST(ExperimentConfigTest, WorkOfTheDefaultExperimentAndTheLimit) {
   ExperimentConfig c = loadExperimentConfig(PPP_CONFIG_DIR "/experiment.yaml");
   const ExperimentWork work = estimateWork(c);
-  // 3 sets x 60 PPPs x (10 agents x 1000 runs + 3 planners x 3 runs).
-  EXPECT_EQ(work.episodes, 3.0 * 60 * (10 * 1000 + 3 * 3));
+  // 3 sets x 60 PPPs x (10 agents x 1000 runs + 4 planners x 3 runs).
+  EXPECT_EQ(work.episodes, 3.0 * 60 * (10 * 1000 + 4 * 3));
   // The hunt: (60 initial PPPs + 2 children x 10,000 matings) x 3 panel agents x 20 runs.
   EXPECT_EQ(work.hunt_episodes, (60.0 + 2 * 10000) * 3 * 20);
   EXPECT_EQ(work.matings, 30000.0);
   EXPECT_NO_THROW(checkWork(work, false));
-  EXPECT_EQ(workSummary(work), "1801620 episodes, 1203600 more while hunting, 30000 matings, results.csv about 163 MB");
-  // 56 times the runs: 1.0086e8 episodes with the hunt's, above 1e8.
+  EXPECT_EQ(workSummary(work), "1802160 episodes, 1203600 more while hunting, 30000 matings, results.csv about 163 MB");
+  // 56 times the runs: 1.0086e8 episodes with the hunt's, above 1e8 (the planners keep their own 3 runs).
   c.runs = 56 * 1000;
   const ExperimentWork large = estimateWork(c);
   try {
     checkWork(large, false);
     ADD_FAILURE() << "a large experiment was not refused";
   } catch (const InvalidArgument& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("work: a large experiment (more than 1e8 episodes): 100801620 episodes", 0), 0u)
+    EXPECT_EQ(std::string(e.what()).rfind("work: a large experiment (more than 1e8 episodes): 100802160 episodes", 0), 0u)
         << e.what();
   }
   EXPECT_NO_THROW(checkWork(large, true));
