@@ -113,12 +113,8 @@ void PlannerLink::onAnswer(AnswerInbox<Message>* inbox, const Message& answer) {
 void PlannerLink::newEpisode() {
   answered_ = false;
   // An answer sent for an earlier episode is not this one's.
-  {
-    std::lock_guard<std::mutex> lock(paths_.mutex);
-    paths_.used = paths_.received;
-  }
-  std::lock_guard<std::mutex> lock(commands_.mutex);
-  commands_.used = commands_.received;
+  paths_.skipReceived();
+  commands_.skipReceived();
 }
 
 std::optional<nav_msgs::Path> PlannerLink::takeUnasked() {

@@ -28,6 +28,11 @@ struct AnswerInbox {
   std::optional<Message> latest;
   std::uint64_t received = 0;
   std::uint64_t used = 0;
+  /// Marks every answer received so far as looked at.
+  void skipReceived() {
+    std::lock_guard<std::mutex> lock(mutex);
+    used = received;
+  }
 };
 
 /// The planner bridge's side towards the external planner (docs/reference/planner-interface.md): publishes what the robot
