@@ -211,17 +211,12 @@ PlannerBridge::StepOutcome PlannerBridge::request() {
 }
 
 PlannerBridge::StepOutcome PlannerBridge::takeCommand(const geometry_msgs::TwistStamped& command) {
-  const std::string frame = bareFrame(command.header.frame_id);
-  if (!frame.empty() && frame != bareFrame(parameters_.base_frame) && frame != bareFrame(parameters_.map_frame)) {
-    return fail(reason::kInvalidCommand, "the command is in frame '" + command.header.frame_id + "', not '" +
-                                             parameters_.base_frame + "' (or '" + parameters_.map_frame +
-                                             "', which is aligned with it)");
-  }
-  const geometry_msgs::Twist& t = command.twist;
-  const CommandedMove move = episode_.command(VelocityCommand{t.linear.x, t.linear.y, t.linear.z, t.angular.x,
-                                                              t.angular.y, t.angular.z});
+  VelocityCommand velocity;
+  const std::string frame_problem = commandOf(command, parameters_.base_frame, parameters_.map_frame, &velocity);
+  if (!frame_problem.empty()) return fail(reason::kInvalidCommand, frame_problem);
+  const CommandedMove move = episode_.command(velocity);
   if (!move.problem.empty()) return fail(reason::kInvalidCommand, move.problem);
-  following_ = {MapPoint{t.linear.x, t.linear.y}};
+  following_ = {MapPoint{velocity.linear_x, velocity.linear_y}};
   return StepOutcome{static_cast<std::uint8_t>(move.action), nullptr};
 }
 

@@ -26,5 +26,17 @@ std::string pathPoints(const nav_msgs::Path& path, const std::string& map_frame,
   return "";
 }
 
+std::string commandOf(const geometry_msgs::TwistStamped& command, const std::string& base_frame,
+                      const std::string& map_frame, VelocityCommand* velocity) {
+  const std::string frame = bareFrame(command.header.frame_id);
+  if (!frame.empty() && frame != bareFrame(base_frame) && frame != bareFrame(map_frame)) {
+    return "the command is in frame '" + command.header.frame_id + "', not '" + base_frame + "' (or '" + map_frame +
+           "', which is aligned with it)";
+  }
+  const geometry_msgs::Twist& t = command.twist;
+  *velocity = VelocityCommand{t.linear.x, t.linear.y, t.linear.z, t.angular.x, t.angular.y, t.angular.z};
+  return "";
+}
+
 }  // namespace agents
 }  // namespace ppp

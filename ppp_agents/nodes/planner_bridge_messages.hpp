@@ -3,9 +3,11 @@
 #include <string>
 #include <vector>
 
+#include <geometry_msgs/TwistStamped.h>
 #include <nav_msgs/Path.h>
 
 #include "ppp_agents/planner_episode.hpp"
+#include "ppp_agents/velocity_command.hpp"
 
 namespace ppp {
 namespace agents {
@@ -16,6 +18,11 @@ std::string bareFrame(const std::string& frame);
 /// Turns a planner's path into map points, checking that it and each pose are in `map_frame` (a pose may leave
 /// its frame empty) and every point is finite. Returns "" or what is wrong.
 std::string pathPoints(const nav_msgs::Path& path, const std::string& map_frame, std::vector<MapPoint>* points);
+
+/// Turns a local planner's velocity command into a VelocityCommand, checking that it is in the robot's frame
+/// `base_frame` or the map's (aligned with it), or has none. Returns "" or what is wrong.
+std::string commandOf(const geometry_msgs::TwistStamped& command, const std::string& base_frame,
+                      const std::string& map_frame, VelocityCommand* velocity);
 
 }  // namespace agents
 }  // namespace ppp

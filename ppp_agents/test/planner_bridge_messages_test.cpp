@@ -1,4 +1,5 @@
-// A planner's nav_msgs/Path as map points: frames and finite points checked.
+// A planner's nav_msgs/Path as map points, and a local planner's velocity command: frames and finite points
+// checked.
 
 #include "planner_bridge_messages.hpp"
 
@@ -39,6 +40,22 @@ TEST(PlannerBridgeMessagesTest, WrongFramesAndPointsAreNamed) {
   EXPECT_EQ(pathPoints(mixed, "map", &points), "a pose of the path is in frame 'odom'; expected 'map'");
   EXPECT_EQ(pathPoints(path("map", {{std::numeric_limits<double>::quiet_NaN(), 0.5}}), "map", &points),
             "a pose of the path is not a finite point");
+}
+
+TEST(PlannerBridgeMessagesTest, ACommandInTheRobotsOrTheMapsFrameIsTaken) {
+  geometry_msgs::TwistStamped command;
+  command.twist.linear.x = 0.5;
+  command.twist.angular.z = 2;
+  VelocityCommand velocity;
+  for (const char* frame : {"", "mine/robot/base_link", "/mine/robot/base_link", "map"}) {
+    command.header.frame_id = frame;
+    EXPECT_EQ(commandOf(command, "mine/robot/base_link", "map", &velocity), "") << frame;
+    EXPECT_EQ(velocity.linear_x, 0.5);
+    EXPECT_EQ(velocity.angular_z, 2);
+  }
+  command.header.frame_id = "odom";
+  EXPECT_EQ(commandOf(command, "mine/robot/base_link", "map", &velocity),
+            "the command is in frame 'odom', not 'mine/robot/base_link' (or 'map', which is aligned with it)");
 }
 
 }  // namespace
