@@ -85,7 +85,10 @@ std::vector<double> sectorObstacles(const LaserRays& scan, double range, int* in
     const int sector = static_cast<int>(std::floor(place)) % kReactiveSectors;
     obstacles[sector] = std::min(obstacles[sector], fraction);
     const double offset = place - std::floor(place);
-    constexpr double kBorder = 1e-6;  // a ray this close to a border lies on it
+    // A ray this close to a border (in sector widths) lies on it. LaserScan's angles are floats: its rays come
+    // out up to 2e-6 sector widths off the borders they lie on, so a tighter tolerance would put them in one
+    // sector only, and a planner would see another scan through ROS than the same rays in double precision.
+    constexpr double kBorder = 1e-3;
     if (offset < kBorder) {
       const int before = (sector + kReactiveSectors - 1) % kReactiveSectors;
       obstacles[before] = std::min(obstacles[before], fraction);

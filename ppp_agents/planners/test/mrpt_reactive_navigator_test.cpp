@@ -4,10 +4,15 @@
 #include "mrpt_reactive_navigator.hpp"
 
 #include <gtest/gtest.h>
+#include <mrpt/math/TPoint2D.h>
+#include <mrpt/nav/holonomic/CHolonomicND.h>
+#include <mrpt/nav/holonomic/ClearanceDiagram.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "map_picture.hpp"
@@ -32,26 +37,38 @@ struct Choice {
   Action move = Action::Stay;
 };
 
-/// The robot's walk on a drawn map ('#' obstacles, S start, G goal; 1 m cells): at each step the range-2 scan
-/// as the bridge's 72 rays, normalised by the scan's range, and the goal relative to the robot go to the method;
-/// the robot takes the move nearest its direction. Stops on the goal or after `steps` steps.
+/// What the method is given at `robot` on `grid` (1 m cells), as mrpt_reactive_node gets it from the bridge:
+/// the range-2 scan as 72 rays (their angle increment a float, as in sensor_msgs/LaserScan) per sector, and the
+/// goal relative to the robot, both as fractions of the scan's range.
+struct MethodInput {
+  std::vector<double> obstacles;
+  MapPoint target;
+};
+
+MethodInput inputAt(const Grid& grid, Cell robot, Cell goal) {
+  const MapFrame frame{grid.width(), grid.height(), 1.0};
+  const SensorModel sensor(SensorOptions{2, 0.0});
+  std::vector<std::int8_t> window(25);
+  sensor.see(grid, robot, window.data());
+  int invalid = 0;
+  const LaserRays scan{0, static_cast<float>(2 * M_PI / kRays), windowRanges(window.data(), 2, kRays)};
+  return MethodInput{sectorObstacles(scan, kScanRange, &invalid),
+                     MapPoint{(frame.centreX(goal) - frame.centreX(robot)) / kScanRange,
+                              (frame.centreY(goal) - frame.centreY(robot)) / kScanRange}};
+}
+
+/// The robot's walk on a drawn map ('#' obstacles, S start, G goal): at each step the method's choice for
+/// inputAt the robot's cell; the robot takes the 4-connected move nearest its direction. Stops on the goal or
+/// after `steps` steps.
 std::vector<Choice> walk(const Picture& picture, const std::string& method, int steps) {
   const Grid grid = test::pictureGrid(picture);
   const Cell goal = test::markedCell(picture, 'G');
-  const MapFrame frame{grid.width(), grid.height(), 1.0};
-  const SensorModel sensor(SensorOptions{2, 0.0});
   MrptReactiveNavigator navigator(method);
   Cell robot = test::markedCell(picture, 'S');
   std::vector<Choice> choices;
   for (int step = 0; step < steps && !(robot == goal); ++step) {
-    std::vector<std::int8_t> window(25);
-    sensor.see(grid, robot, window.data());
-    int invalid = 0;
-    const std::vector<double> obstacles =
-        sectorObstacles(LaserRays{0, 2 * M_PI / kRays, windowRanges(window.data(), 2, kRays)}, kScanRange, &invalid);
-    const MapPoint target{(frame.centreX(goal) - frame.centreX(robot)) / kScanRange,
-                          (frame.centreY(goal) - frame.centreY(robot)) / kScanRange};
-    const Heading heading = navigator.navigate(obstacles, target);
+    const MethodInput input = inputAt(grid, robot, goal);
+    const Heading heading = navigator.navigate(input.obstacles, input.target);
     agents::VelocityCommand command;
     command.linear_x = heading.speed * std::cos(heading.direction);
     command.linear_y = heading.speed * std::sin(heading.direction);
@@ -112,6 +129,22 @@ TEST(MrptReactiveNavigatorTest, ScanRaysBecomeSectorDistancesAsFractionsOfTheRan
   scan.ranges[0] = 7.0f;
   sectors = sectorObstacles(scan, 2.0, &invalid);
   EXPECT_DOUBLE_EQ(sectors[36], 1.0);
+}
+
+// A LaserScan's angle increment is a float, so its rays come out a little off the sector borders they lie on
+// (up to 2e-6 sector widths for 72 rays). Each ray must still count for both sectors: every ray alone, at a
+// distance of its own, gives the same sectors with the float increment as with the exact one.
+TEST(MrptReactiveNavigatorTest, FloatScanAnglesGiveTheSectorsOfTheExactAngles) {
+  for (int ray = 0; ray < kRays; ++ray) {
+    std::vector<float> ranges(kRays, std::numeric_limits<float>::infinity());
+    ranges[ray] = 1.0f;
+    int invalid = 0;
+    const std::vector<double> exact = sectorObstacles(LaserRays{0, 2 * M_PI / kRays, ranges}, 2.0, &invalid);
+    const std::vector<double> rounded =
+        sectorObstacles(LaserRays{0, static_cast<float>(2 * M_PI / kRays), ranges}, 2.0, &invalid);
+    EXPECT_EQ(rounded, exact) << "ray " << ray;
+    EXPECT_EQ(std::count(exact.begin(), exact.end(), 0.5), 2) << "ray " << ray << " is not on a border";
+  }
 }
 
 // Cast on a known map: from the centre of cell (1, 1) of a 4x3 map of 1 m cells, east meets the wall at x = 3
@@ -191,6 +224,66 @@ TEST(MrptReactiveNavigatorTest, VffAndNdOscillateForEverInAUFacingAwayFromTheGoa
       EXPECT_TRUE(choices[i].move == Action::North || choices[i].move == Action::South) << method << " step " << i;
       if (method == "VFF") EXPECT_NEAR(std::fabs(choices[i].degrees), 90.0, 1e-9) << "step " << i;
     }
+  }
+}
+
+// ND's trap from its hunted set, shrunk: one obstacle cell diagonal to a goal in the map's corner (through ROS,
+// on a 20x20 map, (18, 18) before the goal (19, 19); here the same corner of a 6x6 map). ND comes down the
+// diagonal, turns south round the obstacle's west side, and then swings for ever between the cell west of the
+// obstacle, where it heads north (92.5°), and the cell north of that, where it heads south-west (-122.5°).
+// MRPT's own log says why: at both cells the way to the goal is closed, so ND picks one of the two wide gaps
+// (SITUATION_WIDE_GAP), and for a wide gap it steers 9 sectors (45°) inside the gap's edge nearest the target
+// (CHolonomicND::calcRepresentativeSectorForGap): west of the obstacle that is north, away from the goal; at
+// the cell north of it, the gap round the west side scores a little higher than the one round the east side
+// (0.437 against 0.423) and its direction leads back south-west.
+TEST(MrptReactiveNavigatorTest, NdSwingsForEverBesideOneObstacleBeforeAGoalInTheCorner) {
+  const Picture trap = {"S.....", "......", "......", "......", "....#.", ".....G"};
+  const std::vector<Choice> choices = walk(trap, "ND", 300);
+  ASSERT_EQ(choices.size(), 301u) << "ND reached the goal";
+  const std::vector<Cell> approach = {{0, 0}, {0, 1}, {1, 1}, {1, 2}, {2, 2}, {2, 3}, {2, 4}};
+  for (std::size_t i = 0; i < approach.size(); ++i) EXPECT_EQ(choices[i].robot, approach[i]) << "step " << i;
+  for (std::size_t i = 7; i + 1 < 300; i += 2) {
+    EXPECT_EQ(choices[i].robot, (Cell{3, 4})) << "step " << i;
+    EXPECT_NEAR(choices[i].degrees, 92.5, 1e-9) << "step " << i;
+    EXPECT_EQ(choices[i].move, Action::North) << "step " << i;
+    EXPECT_EQ(choices[i + 1].robot, (Cell{3, 3})) << "step " << i + 1;
+    EXPECT_NEAR(choices[i + 1].degrees, -122.5, 1e-9) << "step " << i + 1;
+    EXPECT_EQ(choices[i + 1].move, Action::South) << "step " << i + 1;
+  }
+
+  // The same two choices from mrpt::nav::CHolonomicND itself, with its log.
+  const Grid grid = test::pictureGrid(trap);
+  mrpt::nav::CHolonomicND nd;
+  mrpt::nav::ClearanceDiagram clearance;
+  struct Expected {
+    Cell robot;
+    std::vector<std::pair<int, int>> gaps;  // first and last sector of each gap
+    unsigned selected;
+  };
+  // Sector k points at -180° + 5k + 2.5°. West of the obstacle the target is in sector 30 and the gaps are
+  // [0, 5] (west) and [45, 71] (north): the nearer edge is 45, so 45 + 9 = 54, 92.5°. North of it the target
+  // is in sector 27 and the gaps are [0, 20] (round the west side) and [33, 71] (round the east): 20 - 9 = 11,
+  // -122.5°.
+  const std::vector<Expected> cells = {{{3, 4}, {{0, 5}, {45, 71}}, 54}, {{3, 3}, {{0, 20}, {33, 71}}, 11}};
+  for (const Expected& expected : cells) {
+    const MethodInput input = inputAt(grid, expected.robot, test::markedCell(trap, 'G'));
+    mrpt::nav::CAbstractHolonomicReactiveMethod::NavInput in;
+    in.obstacles = input.obstacles;
+    in.targets = {mrpt::math::TPoint2D(input.target.x, input.target.y)};
+    in.maxRobotSpeed = 1.0;
+    in.maxObstacleDist = 1.0;
+    in.clearance = &clearance;
+    mrpt::nav::CAbstractHolonomicReactiveMethod::NavOutput out;
+    nd.navigate(in, out);
+    const auto log = std::dynamic_pointer_cast<mrpt::nav::CLogFileRecord_ND>(out.logRecord);
+    ASSERT_TRUE(log);
+    EXPECT_EQ(log->situation, mrpt::nav::CHolonomicND::SITUATION_WIDE_GAP);
+    ASSERT_EQ(log->gaps_ini.size(), expected.gaps.size());
+    for (std::size_t g = 0; g < expected.gaps.size(); ++g) {
+      EXPECT_EQ(static_cast<int>(log->gaps_ini[g]), expected.gaps[g].first);
+      EXPECT_EQ(static_cast<int>(log->gaps_end[g]), expected.gaps[g].second);
+    }
+    EXPECT_EQ(log->selectedSector, expected.selected);
   }
 }
 
