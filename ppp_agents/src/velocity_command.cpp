@@ -13,6 +13,10 @@ namespace {
 /// tan(22.5°): the boundary between a straight and a diagonal move's sector of directions.
 const double kDiagonalSlope = std::sqrt(2.0) - 1;
 
+/// Components this close (relative to the larger) are equal: a planner's 45° or 135° comes out of cos and sin
+/// a last bit apart, and which of the two that bit favours says nothing about the planner's choice.
+constexpr double kTieTolerance = 1e-9;
+
 std::string numberText(double value) {
   std::ostringstream text;
   text << value;
@@ -44,7 +48,7 @@ CommandedMove commandedMove(const VelocityCommand& c, Connectivity connectivity,
     if (north) return CommandedMove{east ? Action::NorthEast : Action::NorthWest, ""};
     return CommandedMove{east ? Action::SouthEast : Action::SouthWest, ""};
   }
-  if (ax >= ay) return CommandedMove{east ? Action::East : Action::West, ""};
+  if (ax >= ay * (1 - kTieTolerance)) return CommandedMove{east ? Action::East : Action::West, ""};
   return CommandedMove{north ? Action::North : Action::South, ""};
 }
 

@@ -30,6 +30,17 @@ TEST(CommandedMove, FourConnectedTakesTheAxisOfTheLargerComponent) {
   EXPECT_EQ(move4(-0.8, 0.6), Action::West);
   EXPECT_EQ(move4(0.5, 0.5), Action::East);    // a tie goes to the x move
   EXPECT_EQ(move4(-0.5, -0.5), Action::West);
+  // A diagonal through cos and sin is a tie too, whichever way the last bit falls: |sin 135°| is one bit more
+  // than |cos 135°|.
+  const double diagonal = 3 * M_PI / 4;
+  ASSERT_GT(std::fabs(std::sin(diagonal)), std::fabs(std::cos(diagonal)));
+  EXPECT_EQ(move4(std::cos(diagonal), std::sin(diagonal)), Action::West);
+  EXPECT_EQ(move4(std::cos(-diagonal), std::sin(-diagonal)), Action::West);
+  EXPECT_EQ(move4(std::cos(M_PI / 4), std::sin(M_PI / 4)), Action::East);
+  EXPECT_EQ(move4(std::cos(-M_PI / 4), std::sin(-M_PI / 4)), Action::East);
+  // Beyond the tolerance the larger component wins.
+  EXPECT_EQ(move4(1, 1 + 1e-6), Action::North);
+  EXPECT_EQ(move4(-1 - 1e-6, 1), Action::West);
 }
 
 TEST(CommandedMove, EightConnectedTakesADiagonalInsideItsSector) {

@@ -27,9 +27,10 @@ struct CommandedMove {
 };
 
 /// The move nearest the direction of (linear_x, linear_y): with Connectivity::Four the axis of the larger
-/// component (x on a tie); with Eight a diagonal when the smaller component is more than tan(22.5°) of the
-/// larger, else that axis. Stays below kStopSpeedCellsPerSecond (`resolution` metres per cell); a command with
-/// a number that is not finite, or faster than kMaxSpeedCellsPerSecond, is a problem.
+/// component (x on a tie, components within a relative 1e-9 being tied); with Eight a diagonal when the smaller
+/// component is more than tan(22.5°) of the larger, else that axis. Stays below kStopSpeedCellsPerSecond
+/// (`resolution` metres per cell); a command with a number that is not finite, or faster than
+/// kMaxSpeedCellsPerSecond, is a problem.
 CommandedMove commandedMove(const VelocityCommand& command, Connectivity connectivity, double resolution);
 
 }  // namespace agents

@@ -227,6 +227,31 @@ TEST(MrptReactiveNavigatorTest, VffAndNdOscillateForEverInAUFacingAwayFromTheGoa
   }
 }
 
+// VFF's commonest trap from its hunted set (the goal at (14, 12) of a 20x20 map), shrunk: two obstacle cells in
+// a diagonal just before the goal, touching at their corners; here the same on an 8x8 map. The map is symmetric
+// about the diagonal through start and goal, so in the pocket between the two cells VFF's resultant lies on
+// that diagonal: the cells' repulsion, 0.5 m away on two sides, outweighs the goal's attraction and points
+// exactly away from the goal (135°), a tie that the robot breaks along x (west). One cell west, the goal pulls
+// it back (-32.5°, east), for ever.
+TEST(MrptReactiveNavigatorTest, VffTurnsBackForEverInThePocketOfTwoDiagonalCellsBeforeTheGoal) {
+  const Picture trap = {"S.......", "........", "........", "........",
+                        ".....#..", "....#...", "......G.", "........"};
+  const std::vector<Choice> choices = walk(trap, "VFF", 300);
+  ASSERT_EQ(choices.size(), 301u) << "VFF reached the goal";
+  for (std::size_t i = 0; i < 8; ++i) {  // down the diagonal, alternating east and south
+    EXPECT_EQ(choices[i].robot, (Cell{static_cast<int>((i + 1) / 2), static_cast<int>(i / 2)})) << "step " << i;
+  }
+  for (std::size_t i = 8; i + 1 < 300; i += 2) {
+    EXPECT_EQ(choices[i].robot, (Cell{4, 4})) << "step " << i;
+    EXPECT_NEAR(choices[i].degrees, 135.0, 1e-9) << "step " << i;
+    EXPECT_EQ(choices[i].move, Action::West) << "step " << i;
+    EXPECT_EQ(choices[i + 1].robot, (Cell{3, 4})) << "step " << i + 1;
+    EXPECT_EQ(choices[i + 1].move, Action::East) << "step " << i + 1;
+    EXPECT_NEAR(choices[i + 1].degrees, choices[9].degrees, 1e-12) << "step " << i + 1;
+  }
+  EXPECT_NEAR(choices[9].degrees, -32.5, 0.01);
+}
+
 // ND's trap from its hunted set, shrunk: one obstacle cell diagonal to a goal in the map's corner (through ROS,
 // on a 20x20 map, (18, 18) before the goal (19, 19); here the same corner of a 6x6 map). ND comes down the
 // diagonal, turns south round the obstacle's west side, and then swings for ever between the cell west of the
