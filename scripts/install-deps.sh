@@ -8,6 +8,9 @@ packages=(
   cmake g++ make pkg-config
   # ROS 1 as Debian ships it: catkin, roscpp, rospy, rosbag, roslaunch, message generation
   ros-core-dev python3-rostest rosbash libtf2-ros-dev
+  # nodelets: the headers and library (-dev), and the nodelet manager with the package.xml pluginlib needs to
+  # find any nodelet (-tools, which the -dev package does not pull in)
+  libnodeletlib-dev libnodeletlib-tools
   python3-diagnostic-msgs python3-nav-msgs python3-geometry-msgs python3-sensor-msgs
   python3-visualization-msgs python3-tf2-msgs
   # the example planners: OMPL (sampling-based planning)

@@ -42,7 +42,7 @@ PlannerBridge::~PlannerBridge() {
 void PlannerBridge::serve(ros::NodeHandle& nh) {
   // The simulator sends its first scans once both topics are connected, so none come before the planner.
   moves_ = nh.advertise<ppp_msgs::MoveBatch>(ppp_msgs::topics::kMoves, 10);
-  scans_ = ppp_msgs::subscribeInline<ppp_msgs::ScanBatch>(
+  scans_ = ppp_msgs::subscribeLockstep<ppp_msgs::ScanBatch>(
       nh, ppp_msgs::topics::kScans, 10, [this](const ppp_msgs::ScanBatch::ConstPtr& b) { onScans(b); }, &inline_);
 }
 

@@ -41,11 +41,11 @@ PlannerLink::PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters
   // Without Nagle's algorithm (it would hold each answer back 40 ms), in the network thread (no hand-over to a
   // spinner).
   if (commandsVelocity(parameters_)) {
-    answers_ = ppp_msgs::subscribeInline<geometry_msgs::TwistStamped>(
+    answers_ = ppp_msgs::subscribeLockstep<geometry_msgs::TwistStamped>(
         nh_, ppp_msgs::topics::kPlannerCommand, 10,
         [this](const geometry_msgs::TwistStamped::ConstPtr& command) { onAnswer(&commands_, *command); }, &queue_);
   } else {
-    answers_ = ppp_msgs::subscribeInline<nav_msgs::Path>(
+    answers_ = ppp_msgs::subscribeLockstep<nav_msgs::Path>(
         nh_, ppp_msgs::topics::kPlannerPath, 10,
         [this](const nav_msgs::Path::ConstPtr& path) { onAnswer(&paths_, *path); }, &queue_);
   }

@@ -39,12 +39,12 @@ PlannerNode::PlannerNode(ros::NodeHandle& nh, PlannerNodeOptions options, PlanFu
     : options_(std::move(options)),
       plan_(std::move(plan)),
       plan_publisher_(nh.advertise<nav_msgs::Path>(ppp_msgs::topics::kPlannerPath, 1, true)),
-      map_subscriber_(ppp_msgs::subscribeInline<nav_msgs::OccupancyGrid>(
+      map_subscriber_(ppp_msgs::subscribeLockstep<nav_msgs::OccupancyGrid>(
           nh, ppp_msgs::topics::kPlannerMap, 1, [this](const nav_msgs::OccupancyGrid::ConstPtr& m) { onMap(m); },
           &inline_)),
-      odom_subscriber_(ppp_msgs::subscribeInline<nav_msgs::Odometry>(
+      odom_subscriber_(ppp_msgs::subscribeLockstep<nav_msgs::Odometry>(
           nh, ppp_msgs::topics::kPlannerOdom, 1, [this](const nav_msgs::Odometry::ConstPtr& o) { onOdom(o); }, &inline_)),
-      goal_subscriber_(ppp_msgs::subscribeInline<geometry_msgs::PoseStamped>(
+      goal_subscriber_(ppp_msgs::subscribeLockstep<geometry_msgs::PoseStamped>(
           nh, ppp_msgs::topics::kPlannerGoal, 1, [this](const geometry_msgs::PoseStamped::ConstPtr& g) { onGoal(g); },
           &inline_)) {}
 

@@ -125,15 +125,17 @@ TEST(AgentNodeTest, AnswersEachBatchUnderItsNameAndRejectsMalformedScans) {
   EXPECT_TRUE(isAction(again->actions[0]));
 }
 
-TEST(AgentNodeTest, AstarPlansOnThePriorMap) {
-  Conversation agent("astar");
-  ASSERT_TRUE(agent.connected());
-  const auto moves = agent.exchange(batchOf(1, {cornerScan(5, true), cornerScan(6, false)}));
-  ASSERT_TRUE(moves);
-  ASSERT_EQ(moves->actions.size(), 2u);
-  EXPECT_EQ(moves->agent, "astar");
-  EXPECT_EQ(moves->actions[0], static_cast<std::uint8_t>(Action::South));  // east is the obstacle
-  EXPECT_EQ(moves->actions[1], protocol::kRejectedAction);                           // astar without its map
+TEST(AgentNodeTest, AstarPlansOnThePriorMapAsANodeAndAsANodelet) {
+  for (const char* node : {"astar", "astar_nodelet"}) {
+    Conversation agent(node);
+    ASSERT_TRUE(agent.connected()) << node;
+    const auto moves = agent.exchange(batchOf(1, {cornerScan(5, true), cornerScan(6, false)}));
+    ASSERT_TRUE(moves) << node;
+    ASSERT_EQ(moves->actions.size(), 2u) << node;
+    EXPECT_EQ(moves->agent, "astar") << node;
+    EXPECT_EQ(moves->actions[0], static_cast<std::uint8_t>(Action::South)) << node;  // east is the obstacle
+    EXPECT_EQ(moves->actions[1], protocol::kRejectedAction) << node;                  // astar without its map
+  }
 }
 
 TEST(FaultyAgentNodeTest, SilentGarbageAndStopAfter) {
@@ -193,6 +195,18 @@ TEST(AgentNodeTest, BadParametersStopTheNodeNamingThem) {
     EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << c.first << " exit status " << status;
     EXPECT_NE(output.find(c.second), std::string::npos) << c.first << " printed:\n" << output;
   }
+}
+
+TEST(AgentNodeTest, ANodeletWithABadParameterSaysWhichAndServesNothing) {
+  // As a nodelet it cannot exit: it logs why and its manager lives on (here a standalone one, stopped after 5 s).
+  std::string output;
+  FILE* pipe = ::popen("timeout -s INT 5 /usr/lib/nodelet/nodelet standalone ppp_agents/Agent __name:=bad_nodelet "
+                       "_type:=x 2>&1", "r");
+  ASSERT_NE(pipe, nullptr);
+  char buffer[512];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) output += buffer;
+  ::pclose(pipe);
+  EXPECT_NE(output.find("~type: unknown agent type 'x'; valid: astar, random,"), std::string::npos) << output;
 }
 
 TEST(AgentNodeTest, ParametersAcceptAndRefuseWhatEverySourceDoes) {

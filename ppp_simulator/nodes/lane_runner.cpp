@@ -29,7 +29,7 @@ LaneRunner::LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameter
   const std::string graph_name = agents::instanceGraphName(agent, instance);
   message_.agent = agent.name;
   scans_ = nh.advertise<ppp_msgs::ScanBatch>(ppp_msgs::topics::under(graph_name, ppp_msgs::topics::kScans), 2);
-  moves_ = ppp_msgs::subscribeInline<ppp_msgs::MoveBatch>(
+  moves_ = ppp_msgs::subscribeLockstep<ppp_msgs::MoveBatch>(
       nh, ppp_msgs::topics::under(graph_name, ppp_msgs::topics::kMoves), 2,
       [this](const ppp_msgs::MoveBatch::ConstPtr& m) { onMoves(m); }, &replies_);
 }

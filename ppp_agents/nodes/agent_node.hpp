@@ -1,0 +1,47 @@
+#pragma once
+
+// The agent node: one agent configuration serving many episodes at once for the simulator node.
+//   subscribes  scans (ppp_msgs/ScanBatch)  one scan per active episode of this agent
+//   publishes   moves (ppp_msgs/MoveBatch)  one move per scan, sent as soon as the batch is answered
+//   parameters  ~type (required: a built-in type; planner agents play through planner_bridge_node), ~name
+//               (default: the node's name) and every other option an agent plays by (~memory, ~sensor_noise,
+//               ~goal_seeking, ...: docs/reference/options.md#agents); the simulator applies the sensor noise
+// Topics are relative: start the node as <node name="NAME" ...> (or with ns/remapping) to get /NAME/scans.
+// It runs as a process of its own (agent_node) or as the nodelet ppp_agents/Agent.
+
+#include <memory>
+#include <string>
+
+#include <ros/ros.h>
+
+#include "ppp_agents/agent_config.hpp"
+#include "ppp_agents/protocol/batch_responder.hpp"
+#include "ppp_msgs/MoveBatch.h"
+#include "ppp_msgs/ScanBatch.h"
+#include "ppp_msgs/inline_callback_queue.h"
+
+namespace ppp {
+namespace agents {
+
+/// Answers every ScanBatch at once with one MoveBatch, through the agents library.
+class AgentNode {
+ public:
+  /// Reads the private parameters, subscribes and advertises in `nh`'s namespace and logs what it serves; with
+  /// `in_network_thread` batches are answered in roscpp's network thread as they are read (a node in a process of
+  /// its own), else from `nh`'s callback queue (a nodelet). `node_name` is the node's graph name.
+  /// @throws InvalidArgument naming the parameter for a bad configuration.
+  AgentNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh, const std::string& node_name,
+            bool in_network_thread);
+
+ private:
+  void onScans(const ppp_msgs::ScanBatch::ConstPtr& batch);
+
+  AgentConfig config_;
+  protocol::BatchResponder responder_;
+  std::unique_ptr<ppp_msgs::InlineCallbackQueue> inline_queue_;  // null when answering from nh's queue
+  ros::Publisher moves_;
+  ros::Subscriber scans_;
+};
+
+}  // namespace agents
+}  // namespace ppp

@@ -1,0 +1,16 @@
+// The nodelet ppp_agents/Agent: the agent node (agent_node.hpp) in a nodelet manager, answering from the
+// nodelet's callback queue.
+#include <pluginlib/class_list_macros.hpp>
+
+#include "agent_node.hpp"
+#include "ppp_msgs/nodelet_of.h"
+
+namespace ppp {
+namespace agents {
+
+class AgentNodelet : public ppp_msgs::NodeletOf<AgentNode> {};
+
+}  // namespace agents
+}  // namespace ppp
+
+PLUGINLIB_EXPORT_CLASS(ppp::agents::AgentNodelet, nodelet::Nodelet)
