@@ -3,8 +3,8 @@
 # three sets of 60 PPPs, two evolved and one hunted, ten agents with 1,000 runs each and four example planners
 # with 3) through ROS:
 # roslaunch launch/experiment.launch starts the config's graph: a generator node per set (the hunting one has the
-# simulator play its candidates on the agent nodes), the simulator node and one process per agent (a bridge and
-# a planner per planner agent), on a private master. Results,
+# simulator play its candidates on the agent nodes), the simulator node and an agent node per built-in agent, all
+# nodelets in one nodelet manager, and a bridge and a planner process per planner agent, on a private master. Results,
 # report and bag go to results/experiment/. Rerunning resumes an interrupted experiment.
 set -eo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/env.sh"

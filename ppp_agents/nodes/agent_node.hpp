@@ -12,6 +12,7 @@
 #include <memory>
 #include <string>
 
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 
 #include "ppp_agents/agent_config.hpp"
@@ -28,7 +29,7 @@ class AgentNode {
  public:
   /// Reads the private parameters, subscribes and advertises in `nh`'s namespace and logs what it serves; with
   /// `in_network_thread` batches are answered in roscpp's network thread as they are read (a node in a process of
-  /// its own), else from `nh`'s callback queue (a nodelet). `node_name` is the node's graph name.
+  /// its own), else in a thread of the node's own (a nodelet). `node_name` is the node's graph name.
   /// @throws InvalidArgument naming the parameter for a bad configuration.
   AgentNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh, const std::string& node_name,
             bool in_network_thread);
@@ -38,9 +39,10 @@ class AgentNode {
 
   AgentConfig config_;
   protocol::BatchResponder responder_;
-  std::unique_ptr<ppp_msgs::InlineCallbackQueue> inline_queue_;  // null when answering from nh's queue
+  std::unique_ptr<ros::CallbackQueueInterface> queue_;  // inline, or served by spinner_
   ros::Publisher moves_;
   ros::Subscriber scans_;
+  std::unique_ptr<ros::AsyncSpinner> spinner_;  // the thread of a nodelet's; stops first
 };
 
 }  // namespace agents

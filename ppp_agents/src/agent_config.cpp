@@ -316,12 +316,20 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
         declareOption("host", "through ROS: the machine the agent's nodes run on ('': the simulator's)",
                       +[](A& a) -> std::string& { return a.host; })
             .notAffectingResults(),
+        declareOption("process", "through ROS: where a built-in agent's node runs",
+                      +[](A& a) -> std::string& { return a.process; })
+            .withChoices("process",
+                         {{kProcessManager,
+                           "in the experiment's nodelet manager, beside the simulator (batches handed over without "
+                           "a copy); an agent on another host runs in a process of its own there"},
+                          {kProcessOwn, "in a process of its own (an agent that may crash takes nothing else down)"}})
+            .notAffectingResults(),
     };
     const std::vector<OptionSpec<BridgeOptions>> per_agent =
         selectOptions(bridgeOptionSpecs(), {"plan_timeout", "lockstep", "plan_requests", "interface", "endless_proof", "cells_per_ppp_cell"});
     for (OptionSpec<A>& spec : nestedOptions(per_agent, +[](A& a) -> BridgeOptions& { return a.bridge; })) {
       spec.doc = "planner agents: " + spec.doc;
-      list.insert(list.end() - 1, spec);
+      list.insert(list.end() - 2, spec);  // before host and process
     }
     list[0].flag = "agent";
     return list;

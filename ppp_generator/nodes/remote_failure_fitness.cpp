@@ -14,7 +14,7 @@ namespace ppp {
 namespace generator {
 
 Fitness makeRemoteFailureFitness(ros::NodeHandle& nh, const GeneratorOptions& options, const std::string& service,
-                                 double wait_seconds) {
+                                 double wait_seconds, const std::function<bool()>& stopping) {
   if (!ros::service::waitForService(service, ros::Duration(wait_seconds))) {
     throw IoError(service, "no ppp_msgs/EvaluateProblems service within " + std::to_string(wait_seconds) +
                                " s (start the simulator node with ~mode hunt, e.g. launch/hunt.launch)");
@@ -24,7 +24,7 @@ Fitness makeRemoteFailureFitness(ros::NodeHandle& nh, const GeneratorOptions& op
   fitness.name = options.fitness;
   fitness.maximise = true;
   fitness.batch_size = options.round_size;
-  fitness.batch = [client, options, service](const std::vector<const Problem*>& problems,
+  fitness.batch = [client, options, service, stopping](const std::vector<const Problem*>& problems,
                                              const std::vector<const Grid*>&) {
     ppp_msgs::EvaluateProblems call;
     for (std::size_t i = 0; i < problems.size(); ++i) {
@@ -34,7 +34,7 @@ Fitness makeRemoteFailureFitness(ros::NodeHandle& nh, const GeneratorOptions& op
     call.request.runs = static_cast<std::uint32_t>(options.runs_per_eval);
     call.request.seed = options.seed;
     if (!client->call(call)) {
-      if (!ros::ok()) throw Interrupted();  // shut down mid-call: nothing is wrong with the simulator
+      if (stopping()) throw Interrupted();  // stopped mid-call: nothing is wrong with the simulator
       throw IoError(service, "the evaluation call failed (is the simulator node still up?)");
     }
     if (!call.response.error.empty()) throw IoError(service, "the simulator refused: " + call.response.error);

@@ -35,11 +35,15 @@ std::string attribute(const std::string& text, const std::string& what) {
 
 void writeNode(std::ostream& out, const GraphNode& node, const std::string& indent) {
   const std::string what = node.agent.empty() ? node.name : node.agent;
-  out << indent << "<node pkg=" << attribute(node.package, what) << " type=" << attribute(node.type, what)
-      << " name=" << attribute(node.name, what);
+  const bool nodelet = !node.nodelet.empty();
+  out << indent << "<node pkg=" << attribute(nodelet ? "nodelet" : node.package, what)
+      << " type=" << attribute(nodelet ? "nodelet" : node.type, what) << " name=" << attribute(node.name, what);
   if (!node.ns.empty()) out << " ns=" << attribute(node.ns, what);
   if (!node.machine.empty()) out << " machine=" << attribute(node.machine, what);
-  if (!node.args.empty()) out << " args=" << attribute(node.args, what);
+  const std::string args = nodelet ? "load " + node.nodelet + " " + node.manager + " --no-bond" +
+                                         (node.args.empty() ? "" : " " + node.args)
+                                   : node.args;
+  if (!args.empty()) out << " args=" << attribute(args, what);
   out << " output=\"screen\"" << (node.required ? " required=\"true\"" : "");
   if (node.params.empty() && node.remaps.empty()) {
     out << "/>\n";
@@ -84,6 +88,7 @@ std::string launchJson(const LaunchGraph& graph) {
   json["comment"] = graph.comment;
   const auto required = std::find_if(graph.nodes.begin(), graph.nodes.end(), [](const GraphNode& n) { return n.required; });
   json["required"] = required == graph.nodes.end() ? "" : required->name;
+  json["status_param"] = graph.status_param;
   json["machines"] = nlohmann::ordered_json::array();
   for (const GraphMachine& m : graph.machines) {
     nlohmann::ordered_json agents = nlohmann::ordered_json::array();
@@ -100,7 +105,7 @@ std::string launchJson(const LaunchGraph& graph) {
     for (const GraphParam& p : n.params) params[p.name] = p.value;
     json["nodes"].push_back({{"package", n.package}, {"type", n.type}, {"name", n.name}, {"group", n.group},
                              {"ns", n.ns}, {"machine", n.machine}, {"agent", n.agent}, {"required", n.required},
-                             {"args", n.args}, {"params", params}});
+                             {"args", n.args}, {"nodelet", n.nodelet}, {"manager", n.manager}, {"params", params}});
   }
   json["xml"] = launchXml(graph);
   return json.dump(2) + "\n";

@@ -105,6 +105,10 @@ void addLaunchFileCommand(CLI::App& app) {
   addOptionFlags(command, shrinkFlagSpecs(), &flags->graph.shrink, &flags->shrink_flags);
   command->add_option("--env-loader", flags->graph.env_loader,
                       "Script remote machines run nodes through (the workspace's devel/env.sh, same path there)");
+  command->add_option("--processes", flags->graph.processes,
+                      "manager: the simulator, the generator nodes and the built-in agents (but those with process: "
+                      "own or a host) run as nodelets in one nodelet manager; own: every node in a process of its own")
+      ->capture_default_str();
   command->add_flag("--large", flags->large,
                     "Allow an experiment above the size limits (1e8 episodes or matings, 10 GB of results)");
   command->add_flag("--json", flags->json,

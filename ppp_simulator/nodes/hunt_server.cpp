@@ -12,8 +12,8 @@
 namespace ppp {
 namespace simulator {
 
-HuntServer::HuntServer(ros::NodeHandle& nh, const SimulatorParameters& parameters)
-    : nh_(nh), parameters_(parameters), config_(launchedConfig(parameters)) {}
+HuntServer::HuntServer(ros::NodeHandle& nh, const SimulatorParameters& parameters, const NodeControl& control)
+    : nh_(nh), parameters_(parameters), control_(control), config_(launchedConfig(parameters)) {}
 
 HuntServer::~HuntServer() = default;
 
@@ -52,7 +52,7 @@ std::vector<agents::EpisodeResult> HuntServer::playRows(const agents::AgentConfi
   try {
     play(evaluation, {agent});
   } catch (const IoError&) {
-    if (!ros::ok()) throw Interrupted();  // shut down mid-run: the caller's stop, not a broken link
+    if (control_.stopping()) throw Interrupted();  // stopped mid-run: the caller's stop, not a broken link
     throw;
   }
   std::vector<agents::EpisodeResult> rows = evaluation.rows();
@@ -111,18 +111,19 @@ const std::vector<std::unique_ptr<LaneRunner>>& HuntServer::runnersFor(const age
   std::vector<std::unique_ptr<LaneRunner>>& runners = runners_[agent.name];
   for (int instance = static_cast<int>(runners.size()); instance < agents::instanceCount(agent); ++instance) {
     runners.push_back(std::make_unique<LaneRunner>(
-        nh_, parameters_, agent, instance,
+        nh_, parameters_, control_, agent, instance,
         [this](const std::vector<agents::EpisodeResult>& ended) { target_->record(ended); }, LaneRunner::ScanObserver{},
         false));
   }
   return runners;
 }
 
-int runHuntServer(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const SimulatorParameters& parameters) {
-  HuntServer server(nh, parameters);
-  ros::ServiceServer service = private_nh.advertiseService(ppp_msgs::topics::kEvaluate, &HuntServer::evaluate, &server);
+int runHuntServer(ros::NodeHandle& nh, ros::NodeHandle& services_nh, const SimulatorParameters& parameters,
+                  const NodeControl& control) {
+  HuntServer server(nh, parameters, control);
+  ros::ServiceServer service = services_nh.advertiseService(ppp_msgs::topics::kEvaluate, &HuntServer::evaluate, &server);
   ROS_INFO("serving %s for hunts with the agents of %s", service.getService().c_str(), parameters.config.c_str());
-  ros::waitForShutdown();
+  while (!control.stopping()) ros::WallDuration(0.1).sleep();  // a stop flag has no event to wait on
   return 0;
 }
 

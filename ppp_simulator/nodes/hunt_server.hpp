@@ -26,7 +26,7 @@ namespace simulator {
 class HuntServer {
  public:
   /// Reads ~config's agents. @throws IoError, ParseError, InvalidArgument.
-  HuntServer(ros::NodeHandle& nh, const SimulatorParameters& parameters);
+  HuntServer(ros::NodeHandle& nh, const SimulatorParameters& parameters, const NodeControl& control);
   ~HuntServer();
   HuntServer(const HuntServer&) = delete;
   HuntServer& operator=(const HuntServer&) = delete;
@@ -35,7 +35,7 @@ class HuntServer {
   bool evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs::EvaluateProblems::Response& response);
 
   /// Plays `agent` (of ~config) on `problem` (solvable for the robot) once per seed of `seeds`, as the service
-  /// would; returns the rows in run order (a planner's with its actions). @throws Interrupted when ROS shuts down
+  /// would; returns the rows in run order (a planner's with its actions). @throws Interrupted when the node stops
   /// first.
   std::vector<agents::EpisodeResult> playRows(const agents::AgentConfig& agent, const Problem& problem,
                                               const std::vector<std::uint64_t>& seeds);
@@ -50,6 +50,7 @@ class HuntServer {
 
   ros::NodeHandle& nh_;
   SimulatorParameters parameters_;
+  NodeControl control_;
   ExperimentConfig config_;
   std::mutex serving_;
   std::map<std::string, std::vector<std::unique_ptr<LaneRunner>>> runners_;
@@ -59,8 +60,10 @@ class HuntServer {
   ProgressMeter progress_{"hunt", "episodes"};  // a line every few seconds, not one per request
 };
 
-/// The simulator node in hunt mode: serves ~evaluate with a HuntServer until shut down. Returns the exit status.
-int runHuntServer(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const SimulatorParameters& parameters);
+/// The simulator node in hunt mode: serves ~evaluate (advertised on `services_nh`) with a HuntServer until the node
+/// stops. Returns the exit status.
+int runHuntServer(ros::NodeHandle& nh, ros::NodeHandle& services_nh, const SimulatorParameters& parameters,
+                  const NodeControl& control);
 
 }  // namespace simulator
 }  // namespace ppp

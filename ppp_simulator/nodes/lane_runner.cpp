@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include <boost/make_shared.hpp>
+
 #include "ppp_agents/protocol/batch_codec.hpp"
 #include "ppp_msgs/node_liveness.h"
 #include "ppp_msgs/graph_names.h"
@@ -16,9 +18,11 @@ const ros::WallDuration kShutdownCheck(0.1);  // a lane waiting for a reply noti
 
 }  // namespace
 
-LaneRunner::LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameters, const agents::AgentConfig& agent,
-                       int instance, ResultSink sink, ScanObserver observer, bool log_rates)
+LaneRunner::LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameters, const NodeControl& control,
+                       const agents::AgentConfig& agent, int instance, ResultSink sink, ScanObserver observer,
+                       bool log_rates)
     : parameters_(parameters),
+      control_(control),
       agent_(agent),
       label_("agent '" + agent.name + "'" +
              (agents::instanceCount(agent) > 1 ? " instance " + std::to_string(instance + 1) : std::string())),
@@ -27,11 +31,16 @@ LaneRunner::LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameter
       log_rates_(log_rates),
       step_timeout_(agents::isPlanner(agent) ? parameters.planner_step_timeout : parameters.step_timeout) {
   const std::string graph_name = agents::instanceGraphName(agent, instance);
-  message_.agent = agent.name;
+  if (control.in_network_thread) {
+    inline_replies_ = std::make_unique<ppp_msgs::InlineCallbackQueue>();
+  } else {
+    queued_replies_ = std::make_unique<ros::CallbackQueue>();
+  }
   scans_ = nh.advertise<ppp_msgs::ScanBatch>(ppp_msgs::topics::under(graph_name, ppp_msgs::topics::kScans), 2);
   moves_ = ppp_msgs::subscribeLockstep<ppp_msgs::MoveBatch>(
       nh, ppp_msgs::topics::under(graph_name, ppp_msgs::topics::kMoves), 2,
-      [this](const ppp_msgs::MoveBatch::ConstPtr& m) { onMoves(m); }, &replies_);
+      [this](const ppp_msgs::MoveBatch::ConstPtr& m) { onMoves(m); },
+      inline_replies_ ? static_cast<ros::CallbackQueueInterface*>(inline_replies_.get()) : queued_replies_.get());
 }
 
 void LaneRunner::run(agents::AgentLane* lane) {
@@ -56,10 +65,15 @@ void LaneRunner::run(agents::AgentLane* lane) {
   failure_ = nullptr;
   try {
     if (!lane_->finished()) sendBatch();
-    // Replies are played in the network thread (onMoves); this thread wakes for the deadline and shutdown.
-    while (!lane_->finished() && !failure_ && ros::ok()) {
+    // Replies are played in the network thread (onMoves), or here from queued_replies_; this thread wakes for
+    // them, the deadline and a stop.
+    while (!lane_->finished() && !failure_ && !control_.stopping()) {
       const ros::WallDuration left = deadline_ - ros::WallTime::now();
-      if (left > ros::WallDuration(0)) {
+      if (left > ros::WallDuration(0) && queued_replies_) {
+        lock.unlock();  // onMoves takes it
+        queued_replies_->callAvailable(std::min(left, kShutdownCheck));
+        lock.lock();
+      } else if (left > ros::WallDuration(0)) {
         lane_done_.wait_for(lock, std::chrono::nanoseconds(std::min(left, kShutdownCheck).toNSec()));
       } else {
         answerSilence();
@@ -82,13 +96,16 @@ void LaneRunner::run(agents::AgentLane* lane) {
 void LaneRunner::sendBatch() {
   const std::uint32_t batch = ++batch_;
   lane_->scans(&scans_buffer_);
-  message_.header.stamp = ros::Time::now();
-  message_.batch = batch;
-  protocol::encodeScans(scans_buffer_, &message_);
+  // A new message per batch, published by pointer: an agent in the same process gets this very object.
+  auto message = boost::make_shared<ppp_msgs::ScanBatch>();
+  message->agent = agent_.name;
+  message->header.stamp = ros::Time::now();
+  message->batch = batch;
+  protocol::encodeScans(scans_buffer_, message.get());
   if (observer_) observer_(agent_.name, scans_buffer_);
   expected_batch_ = batch;
   deadline_ = ros::WallTime::now() + ros::WallDuration(step_timeout_);
-  scans_.publish(message_);
+  scans_.publish(message);
 }
 
 void LaneRunner::answerSilence() {
@@ -115,7 +132,7 @@ void LaneRunner::answerSilence() {
 
 bool LaneRunner::waitForAgent() {
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(parameters_.connect_timeout);
-  while (ros::ok() && ros::WallTime::now() < deadline) {
+  while (!control_.stopping() && ros::WallTime::now() < deadline) {
     if (scans_.getNumSubscribers() > 0 && moves_.getNumPublishers() > 0) return true;
     ros::WallDuration(0.05).sleep();  // polling a connection count: there is no event to wait on
   }

@@ -4,10 +4,12 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
 
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 
 #include "ppp_msgs/MoveBatch.h"
@@ -19,13 +21,23 @@
 namespace ppp {
 namespace simulator {
 
+/// What the simulator's parts need to know of the node they run in.
+struct NodeControl {
+  /// True once the node is to stop: ROS shut down, its nodelet is being unloaded, or a lane failed for good.
+  std::function<bool()> stopping;
+  /// Agents' replies are handled in roscpp's network thread as they are read (a node in a process of its own),
+  /// or else by each lane's own thread, the one in LaneRunner::run() (a nodelet: see ppp_msgs::subscribeLockstep).
+  bool in_network_thread = true;
+};
+
 /// The batched conversation with one agent node (or planner bridge): publishes the lane's scans on
 /// /NAME/scans, waits for the MoveBatch on /NAME/moves and applies it, with the step timeout, the silent-agent
 /// give-up rule and lost-agent detection. Results go to a sink as episodes end; scans to an optional observer
 /// (the bag recorder). One runner serves one agent configuration for the node's life and may play several
-/// lanes in turn (a hunt plays one per evaluation request). Each reply is applied, and the next batch sent, in
-/// roscpp's network thread as the reply is read (no thread hand-over per batch); the thread in run() only watches
-/// for the step timeout, a lost agent and shutdown.
+/// lanes in turn (a hunt plays one per evaluation request). In a node of its own each reply is applied, and the
+/// next batch sent, in roscpp's network thread as the reply is read (no thread hand-over per batch), and the thread
+/// in run() only watches for the step timeout, a lost agent and shutdown; in a nodelet that thread takes the
+/// replies itself from a queue of the runner's own (one thread wake-up per reply).
 class LaneRunner {
  public:
   /// Where finished episodes go.
@@ -35,9 +47,10 @@ class LaneRunner {
 
   /// Advertises /NS/scans and subscribes to /NS/moves for instance `instance` of agent configuration `agent`
   /// (NS = agents::instanceGraphName); `log_rates` logs each lane's episodes per second when it is done.
-  LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameters, const agents::AgentConfig& agent,
-             int instance, ResultSink sink, ScanObserver observer = {}, bool log_rates = true);
-  /// Plays every run of `lane` (whose agent is this runner's); returns when it is finished or ROS shuts down.
+  LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameters, const NodeControl& control,
+             const agents::AgentConfig& agent, int instance, ResultSink sink, ScanObserver observer = {},
+             bool log_rates = true);
+  /// Plays every run of `lane` (whose agent is this runner's); returns when it is finished or the node stops.
   /// @throws what the result sink threw (an unwritable results file, say).
   void run(agents::AgentLane* lane);
 
@@ -50,6 +63,7 @@ class LaneRunner {
   void report(const std::vector<agents::EpisodeResult>& results);
 
   SimulatorParameters parameters_;
+  NodeControl control_;
   agents::AgentConfig agent_;
   std::string label_;  // "agent 'NAME'", with the instance when there are several
   ResultSink sink_;
@@ -65,9 +79,9 @@ class LaneRunner {
   std::uint32_t batch_ = 0;            // batches sent so far, over every lane
   std::uint32_t expected_batch_ = 0;   // the batch awaiting its reply; 0 when none
   ros::WallTime deadline_;             // when the awaited batch counts as unanswered
-  std::vector<protocol::ScanRequest> scans_buffer_;  // reused by every batch, so a batch allocates (almost) nothing
-  ppp_msgs::ScanBatch message_;            // likewise
-  ppp_msgs::InlineCallbackQueue replies_;  // runs onMoves in the network thread
+  std::vector<protocol::ScanRequest> scans_buffer_;  // reused by every batch
+  std::unique_ptr<ppp_msgs::InlineCallbackQueue> inline_replies_;  // runs onMoves in the network thread, or
+  std::unique_ptr<ros::CallbackQueue> queued_replies_;             // holds the replies for run() (a nodelet)
   ros::Publisher scans_;
   ros::Subscriber moves_;  // after replies_: unsubscribes before the queue goes
 };

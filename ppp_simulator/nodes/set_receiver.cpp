@@ -35,8 +35,8 @@ agents::PreparedSet prepareReceived(const SetSpec& spec, const ppp_msgs::Problem
 
 }  // namespace
 
-ReceivedSets receiveSets(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const ExperimentConfig& config,
-                         const SimulatorParameters& parameters) {
+ReceivedSets receiveSets(ros::NodeHandle& nh, ros::NodeHandle& services_nh, const ExperimentConfig& config,
+                         const SimulatorParameters& parameters, const NodeControl& control) {
   /// A set a generator node is to publish.
   struct Awaited {
     std::string name;
@@ -64,12 +64,12 @@ ReceivedSets receiveSets(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const
   std::unique_ptr<HuntServer> hunt_server;
   ros::ServiceServer hunt_service;
   if (hunting) {
-    hunt_server = std::make_unique<HuntServer>(nh, parameters);
-    hunt_service = private_nh.advertiseService(ppp_msgs::topics::kEvaluate, &HuntServer::evaluate, hunt_server.get());
+    hunt_server = std::make_unique<HuntServer>(nh, parameters, control);
+    hunt_service = services_nh.advertiseService(ppp_msgs::topics::kEvaluate, &HuntServer::evaluate, hunt_server.get());
     ROS_INFO("serving %s for the hunting generator nodes", hunt_service.getService().c_str());
   }
   for (;;) {
-    if (!ros::ok()) return {};
+    if (control.stopping()) return {};
     {
       std::lock_guard<std::mutex> lock(mutex);
       if (received.size() == awaited.size()) break;

@@ -1,14 +1,4 @@
-// simulator_node: runs an experiment with every agent in its own process (~mode experiment, the default), or
-// serves ~evaluate for a hunt (~mode hunt: see hunt_server.hpp). With ~generator_nodes it plays the sets the
-// generator nodes publish (serving ~evaluate to hunting ones meanwhile), as launch/experiment.launch runs it.
-// For each agent configuration NAME of the experiment it publishes ppp_msgs/ScanBatch on /NAME/scans (one scan
-// per active episode) and takes ppp_msgs/MoveBatch from /NAME/moves, in lockstep, through the same AgentLane and
-// episode code as the in-process runner, so the results equal `ppp experiment`'s. Results go to results.csv as
-// episodes end; summary.csv and the report are written when all runs are done; a sample of episodes and every
-// result are recorded in experiment.bag. The node exits when the experiment is finished. Its parameters:
-// docs/reference/options.md#simulator-node; its topics and services: docs/reference/ros-graph.md.
-#include <ros/callback_queue.h>
-#include <ros/ros.h>
+#include "simulator_node.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -18,38 +8,62 @@
 
 #include "episode_recorder.hpp"
 #include "hunt_server.hpp"
-#include "lane_runner.hpp"
 #include "progress_reporter.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/stop.hpp"
 #include "ppp_core/text_file.hpp"
-#include "ppp_msgs/MoveBatch.h"
-#include "ppp_msgs/ScanBatch.h"
 #include "ppp_msgs/conversions.h"
-#include "ppp_msgs/node_liveness.h"
 #include "ppp_agents/agent_lane.hpp"
 #include "ppp_simulator/experiment_graph.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
 #include "set_receiver.hpp"
-#include "simulator_parameters.hpp"
 
 namespace ppp {
 namespace simulator {
 
+SimulatorNode::SimulatorNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh, bool in_network_thread)
+    : nh_(nh),
+      parameters_(readSimulatorParameters(private_nh)),
+      control_{[this] { return stop_requested_ || !ros::ok(); }, in_network_thread},
+      services_nh_(private_nh),
+      services_spinner_(1, &services_queue_) {
+  services_nh_.setCallbackQueue(&services_queue_);
+  services_spinner_.start();
+}
+
+SimulatorNode::~SimulatorNode() {
+  stop();
+  services_spinner_.stop();
+}
+
+int SimulatorNode::run() {
+  try {
+    return parameters_.mode == kHuntMode ? runHuntServer(nh_, services_nh_, parameters_, control_) : runExperiment();
+  } catch (const Error& e) {
+    ROS_FATAL("simulator: %s", e.what());
+  } catch (const std::exception& e) {
+    ROS_FATAL("simulator: unexpected failure: %s", e.what());
+  }
+  return 1;
+}
+
 /// Takes the sets (from the generator nodes, or made here), then runs the experiment.
-int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const SimulatorParameters& parameters) {
+int SimulatorNode::runExperiment() {
+  ros::NodeHandle& nh = nh_;
+  const SimulatorParameters& parameters = parameters_;
+  const std::function<bool()> stopping = control_.stopping;
   const ExperimentConfig config = launchedConfig(parameters);
   const std::string config_text = readTextFile(parameters.config, 1u << 20);
   ReceivedSets received;
   if (parameters.generator_nodes) {
     openExperimentDirectory(config, parameters.output_dir);
-    received = receiveSets(nh, private_nh, config, parameters);
+    received = receiveSets(nh, services_nh_, config, parameters, control_);
     if (received.sets.empty()) return 130;  // shut down while waiting
   } else {
     try {
       received.sets = beginExperiment(
           config, parameters.output_dir, [](const std::string& line) { ROS_INFO("%s", line.c_str()); },
-          [] { return !ros::ok(); });
+          stopping);
     } catch (const Interrupted&) {
       return 130;  // shut down mid-generation; the set being evolved was not written
     }
@@ -60,7 +74,7 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
   const std::vector<agents::PreparedSet>& sets = received.sets;
   std::unique_ptr<ResultsFile> opened;
   try {
-    opened = std::make_unique<ResultsFile>(resultsPath(parameters.output_dir), [] { return !ros::ok(); });
+    opened = std::make_unique<ResultsFile>(resultsPath(parameters.output_dir), stopping);
   } catch (const Interrupted&) {
     return 130;  // shut down while reading the results of an earlier run; the file is as it was
   }
@@ -70,6 +84,10 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
   EpisodeRecorder recorder(nh, parameters, sets, agent_names, agents::largestActionLimit(sets));
   recorder.recordSets(received.messages);
 
+  // A lane whose results cannot be written stops every lane: the node exits 1.
+  std::atomic<bool> failed{false};
+  NodeControl lanes_control = control_;
+  lanes_control.stopping = [&failed, stopping] { return failed || stopping(); };
   std::vector<std::unique_ptr<agents::AgentLane>> lanes;
   std::vector<std::unique_ptr<LaneRunner>> runners;
   long remaining = 0;
@@ -82,7 +100,7 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
                                                                          parameters.batch_size, {instance, instances})));
       remaining += lanes.back()->remaining();
       runners.push_back(std::make_unique<LaneRunner>(
-          nh, parameters, agent, instance,
+          nh, parameters, lanes_control, agent, instance,
           [&results, &recorder, &ended_runs](const std::vector<agents::EpisodeResult>& ended) {
             results.append(ended);
             recorder.recordResults(ended);
@@ -96,7 +114,6 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
   ROS_INFO("running %ld episodes (%zu already done, %zu lost to the agent link played again) with %zu agent nodes and "
            "planner instances, batches of %d", remaining, results.done().size(), results.lostRuns(), lanes.size(),
            parameters.batch_size);
-  std::atomic<bool> failed{false};
   {
     const ProgressReporter progress("episodes", "episodes", remaining, [&ended_runs] { return ended_runs.load(); });
     std::vector<std::thread> threads;
@@ -105,9 +122,8 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
         try {
           runners[i]->run(lanes[i].get());
         } catch (const std::exception& e) {  // results.csv or the bag cannot be written (a full disk, say)
-          ROS_FATAL("simulator: %s", e.what());  // logged here: once shutdown is requested, the log is gone
-          failed = true;
-          ros::requestShutdown();  // every lane stops; the node exits 1
+          ROS_FATAL("simulator: %s", e.what());
+          failed = true;  // every lane stops
         }
       });
     }
@@ -116,7 +132,7 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
   if (failed) return 1;
   runners.clear();  // their agents are free for the report's planner runs
   recorder.close();
-  if (!ros::ok()) {
+  if (stopping()) {
     ROS_WARN("interrupted: every finished run is in results.csv; restart on the same output_dir to resume");
     return 130;
   }
@@ -127,7 +143,7 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
   const PlannerRows planner_rows = [&](const agents::AgentConfig& agent, const Problem& problem,
                                        const std::vector<std::uint64_t>& seeds) {
     if (unreachable.count(agent.name) > 0) throw AgentUnreachable(agent.name, "lost during the report");
-    if (!planner_runs) planner_runs = std::make_unique<HuntServer>(nh, parameters);
+    if (!planner_runs) planner_runs = std::make_unique<HuntServer>(nh, parameters, control_);
     std::vector<agents::EpisodeResult> rows = planner_runs->playRows(agent, problem, seeds);
     if (std::any_of(rows.begin(), rows.end(), [](const auto& r) { return leavesAgentUnreachable(r.reason); })) {
       unreachable.insert(agent.name);
@@ -137,7 +153,7 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
     return rows;
   };
   try {
-    finishExperiment(config, config_text, parameters.output_dir, sets, &results, [] { return !ros::ok(); },
+    finishExperiment(config, config_text, parameters.output_dir, sets, &results, stopping,
                      [](const std::string& line) { ROS_INFO("%s", line.c_str()); }, planner_rows);
   } catch (const Interrupted&) {
     ROS_WARN("interrupted while writing the report: restart on the same output_dir to write it");
@@ -149,24 +165,3 @@ int runSimulator(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Simulat
 
 }  // namespace simulator
 }  // namespace ppp
-
-int main(int argc, char** argv) {
-  ros::init(argc, argv, "simulator");
-  ros::NodeHandle nh;
-  ros::NodeHandle private_nh("~");
-  ros::AsyncSpinner spinner(2);
-  spinner.start();
-  int status = 1;
-  try {
-    const ppp::simulator::SimulatorParameters parameters = ppp::simulator::readSimulatorParameters(private_nh);
-    status = parameters.mode == ppp::simulator::kHuntMode ? ppp::simulator::runHuntServer(nh, private_nh, parameters)
-                                                          : ppp::simulator::runSimulator(nh, private_nh, parameters);
-  } catch (const ppp::Error& e) {
-    ROS_FATAL("simulator: %s", e.what());
-  } catch (const std::exception& e) {
-    ROS_FATAL("simulator: unexpected failure: %s", e.what());
-  }
-  spinner.stop();
-  ros::shutdown();
-  return status;
-}

@@ -78,8 +78,18 @@ ppp_msgs::GraphNode generatorNode(const ExperimentConfig& config, const SetSpec&
   return node;
 }
 
-ppp_msgs::GraphNode agentNode(const agents::AgentConfig& agent) {
+/// Makes `node` the nodelet `type` in `manager` (when there is one).
+void loadInto(const std::string& manager, const std::string& type, ppp_msgs::GraphNode* node) {
+  if (manager.empty()) return;
+  node->nodelet = type;
+  node->manager = manager;
+}
+
+/// The agent node of `agent`, a nodelet in `manager` ("" for none) unless the agent asks for a process of its own
+/// or runs on another host.
+ppp_msgs::GraphNode agentNode(const agents::AgentConfig& agent, const std::string& manager) {
   ppp_msgs::GraphNode node{"ppp_agents", "agent_node", agents::agentGraphName(agent.name)};
+  if (agent.process == agents::kProcessManager && agent.host.empty()) loadInto(manager, "ppp_agents/Agent", &node);
   node.machine = machineOf(agent);
   node.agent = agent.name;
   addParams(agents::agentNodeOptionSpecs(), agent, &node);
@@ -155,6 +165,20 @@ const SetSpec& huntedSet(const ExperimentConfig& config, const std::string& name
                                     (hunted.empty() ? "none" : joinNames(hunted)) + ")");
 }
 
+/// Puts the nodelet manager the nodelets of `graph` name first; the manager is required when one of them is (the
+/// graph then ends when the manager does, and that nodelet's exit status is its private exit_status parameter).
+void addManager(ppp_msgs::LaunchGraph* graph) {
+  ppp_msgs::GraphNode manager{"nodelet", "nodelet", ppp_msgs::nodes::kManager};
+  manager.args = "manager";
+  for (ppp_msgs::GraphNode& node : graph->nodes) {
+    if (node.nodelet.empty() || !node.required) continue;
+    node.required = false;
+    manager.required = true;
+    graph->status_param = "/" + node.name + "/exit_status";
+  }
+  graph->nodes.insert(graph->nodes.begin(), manager);
+}
+
 /// The shrink node of `task` (required: the graph ends with it).
 ppp_msgs::GraphNode shrinkNode(const ShrinkTask& task) {
   ppp_msgs::GraphNode node{"ppp_simulator", "shrink_node", ppp_msgs::nodes::kShrink};
@@ -177,6 +201,10 @@ void GraphOptions::validate(const ExperimentConfig& config) const {
   if (config_path.empty() || config_path[0] != '/') throw InvalidArgument("config", "expected an absolute path");
   if (output_dir.empty() || output_dir[0] != '/') throw InvalidArgument("output_dir", "expected an absolute path");
   simulator.validate();
+  if (processes != agents::kProcessManager && processes != agents::kProcessOwn) {
+    throw InvalidArgument("processes", "expected " + std::string(agents::kProcessManager) + " or " +
+                                           agents::kProcessOwn + ", got '" + processes + "'");
+  }
   bool remote = false;
   for (const agents::AgentConfig& agent : config.agents) remote = remote || !agent.host.empty();
   if (remote && (env_loader.empty() || env_loader[0] != '/')) {
@@ -245,19 +273,23 @@ ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const Grap
     if (agent.host.empty() || !hosts.insert(agent.host).second) continue;
     graph.machines.push_back({machineName(agent.host), agent.host, options.env_loader});
   }
+  const std::string manager = options.processes == agents::kProcessManager ? ppp_msgs::nodes::kManager : "";
   if (shrink) {
     graph.nodes.push_back(shrinkNode(options.shrink));
   } else if (hunted) {
     graph.nodes.push_back(generatorNode(config, *hunted, options.output_dir, options.output_dir, true));
+    loadInto(manager, "ppp_generator/Generator", &graph.nodes.back());
   } else {
     for (const SetSpec& set : config.sets) {
       if (set.generator) {
         const std::string set_dir = setDirectory(set, options.output_dir);
         graph.nodes.push_back(generatorNode(config, set, options.output_dir, set_dir, false));
+        loadInto(manager, "ppp_generator/Generator", &graph.nodes.back());
       }
     }
   }
   ppp_msgs::GraphNode simulator{"ppp_simulator", "simulator_node", ppp_msgs::nodes::kSimulator};
+  loadInto(manager, "ppp_simulator/Simulator", &simulator);
   const bool serving = hunted || shrink;  // the simulator serves ~evaluate, and the graph ends with its client
   simulator.required = !serving;
   SimulatorTask task;
@@ -281,9 +313,10 @@ ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const Grap
     if (agents::isPlanner(agent)) {
       for (ppp_msgs::GraphNode& node : plannerNodes(agent, config.episode.robot_radius)) graph.nodes.push_back(std::move(node));
     } else {
-      graph.nodes.push_back(agentNode(agent));
+      graph.nodes.push_back(agentNode(agent, manager));
     }
   }
+  if (!manager.empty()) addManager(&graph);
   return graph;
 }
 

@@ -41,6 +41,25 @@ def instance_namespaces(name, count):
     return ['/%s/instance_%d/' % (graph_name(name), k) for k in range(1, count + 1)]
 
 
+# The executable each of the graph's nodelet types wraps: a nodelet and its node play the same role.
+NODELET_EXECUTABLES = {'ppp_agents/Agent': 'agent_node', 'ppp_generator/Generator': 'generator_node',
+                       'ppp_simulator/Simulator': 'simulator_node'}
+
+
+def nodelet_of(node):
+    """The nodelet type a `nodelet load TYPE MANAGER --no-bond` node loads, or None."""
+    args = node.args.split()
+    if node.type != 'nodelet' or len(args) != 4 or args[0] != 'load':
+        return None
+    assert args[2:] == ['nodelet_manager', '--no-bond'], node.args
+    return args[1]
+
+
+def role(node):
+    """The executable a node runs, or the one its nodelet wraps."""
+    return NODELET_EXECUTABLES[nodelet_of(node)] if nodelet_of(node) else node.type
+
+
 # Instances of a planner the experiment starts, when the config does not say (ppp::agents::instanceCount).
 CORES = min(max(os.cpu_count() or 1, 1), 64)
 
@@ -65,6 +84,20 @@ def load_graph(config, *flags):
     if status != 0:
         raise AssertionError('ppp launch-file failed: ' + errors)
     return roslaunch.config.load_config_default([], None, roslaunch_strs=[xml], assign_machines=False), out
+
+
+def small_config(explorer_options):
+    """A config of one small evolved set and two agents, the explorer with `explorer_options` (YAML flow text)."""
+    return """
+seed: 5
+runs: 3
+agents:
+  - {name: astar, type: astar}
+  - {name: explorer, type: explorer, %s}
+sets:
+  - name: mine
+    generator: {fitness: advances, population: 6, matings: 50, seed: 4}
+""" % explorer_options
 
 
 def write_config(directory, text):
@@ -142,12 +175,12 @@ class DefaultGraphTest(unittest.TestCase):
 
     def test_one_agent_node_per_configured_agent(self):
         built_in = [a for a in self.agents if a['type'] != 'planner']
-        agent_nodes = sorted(n.name for n in self.config.nodes if n.type == 'agent_node')
+        agent_nodes = sorted(n.name for n in self.config.nodes if role(n) == 'agent_node')
         self.assertEqual(agent_nodes, sorted(graph_name(a['name']) for a in built_in))
         for agent in built_in:
             node_name = graph_name(agent['name'])
             node = self.nodes[node_name]
-            self.assertEqual(node.package, 'ppp_agents')
+            self.assertEqual(nodelet_of(node), 'ppp_agents/Agent')
             self.assertEqual(node.namespace, '/')
             self.assertIsNone(node.machine_name)
             self.assertIn(['scans', '~scans'], [list(r) for r in node.remap_args])
@@ -178,7 +211,7 @@ class DefaultGraphTest(unittest.TestCase):
     def test_one_generator_node_per_set_with_its_options(self):
         with open(os.path.join(ROOT, 'config', 'generator.yaml')) as f:
             defaults = yaml.safe_load(f)
-        generators = sorted(n.name for n in self.config.nodes if n.type == 'generator_node')
+        generators = sorted(n.name for n in self.config.nodes if role(n) == 'generator_node')
         self.assertEqual(generators, sorted('gen_' + s['name'] for s in self.experiment['sets']))
         for s in self.experiment['sets']:
             name = 'gen_' + s['name']
@@ -190,8 +223,13 @@ class DefaultGraphTest(unittest.TestCase):
             self.assertIs(self.params['/%s/resume' % name], True)
             self.assertEqual(self.params['/%s/output_dir' % name], os.path.join(self.out, 'sets', s['name']))
 
-    def test_the_simulator_is_required_and_takes_the_sets_from_the_generators(self):
-        self.assertTrue(self.nodes['simulator'].required)
+    def test_the_simulator_takes_the_sets_from_the_generators_in_the_required_manager(self):
+        # The manager ends the graph: the simulator's nodelet shuts it down when the experiment is done.
+        self.assertEqual(nodelet_of(self.nodes['simulator']), 'ppp_simulator/Simulator')
+        self.assertFalse(self.nodes['simulator'].required)
+        manager = self.config.nodes[0]
+        self.assertEqual((manager.name, manager.package, manager.type, manager.args, manager.required),
+                         ('nodelet_manager', 'nodelet', 'nodelet', 'manager', True))
         self.assertEqual(self.params['/simulator/output_dir'], self.out)
         self.assertEqual(self.params['/simulator/config'], os.path.join(ROOT, 'config', 'experiment.yaml'))
         self.assertIs(self.params['/simulator/generator_nodes'], True)
@@ -204,10 +242,40 @@ class DefaultGraphTest(unittest.TestCase):
         graph = json.loads(subprocess.run(command + ['--json'], stdout=subprocess.PIPE, universal_newlines=True,
                                           check=True).stdout)
         self.assertEqual(graph['xml'], xml)
-        self.assertEqual(graph['required'], 'simulator')
+        self.assertEqual(graph['required'], 'nodelet_manager')
+        self.assertEqual(graph['status_param'], '/simulator/exit_status')
         self.assertEqual(graph['machines'], [])
         self.assertEqual(sorted(n['name'] for n in graph['nodes'] if n['type'] == 'agent_node'),
-                         sorted(n.name for n in self.config.nodes if n.type == 'agent_node'))
+                         sorted(n.name for n in self.config.nodes if role(n) == 'agent_node'))
+
+    def test_every_node_in_a_process_of_its_own_on_request(self):
+        config, _ = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--processes', 'own')
+        types = sorted(set(n.type for n in config.nodes))
+        self.assertEqual(types, ['agent_node', 'generator_node', 'mrpt_planner_node', 'mrpt_reactive_node',
+                                 'ompl_planner_node', 'optimistic_planner_node', 'planner_bridge_node',
+                                 'simulator_node'])
+        self.assertEqual([n.name for n in config.nodes if n.required], ['simulator'])
+        text, _, _, _ = launch_file(os.path.join(ROOT, 'config', 'experiment.yaml'), '--processes', 'own', '--json')
+        self.assertEqual((json.loads(text)['required'], json.loads(text)['status_param']), ('simulator', ''))
+        _, status, errors, _ = launch_file(os.path.join(ROOT, 'config', 'experiment.yaml'), '--processes', 'some')
+        self.assertNotEqual(status, 0)
+        self.assertIn("processes: expected manager or own, got 'some'", errors)
+
+    def test_an_agent_may_run_in_a_process_of_its_own_beside_the_manager(self):
+        directory = tempfile.mkdtemp()
+        path = write_config(directory, small_config('process: own'))
+        config, _ = load_graph(path)
+        nodes = {n.name: n for n in config.nodes}
+        self.assertEqual(nodelet_of(nodes['astar']), 'ppp_agents/Agent')
+        self.assertEqual((nodes['explorer'].package, nodes['explorer'].type), ('ppp_agents', 'agent_node'))
+        self.assertIsNone(nodelet_of(nodes['explorer']))
+        with open(path) as f:
+            text = f.read()
+        write_config(directory, text.replace('process: own', 'process: alone'))
+        _, status, errors, _ = launch_file(path)
+        self.assertNotEqual(status, 0)
+        self.assertIn("process", errors)
+        self.assertIn("'alone'", errors)
 
     def test_a_planner_named_on_the_command_line_replaces_the_configured_one(self):
         config, _ = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--planner',
@@ -246,18 +314,9 @@ class DefaultGraphTest(unittest.TestCase):
 class SmallGraphTest(unittest.TestCase):
     def test_only_the_configs_own_nodes_on_the_hosts_it_names(self):
         directory = tempfile.mkdtemp()
-        path = write_config(directory, """
-seed: 5
-runs: 3
-agents:
-  - {name: astar, type: astar}
-  - {name: explorer, type: explorer, memory: 5x5, host: 10.0.0.2}
-sets:
-  - name: mine
-    generator: {fitness: advances, population: 6, matings: 50, seed: 4}
-""")
+        path = write_config(directory, small_config('memory: 5x5, host: 10.0.0.2'))
         config, _ = load_graph(path, '--env-loader', '/ws/devel/env.sh')
-        self.assertEqual(sorted((n.type, n.name) for n in config.nodes),
+        self.assertEqual(sorted((role(n), n.name) for n in config.nodes if n.name != 'nodelet_manager'),
                          [('agent_node', 'astar'), ('agent_node', 'explorer'), ('generator_node', 'gen_mine'),
                           ('simulator_node', 'simulator')])
         explorer = [n for n in config.nodes if n.name == 'explorer'][0]
@@ -364,10 +423,12 @@ class HuntLaunchTest(unittest.TestCase):
     def test_the_hunt_graph_starts_the_hunter_the_simulator_and_the_panel_only(self):
         config, out = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--hunt', 'hunted')
         params = {k: p.value for k, p in config.params.items()}
-        self.assertEqual(sorted((n.type, n.name) for n in config.nodes),
+        self.assertEqual(sorted((role(n), n.name) for n in config.nodes if n.name != 'nodelet_manager'),
                          [('agent_node', 'bumper'), ('agent_node', 'explorer'), ('agent_node', 'wall_follower_left'),
                           ('generator_node', 'gen_hunted'), ('simulator_node', 'simulator')])
-        self.assertTrue([n for n in config.nodes if n.name == 'gen_hunted'][0].required)
+        # The hunt's generator ends the graph: its nodelet shuts the (required) manager down once the set is out.
+        self.assertEqual([n.name for n in config.nodes if n.required], ['nodelet_manager'])
+        self.assertEqual(nodelet_of([n for n in config.nodes if n.name == 'gen_hunted'][0]), 'ppp_generator/Generator')
         self.assertEqual(params['/simulator/mode'], 'hunt')
         self.assertIs(params['/gen_hunted/exit_when_done'], True)
         self.assertEqual(params['/gen_hunted/output_dir'], out)
@@ -381,7 +442,7 @@ class HuntLaunchTest(unittest.TestCase):
         self.assertEqual(started, sorted([(ns, 'bridge', 'planner_bridge_node') for ns in instance_namespaces('mine', CORES)] +
                                          [(ns + 'robot/', 'planner', 'simple_planner.py')
                                           for ns in instance_namespaces('mine', CORES)]))
-        self.assertEqual([n for n in config.nodes if n.type == 'agent_node'], [])
+        self.assertEqual([n for n in config.nodes if role(n) == 'agent_node'], [])
 
     def test_only_failure_sets_can_be_hunted(self):
         _, status, errors, _ = launch_file(os.path.join(ROOT, 'config', 'experiment.yaml'), '--hunt', 'turns')
@@ -409,8 +470,9 @@ class ShrinkLaunchTest(unittest.TestCase):
         config, out = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--shrink', ppp, '--agent', 'mrpt',
                                  '--seed', '16126441926964728741', '--runs', '3')
         params = {k: p.value for k, p in config.params.items()}
-        self.assertEqual(sorted((n.namespace, n.name, n.type) for n in config.nodes),
-                         sorted([('/', 'shrink', 'shrink_node'), ('/', 'simulator', 'simulator_node')] +
+        self.assertEqual(sorted((n.namespace, n.name, role(n)) for n in config.nodes),
+                         sorted([('/', 'shrink', 'shrink_node'), ('/', 'simulator', 'simulator_node'),
+                                 ('/', 'nodelet_manager', 'nodelet')] +
                                 [(ns, 'bridge', 'planner_bridge_node') for ns in instance_namespaces('mrpt', CORES)] +
                                 [(ns + 'robot/', 'planner', 'mrpt_planner_node')
                                  for ns in instance_namespaces('mrpt', CORES)]))

@@ -67,6 +67,11 @@ constexpr const char* kWallSenseScan = "scan";
 /// first that does not bump.
 constexpr const char* kWallSenseTouch = "touch";
 
+/// process: through ROS, a built-in agent's node runs in the experiment's nodelet manager (when the graph has one).
+constexpr const char* kProcessManager = "manager";
+/// process: through ROS, the agent's node runs in a process of its own.
+constexpr const char* kProcessOwn = "own";
+
 /// One agent configuration of an experiment: a type plus handicaps, under a name of its own.
 struct AgentConfig {
   std::string name;            ///< Name in results and reports (e.g. "explorer_memory_5x5"); defaults to type.
@@ -91,6 +96,7 @@ struct AgentConfig {
   BridgeOptions bridge;        ///< Planner agents only: its bridge's plan_timeout and cells_per_ppp_cell.
   int instances = 0;           ///< Planner agents only: bridge and planner pairs sharing its runs; 0 = instanceCount's.
   std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
+  std::string process = kProcessManager;  ///< Through ROS: kProcessManager or kProcessOwn.
   /// @throws InvalidArgument naming "type" (listing the valid ones), "name", "memory", "sensor_noise",
   /// "goal_seeking", "goal_range", "memory_model", "wall_start", "wall_leave", "goal_ties", "wall_sense",
   /// "bumper_turn", "explorer_idle", "explorer_ties", "frontier", "runs", "prior_map", "planner_node",

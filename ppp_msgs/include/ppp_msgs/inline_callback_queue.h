@@ -26,16 +26,17 @@ class InlineCallbackQueue : public ros::CallbackQueueInterface {
   void removeByID(uint64_t /*owner_id*/) override {}
 };
 
-/// Subscribes to `topic` over TCP with Nagle's algorithm off: a lockstep batch protocol's low-latency subscription.
-/// With `queue`, which must outlive the subscription, `callback` runs in roscpp's network thread as the message is
-/// read: a node in a process of its own. Without (null), it runs from the node handle's callback queue: a nodelet.
-/// In a nodelet manager a message from a nodelet of the same process is handed over by roscpp in the publisher's
-/// own thread, under roscpp's process-wide publish lock, so a callback run there at once would hold up every other
-/// publisher in the process for as long as it runs.
+/// Subscribes to `topic` over TCP with Nagle's algorithm off: a lockstep batch protocol's low-latency subscription,
+/// its callback run through `queue` (which must outlive the subscription). With an InlineCallbackQueue the callback
+/// runs in roscpp's network thread as the message is read: a node in a process of its own. A nodelet takes a
+/// queue served by a thread of its own instead: in a nodelet manager a message from a nodelet of the same process
+/// is handed over by roscpp in the publisher's own thread, under roscpp's process-wide publish lock, so a callback
+/// run there at once would hold up every other publisher in the process for as long as it runs (and the manager's
+/// own queues cost two thread wake-ups per message, its dispatcher's and a worker's, where this costs one).
 template <typename Message>
 ros::Subscriber subscribeLockstep(ros::NodeHandle& nh, const std::string& topic, uint32_t queue_size,
                                   const std::function<void(const typename Message::ConstPtr&)>& callback,
-                                  InlineCallbackQueue* queue) {
+                                  ros::CallbackQueueInterface* queue) {
   ros::SubscribeOptions options =
       ros::SubscribeOptions::create<Message>(topic, queue_size, callback, ros::VoidConstPtr(), queue);
   options.transport_hints = ros::TransportHints().tcpNoDelay();

@@ -23,8 +23,8 @@ struct GraphRemap {
 
 /// One node of the graph.
 struct GraphNode {
-  std::string package;    ///< ROS package.
-  std::string type;       ///< Executable.
+  std::string package;    ///< ROS package (of the executable, or of the nodelet).
+  std::string type;       ///< Executable (unused for a nodelet).
   std::string name;       ///< Node name.
   std::string group;      ///< Namespace of the `<group>` holding it ("" for none).
   std::string ns;         ///< Its own `ns` attribute inside that group ("" for none).
@@ -34,6 +34,10 @@ struct GraphNode {
   std::string args;       ///< Its command-line arguments ("" for none), e.g. private parameters `_name:=value`.
   std::vector<GraphParam> params;  ///< Its private parameters.
   std::vector<GraphRemap> remaps;  ///< Its remappings.
+  /// The nodelet type ("ppp_agents/Agent") when the node runs as a nodelet in the manager `manager` (a node of the
+  /// graph); "" for a process of its own.
+  std::string nodelet;
+  std::string manager;  ///< The manager's node name, for a nodelet.
 };
 
 /// One `<machine>`: another host nodes run on.
@@ -48,13 +52,17 @@ struct LaunchGraph {
   std::string comment;                 ///< What the graph is, one line.
   std::vector<GraphMachine> machines;  ///< Other hosts.
   std::vector<GraphNode> nodes;        ///< Every node, in start order.
+  /// The private parameter a job run as a nodelet in the required manager sets to its exit status when it is done
+  /// ("/simulator/exit_status"; the manager itself exits 0), or "" when the required node is the job itself.
+  std::string status_param;
 };
 
 /// The roslaunch XML of `graph`; nodes with a group are wrapped in `<group ns="...">` (consecutive nodes of one
-/// group share it). @throws ppp::InvalidArgument naming the node for text roslaunch would substitute ("$(").
+/// group share it); a nodelet is a `nodelet load TYPE MANAGER --no-bond` node of the same name, parameters and
+/// remappings (no bond: its heartbeat counts wall time and would unload nodelets of a manager slowed by load). @throws ppp::InvalidArgument naming the node for text roslaunch would substitute ("$(").
 std::string launchXml(const LaunchGraph& graph);
 
-/// `graph` as JSON: {"comment", "required": the required node's name or "", "machines": [{"name", "address",
+/// `graph` as JSON: {"comment", "required": the required node's name or "", "status_param", "machines": [{"name", "address",
 /// "env_loader", "agents": [names of the agents with a node there]}], "nodes": [...], "xml": launchXml(graph)}.
 /// @throws ppp::InvalidArgument as launchXml().
 std::string launchJson(const LaunchGraph& graph);

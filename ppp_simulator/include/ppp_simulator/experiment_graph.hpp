@@ -28,6 +28,11 @@ struct GraphOptions {
   /// holds already: passed on to the simulator, which reads the file, so that it expects the instances the graph
   /// starts.
   std::vector<std::string> planners;
+  /// agents::kProcessManager: the simulator, the generator nodes and the agent nodes of agents with `process:
+  /// manager` on this host run as nodelets in one nodelet manager (which the graph then requires: it ends with
+  /// the simulator's experiment, a hunt's set or the shrink); agents::kProcessOwn: every node in a process of its
+  /// own. Planner bridges and planners always run in processes of their own.
+  std::string processes = agents::kProcessManager;
   /// @throws InvalidArgument naming the option.
   void validate(const ExperimentConfig& config) const;
 };

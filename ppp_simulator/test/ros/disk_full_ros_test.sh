@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # roslaunch launch/experiment.launch on an output directory that fills up mid-run (a small tmpfs): the simulator
-# node logs the error naming results.csv and the system's reason and exits 1 (roslaunch ends instead of
-# hanging), results.csv holds whole rows only, and after space returns a rerun resumes to `ppp experiment`'s
+# (a nodelet) logs the error naming results.csv and the system's reason and ends the experiment with status 1
+# (roslaunch ends instead of hanging), results.csv holds whole rows only, and after space returns a rerun resumes to `ppp experiment`'s
 # results. Needs root for the mount; exits 77 (skipped) where it cannot mount. Usage: disk_full_ros_test.sh DEVEL_DIR
 source "$(dirname "${BASH_SOURCE[0]}")/ros_harness.sh"
 mount_tmpfs 4m
@@ -28,8 +28,9 @@ launch "$work/full.log"
 [ $? -ne 137 ] && pass || fail "roslaunch hung on a full disk"
 grep -aq "\[FATAL\].*simulator: $out/results.csv: cannot append [0-9]* bytes: No space left on device" "$work/full.log" && pass \
   || fail "no error naming results.csv and the reason: $(grep -a "FATAL\|ERROR" "$work/full.log")"
-grep -aq "process has died \[pid [0-9]*, exit code 1, cmd [^ ]*simulator_node" "$work/full.log" && pass \
-  || fail "the simulator node did not exit 1: $(grep -a "died" "$work/full.log")"
+# The simulator nodelet's status 1 is the launcher's (its manager exits 0 once the nodelet shut it down).
+grep -aq "process has died \[pid [0-9]*, exit code 1, cmd [^ ]*experiment_launcher" "$work/full.log" && pass \
+  || fail "the simulator did not end the experiment with status 1: $(grep -a "died" "$work/full.log")"
 awk -F, 'NR == 1 { n = NF } NF != n { exit 1 } END { exit NR < 2 }' "$out/results.csv" && \
   [ "$(tail -c 1 "$out/results.csv" | od -An -c | tr -d ' ')" = '\n' ] && pass || fail "results.csv holds a torn row"
 [ "$(wc -l < "$out/results.csv")" -lt 3601 ] && pass || fail "the disk filled too late to test anything"

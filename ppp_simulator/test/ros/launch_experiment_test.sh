@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The ROS experiment as a user starts it: roslaunch launch/experiment.launch, on a private master.
-# First a small config (one set, two agents): exactly its nodes start, OUTPUT_DIR/sets holds only its set,
-# results.csv equals `ppp experiment`'s byte for byte, a rerun resumes from the generator's stored set, and
+# First a small config (one set, two agents): exactly its nodes start (in one nodelet manager, or each in a process
+# of its own), OUTPUT_DIR/sets holds only its set, results.csv equals `ppp experiment`'s byte for byte in both
+# modes, a rerun resumes from the generator's stored set, the manager killed mid-run loses and changes no row, and
 # configs naming an unknown agent type or an unreachable host stop before any node starts; launch/hunt.launch
 # hunts a small set with only its panel's nodes, and launch/shrink.launch shrinks its failures as ppp shrink does.
 # Then the default config with 2 runs (three sets of 60 PPPs from three generator nodes, one of them hunting
@@ -28,7 +29,7 @@ EOF2
 cp "$root/config/generator.yaml" "$work/small/"
 timeout 300 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/out" \
   config:="$work/small/experiment.yaml" > "$work/small/launch.log" 2>&1
-[ "$(started "$work/small/launch.log")" = "astar experiment explorer gen_mine rosout simulator " ] && pass || \
+[ "$(started "$work/small/launch.log")" = "astar experiment explorer gen_mine nodelet_manager rosout simulator " ] && pass || \
   fail "the small config started other processes: $(started "$work/small/launch.log")"
 [ "$(ls "$work/small/out/sets")" = "mine" ] && pass || fail "sets/ holds $(ls "$work/small/out/sets")"
 # Progress reaches the output as it happens: each phase's first and last lines at least.
@@ -44,6 +45,38 @@ timeout 300 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$
   config:="$work/small/experiment.yaml" > "$work/small/rerun.log" 2>&1
 grep -q "resuming: publishing the set already in" "$work/small/rerun.log" && pass || fail "the rerun evolved again"
 cmp -s "$work/small/out/results.csv" "$work/small/first.csv" && pass || fail "the rerun changed results.csv"
+# Every node in a process of its own (no manager): the same rows.
+timeout 300 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/own" \
+  config:="$work/small/experiment.yaml" args:="--processes own" > "$work/small/own.log" 2>&1
+[ "$(started "$work/small/own.log")" = "astar experiment explorer gen_mine rosout simulator " ] && pass || \
+  fail "--processes own started other processes: $(started "$work/small/own.log")"
+cmp -s "$work/small/own/results.csv" "$work/small/first.csv" && pass || \
+  fail "--processes own changed results.csv: $(tail -20 "$work/small/own.log")"
+
+# The manager killed mid-run (SIGKILL: every nodelet in it dies at once) ends the launch; rerunning resumes from
+# results.csv and loses and changes nothing.
+sed 's/^runs: 3/runs: 3000/' "$work/small/experiment.yaml" > "$work/small/long.yaml"
+timeout 300 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/killed" \
+  config:="$work/small/long.yaml" > "$work/small/killed.log" 2>&1 &
+launch=$!
+total=$((6 * 2 * 3000))
+for _ in $(seq 1 600); do
+  rows=$(($(wc -l < "$work/small/killed/results.csv" 2>/dev/null || echo 1) - 1))
+  [ "$rows" -gt 0 ] && break
+  sleep 0.1
+done
+manager=$(sed -n 's/.*process\[nodelet_manager-[0-9]*\]: started with pid \[\([0-9]*\)\].*/\1/p' "$work/small/killed.log")
+[ -n "$manager" ] && kill -KILL "$manager"
+wait "$launch"
+rows=$(($(wc -l < "$work/small/killed/results.csv") - 1))
+[ "$rows" -gt 0 ] && [ "$rows" -lt "$total" ] && pass || fail "the manager was not killed mid-run ($rows of $total rows)"
+timeout 300 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/killed" \
+  config:="$work/small/long.yaml" > "$work/small/resumed.log" 2>&1
+grep -q "running $((total - rows)) episodes ($rows already done" "$work/small/resumed.log" && pass || \
+  fail "the rerun did not resume from the $rows rows: $(grep 'running' "$work/small/resumed.log")"
+"$devel/lib/ppp_simulator/ppp" experiment "$work/small/long.yaml" -o "$work/small/long_cli" --quiet > /dev/null 2>&1
+cmp -s "$work/small/killed/results.csv" "$work/small/long_cli/results.csv" && pass || \
+  fail "killed and resumed, results.csv differs from ppp experiment's: $(tail -20 "$work/small/resumed.log")"
 # Bad configs stop before any node of the experiment starts, naming the agent type or the host.
 sed 's/type: explorer}/type: flier}/' "$work/small/experiment.yaml" > "$work/small/flier.yaml"
 sed 's/type: explorer}/type: explorer, host: no-such-host.invalid}/' "$work/small/experiment.yaml" > "$work/small/host.yaml"
@@ -70,7 +103,7 @@ sets:
 EOF2
 timeout 300 roslaunch -p "$port" "$root/launch/hunt.launch" output_dir:="$work/small/hunt" set:=h \
   config:="$work/small/hunt.yaml" > "$work/small/hunt.log" 2>&1
-[ "$(started "$work/small/hunt.log")" = "bumper gen_h hunt rosout simulator wall_follower_left " ] && pass || \
+[ "$(started "$work/small/hunt.log")" = "bumper gen_h hunt nodelet_manager rosout simulator wall_follower_left " ] && pass || \
   fail "the hunt started other processes: $(started "$work/small/hunt.log")"
 "$devel/lib/ppp_simulator/ppp" generate --config "$work/small/hunt/generator.yaml" -o "$work/small/hunt_cli" > /dev/null 2>&1
 diff -r "$work/small/hunt" "$work/small/hunt_cli" > /dev/null && pass || \
@@ -81,7 +114,7 @@ diff -r "$work/small/hunt" "$work/small/hunt_cli" > /dev/null && pass || \
 timeout 300 roslaunch -p "$port" "$root/launch/shrink.launch" input:="$work/small/hunt" agent:=bumper \
   output:="$work/small/shrunk" config:="$work/small/hunt.yaml" args:="--runs 2" > "$work/small/shrink.log" 2>&1
 status=$?
-[ "$(started "$work/small/shrink.log")" = "bumper rosout shrink shrink_launch simulator " ] && pass || \
+[ "$(started "$work/small/shrink.log")" = "bumper nodelet_manager rosout shrink shrink_launch simulator " ] && pass || \
   fail "the shrink started other processes: $(started "$work/small/shrink.log")"
 sed -n '/^agents:/,/^sets:/p' "$work/small/hunt.yaml" | grep -v '^sets:' > "$work/small/hunt_agents.yaml"
 "$devel/lib/ppp_simulator/ppp" shrink "$work/small/hunt" --agents-file "$work/small/hunt_agents.yaml" --agent bumper \

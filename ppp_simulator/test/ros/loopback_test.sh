@@ -45,13 +45,15 @@ for _ in $(seq 1 3000); do
   run_ns="$(readlink "/proc/$launcher/ns/net" 2> /dev/null)"
   if [ -n "$run_ns" ] && [ "$run_ns" != "$own_ns" ]; then
     seen=""
-    for name in simulator_node agent_node; do running_inside "$name" && seen="$seen $name"; done
-    [ "$seen" = " simulator_node agent_node" ] && break
+    # The nodelet manager (the simulator and the agents run in it) and the nodelet loaders are `nodelet`.
+    for name in nodelet; do running_inside "$name" && seen="$seen $name"; done
+    # Every node is up once the episodes start.
+    [ "$seen" = " nodelet" ] && grep -q "running [0-9]* episodes" "$work/launch.log" && break
   fi
   sleep 0.02
 done
 case "$seen" in
-  *simulator_node*) pass ;;
+  *nodelet*) pass ;;
   *) fail "the simulator never ran in the run's namespace (seen: $seen): $(tail -5 "$work/launch.log")" ;;
 esac
 
