@@ -1,6 +1,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 
 #include <ros/callback_queue_interface.h>
@@ -33,12 +34,25 @@ class InlineCallbackQueue : public ros::CallbackQueueInterface {
 /// is handed over by roscpp in the publisher's own thread, under roscpp's process-wide publish lock, so a callback
 /// run there at once would hold up every other publisher in the process for as long as it runs (and the manager's
 /// own queues cost two thread wake-ups per message, its dispatcher's and a worker's, where this costs one).
+///
+/// Each message reaches `callback` once. When a subscription and a publisher of the same process are made at the
+/// same moment (nodelets loading while others advertise), roscpp can link them twice (TopicManager::subscribe
+/// finds the new publisher after asking the master while TopicManager::advertise finds the new subscription, and
+/// both add an intra-process link); every message then arrives twice, as the same object. An agent answering a
+/// batch twice would take two steps of each episode on one scan, so a message that is the one delivered last is
+/// dropped (it is held until the next arrives, so no new message can reuse its address).
 template <typename Message>
 ros::Subscriber subscribeLockstep(ros::NodeHandle& nh, const std::string& topic, uint32_t queue_size,
                                   const std::function<void(const typename Message::ConstPtr&)>& callback,
                                   ros::CallbackQueueInterface* queue) {
-  ros::SubscribeOptions options =
-      ros::SubscribeOptions::create<Message>(topic, queue_size, callback, ros::VoidConstPtr(), queue);
+  auto last = std::make_shared<typename Message::ConstPtr>();  // callbacks of one subscription never overlap
+  auto once = [callback, last](const typename Message::ConstPtr& message) {
+    if (message == *last) return;
+    *last = message;
+    callback(message);
+  };
+  ros::SubscribeOptions options = ros::SubscribeOptions::create<Message>(
+      topic, queue_size, std::function<void(const typename Message::ConstPtr&)>(once), ros::VoidConstPtr(), queue);
   options.transport_hints = ros::TransportHints().tcpNoDelay();
   return nh.subscribe(options);
 }
