@@ -13,7 +13,7 @@ AgentNode::AgentNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh, con
     : config_(readAgentNodeParameters(private_nh, baseName(node_name))),
       responder_(config_),
       queue_(in_network_thread ? std::unique_ptr<ros::CallbackQueueInterface>(new ppp_msgs::InlineCallbackQueue)
-                               : std::make_unique<ros::CallbackQueue>()),
+                               : std::make_unique<ppp_msgs::HandOverQueue>()),
       moves_(nh.advertise<ppp_msgs::MoveBatch>(ppp_msgs::topics::kMoves, 10)),
       scans_(ppp_msgs::subscribeLockstep<ppp_msgs::ScanBatch>(
           nh, ppp_msgs::topics::kScans, 10, [this](const ppp_msgs::ScanBatch::ConstPtr& batch) { onScans(batch); },

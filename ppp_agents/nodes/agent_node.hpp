@@ -19,6 +19,7 @@
 #include "ppp_agents/protocol/batch_responder.hpp"
 #include "ppp_msgs/MoveBatch.h"
 #include "ppp_msgs/ScanBatch.h"
+#include "ppp_msgs/hand_over.h"
 #include "ppp_msgs/inline_callback_queue.h"
 
 namespace ppp {
@@ -29,7 +30,8 @@ class AgentNode {
  public:
   /// Reads the private parameters, subscribes and advertises in `nh`'s namespace and logs what it serves; with
   /// `in_network_thread` batches are answered in roscpp's network thread as they are read (a node in a process of
-  /// its own), else in a thread of the node's own (a nodelet). `node_name` is the node's graph name.
+  /// its own); else (a nodelet) in the thread of a simulator in the same manager that published the batch, or else
+  /// in a thread of the node's own (ppp_msgs/hand_over.h). `node_name` is the node's graph name.
   /// @throws InvalidArgument naming the parameter for a bad configuration.
   AgentNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh, const std::string& node_name,
             bool in_network_thread);
@@ -39,7 +41,7 @@ class AgentNode {
 
   AgentConfig config_;
   protocol::BatchResponder responder_;
-  std::unique_ptr<ros::CallbackQueueInterface> queue_;  // inline, or served by spinner_
+  std::unique_ptr<ros::CallbackQueueInterface> queue_;  // inline, or handing over with spinner_ for the rest
   ros::Publisher moves_;
   ros::Subscriber scans_;
   std::unique_ptr<ros::AsyncSpinner> spinner_;  // the thread of a nodelet's; stops first

@@ -1,5 +1,5 @@
-// The nodelet ppp_agents/Agent: the agent node (agent_node.hpp) in a nodelet manager, answering from the
-// nodelet's callback queue.
+// The nodelet ppp_agents/Agent: the agent node (agent_node.hpp) in a nodelet manager, answering in the simulator's
+// thread when the simulator is a nodelet of the same manager.
 #include <pluginlib/class_list_macros.hpp>
 
 #include "agent_node.hpp"

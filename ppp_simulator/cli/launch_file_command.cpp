@@ -64,6 +64,7 @@ void runLaunchFile(LaunchFileFlags flags) {
   namespace fs = std::filesystem;
   simulator::ExperimentConfig config = simulator::loadExperimentConfig(flags.config);
   simulator::assignPlanners(&config, flags.graph.planners);
+  if (flags.graph.processes == agents::kProcessManager) flags.graph.simulator.batch_size = simulator::kManagerBatchSize;
   applyAndValidateFlags(*flags.command, simulator::simulatorOptionSpecs(), flags.simulator_flags,
                         &flags.graph.simulator);
   flags.graph.config_path = fs::absolute(flags.config).lexically_normal().string();

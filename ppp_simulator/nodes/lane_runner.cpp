@@ -6,6 +6,7 @@
 #include <boost/make_shared.hpp>
 
 #include "ppp_agents/protocol/batch_codec.hpp"
+#include "ppp_msgs/hand_over.h"
 #include "ppp_msgs/node_liveness.h"
 #include "ppp_msgs/graph_names.h"
 
@@ -105,7 +106,7 @@ void LaneRunner::sendBatch() {
   if (observer_) observer_(agent_.name, scans_buffer_);
   expected_batch_ = batch;
   deadline_ = ros::WallTime::now() + ros::WallDuration(step_timeout_);
-  scans_.publish(message);
+  ppp_msgs::publishHandingOver(scans_, message);  // an agent nodelet answers here, in this thread
 }
 
 void LaneRunner::answerSilence() {

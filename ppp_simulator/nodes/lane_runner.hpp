@@ -37,7 +37,8 @@ struct NodeControl {
 /// lanes in turn (a hunt plays one per evaluation request). In a node of its own each reply is applied, and the
 /// next batch sent, in roscpp's network thread as the reply is read (no thread hand-over per batch), and the thread
 /// in run() only watches for the step timeout, a lost agent and shutdown; in a nodelet that thread takes the
-/// replies itself from a queue of the runner's own (one thread wake-up per reply).
+/// replies itself from a queue of the runner's own. An agent nodelet in the same manager answers each batch in that
+/// thread too, as it is published (ppp_msgs/hand_over.h): a round trip then wakes no thread at all.
 class LaneRunner {
  public:
   /// Where finished episodes go.

@@ -24,8 +24,9 @@ const std::vector<OptionSpec<SimulatorOptions>>& simulatorOptionSpecs() {
   static const std::vector<OptionSpec<S>> specs = [] {
     const Bounds seconds{kMinSeconds, kMaxSeconds};
     std::vector<OptionSpec<S>> list = {
-      declareOption("batch_size", "episodes per agent per message", +[](S& s) -> int& { return s.batch_size; },
-                    Bounds{1, kMaxBatchSize}),
+      declareOption("batch_size",
+                    "episodes per agent per message (ppp launch-file's graph in one nodelet manager: 500 unless given)",
+                    +[](S& s) -> int& { return s.batch_size; }, Bounds{1, kMaxBatchSize}),
       declareOption("step_timeout", "seconds an agent node has to answer a batch",
                     +[](S& s) -> double& { return s.step_timeout; }, seconds),
       declareOption("planner_step_timeout", "seconds a planner agent's bridge has to answer a step",

@@ -233,7 +233,7 @@ class DefaultGraphTest(unittest.TestCase):
         self.assertEqual(self.params['/simulator/output_dir'], self.out)
         self.assertEqual(self.params['/simulator/config'], os.path.join(ROOT, 'config', 'experiment.yaml'))
         self.assertIs(self.params['/simulator/generator_nodes'], True)
-        self.assertEqual(self.params['/simulator/batch_size'], 2000)
+        self.assertEqual(self.params['/simulator/batch_size'], 500)  # agents answer in the lanes' threads
         self.assertIsInstance(self.params['/simulator/step_timeout'], float)
 
     def test_the_json_graph_is_the_xml_graph_with_its_hosts_and_required_node(self):
@@ -255,6 +255,9 @@ class DefaultGraphTest(unittest.TestCase):
                                  'ompl_planner_node', 'optimistic_planner_node', 'planner_bridge_node',
                                  'simulator_node'])
         self.assertEqual([n.name for n in config.nodes if n.required], ['simulator'])
+        self.assertEqual(config.params['/simulator/batch_size'].value, 2000)  # round trips between processes
+        given, _ = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--batch-size', '7')
+        self.assertEqual(given.params['/simulator/batch_size'].value, 7)
         text, _, _, _ = launch_file(os.path.join(ROOT, 'config', 'experiment.yaml'), '--processes', 'own', '--json')
         self.assertEqual((json.loads(text)['required'], json.loads(text)['status_param']), ('simulator', ''))
         _, status, errors, _ = launch_file(os.path.join(ROOT, 'config', 'experiment.yaml'), '--processes', 'some')

@@ -30,10 +30,9 @@ class InlineCallbackQueue : public ros::CallbackQueueInterface {
 /// Subscribes to `topic` over TCP with Nagle's algorithm off: a lockstep batch protocol's low-latency subscription,
 /// its callback run through `queue` (which must outlive the subscription). With an InlineCallbackQueue the callback
 /// runs in roscpp's network thread as the message is read: a node in a process of its own. A nodelet takes a
-/// queue served by a thread of its own instead: in a nodelet manager a message from a nodelet of the same process
-/// is handed over by roscpp in the publisher's own thread, under roscpp's process-wide publish lock, so a callback
-/// run there at once would hold up every other publisher in the process for as long as it runs (and the manager's
-/// own queues cost two thread wake-ups per message, its dispatcher's and a worker's, where this costs one).
+/// HandOverQueue (hand_over.h) or a queue of its own instead: in a nodelet manager a message from a nodelet of the
+/// same process is handed over by roscpp in the publisher's own thread, under roscpp's process-wide publish lock,
+/// so a callback run there at once would hold up every other publisher in the process for as long as it runs.
 ///
 /// Each message reaches `callback` once. When a subscription and a publisher of the same process are made at the
 /// same moment (nodelets loading while others advertise), roscpp can link them twice (TopicManager::subscribe

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 // A ROS graph as a value (machines, nodes, their parameters and remappings), rendered as roslaunch XML for
@@ -23,6 +24,11 @@ struct GraphRemap {
 
 /// One node of the graph.
 struct GraphNode {
+  GraphNode() = default;
+  /// The node `name`, executable `type` of `package`, with nothing else set.
+  GraphNode(std::string package_name, std::string executable, std::string node_name)
+      : package(std::move(package_name)), type(std::move(executable)), name(std::move(node_name)) {}
+
   std::string package;    ///< ROS package (of the executable, or of the nodelet).
   std::string type;       ///< Executable (unused for a nodelet).
   std::string name;       ///< Node name.

@@ -8,10 +8,14 @@
 namespace ppp {
 namespace simulator {
 
+/// The batch size of `ppp launch-file`'s graph in one nodelet manager unless given: a built-in agent there answers
+/// in its lane's thread (no round trip to amortise), and the episodes of fewer batches in flight stay in cache.
+constexpr int kManagerBatchSize = 500;
+
 /// How the simulator node plays an experiment with agent nodes: message batching, timeouts and recording. Read
 /// by the node as `~` parameters; `ppp launch-file` (and so launch/experiment.launch) takes each as a flag.
 struct SimulatorOptions {
-  int batch_size = 2000;                ///< Episodes per agent per message.
+  int batch_size = 2000;                ///< Episodes per agent per message (kManagerBatchSize in one manager).
   double step_timeout = 5.0;            ///< Seconds an agent node has to answer a batch.
   double planner_step_timeout = 30.0;   ///< Seconds a planner agent's bridge has to answer a step.
   int timeouts_before_giving_up = 3;    ///< Consecutive unanswered batches after which an agent's runs all fail.
