@@ -116,31 +116,15 @@ int SimulatorNode::runExperiment() {
            parameters.batch_size);
   {
     const ProgressReporter progress("episodes", "episodes", remaining, [&ended_runs] { return ended_runs.load(); });
-    // Built-in agents' lanes are work for this machine's cores (their agents answer in the lane's thread when they
-    // are nodelets here): `threads` of them play at a time, as ppp experiment's workers do, so that their episodes
-    // stay in cache. A planner's lane mostly waits for its planner: each plays in a thread of its own.
-    std::vector<std::size_t> pooled;
     std::vector<std::thread> threads;
-    auto play = [&runners, &lanes, &failed](std::size_t i) {
-      try {
-        runners[i]->run(lanes[i].get());
-      } catch (const std::exception& e) {  // results.csv or the bag cannot be written (a full disk, say)
-        ROS_FATAL("simulator: %s", e.what());
-        failed = true;  // every lane stops
-      }
-    };
     for (std::size_t i = 0; i < runners.size(); ++i) {
-      if (agents::isPlanner(lanes[i]->config())) {
-        threads.emplace_back(play, i);
-      } else {
-        pooled.push_back(i);
-      }
-    }
-    std::atomic<std::size_t> next_pooled{0};
-    const std::size_t workers = std::min(pooled.size(), static_cast<std::size_t>(workerThreads(config.threads)));
-    for (std::size_t w = 0; w < workers; ++w) {
-      threads.emplace_back([&] {
-        for (std::size_t k = next_pooled++; k < pooled.size(); k = next_pooled++) play(pooled[k]);
+      threads.emplace_back([&runners, &lanes, &failed, i] {
+        try {
+          runners[i]->run(lanes[i].get());
+        } catch (const std::exception& e) {  // results.csv or the bag cannot be written (a full disk, say)
+          ROS_FATAL("simulator: %s", e.what());
+          failed = true;  // every lane stops
+        }
       });
     }
     for (std::thread& t : threads) t.join();

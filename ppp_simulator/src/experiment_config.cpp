@@ -1,11 +1,9 @@
 #include "ppp_simulator/experiment_config.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
 #include <sstream>
-#include <thread>
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/option_yaml.hpp"
@@ -200,10 +198,6 @@ ExperimentConfig parseExperimentConfig(const std::string& yaml, const std::strin
     throw InvalidArgument(path + ": " + e.name(), e.problem());
   }
   return config;
-}
-
-int workerThreads(int threads) {
-  return threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
 const std::vector<OptionSpec<ExperimentConfig>>& experimentOptionSpecs() {

@@ -259,7 +259,8 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
       failed.store(true);
     }
   };
-  const int thread_count = workerThreads(config.threads);
+  const int thread_count =
+      config.threads > 0 ? config.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   std::vector<std::thread> threads;
   for (int t = 0; t < thread_count; ++t) threads.emplace_back(worker);
   for (std::thread& t : threads) t.join();

@@ -42,9 +42,6 @@ struct ExperimentConfig {
 /// Most pictures of hardest PPPs in a report.
 constexpr int kMaxHardest = 1000;
 
-/// The worker threads an experiment's `threads` asks for: itself, or one per core for 0.
-int workerThreads(int threads);
-
 /// One declaration per experiment-wide option (the top-level keys of an experiment YAML besides sets and agents;
 /// `ppp experiment --threads`).
 const std::vector<OptionSpec<ExperimentConfig>>& experimentOptionSpecs();
