@@ -26,11 +26,9 @@ struct Pending {
   std::vector<ros::CallbackInterfacePtr> callbacks;
 };
 
-/// The calling thread's pending hand-overs.
-inline Pending& pending() {
-  thread_local Pending state;
-  return state;
-}
+/// The calling thread's pending hand-overs: one per thread in the process, whichever library asks (so it is
+/// defined once, in ppp_msgs_conversions).
+Pending& pending();
 
 }  // namespace hand_over
 
