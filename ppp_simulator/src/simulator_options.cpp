@@ -1,5 +1,7 @@
 #include "ppp_simulator/simulator_options.hpp"
 
+#include <string>
+
 #include "ppp_core/option_yaml.hpp"
 
 namespace ppp {
@@ -25,7 +27,8 @@ const std::vector<OptionSpec<SimulatorOptions>>& simulatorOptionSpecs() {
     const Bounds seconds{kMinSeconds, kMaxSeconds};
     std::vector<OptionSpec<S>> list = {
       declareOption("batch_size",
-                    "episodes per agent per message (ppp launch-file's graph in one nodelet manager: 500 unless given)",
+                    "episodes per agent per message (ppp launch-file's graph in one nodelet manager: " +
+                        std::to_string(kManagerBatchSize) + " unless given)",
                     +[](S& s) -> int& { return s.batch_size; }, Bounds{1, kMaxBatchSize}),
       declareOption("step_timeout", "seconds an agent node has to answer a batch",
                     +[](S& s) -> double& { return s.step_timeout; }, seconds),
