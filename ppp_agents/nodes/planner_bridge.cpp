@@ -1,6 +1,5 @@
 #include "planner_bridge.hpp"
 
-#include <algorithm>
 #include <array>
 
 #include "planner_bridge_messages.hpp"
@@ -13,16 +12,6 @@
 
 namespace ppp {
 namespace agents {
-
-namespace {
-
-/// True when two paths have the same poses.
-bool samePoints(const std::vector<MapPoint>& a, const std::vector<MapPoint>& b) {
-  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
-                    [](const MapPoint& p, const MapPoint& q) { return p.x == q.x && p.y == q.y; });
-}
-
-}  // namespace
 
 PlannerBridge::PlannerBridge(ros::NodeHandle& nh, const BridgeParameters& parameters)
     : parameters_(parameters), link_(nh, parameters) {
@@ -210,51 +199,12 @@ PlannerBridge::StepOutcome PlannerBridge::request() {
   return path ? followPath(*path) : silent("path");
 }
 
-PlannerBridge::StepOutcome PlannerBridge::takeCommand(const geometry_msgs::TwistStamped& command) {
-  VelocityCommand velocity;
-  const std::string frame_problem = commandOf(command, parameters_.base_frame, parameters_.map_frame, &velocity);
-  if (!frame_problem.empty()) return fail(reason::kInvalidCommand, frame_problem);
-  const CommandedMove move = episode_.command(velocity);
-  if (!move.problem.empty()) return fail(reason::kInvalidCommand, move.problem);
-  following_ = {MapPoint{velocity.linear_x, velocity.linear_y}};
-  return StepOutcome{static_cast<std::uint8_t>(move.action), nullptr};
-}
-
-PlannerBridge::StepOutcome PlannerBridge::followPath(const nav_msgs::Path& path) {
-  const Request& r = request_;
-  std::vector<MapPoint> points;
-  const std::string frame_problem = pathPoints(path, parameters_.map_frame, &points);
-  if (!frame_problem.empty()) return fail(reason::kInvalidPath, frame_problem);
-  // The plan kept (the poses of the path being followed, sent again): the robot goes on from where it is along
-  // it, rather than from the first place the path passes its cell (a path may pass a cell twice).
-  if (!points.empty() && samePoints(points, following_)) {
-    if (const std::optional<Action> along = episode_.next(r.robot)) {
-      return StepOutcome{static_cast<std::uint8_t>(*along), nullptr};
-    }
-  }
-  const Answer answer = episode_.answer(points, r.robot);
-  if (answer.verdict == AnswerVerdict::NoPath) {
-    StepOutcome failed = fail(reason::kNoPath, answer.detail);
-    failed.diagnosis = episode_.noPathKind(r.robot, parameters_.robot_radius);
-    return failed;
-  }
-  if (answer.verdict == AnswerVerdict::InvalidPath) return fail(reason::kInvalidPath, answer.detail);
-  following_ = points;
-  return StepOutcome{static_cast<std::uint8_t>(answer.action), nullptr};
-}
-
 PlannerBridge::StepOutcome PlannerBridge::fail(const char* reason, const std::string& detail) {
   // Every reason is in results.csv: the log gets a sample, not a line per failed run of a long hunt.
   ROS_INFO_THROTTLE(5, "bridge '%s': episode %u fails as %s: %s", parameters_.config.name.c_str(), episode_id_,
                     reason, detail.c_str());
   active_ = false;
   return StepOutcome{0, reason};
-}
-
-bool PlannerBridge::answers(const nav_msgs::Path& path, Cell robot) const {
-  std::vector<MapPoint> points;
-  // A path in a wrong frame is an answer, and a wrong one: judged by the caller.
-  return !pathPoints(path, parameters_.map_frame, &points).empty() || episode_.fits(points, robot);
 }
 
 }  // namespace agents
