@@ -12,16 +12,11 @@ AgentNode::AgentNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh, con
                      bool in_network_thread)
     : config_(readAgentNodeParameters(private_nh, baseName(node_name))),
       responder_(config_),
-      queue_(in_network_thread ? std::unique_ptr<ros::CallbackQueueInterface>(new ppp_msgs::InlineCallbackQueue)
-                               : std::make_unique<ppp_msgs::HandOverQueue>()),
+      queue_(in_network_thread),
       moves_(nh.advertise<ppp_msgs::MoveBatch>(ppp_msgs::topics::kMoves, 10)),
       scans_(ppp_msgs::subscribeLockstep<ppp_msgs::ScanBatch>(
           nh, ppp_msgs::topics::kScans, 10, [this](const ppp_msgs::ScanBatch::ConstPtr& batch) { onScans(batch); },
           queue_.get())) {
-  if (!in_network_thread) {
-    spinner_ = std::make_unique<ros::AsyncSpinner>(1, static_cast<ros::CallbackQueue*>(queue_.get()));
-    spinner_->start();
-  }
   const std::string topics = scans_.getTopic() + " -> " + moves_.getTopic();
   ROS_INFO("agent '%s': type %s, memory %s, sensor noise %g (applied by the simulator); %s", config_.name.c_str(),
            config_.type.c_str(), memoryWindowText(config_.memory_window).c_str(), config_.sensor_noise,

@@ -9,18 +9,15 @@
 // Topics are relative: start the node as <node name="NAME" ...> (or with ns/remapping) to get /NAME/scans.
 // It runs as a process of its own (agent_node) or as the nodelet ppp_agents/Agent.
 
-#include <memory>
 #include <string>
 
-#include <ros/callback_queue.h>
 #include <ros/ros.h>
 
 #include "ppp_agents/agent_config.hpp"
 #include "ppp_agents/protocol/batch_responder.hpp"
 #include "ppp_msgs/MoveBatch.h"
 #include "ppp_msgs/ScanBatch.h"
-#include "ppp_msgs/hand_over.h"
-#include "ppp_msgs/inline_callback_queue.h"
+#include "ppp_msgs/lockstep_queue.h"
 
 namespace ppp {
 namespace agents {
@@ -41,10 +38,9 @@ class AgentNode {
 
   AgentConfig config_;
   protocol::BatchResponder responder_;
-  std::unique_ptr<ros::CallbackQueueInterface> queue_;  // inline, or handing over with spinner_ for the rest
+  ppp_msgs::LockstepQueue queue_;
   ros::Publisher moves_;
   ros::Subscriber scans_;
-  std::unique_ptr<ros::AsyncSpinner> spinner_;  // the thread of a nodelet's; stops first
 };
 
 }  // namespace agents

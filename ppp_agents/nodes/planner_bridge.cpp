@@ -2,6 +2,8 @@
 
 #include <array>
 
+#include <boost/make_shared.hpp>
+
 #include "planner_bridge_messages.hpp"
 #include "ppp_agents/protocol/batch_codec.hpp"
 #include "ppp_agents/protocol/batch_responder.hpp"
@@ -13,12 +15,13 @@
 namespace ppp {
 namespace agents {
 
-PlannerBridge::PlannerBridge(ros::NodeHandle& nh, const BridgeParameters& parameters)
-    : parameters_(parameters), link_(nh, parameters) {
-  worker_ = std::thread([this] { askPlanner(); });
+PlannerBridge::PlannerBridge(ros::NodeHandle& nh, const BridgeParameters& parameters, bool in_network_thread)
+    : parameters_(parameters), link_(nh, parameters, in_network_thread), scans_queue_(in_network_thread) {
+  if (in_network_thread) worker_ = std::thread([this] { askPlanner(); });
 }
 
 PlannerBridge::~PlannerBridge() {
+  link_.stop();
   scans_.shutdown();
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -32,7 +35,8 @@ void PlannerBridge::serve(ros::NodeHandle& nh) {
   // The simulator sends its first scans once both topics are connected, so none come before the planner.
   moves_ = nh.advertise<ppp_msgs::MoveBatch>(ppp_msgs::topics::kMoves, 10);
   scans_ = ppp_msgs::subscribeLockstep<ppp_msgs::ScanBatch>(
-      nh, ppp_msgs::topics::kScans, 10, [this](const ppp_msgs::ScanBatch::ConstPtr& b) { onScans(b); }, &inline_);
+      nh, ppp_msgs::topics::kScans, 10, [this](const ppp_msgs::ScanBatch::ConstPtr& b) { onScans(b); },
+      scans_queue_.get());
 }
 
 void PlannerBridge::warnOnce(const std::string& kind, const std::string& text) {
@@ -65,6 +69,10 @@ void PlannerBridge::play(const ppp_msgs::ScanBatch::ConstPtr& batch) {
     }
     if (n > 0) {
       const std::optional<StepOutcome> outcome = step(*batch);
+      if (!outcome && !worker_.joinable()) {  // a nodelet asks the planner here, in the scan's thread
+        const StepOutcome answer = request();
+        return reply(*batch, &answer);
+      }
       if (!outcome) {  // a plan request: the worker waits for the answer and replies
         asking_ = batch;
         work_.notify_one();
@@ -91,8 +99,10 @@ void PlannerBridge::reply(const ppp_msgs::ScanBatch& batch, const StepOutcome* o
       replies[0].state = episode_.stateDigest(following_);
     }
   }
-  ppp_msgs::MoveBatch moves = protocol::encodeMoves(parameters_.config.name, batch.batch, replies);
-  moves.header.stamp = ros::Time::now();
+  // A new message per batch, published by pointer: a simulator in the same manager gets this very object.
+  auto moves = boost::make_shared<ppp_msgs::MoveBatch>(protocol::encodeMoves(parameters_.config.name, batch.batch,
+                                                                              replies));
+  moves->header.stamp = ros::Time::now();
   moves_.publish(moves);
 }
 

@@ -20,7 +20,7 @@
 #include "ppp_core/sensor.hpp"
 #include "ppp_msgs/MoveBatch.h"
 #include "ppp_msgs/ScanBatch.h"
-#include "ppp_msgs/inline_callback_queue.h"
+#include "ppp_msgs/lockstep_queue.h"
 
 namespace ppp {
 namespace agents {
@@ -28,17 +28,23 @@ namespace agents {
 /// Plays one agent of type planner: for each step of the simulator's episode (ScanBatch of one scan) it
 /// publishes the robot's world to an external planner (map, odom, tf, scan, goal; docs/reference/planner-interface.md)
 /// and turns the planner's nav_msgs/Path (or, from a local planner, its velocity command) into the step's move, or
-/// into a failure with its reason. A step that
-/// needs no plan request is answered in roscpp's network thread as its scan is read; a plan request is handed to
-/// a worker thread, which waits for the planner's path (read in the network thread) and answers.
+/// into a failure with its reason.
+/// In a process of its own (`in_network_thread`), a step that needs no plan request is answered in roscpp's network
+/// thread as its scan is read; a plan request is handed to a worker thread, which waits for the planner's path (read
+/// in the network thread) and answers. As a nodelet, each step is played where its scan arrives: in the thread of
+/// a simulator of the same manager (ppp_msgs/lockstep_queue.h), where a planner nodelet of the manager answers the
+/// request before its publish returns, so a step wakes no thread.
 class PlannerBridge {
  public:
   /// Advertises and subscribes the planner's topics robot/... in `nh`'s namespace (PlannerLink).
-  PlannerBridge(ros::NodeHandle& nh, const BridgeParameters& parameters);
+  PlannerBridge(ros::NodeHandle& nh, const BridgeParameters& parameters, bool in_network_thread);
   /// Stops the worker.
   ~PlannerBridge();
-  /// Waits up to connect_timeout for the planner (PlannerLink::waitForPlanner). @throws InvalidArgument.
-  void waitForPlanner() { link_.waitForPlanner(); }
+  /// Waits up to connect_timeout for the planner (PlannerLink::waitForPlanner): false when stopped.
+  /// @throws InvalidArgument.
+  bool waitForPlanner() { return link_.waitForPlanner(); }
+  /// Ends waitForPlanner() and any wait for the planner's answer: the node is going.
+  void stop() { link_.stop(); }
   /// Once the planner is there: connects to the simulator in `nh`'s namespace (scans in, moves out), which
   /// waits for both topics before it plays this agent, so no step waits on a planner that is not there yet.
   void serve(ros::NodeHandle& nh);
@@ -94,9 +100,9 @@ class PlannerBridge {
   std::deque<ppp_msgs::ScanBatch::ConstPtr> waiting_;
   bool stopping_ = false;
   Request request_;
-  std::thread worker_;
-  ppp_msgs::InlineCallbackQueue inline_;  // runs onScans in the network thread
-  ros::Subscriber scans_;                 // after inline_: unsubscribes before the queue goes
+  std::thread worker_;  // a process of its own's
+  ppp_msgs::LockstepQueue scans_queue_;
+  ros::Subscriber scans_;  // after scans_queue_: unsubscribes before the queue goes
 
   // The episode being played.
   bool active_ = false;

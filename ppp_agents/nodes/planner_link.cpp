@@ -5,6 +5,9 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/master.h>
 #include <sensor_msgs/LaserScan.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include <boost/make_shared.hpp>
 
 #include <algorithm>
 
@@ -12,6 +15,7 @@
 #include "ppp_msgs/conversions.h"
 #include "ppp_msgs/node_liveness.h"
 #include "ppp_msgs/graph_names.h"
+#include "ppp_msgs/hand_over.h"
 
 namespace ppp {
 namespace agents {
@@ -32,22 +36,23 @@ std::string advertisedType(const std::string& topic) {
 
 }  // namespace
 
-PlannerLink::PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters)
-    : parameters_(parameters), nh_(nh, ppp_msgs::topics::kRobotNamespace) {
+PlannerLink::PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters, bool in_network_thread)
+    : parameters_(parameters), nh_(nh, ppp_msgs::topics::kRobotNamespace), queue_(in_network_thread) {
   map_ = nh_.advertise<nav_msgs::OccupancyGrid>(ppp_msgs::topics::kPlannerMap, 1, true);
   odom_ = nh_.advertise<nav_msgs::Odometry>(ppp_msgs::topics::kPlannerOdom, 10);
   scan_ = nh_.advertise<sensor_msgs::LaserScan>(ppp_msgs::topics::kPlannerScan, 10);
   goal_ = nh_.advertise<geometry_msgs::PoseStamped>(ppp_msgs::topics::kPlannerGoal, 10);
-  // Without Nagle's algorithm (it would hold each answer back 40 ms), in the network thread (no hand-over to a
-  // spinner).
+  tf_ = nh.advertise<tf2_msgs::TFMessage>("/tf", 100);
+  // Without Nagle's algorithm (it would hold each answer back 40 ms).
   if (commandsVelocity(parameters_)) {
     answers_ = ppp_msgs::subscribeLockstep<geometry_msgs::TwistStamped>(
         nh_, ppp_msgs::topics::kPlannerCommand, 10,
-        [this](const geometry_msgs::TwistStamped::ConstPtr& command) { onAnswer(&commands_, *command); }, &queue_);
+        [this](const geometry_msgs::TwistStamped::ConstPtr& command) { onAnswer(&commands_, *command); },
+        queue_.get());
   } else {
     answers_ = ppp_msgs::subscribeLockstep<nav_msgs::Path>(
         nh_, ppp_msgs::topics::kPlannerPath, 10,
-        [this](const nav_msgs::Path::ConstPtr& path) { onAnswer(&paths_, *path); }, &queue_);
+        [this](const nav_msgs::Path::ConstPtr& path) { onAnswer(&paths_, *path); }, queue_.get());
   }
   // The robot's body as costmaps read it, in metres, for planners that plan with a footprint.
   const double radius = parameters_.robot_radius * parameters_.resolution;
@@ -69,11 +74,11 @@ std::string PlannerLink::topics() const {
          answers_.getTopic() + "; tf " + parameters_.map_frame + " -> " + parameters_.base_frame;
 }
 
-void PlannerLink::waitForPlanner() {
+bool PlannerLink::waitForPlanner() {
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(parameters_.connect_timeout);
   std::string wrong_type;
-  for (int poll = 0; ros::ok(); ++poll) {
-    if (goal_.getNumSubscribers() > 0 && connected()) return;
+  for (int poll = 0; running(); ++poll) {
+    if (goal_.getNumSubscribers() > 0 && connected()) return true;
     if (poll % 10 == 0) {
       const std::string type = advertisedType(answers_.getTopic());
       if (!type.empty() && type != answerType()) {
@@ -84,7 +89,7 @@ void PlannerLink::waitForPlanner() {
     if (ros::WallTime::now() >= deadline) break;
     ros::WallDuration(0.05).sleep();  // polling connection counts: there is no event to wait on
   }
-  if (!ros::ok()) return;
+  if (!running()) return false;
   std::string missing = wrong_type;
   const auto add = [&missing](const std::string& text) { missing += (missing.empty() ? "" : "; ") + text; };
   if (wrong_type.empty() && !connected()) {
@@ -145,7 +150,7 @@ std::optional<Message> PlannerLink::waitFor(AnswerInbox<Message>* inbox, const r
   ros::WallTime resend_at = ros::WallTime::now() + ros::WallDuration(1.0);
   std::optional<Message> unusable;  // the last answer that does not fit the request
   std::unique_lock<std::mutex> lock(inbox->mutex);
-  while (ros::ok()) {
+  while (running()) {
     if (inbox->received > inbox->used) {
       inbox->used = inbox->received;
       // An answer stamped before the request answers an earlier one (stamp 0 means "now"). A path that does not
@@ -199,45 +204,49 @@ std::optional<geometry_msgs::TwistStamped> PlannerLink::waitForCommand(
 void PlannerLink::publishState(const ros::Time& stamp, const ros::Time& episode_stamp, const PlannerEpisode& episode,
                                Cell robot, const std::int8_t* window, int range) {
   const MapFrame& frame = episode.frame();
-  nav_msgs::OccupancyGrid map =
+  // New messages, published by pointer and handing over: a planner nodelet of the same manager gets these objects.
+  auto map = boost::make_shared<nav_msgs::OccupancyGrid>(
       ppp_msgs::toFinerOccupancyGrid(episode.known().cells, frame.width, frame.height, parameters_.resolution,
-                                     parameters_.cells_per_ppp_cell, parameters_.map_frame);
-  map.header.stamp = stamp;
-  map.info.map_load_time = episode_stamp;
-  map_.publish(map);
+                                     parameters_.cells_per_ppp_cell, parameters_.map_frame));
+  map->header.stamp = stamp;
+  map->info.map_load_time = episode_stamp;
+  ppp_msgs::publishHandingOver(map_, map);
   publishPose(stamp, episode, robot, window, range);
 }
 
 void PlannerLink::publishPose(const ros::Time& stamp, const PlannerEpisode& episode, Cell robot,
                               const std::int8_t* window, int range) {
   const MapFrame& frame = episode.frame();
-  geometry_msgs::TransformStamped transform =
-      ppp_msgs::cellTransform(frame, robot, parameters_.map_frame, parameters_.base_frame);
-  transform.header.stamp = stamp;
-  tf_.sendTransform(transform);
+  auto transforms = boost::make_shared<tf2_msgs::TFMessage>();
+  transforms->transforms.push_back(
+      ppp_msgs::cellTransform(frame, robot, parameters_.map_frame, parameters_.base_frame));
+  const geometry_msgs::TransformStamped& transform = transforms->transforms.back();
+  transforms->transforms.back().header.stamp = stamp;
+  ppp_msgs::publishHandingOver(tf_, transforms);
 
-  nav_msgs::Odometry odom;
-  odom.header = transform.header;
-  odom.child_frame_id = parameters_.base_frame;
-  odom.pose.pose.position.x = transform.transform.translation.x;
-  odom.pose.pose.position.y = transform.transform.translation.y;
-  odom.pose.pose.orientation.w = 1.0;
-  odom_.publish(odom);
+  auto odom = boost::make_shared<nav_msgs::Odometry>();
+  odom->header = transform.header;
+  odom->child_frame_id = parameters_.base_frame;
+  odom->pose.pose.position.x = transform.transform.translation.x;
+  odom->pose.pose.position.y = transform.transform.translation.y;
+  odom->pose.pose.orientation.w = 1.0;
+  ppp_msgs::publishHandingOver(odom_, odom);
 
   if (scan_.getNumSubscribers() == 0) return;  // rays cost a cast each: only for a planner that reads them
-  sensor_msgs::LaserScan laser = ppp_msgs::toLaserScan(window, range, parameters_.resolution, parameters_.base_frame);
-  laser.header.stamp = stamp;
-  scan_.publish(laser);
+  auto laser = boost::make_shared<sensor_msgs::LaserScan>(
+      ppp_msgs::toLaserScan(window, range, parameters_.resolution, parameters_.base_frame));
+  laser->header.stamp = stamp;
+  ppp_msgs::publishHandingOver(scan_, laser);
 }
 
 void PlannerLink::publishGoal(const ros::Time& stamp, const PlannerEpisode& episode) {
-  geometry_msgs::PoseStamped goal;
-  goal.header.stamp = stamp;
-  goal.header.frame_id = parameters_.map_frame;
-  goal.pose.position.x = episode.frame().centreX(episode.goal());
-  goal.pose.position.y = episode.frame().centreY(episode.goal());
-  goal.pose.orientation.w = 1.0;
-  goal_.publish(goal);
+  auto goal = boost::make_shared<geometry_msgs::PoseStamped>();
+  goal->header.stamp = stamp;
+  goal->header.frame_id = parameters_.map_frame;
+  goal->pose.position.x = episode.frame().centreX(episode.goal());
+  goal->pose.position.y = episode.frame().centreY(episode.goal());
+  goal->pose.orientation.w = 1.0;
+  ppp_msgs::publishHandingOver(goal_, goal);
 }
 
 }  // namespace agents

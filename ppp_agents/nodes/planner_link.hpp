@@ -1,8 +1,8 @@
 #pragma once
 
 #include <ros/ros.h>
-#include <tf2_ros/transform_broadcaster.h>
 
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -14,7 +14,7 @@
 #include "nav_msgs/Path.h"
 #include "planner_bridge_parameters.hpp"
 #include "ppp_agents/planner_episode.hpp"
-#include "ppp_msgs/inline_callback_queue.h"
+#include "ppp_msgs/lockstep_queue.h"
 
 namespace ppp {
 namespace agents {
@@ -38,14 +38,19 @@ struct AnswerInbox {
 /// The planner bridge's side towards the external planner (docs/reference/planner-interface.md): publishes what the robot
 /// knows (map, odom, tf, scan) and plan requests (goal) in robot/..., and takes the planner's answers (paths on
 /// `plan`, or velocity commands on `cmd_vel` as the bridge's `interface` says) on a callback queue of its own, so
-/// that a step can wait for one.
+/// that a step can wait for one. It publishes handing over (ppp_msgs/hand_over.h): a planner nodelet of the same
+/// manager answers in the publishing thread, and its answer is in before the publish returns.
 class PlannerLink {
  public:
-  /// Advertises and subscribes in `nh`'s robot/ namespace.
-  PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters);
+  /// Advertises and subscribes in `nh`'s robot/ namespace; answers are read in roscpp's network thread
+  /// (`in_network_thread`: a process of its own) or as ppp_msgs::LockstepQueue reads them for a nodelet.
+  PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters, bool in_network_thread);
   /// Waits up to connect_timeout for the planner to subscribe to the goal and publish its answer topic.
+  /// @return false when stop() or ROS's shutdown ended the wait.
   /// @throws InvalidArgument naming each topic that is missing or has the wrong type.
-  void waitForPlanner();
+  bool waitForPlanner();
+  /// Ends waitForPlanner() and any wait for an answer within 50 ms: the node is going.
+  void stop() { stopping_ = true; }
   /// The planner-side topic names, for the log.
   std::string topics() const;
   /// Publishes the robot's world at `stamp`: the episode's known map (its map_load_time `episode_stamp`, the stamp
@@ -90,12 +95,16 @@ class PlannerLink {
   /// The answer topic's type, as the master names it.
   const char* answerType() const;
 
+  /// True while the node runs (ROS is up and stop() was not called).
+  bool running() const { return ros::ok() && !stopping_; }
+
   BridgeParameters parameters_;
+  std::atomic<bool> stopping_{false};
   ros::NodeHandle nh_;  // robot/...
-  ppp_msgs::InlineCallbackQueue queue_;  // the answer subscription's: onAnswer runs in roscpp's network thread
   ros::Publisher map_, odom_, scan_, goal_;
+  ros::Publisher tf_;  // /tf as the node's remappings name it (a nodelet's too)
+  ppp_msgs::LockstepQueue queue_;  // the answer subscription's
   ros::Subscriber answers_;  // plan or cmd_vel
-  tf2_ros::TransformBroadcaster tf_;
   bool answered_ = false;     // the planner sent a path during this episode
   ros::WallTime next_probe_;  // when gone() may ask the planner's process again
 

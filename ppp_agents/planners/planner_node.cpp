@@ -2,6 +2,8 @@
 
 #include <nav_msgs/Path.h>
 
+#include <boost/make_shared.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -9,19 +11,15 @@
 
 #include "ppp_core/error.hpp"
 #include "ppp_msgs/graph_names.h"
-#include "ppp_msgs/inline_callback_queue.h"
+#include "ppp_msgs/hand_over.h"
 
 namespace ppp {
 namespace planners {
 
 namespace {
 
-/// How long a request waits for its map and pose.
-constexpr std::chrono::seconds kRequestWait{1};
 /// Odometry messages kept to find a request's pose by its stamp (a free-running bridge may be a few steps ahead).
 constexpr std::size_t kPosesKept = 64;
-/// How often run() looks at ros::ok() while idle.
-constexpr std::chrono::milliseconds kIdlePoll{100};
 
 }  // namespace
 
@@ -35,18 +33,20 @@ GridMap gridMapOf(const nav_msgs::OccupancyGrid& map, bool unknown_is_free, doub
                  unknown_is_free, inflation);
 }
 
-PlannerNode::PlannerNode(ros::NodeHandle& nh, PlannerNodeOptions options, PlanFunction plan)
+PlannerNode::PlannerNode(ros::NodeHandle& nh, PlannerNodeOptions options, PlanFunction plan, bool in_network_thread)
     : options_(std::move(options)),
       plan_(std::move(plan)),
       plan_publisher_(nh.advertise<nav_msgs::Path>(ppp_msgs::topics::kPlannerPath, 1, true)),
+      queue_(in_network_thread),
       map_subscriber_(ppp_msgs::subscribeLockstep<nav_msgs::OccupancyGrid>(
           nh, ppp_msgs::topics::kPlannerMap, 1, [this](const nav_msgs::OccupancyGrid::ConstPtr& m) { onMap(m); },
-          &inline_)),
+          queue_.get())),
       odom_subscriber_(ppp_msgs::subscribeLockstep<nav_msgs::Odometry>(
-          nh, ppp_msgs::topics::kPlannerOdom, 1, [this](const nav_msgs::Odometry::ConstPtr& o) { onOdom(o); }, &inline_)),
+          nh, ppp_msgs::topics::kPlannerOdom, 1, [this](const nav_msgs::Odometry::ConstPtr& o) { onOdom(o); },
+          queue_.get())),
       goal_subscriber_(ppp_msgs::subscribeLockstep<geometry_msgs::PoseStamped>(
           nh, ppp_msgs::topics::kPlannerGoal, 1, [this](const geometry_msgs::PoseStamped::ConstPtr& g) { onGoal(g); },
-          &inline_)) {}
+          queue_.get())) {}
 
 std::string PlannerNode::topics() const {
   return map_subscriber_.getTopic() + ", " + goal_subscriber_.getTopic() + " -> " + plan_publisher_.getTopic() +
@@ -55,20 +55,24 @@ std::string PlannerNode::topics() const {
 }
 
 void PlannerNode::onMap(const nav_msgs::OccupancyGrid::ConstPtr& map) {
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    map_ = map;
-  }
-  changed_.notify_all();
+  std::lock_guard<std::mutex> lock(mutex_);
+  map_ = map;
+  serveReady();
 }
 
 void PlannerNode::onOdom(const nav_msgs::Odometry::ConstPtr& odom) {
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    poses_.push_back(odom);
-    if (poses_.size() > kPosesKept) poses_.pop_front();
-  }
-  changed_.notify_all();
+  std::lock_guard<std::mutex> lock(mutex_);
+  poses_.push_back(odom);
+  if (poses_.size() > kPosesKept) poses_.pop_front();
+  serveReady();
+}
+
+void PlannerNode::onGoal(const geometry_msgs::PoseStamped::ConstPtr& goal) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  goal_ = goal;
+  goal_pending_ = true;
+  goal_reached_ = false;
+  serveReady();
 }
 
 nav_msgs::Odometry::ConstPtr PlannerNode::poseAt(const ros::Time& stamp) const {
@@ -79,75 +83,36 @@ nav_msgs::Odometry::ConstPtr PlannerNode::poseAt(const ros::Time& stamp) const {
   return found;
 }
 
-void PlannerNode::onGoal(const geometry_msgs::PoseStamped::ConstPtr& goal) {
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    goal_ = goal;
-    goal_pending_ = true;
-    goal_reached_ = false;
-  }
-  changed_.notify_all();
-}
-
 bool PlannerNode::replanDue() const {
   // The bridge republishes the map every step; only a map that says something new is worth a new plan.
   return options_.replan_on_map && goal_ && !goal_reached_ && map_ && map_ != planned_map_ &&
          (!planned_map_ || map_->data != planned_map_->data);
 }
 
-bool PlannerNode::nextRequest(Request* request) {
-  std::unique_lock<std::mutex> lock(mutex_);
-  if (!changed_.wait_for(lock, kIdlePoll, [this] { return goal_pending_ || replanDue(); })) return false;
-  request->deadline = std::chrono::steady_clock::now() + kRequestWait;
-  request->goal = goal_;
-  request->replan = !goal_pending_;
-  if (goal_pending_) {
-    // The bridge publishes map and pose, then the goal, all with one stamp: wait for that map.
-    goal_pending_ = false;
-    const ros::Time stamp = goal_->header.stamp;
-    changed_.wait_until(lock, request->deadline,
-                        [this, stamp] { return goal_pending_ || (map_ && map_->header.stamp >= stamp); });
-    if (goal_pending_) return false;  // a newer goal replaces this one
-  }
-  request->map = map_;
-  request->pose_stamp = request->replan ? map_->header.stamp : goal_->header.stamp;
-  planned_map_ = map_;
-  // The bridge sends the pose as odometry (and tf) with the step's stamp: wait for it.
-  const ros::Time pose_stamp = request->pose_stamp;
-  const bool arrived = changed_.wait_until(
-      lock, request->deadline, [this, pose_stamp] { return !poses_.empty() && poses_.back()->header.stamp >= pose_stamp; });
-  request->pose = arrived ? poseAt(pose_stamp) : nullptr;  // never an older pose than the request's
-  return true;
-}
-
-void PlannerNode::run() {
-  ros::AsyncSpinner spinner(1);
-  spinner.start();
+void PlannerNode::serveReady() {
   Request request;
-  while (ros::ok()) {
-    if (nextRequest(&request)) serve(request);
+  request.goal = goal_;
+  if (goal_pending_) {
+    // The bridge publishes map and pose, then the goal, all with one stamp: the goal waits for them.
+    request.pose_stamp = goal_->header.stamp;
+    if (!map_ || map_->header.stamp < request.pose_stamp || !hasPoseAt(request.pose_stamp)) return;
+    goal_pending_ = false;
+  } else {
+    if (!replanDue() || !hasPoseAt(map_->header.stamp)) return;
+    request.replan = true;
+    request.pose_stamp = map_->header.stamp;
   }
+  request.map = map_;
+  request.pose = poseAt(request.pose_stamp);  // never an older pose than the request's
+  planned_map_ = map_;
+  serve(request);
 }
 
 void PlannerNode::serve(const Request& request) {
   const geometry_msgs::PoseStamped& goal = *request.goal;
-  if (!request.map) {
-    ROS_WARN("goal stamped %.3f: no map within %lld s; not planning", goal.header.stamp.toSec(),
-             static_cast<long long>(kRequestWait.count()));
-    return;
-  }
   if (!goal.header.frame_id.empty() && goal.header.frame_id != options_.frames.map_frame) {
     ROS_WARN("goal in frame '%s', expected '%s'; not planning", goal.header.frame_id.c_str(),
              options_.frames.map_frame.c_str());
-    return;
-  }
-  if (request.map->header.stamp < goal.header.stamp) {
-    ROS_WARN("goal stamped %.3f: planning on the older map stamped %.3f", goal.header.stamp.toSec(),
-             request.map->header.stamp.toSec());
-  }
-  if (!request.pose) {
-    ROS_WARN("no robot pose (odometry) as new as %.3f within %lld s; not planning", request.pose_stamp.toSec(),
-             static_cast<long long>(kRequestWait.count()));
     return;
   }
   const nav_msgs::Odometry& pose = *request.pose;
@@ -166,8 +131,7 @@ void PlannerNode::serve(const Request& request) {
                         map.frame().height * map.frame().resolution);
     }
     if (request.replan && robot == target) {
-      std::lock_guard<std::mutex> lock(mutex_);
-      if (goal_ == request.goal) goal_reached_ = true;
+      goal_reached_ = true;
       return;
     }
     if (keepsLastPlan(request, map, robot, target)) {
@@ -206,17 +170,18 @@ bool PlannerNode::keepsLastPlan(const Request& request, const GridMap& map, Cell
 }
 
 void PlannerNode::publish(const std::vector<MapPoint>& waypoints, const ros::Time& stamp) {
-  nav_msgs::Path path;
-  path.header.frame_id = options_.frames.map_frame;
-  path.header.stamp = stamp;
-  path.poses.resize(waypoints.size());
+  // A new message per plan, published by pointer: a bridge in the same manager gets this very object.
+  auto path = boost::make_shared<nav_msgs::Path>();
+  path->header.frame_id = options_.frames.map_frame;
+  path->header.stamp = stamp;
+  path->poses.resize(waypoints.size());
   for (std::size_t i = 0; i < waypoints.size(); ++i) {
-    path.poses[i].header = path.header;
-    path.poses[i].pose.position.x = waypoints[i].x;
-    path.poses[i].pose.position.y = waypoints[i].y;
-    path.poses[i].pose.orientation.w = 1.0;
+    path->poses[i].header = path->header;
+    path->poses[i].pose.position.x = waypoints[i].x;
+    path->poses[i].pose.position.y = waypoints[i].y;
+    path->poses[i].pose.orientation.w = 1.0;
   }
-  plan_publisher_.publish(path);
+  ppp_msgs::publishHandingOver(plan_publisher_, path);
 }
 
 }  // namespace planners

@@ -5,8 +5,6 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 
-#include <chrono>
-#include <condition_variable>
 #include <deque>
 #include <functional>
 #include <mutex>
@@ -14,7 +12,7 @@
 #include <vector>
 
 #include "grid_map.hpp"
-#include "ppp_msgs/inline_callback_queue.h"
+#include "ppp_msgs/lockstep_queue.h"
 #include "planner_node_parameters.hpp"
 
 namespace ppp {
@@ -37,54 +35,49 @@ struct PlannerNodeOptions {
 
 /// The ROS side of the example planners (docs/reference/planner-interface.md): keeps the newest `map`, answers every
 /// `move_base_simple/goal` with a nav_msgs/Path on `plan` once it holds a map at least as new as the goal and
-/// the robot's pose at the goal's stamp (`odom`, frame map_frame, child base_frame; waiting at most 1 s for them),
-/// and, with replan_on_map, plans again on every new map. A plan is stamped with the stamp of the pose it starts
-/// from (the goal's; a re-plan's map's); no path gives an empty Path. A request the last plan still answers
-/// (the same state, or the robot further along it on an unchanged map: a lockstep bridge asks every step) is
-/// answered with that plan again, not a new one. The inputs' callbacks run in roscpp's network thread while run() plans.
+/// the robot's pose at the goal's stamp (`odom`, frame map_frame, child base_frame; a newer goal replaces one still
+/// waiting for them), and, with replan_on_map, plans again on every new map. A plan is stamped with the stamp of the
+/// pose it starts from (the goal's; a re-plan's map's); no path gives an empty Path. A request the last plan still
+/// answers (the same state, or the robot further along it on an unchanged map: a lockstep bridge asks every step) is
+/// answered with that plan again, not a new one. It plans in the callback that completes a request, so no thread
+/// waits for another: in roscpp's network thread (a process of its own), or, as a nodelet, in the thread of a bridge
+/// of the same manager that published the input (ppp_msgs/lockstep_queue.h).
 class PlannerNode {
  public:
-  /// Subscribes and advertises in the node's namespace; plans with `plan`.
-  PlannerNode(ros::NodeHandle& nh, PlannerNodeOptions options, PlanFunction plan);
-
-  /// Serves plan requests until ROS shuts down.
-  void run();
+  /// Subscribes and advertises in the node's namespace; plans with `plan`. `in_network_thread`: a process of its own.
+  PlannerNode(ros::NodeHandle& nh, PlannerNodeOptions options, PlanFunction plan, bool in_network_thread);
 
   /// The resolved topic names, for the log.
   std::string topics() const;
 
  private:
-  /// One planning job: the goal, the newest map, the stamp of the pose, and the pose (null when none came).
+  /// One planning job: the goal, the newest map, the stamp of the pose, and the pose.
   struct Request {
     geometry_msgs::PoseStamped::ConstPtr goal;
     nav_msgs::OccupancyGrid::ConstPtr map;
     ros::Time pose_stamp;
     nav_msgs::Odometry::ConstPtr pose;
     bool replan = false;
-    std::chrono::steady_clock::time_point deadline;
   };
 
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& map);
   void onOdom(const nav_msgs::Odometry::ConstPtr& odom);
   void onGoal(const geometry_msgs::PoseStamped::ConstPtr& goal);
-  /// The newest odometry stamped no later than `stamp`, or null (mutex_ held).
+  /// The newest odometry stamped no later than `stamp`, or null.
   nav_msgs::Odometry::ConstPtr poseAt(const ros::Time& stamp) const;
+  /// True when odometry as new as `stamp` has come.
+  bool hasPoseAt(const ros::Time& stamp) const { return !poses_.empty() && poses_.back()->header.stamp >= stamp; }
   bool replanDue() const;
-  bool nextRequest(Request* request);
+  /// Serves the pending goal once its map and pose are in, else a re-plan that is due once its pose is in.
+  void serveReady();
   void serve(const Request& request);
   bool keepsLastPlan(const Request& request, const GridMap& map, Cell robot, Cell target) const;
   void publish(const std::vector<MapPoint>& waypoints, const ros::Time& stamp);
 
   PlannerNodeOptions options_;
   PlanFunction plan_;
-  ros::Publisher plan_publisher_;
-  ppp_msgs::InlineCallbackQueue inline_;  // the inputs' callbacks run as they are read: each only stores and signals
-  ros::Subscriber map_subscriber_;
-  ros::Subscriber odom_subscriber_;
-  ros::Subscriber goal_subscriber_;
   bool plan_time_logged_ = false;
-  // The last plan (used by run()'s thread only): what a request for the same state, or a step along it on the
-  // same map, is answered with again.
+  // The last plan: what a request for the same state, or a step along it on the same map, is answered with again.
   struct LastPlan {
     std::vector<MapPoint> waypoints;
     Cell from{-1, -1};
@@ -93,14 +86,19 @@ class PlannerNode {
     nav_msgs::OccupancyGrid::ConstPtr map;
   } last_plan_;
 
-  std::mutex mutex_;  // guards the members below, shared with the callbacks
-  std::condition_variable changed_;
+  std::mutex mutex_;  // held by each callback: a nodelet's may run in two threads (a publisher's and its own)
   nav_msgs::OccupancyGrid::ConstPtr map_;
   geometry_msgs::PoseStamped::ConstPtr goal_;
   bool goal_pending_ = false;                      // goal_ has not been planned for yet
   bool goal_reached_ = false;                      // a re-plan found the robot on goal_
-  nav_msgs::OccupancyGrid::ConstPtr planned_map_;  // the newest map when the last request was taken
+  nav_msgs::OccupancyGrid::ConstPtr planned_map_;  // the newest map when the last request was served
   std::deque<nav_msgs::Odometry::ConstPtr> poses_;  // the newest odometry messages, oldest first
+
+  ros::Publisher plan_publisher_;
+  ppp_msgs::LockstepQueue queue_;  // before the subscriptions: they unsubscribe first
+  ros::Subscriber map_subscriber_;
+  ros::Subscriber odom_subscriber_;
+  ros::Subscriber goal_subscriber_;
 };
 
 }  // namespace planners

@@ -10,6 +10,7 @@ add_library(ppp_planners STATIC
   planners/ompl_grid_planner.cpp
   planners/planner_node_options.cpp
 )
+set_target_properties(ppp_planners PROPERTIES POSITION_INDEPENDENT_CODE ON)  # linked into the nodelet library
 target_include_directories(ppp_planners PUBLIC planners ${ppp_core_INCLUDE_DIRS} ${CMAKE_CURRENT_SOURCE_DIR}/../ppp_msgs/include)
 target_include_directories(ppp_planners SYSTEM PUBLIC ${OMPL_INCLUDE_DIRS})
 target_link_libraries(ppp_planners PUBLIC ${ppp_core_LIBRARIES} ${OMPL_LIBRARIES})
@@ -18,28 +19,42 @@ target_compile_options(ppp_planners PRIVATE -Wall -Wextra)
 # MRPT's wavefront planner and holonomic reactive navigators, in a library of their own so only their nodes and
 # tests link MRPT.
 add_library(ppp_planners_mrpt STATIC planners/mrpt_grid_planner.cpp planners/mrpt_reactive_navigator.cpp)
+set_target_properties(ppp_planners_mrpt PROPERTIES POSITION_INDEPENDENT_CODE ON)
 target_link_libraries(ppp_planners_mrpt PUBLIC ppp_planners mrpt::nav)
 target_compile_options(ppp_planners_mrpt PRIVATE -Wall -Wextra)
 
-add_library(ppp_planners_ros STATIC planners/planner_node.cpp planners/planner_node_parameters.cpp)
+# The nodes' ROS glue and node classes, shared by the executables and the nodelet library.
+add_library(ppp_planners_ros STATIC planners/planner_node.cpp planners/planner_node_parameters.cpp
+  planners/optimistic_planner_node.cpp planners/ompl_planner_node.cpp)
+set_target_properties(ppp_planners_ros PROPERTIES POSITION_INDEPENDENT_CODE ON)  # linked into the nodelet library
 target_include_directories(ppp_planners_ros SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
 target_link_libraries(ppp_planners_ros PUBLIC ppp_planners ${catkin_LIBRARIES})
 target_compile_options(ppp_planners_ros PRIVATE -Wall -Wextra)
 add_dependencies(ppp_planners_ros ${catkin_EXPORTED_TARGETS})
+add_library(ppp_planners_mrpt_ros STATIC planners/mrpt_planner_node.cpp planners/mrpt_reactive_node.cpp)
+set_target_properties(ppp_planners_mrpt_ros PROPERTIES POSITION_INDEPENDENT_CODE ON)
+target_link_libraries(ppp_planners_mrpt_ros PUBLIC ppp_planners_ros ppp_planners_mrpt)
+target_compile_options(ppp_planners_mrpt_ros PRIVATE -Wall -Wextra)
 
-foreach(node optimistic_planner_node ompl_planner_node)
-  add_executable(${node} planners/${node}.cpp)
-  target_link_libraries(${node} ppp_planners_ros)
-  target_compile_options(${node} PRIVATE -Wall -Wextra)
+# Each node as a process of its own (NAME_node, from NAME_main.cpp) ...
+foreach(node optimistic_planner ompl_planner)
+  add_executable(${node}_node planners/${node}_main.cpp)
+  target_link_libraries(${node}_node ppp_planners_ros)
+  target_compile_options(${node}_node PRIVATE -Wall -Wextra)
 endforeach()
-add_executable(mrpt_planner_node planners/mrpt_planner_node.cpp)
-target_link_libraries(mrpt_planner_node ppp_planners_ros ppp_planners_mrpt)
-target_compile_options(mrpt_planner_node PRIVATE -Wall -Wextra)
-add_executable(mrpt_reactive_node planners/mrpt_reactive_node.cpp)
-target_link_libraries(mrpt_reactive_node ppp_planners_ros ppp_planners_mrpt)
-target_compile_options(mrpt_reactive_node PRIVATE -Wall -Wextra)
+foreach(node mrpt_planner mrpt_reactive)
+  add_executable(${node}_node planners/${node}_main.cpp)
+  target_link_libraries(${node}_node ppp_planners_mrpt_ros)
+  target_compile_options(${node}_node PRIVATE -Wall -Wextra)
+endforeach()
+# ... and as nodelets (nodelet_plugins.xml).
+add_library(ppp_planners_nodelets planners/planner_nodelets.cpp)
+target_link_libraries(ppp_planners_nodelets ppp_planners_mrpt_ros)
+target_compile_options(ppp_planners_nodelets PRIVATE -Wall -Wextra)
 
-install(TARGETS optimistic_planner_node ompl_planner_node mrpt_planner_node mrpt_reactive_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+install(TARGETS optimistic_planner_node ompl_planner_node mrpt_planner_node mrpt_reactive_node ppp_planners_nodelets
+  RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION}
+  LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 # simple_planner.py, and two variants of it with a classic, rare fault each, for hunting
 # (docs/tutorials/hunt-your-planner.md).
 catkin_install_python(PROGRAMS scripts/simple_planner.py scripts/horizon_planner.py scripts/greedy_planner.py

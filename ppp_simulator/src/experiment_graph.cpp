@@ -1,6 +1,7 @@
 #include "ppp_simulator/experiment_graph.hpp"
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "ppp_core/error.hpp"
@@ -78,18 +79,35 @@ ppp_msgs::GraphNode generatorNode(const ExperimentConfig& config, const SetSpec&
   return node;
 }
 
-/// Makes `node` the nodelet `type` in `manager` (when there is one).
+/// Makes `node` the nodelet `type` in `manager` (when there is one), named from the node's namespace.
 void loadInto(const std::string& manager, const std::string& type, ppp_msgs::GraphNode* node) {
   if (manager.empty()) return;
   node->nodelet = type;
-  node->manager = manager;
+  node->manager = node->group.empty() && node->ns.empty() ? manager : "/" + manager;
+}
+
+/// True when `agent`'s nodes may load into the experiment's manager: it asks for no process of its own and runs on
+/// this host.
+bool inManager(const agents::AgentConfig& agent) {
+  return agent.process == agents::kProcessManager && agent.host.empty();
+}
+
+/// The nodelet of a planner executable of this repository's, or "" (a planner of the user's runs as its process).
+std::string plannerNodelet(const std::string& package, const std::string& type) {
+  static const std::map<std::string, std::string> nodelets = {
+      {"optimistic_planner_node", "ppp_agents/OptimisticPlanner"},
+      {"ompl_planner_node", "ppp_agents/OmplPlanner"},
+      {"mrpt_planner_node", "ppp_agents/MrptPlanner"},
+      {"mrpt_reactive_node", "ppp_agents/MrptReactive"}};
+  const auto found = nodelets.find(type);
+  return package == "ppp_agents" && found != nodelets.end() ? found->second : "";
 }
 
 /// The agent node of `agent`, a nodelet in `manager` ("" for none) unless the agent asks for a process of its own
 /// or runs on another host.
 ppp_msgs::GraphNode agentNode(const agents::AgentConfig& agent, const std::string& manager) {
   ppp_msgs::GraphNode node{"ppp_agents", "agent_node", agents::agentGraphName(agent.name)};
-  if (agent.process == agents::kProcessManager && agent.host.empty()) loadInto(manager, "ppp_agents/Agent", &node);
+  if (inManager(agent)) loadInto(manager, "ppp_agents/Agent", &node);
   node.machine = machineOf(agent);
   node.agent = agent.name;
   addParams(agents::agentNodeOptionSpecs(), agent, &node);
@@ -109,8 +127,11 @@ double plannerConnectTimeout(const agents::AgentConfig& agent) {
 constexpr double kBridgeConnectMargin = 10.0;
 
 /// The bridge of each instance of a planner agent (told the robot's radius) and, when the config names it, its
-/// planner, in the instance's namespace (agents::instanceGraphName).
-std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, double robot_radius) {
+/// planner, in the instance's namespace (agents::instanceGraphName); nodelets of `manager` ("" for none) unless the
+/// agent asks for processes of its own or runs on another host (and the planner, unless it is one of ours).
+std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, double robot_radius,
+                                              const std::string& manager) {
+  const std::string in_manager = inManager(agent) ? manager : "";
   const std::size_t slash = agent.planner_node.find('/');
   const std::string package = agent.planner_node.substr(0, slash);
   const std::string type = slash == std::string::npos ? "" : agent.planner_node.substr(slash + 1);
@@ -132,6 +153,7 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, 
     addParams(named, agent, &bridge);
     addParams(written, options, &bridge);
     if (type.empty()) {  // the user starts the planner, on the global /tf
+      loadInto(in_manager, "ppp_agents/PlannerBridge", &bridge);
       nodes.push_back(bridge);
       continue;
     }
@@ -139,6 +161,7 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, 
     // take every instance's and every other planner's poses, a cost per step growing with their number.
     const std::string ns = "/" + bridge.group + "/";
     bridge.remaps = {{"/tf", ns + "tf"}, {"/tf_static", ns + "tf_static"}};
+    loadInto(in_manager, "ppp_agents/PlannerBridge", &bridge);
     nodes.push_back(bridge);
     ppp_msgs::GraphNode planner{package, type, ppp_msgs::nodes::kPlanner};
     planner.group = bridge.group;
@@ -147,6 +170,8 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, 
     planner.agent = agent.name;
     planner.args = agent.planner_args;
     planner.remaps = bridge.remaps;
+    const std::string nodelet = plannerNodelet(package, type);
+    if (!nodelet.empty()) loadInto(in_manager, nodelet, &planner);
     nodes.push_back(planner);
   }
   return nodes;
@@ -311,7 +336,7 @@ ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const Grap
   graph.nodes.push_back(simulator);
   for (const agents::AgentConfig& agent : agents) {
     if (agents::isPlanner(agent)) {
-      for (ppp_msgs::GraphNode& node : plannerNodes(agent, config.episode.robot_radius)) graph.nodes.push_back(std::move(node));
+      for (ppp_msgs::GraphNode& node : plannerNodes(agent, config.episode.robot_radius, manager)) graph.nodes.push_back(std::move(node));
     } else {
       graph.nodes.push_back(agentNode(agent, manager));
     }

@@ -43,21 +43,36 @@ def instance_namespaces(name, count):
 
 # The executable each of the graph's nodelet types wraps: a nodelet and its node play the same role.
 NODELET_EXECUTABLES = {'ppp_agents/Agent': 'agent_node', 'ppp_generator/Generator': 'generator_node',
-                       'ppp_simulator/Simulator': 'simulator_node'}
+                       'ppp_simulator/Simulator': 'simulator_node', 'ppp_agents/PlannerBridge': 'planner_bridge_node',
+                       'ppp_agents/OptimisticPlanner': 'optimistic_planner_node',
+                       'ppp_agents/OmplPlanner': 'ompl_planner_node', 'ppp_agents/MrptPlanner': 'mrpt_planner_node',
+                       'ppp_agents/MrptReactive': 'mrpt_reactive_node'}
 
 
 def nodelet_of(node):
-    """The nodelet type a `nodelet load TYPE MANAGER --no-bond` node loads, or None."""
+    """The nodelet type a `nodelet load TYPE MANAGER --no-bond [ARGS]` node loads, or None."""
     args = node.args.split()
-    if node.type != 'nodelet' or len(args) != 4 or args[0] != 'load':
+    if node.type != 'nodelet' or len(args) < 4 or args[0] != 'load':
         return None
-    assert args[2:] == ['nodelet_manager', '--no-bond'], node.args
+    # The manager's name resolves in the node's namespace: absolute from any other than the root.
+    manager = 'nodelet_manager' if node.namespace == '/' else '/nodelet_manager'
+    assert args[2:4] == [manager, '--no-bond'], node.args
     return args[1]
+
+
+def node_args(node):
+    """The arguments a node, or the nodelet it loads, is given (private parameters as _NAME:=VALUE)."""
+    return ' '.join(node.args.split()[4:]) if nodelet_of(node) else node.args
 
 
 def role(node):
     """The executable a node runs, or the one its nodelet wraps."""
     return NODELET_EXECUTABLES[nodelet_of(node)] if nodelet_of(node) else node.type
+
+
+def executable(node):
+    """PACKAGE/EXECUTABLE of a node, or of the executable its nodelet wraps."""
+    return (nodelet_of(node).split('/')[0] if nodelet_of(node) else node.package) + '/' + role(node)
 
 
 # Instances of a planner the experiment starts, when the config does not say (ppp::agents::instanceCount).
@@ -194,16 +209,21 @@ class DefaultGraphTest(unittest.TestCase):
     def test_one_bridge_and_its_planner_per_instance_of_a_planner_agent(self):
         planners = [a for a in self.agents if a['type'] == 'planner']
         self.assertEqual(len(planners), 4)
-        bridges = sorted(n.namespace for n in self.config.nodes if n.type == 'planner_bridge_node')
+        bridges = sorted(n.namespace for n in self.config.nodes if role(n) == 'planner_bridge_node')
         self.assertEqual(bridges, sorted(ns for a in planners for ns in instance_namespaces(a['name'], CORES)))
         for agent in planners:
             for namespace in instance_namespaces(agent['name'], CORES):
                 self.assertEqual(self.params[namespace + 'bridge/memory'], agent.get('memory', 'full'))
                 self.assertEqual(self.params[namespace + 'bridge/name'], agent['name'])
                 planner_nodes = [n for n in self.config.nodes if n.namespace == namespace + 'robot/']
-                self.assertEqual(['%s/%s' % (n.package, n.type) for n in planner_nodes], [agent['planner_node']])
+                self.assertEqual([executable(n) for n in planner_nodes], [agent['planner_node']])
+                # The example planners are nodelets of the manager beside their bridges, asked in the simulator's
+                # thread.
+                self.assertEqual([nodelet_of(n) for n in planner_nodes],
+                                 [k for k, v in NODELET_EXECUTABLES.items() if 'ppp_agents/' + v == agent['planner_node']])
                 # Each instance's bridge and planner talk tf in their namespace, not on the global /tf.
-                bridge = [n for n in self.config.nodes if n.namespace == namespace and n.type == 'planner_bridge_node']
+                bridge = [n for n in self.config.nodes if n.namespace == namespace and role(n) == 'planner_bridge_node']
+                self.assertEqual([nodelet_of(n) for n in bridge], ['ppp_agents/PlannerBridge'])
                 for node in bridge + planner_nodes:
                     self.assertIn(['/tf', namespace + 'tf'], [list(r) for r in node.remap_args])
                     self.assertIn(['/tf_static', namespace + 'tf_static'], [list(r) for r in node.remap_args])
@@ -283,15 +303,20 @@ class DefaultGraphTest(unittest.TestCase):
     def test_a_planner_named_on_the_command_line_replaces_the_configured_one(self):
         config, _ = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--planner',
                                'optimistic=ppp_agents/simple_planner.py', '--planner', 'ompl=')
-        robots = sorted((n.namespace, n.type) for n in config.nodes if n.namespace.endswith('/robot/'))
+        robots = sorted((n.namespace, role(n)) for n in config.nodes if n.namespace.endswith('/robot/'))
         self.assertEqual(robots, [(ns + 'robot/', 'mrpt_planner_node') for ns in instance_namespaces('mrpt', CORES)] +
                          [(ns + 'robot/', 'mrpt_reactive_node') for ns in instance_namespaces('mrpt_nd', CORES)] +
                          [(ns + 'robot/', 'simple_planner.py') for ns in instance_namespaces('optimistic', CORES)])
+        # A planner of the user's runs as a process of its own; its bridge joins the manager.
+        simple = [n for n in config.nodes if n.namespace.endswith('/robot/') and role(n) == 'simple_planner.py']
+        self.assertEqual(set((n.package, nodelet_of(n)) for n in simple), {('ppp_agents', None)})
+        bridges = [n for n in config.nodes if n.namespace.startswith('/optimistic/') and n.name == 'bridge']
+        self.assertEqual(set(nodelet_of(n) for n in bridges), {'ppp_agents/PlannerBridge'})
 
     def test_your_own_planner_gets_a_bridge_and_optionally_its_node(self):
         config_path = os.path.join(ROOT, 'config', 'planner_experiment.yaml')
         bridge_only, _ = load_graph(config_path)
-        mine = [(n.namespace, n.name, n.type) for n in bridge_only.nodes if n.namespace.startswith('/mine/')]
+        mine = [(n.namespace, n.name, role(n)) for n in bridge_only.nodes if n.namespace.startswith('/mine/')]
         self.assertEqual(mine, [('/mine/', 'bridge', 'planner_bridge_node')])
         # A planner started by hand listens on the global /tf: its bridge broadcasts there.
         bridge = [n for n in bridge_only.nodes if n.namespace == '/mine/'][0]
@@ -347,13 +372,14 @@ sets:
         for k in (1, 2, 3):
             namespace = '/fast/instance_%d/' % k
             planner = [n for n in config.nodes if n.namespace == namespace + 'robot/'][0]
-            self.assertEqual(planner.args, '_planning_time:=0.005 _planner:=RRTConnect')
+            self.assertEqual(nodelet_of(planner), 'ppp_agents/OmplPlanner')
+            self.assertEqual(node_args(planner), '_planning_time:=0.005 _planner:=RRTConnect')
             self.assertEqual(config.params[namespace + 'bridge/plan_timeout'].value, 0.5)
             self.assertEqual(config.params[namespace + 'bridge/cells_per_ppp_cell'].value, 4)
             self.assertEqual(config.params[namespace + 'bridge/plan_requests'].value, 'on_blocked')
             self.assertEqual(config.params[namespace + 'bridge/robot_radius'].value, 1.5)
             self.assertEqual(config.params[namespace + 'bridge/name'].value, 'fast')
-        self.assertEqual(len([n for n in config.nodes if n.type == 'planner_bridge_node']), 3)
+        self.assertEqual(len([n for n in config.nodes if role(n) == 'planner_bridge_node']), 3)
 
     def test_a_set_that_starts_from_another_waits_for_its_generator(self):
         directory = tempfile.mkdtemp()
@@ -441,7 +467,7 @@ class HuntLaunchTest(unittest.TestCase):
     def test_a_planner_hunt_starts_its_bridge_and_planner_only(self):
         config, _ = load_graph(os.path.join(ROOT, 'config', 'planner_hunt.yaml'), '--hunt', 'hunted_mine',
                                '--planner', 'mine=ppp_agents/simple_planner.py')
-        started = sorted((n.namespace, n.name, n.type) for n in config.nodes if n.namespace.startswith('/mine/'))
+        started = sorted((n.namespace, n.name, role(n)) for n in config.nodes if n.namespace.startswith('/mine/'))
         self.assertEqual(started, sorted([(ns, 'bridge', 'planner_bridge_node') for ns in instance_namespaces('mine', CORES)] +
                                          [(ns + 'robot/', 'planner', 'simple_planner.py')
                                           for ns in instance_namespaces('mine', CORES)]))

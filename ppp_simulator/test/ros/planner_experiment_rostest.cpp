@@ -10,6 +10,7 @@
 
 #include <map>
 #include <string>
+#include <tuple>
 
 #include "ppp_core/text_file.hpp"
 #include "ppp_simulator/planner_moves.hpp"
@@ -48,7 +49,7 @@ TEST(PlannerExperimentTest, ExamplePlannersPassAndFaultyPlannersFailWithTheirRea
   std::string out;
   auto rows = runExperiment("planners", "planner_experiment.yaml", &out);
   attachPlannerMoves(out + "/" + kPlannerMovesFile, &rows);
-  ASSERT_EQ(rows.size(), 3u * 2 * 7 + 3u * 10);  // 3 maps; 7 agents of 2 runs, 10 of 1
+  ASSERT_EQ(rows.size(), 3u * 2 * 8 + 3u * 11);  // 3 maps; 8 agents of 2 runs, 11 of 1
   auto r = reasons(rows);
   for (const char* map : {"open", "wall", "hidden"}) {
     // OMPL plans on the true map; the optimistic re-planner starts blind and must find the route behind the
@@ -103,18 +104,24 @@ TEST(PlannerExperimentTest, ExamplePlannersPassAndFaultyPlannersFailWithTheirRea
       EXPECT_EQ(static_cast<double>(row.steps), row.optimal_length);
     }
   }
-  // Two instances sharing the runs play each run as one does, and a bridge asking only on a change as one asking
-  // at every step: the same moves (the seeds differ with the name, and this planner draws nothing at random; it
-  // keeps its plan while the robot moves along it on an unchanged map).
-  std::map<std::pair<std::string, int>, const agents::EpisodeResult*> alone;
+  // Two instances sharing the runs play each run as one does, a bridge asking only on a change as one asking
+  // at every step, and a bridge and planner as nodelets of one manager as processes of their own: the same moves
+  // (the seeds differ with the name, and these planners draw nothing at random; the optimistic one keeps its plan
+  // while the robot moves along it on an unchanged map).
+  const std::map<std::string, std::string> twins = {{"optimistic_pair", "optimistic"},
+                                                    {"optimistic_change", "optimistic"},
+                                                    {"optimistic_nodelets", "optimistic"},
+                                                    {"reactive_nd_nodelets", "reactive_nd"}};
+  std::map<std::tuple<std::string, std::string, int>, const agents::EpisodeResult*> alone;
   for (const agents::EpisodeResult& row : rows) {
-    if (row.agent == "optimistic") alone[{row.problem, row.run}] = &row;
+    if (row.agent == "optimistic" || row.agent == "reactive_nd") alone[{row.agent, row.problem, row.run}] = &row;
   }
   int shared = 0;
   for (const agents::EpisodeResult& row : rows) {
-    if (row.agent != "optimistic_pair" && row.agent != "optimistic_change") continue;
+    const auto twin = twins.find(row.agent);
+    if (twin == twins.end()) continue;
     ++shared;
-    const agents::EpisodeResult& one = *alone.at({row.problem, row.run});
+    const agents::EpisodeResult& one = *alone.at({twin->second, row.problem, row.run});
     EXPECT_EQ(row.passed, one.passed) << row.agent << " " << row.problem << " run " << row.run;
     EXPECT_EQ(row.steps, one.steps) << row.agent << " " << row.problem << " run " << row.run;
     EXPECT_EQ(row.bumps, one.bumps) << row.agent << " " << row.problem << " run " << row.run;
@@ -122,7 +129,7 @@ TEST(PlannerExperimentTest, ExamplePlannersPassAndFaultyPlannersFailWithTheirRea
     EXPECT_EQ(row.actions, one.actions) << row.agent << " " << row.problem << " run " << row.run;
     EXPECT_EQ(row.actions.size(), static_cast<std::size_t>(row.steps)) << row.agent << " " << row.problem;
   }
-  EXPECT_EQ(shared, 12);
+  EXPECT_EQ(shared, 6 + 6 + 6 + 3);
   // The planners' results are in the report beside any other agent's.
   const std::string report = readTextFile(out + "/report.md", 1u << 24);
   for (const char* agent : {"ompl", "optimistic", "silent_planner", "straight_planner"}) {
