@@ -6,6 +6,7 @@
 #include <cmath>
 #include <deque>
 #include <exception>
+#include <mutex>
 #include <string>
 
 #include "ppp_core/error.hpp"
@@ -47,8 +48,14 @@ std::vector<MapPoint> MrptGridPlanner::plan(const GridMap& map, Cell start, Cell
   planner.robotRadius = static_cast<float>(robot_radius_ * map.frame().resolution);
   std::deque<mrpt::math::TPoint2D> path;
   bool not_found = true;
+  // computePath keeps the step of its trace toward the target in function-static variables: two threads tracing at
+  // once walk each other's steps, and one may never reach the target while its path grows without bound
+  // (mrpt_threads_test). One plan at a time in the process, however many planners it holds (nodelets of a manager).
+  static std::mutex mrpt_planning;
   try {
-    planner.computePath(mrptGridOf(map), mrpt::poses::CPose2D(from.x, from.y, 0), mrpt::poses::CPose2D(to.x, to.y, 0),
+    const mrpt::maps::COccupancyGridMap2D grid = mrptGridOf(map);
+    const std::lock_guard<std::mutex> one_at_a_time(mrpt_planning);
+    planner.computePath(grid, mrpt::poses::CPose2D(from.x, from.y, 0), mrpt::poses::CPose2D(to.x, to.y, 0),
                         path, not_found);
   } catch (const Error&) {
     throw;

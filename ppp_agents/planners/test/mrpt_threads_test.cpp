@@ -1,0 +1,69 @@
+// MRPT's wavefront planner called from two threads at once, as two planner nodelets of one manager call it.
+// PlannerSimple2D::computePath (MRPT 2.5.8) keeps the step of its trace toward the target in function-static
+// variables (`static signed char dx = 0, dy = 0;`, libs/nav/src/planners/PlannerSimple2D.cpp line 383): a second
+// thread's trace overwrites the first's step, and the first walks off its gradient. Its path is then wrong, or it
+// never reaches the target and grows its path without bound (docs/explanation/findings.md). Unserialised, this
+// test saw 20 to 76 wrong paths and up to 5 runaway traces of 10,000 plans; MrptGridPlanner lets one plan at a time
+// into MRPT.
+#include <sys/resource.h>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "map_picture.hpp"
+#include "mrpt_grid_planner.hpp"
+#include "ppp_core/error.hpp"
+
+namespace ppp {
+namespace planners {
+namespace {
+
+/// A winding 40x40 map: walls with alternating gaps, so each path is long and its trace-back takes many steps.
+GridMap windingMap() {
+  std::vector<std::string> picture(40, std::string(40, '.'));
+  for (int wall = 4; wall < 40; wall += 5) {
+    for (int x = 0; x < 40; ++x) picture[wall][x] = '#';
+    picture[wall][(wall / 5) % 2 == 0 ? 37 : 2] = '.';
+  }
+  return test::mapPicture(picture);
+}
+
+TEST(MrptThreadsTest, TwoThreadsPlanningAtOnceGetTheAnswersOfOneThread) {
+  // A runaway trace-back throws std::bad_alloc within this limit instead of taking the machine's memory.
+  const rlimit limit{2ul << 30, 2ul << 30};
+  ASSERT_EQ(setrlimit(RLIMIT_AS, &limit), 0);
+  const GridMap map = windingMap();
+  const MrptGridPlanner planner(0);
+  const std::vector<std::pair<Cell, Cell>> requests = {{{1, 1}, {38, 38}}, {{38, 1}, {1, 38}}, {{20, 2}, {20, 37}}};
+  std::vector<std::vector<MapPoint>> alone;
+  for (const auto& [from, to] : requests) {
+    alone.push_back(planner.plan(map, from, to));
+    ASSERT_FALSE(alone.back().empty());
+  }
+  std::atomic<int> differing{0};
+  std::atomic<int> failed{0};
+  const auto plan_many = [&](std::size_t first) {
+    for (int i = 0; i < 5000; ++i) {
+      const std::size_t k = (first + i) % requests.size();
+      try {
+        const std::vector<MapPoint> path = planner.plan(map, requests[k].first, requests[k].second);
+        if (path.size() != alone[k].size()) ++differing;
+      } catch (const Error&) {
+        ++failed;
+      }
+    }
+  };
+  std::thread other(plan_many, 1);
+  plan_many(0);
+  other.join();
+  EXPECT_EQ(differing, 0);
+  EXPECT_EQ(failed, 0);
+}
+
+}  // namespace
+}  // namespace planners
+}  // namespace ppp
