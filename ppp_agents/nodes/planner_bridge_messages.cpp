@@ -38,5 +38,16 @@ std::string commandOf(const geometry_msgs::TwistStamped& command, const std::str
   return "";
 }
 
+nav_msgs::Odometry odometryOf(const geometry_msgs::TransformStamped& transform) {
+  nav_msgs::Odometry odom;
+  odom.header = transform.header;
+  odom.child_frame_id = transform.child_frame_id;
+  odom.pose.pose.position.x = transform.transform.translation.x;
+  odom.pose.pose.position.y = transform.transform.translation.y;
+  odom.pose.pose.position.z = transform.transform.translation.z;
+  odom.pose.pose.orientation = transform.transform.rotation;
+  return odom;
+}
+
 }  // namespace agents
 }  // namespace ppp

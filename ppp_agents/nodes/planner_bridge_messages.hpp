@@ -3,7 +3,9 @@
 #include <string>
 #include <vector>
 
+#include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/TwistStamped.h>
+#include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
 
 #include "ppp_agents/planner_episode.hpp"
@@ -23,6 +25,10 @@ std::string pathPoints(const nav_msgs::Path& path, const std::string& map_frame,
 /// `base_frame` or the map's (aligned with it), or has none. Returns "" or what is wrong.
 std::string commandOf(const geometry_msgs::TwistStamped& command, const std::string& base_frame,
                       const std::string& map_frame, VelocityCommand* velocity);
+
+/// The odometry a planner reads the robot's pose from: the pose `transform` gives its child frame in its parent
+/// frame (header and child frame as the transform's).
+nav_msgs::Odometry odometryOf(const geometry_msgs::TransformStamped& transform);
 
 }  // namespace agents
 }  // namespace ppp

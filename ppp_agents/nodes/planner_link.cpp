@@ -11,6 +11,7 @@
 
 #include <algorithm>
 
+#include "planner_bridge_messages.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_msgs/conversions.h"
 #include "ppp_msgs/node_liveness.h"
@@ -224,13 +225,7 @@ void PlannerLink::publishPose(const ros::Time& stamp, const PlannerEpisode& epis
   transforms->transforms.back().header.stamp = stamp;
   ppp_msgs::publishHandingOver(tf_, transforms);
 
-  auto odom = boost::make_shared<nav_msgs::Odometry>();
-  odom->header = transform.header;
-  odom->child_frame_id = parameters_.base_frame;
-  odom->pose.pose.position.x = transform.transform.translation.x;
-  odom->pose.pose.position.y = transform.transform.translation.y;
-  odom->pose.pose.orientation.w = 1.0;
-  ppp_msgs::publishHandingOver(odom_, odom);
+  ppp_msgs::publishHandingOver(odom_, boost::make_shared<nav_msgs::Odometry>(odometryOf(transform)));
 
   if (scan_.getNumSubscribers() == 0) return;  // rays cost a cast each: only for a planner that reads them
   auto laser = boost::make_shared<sensor_msgs::LaserScan>(

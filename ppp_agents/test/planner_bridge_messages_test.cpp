@@ -1,5 +1,5 @@
-// A planner's nav_msgs/Path as map points, and a local planner's velocity command: frames and finite points
-// checked.
+// A planner's nav_msgs/Path as map points, a local planner's velocity command (frames and finite points
+// checked), and the robot's pose as the odometry a planner reads.
 
 #include "planner_bridge_messages.hpp"
 
@@ -56,6 +56,25 @@ TEST(PlannerBridgeMessagesTest, ACommandInTheRobotsOrTheMapsFrameIsTaken) {
   command.header.frame_id = "odom";
   EXPECT_EQ(commandOf(command, "mine/robot/base_link", "map", &velocity),
             "the command is in frame 'odom', not 'mine/robot/base_link' (or 'map', which is aligned with it)");
+}
+
+// The robot's pose as odometry: the transform's translation and rotation, header and child frame.
+TEST(PlannerBridgeMessagesTest, OdometryIsThePoseTheTransformGives) {
+  geometry_msgs::TransformStamped transform;
+  transform.header.frame_id = "map";
+  transform.header.stamp = ros::Time(12, 5);
+  transform.child_frame_id = "g/robot/base_link";
+  transform.transform.translation.x = 2.5;
+  transform.transform.translation.y = 7.5;
+  transform.transform.rotation.w = 1.0;
+  const nav_msgs::Odometry odom = odometryOf(transform);
+  EXPECT_EQ(odom.header.frame_id, "map");
+  EXPECT_EQ(odom.header.stamp, ros::Time(12, 5));
+  EXPECT_EQ(odom.child_frame_id, "g/robot/base_link");
+  EXPECT_EQ(odom.pose.pose.position.x, 2.5);
+  EXPECT_EQ(odom.pose.pose.position.y, 7.5);
+  EXPECT_EQ(odom.pose.pose.position.z, 0.0);
+  EXPECT_EQ(odom.pose.pose.orientation.w, 1.0);
 }
 
 }  // namespace
