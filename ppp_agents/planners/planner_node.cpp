@@ -115,6 +115,10 @@ void PlannerNode::serve(const Request& request) {
              options_.frames.map_frame.c_str());
     return;
   }
+  if (!request.pose) {  // every pose kept is newer than the request's (a late goal)
+    ROS_WARN("no robot pose (odometry) stamped %.3f or earlier; not planning", request.pose_stamp.toSec());
+    return;
+  }
   const nav_msgs::Odometry& pose = *request.pose;
   if (pose.header.frame_id != options_.frames.map_frame || pose.child_frame_id != options_.frames.base_frame) {
     ROS_WARN("odometry of frame '%s' in frame '%s', expected '%s' in '%s'; not planning", pose.child_frame_id.c_str(),
