@@ -94,10 +94,20 @@ bool putInCanonicalOrder(std::vector<agents::EpisodeResult>* rows, const Experim
   const auto not_rising = [](const auto& a, const auto& b) { return !(a.first < b.first); };
   if (std::adjacent_find(keys.begin(), keys.end(), not_rising) == keys.end()) return false;
   std::sort(keys.begin(), keys.end());
-  std::vector<agents::EpisodeResult> sorted;
-  sorted.reserve(rows->size());
-  for (const auto& key : keys) sorted.push_back(std::move((*rows)[key.second]));
-  *rows = std::move(sorted);
+  // Row j of the result is row keys[j].second of the input: moved along each cycle of that permutation, in place
+  // (a sorted copy of a million rows would be as large again).
+  std::vector<bool> placed(rows->size());
+  for (std::size_t start = 0; start < rows->size(); ++start) {
+    if (placed[start]) continue;
+    agents::EpisodeResult first = std::move((*rows)[start]);
+    std::size_t j = start;
+    for (std::size_t from = keys[j].second; from != start; j = from, from = keys[j].second) {
+      (*rows)[j] = std::move((*rows)[from]);
+      placed[j] = true;
+    }
+    (*rows)[j] = std::move(first);
+    placed[j] = true;
+  }
   return true;
 }
 

@@ -93,6 +93,7 @@ ResultsFile::ResultsFile(const std::string& path, const StopCheck& stop) : path_
   namespace fs = std::filesystem;
   if (fs::exists(path)) {
     const std::string text = readTextFile(path, kMaxResultsBytes, stop);
+    existing_.reserve(text.size() / 80);  // rows are about 90 bytes long
     const std::size_t complete = parseRows(text, path, &existing_, stop);
     for (std::size_t i = 0; i < existing_.size(); ++i) {  // a run's last row decides, as in standingRows
       if (i % kLinesPerStopCheck == 0) stopIfAsked(stop);
@@ -128,14 +129,21 @@ void ResultsFile::append(const std::vector<agents::EpisodeResult>& rows) {
 }
 
 void ResultsFile::rewrite(const std::vector<agents::EpisodeResult>& rows, const StopCheck& stop) {
+  constexpr std::size_t kBlockBytes = std::size_t{4} << 20;  // written a block at a time: no copy of the whole file
   std::lock_guard<std::mutex> lock(mutex_);
-  std::string text = headerLine() + '\n';
-  text.reserve(rows.size() * 96);  // about a row's length: one allocation instead of a doubling series
+  AtomicFile file(path_);
+  std::string block = headerLine() + '\n';
+  block.reserve(kBlockBytes + 1024);
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (i % kLinesPerStopCheck == 0) stopIfAsked(stop);
-    agents::appendCsvRow(rows[i], &text);
+    agents::appendCsvRow(rows[i], &block);
+    if (block.size() >= kBlockBytes) {
+      file.write(block);
+      block.clear();
+    }
   }
-  writeFileAtomically(path_, text);
+  file.write(block);
+  file.commit();
   out_ = std::make_unique<AppendFile>(path_, false);
 }
 

@@ -283,6 +283,23 @@ TEST_F(ResultsFileTest, RewriteKeepsTheGivenOrder) {
   EXPECT_EQ(rows[1].run, 1);
 }
 
+TEST_F(ResultsFileTest, ARewriteLargerThanItsBlocksIsWholeAndInOrder) {
+  // About 6 MB of rows: the rewrite writes several blocks of 4 MB, and appending goes on after it.
+  std::vector<agents::EpisodeResult> rows;
+  for (int run = 0; run < 80000; ++run) rows.push_back(row(run, run % 3 == 0));
+  ResultsFile file(path_);
+  file.append({row(7, false)});
+  file.rewrite(rows);
+  file.append({row(80000, true)});
+  rows.push_back(row(80000, true));
+  std::string expected = csvLine(agents::resultCsvHeader()) + '\n';
+  for (const agents::EpisodeResult& r : rows) agents::appendCsvRow(r, &expected);
+  ASSERT_GT(expected.size(), std::size_t{4} << 20);
+  std::ifstream in(path_, std::ios::binary);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), expected);
+  EXPECT_FALSE(fs::exists(path_ + ".tmp"));
+}
+
 agents::EpisodeResult lost(int run, const char* why) {
   agents::EpisodeResult r = row(run, false);
   r.reason = why;

@@ -42,19 +42,41 @@ std::string readTextFile(const std::string& path, std::size_t max_bytes, const S
 }
 
 void writeFileAtomically(const std::string& path, const std::string& contents) {
-  const std::string temporary = path + ".tmp";
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (fd < 0) throw IoError(path, std::string("cannot write: ") + std::strerror(errno));
-  int error = writeFully(fd, contents.data(), contents.size()) ? 0 : errno;
-  if (::close(fd) != 0 && error == 0) error = errno;
-  if (error == 0) {
-    if (std::rename(temporary.c_str(), path.c_str()) == 0) return;
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw IoError(path, "cannot replace: " + reason);
-  }
-  std::remove(temporary.c_str());
-  throw IoError(path, std::string("cannot write: ") + std::strerror(error));
+  AtomicFile file(path);
+  file.write(contents);
+  file.commit();
+}
+
+AtomicFile::AtomicFile(const std::string& path) : path_(path), temporary_(path + ".tmp") {
+  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd_ < 0) throw IoError(path_, std::string("cannot write: ") + std::strerror(errno));
+}
+
+AtomicFile::~AtomicFile() {
+  if (fd_ >= 0) ::close(fd_);
+  if (!committed_) std::remove(temporary_.c_str());
+}
+
+void AtomicFile::fail(const std::string& what) {
+  const std::string reason = std::strerror(errno);
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
+  std::remove(temporary_.c_str());
+  throw IoError(path_, what + reason);
+}
+
+void AtomicFile::write(std::string_view block) {
+  if (fd_ < 0) throw IoError(path_, "write after commit");
+  if (!writeFully(fd_, block.data(), block.size())) fail("cannot write: ");
+}
+
+void AtomicFile::commit() {
+  if (fd_ < 0) throw IoError(path_, "committed twice");
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0) fail("cannot write: ");
+  if (std::rename(temporary_.c_str(), path_.c_str()) != 0) fail("cannot replace: ");
+  committed_ = true;
 }
 
 }  // namespace ppp

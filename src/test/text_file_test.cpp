@@ -51,5 +51,35 @@ TEST_F(TextFileTest, AStopBetweenChunksInterruptsAndTheLimitIsNamed) {
   }
 }
 
+TEST_F(TextFileTest, AnAtomicFileReplacesThePathOnlyWhenCommitted) {
+  writeFileAtomically(path_, "old\n");
+  {
+    AtomicFile file(path_);
+    file.write("new ");
+    file.write("text\n");
+    EXPECT_EQ(readTextFile(path_, 100), "old\n");  // readers see the old file until the commit
+  }  // dropped without a commit: the old file stays, the temporary file goes
+  EXPECT_EQ(readTextFile(path_, 100), "old\n");
+  EXPECT_FALSE(fs::exists(path_ + ".tmp"));
+  AtomicFile file(path_);
+  file.write("new ");
+  file.write("text\n");
+  file.commit();
+  EXPECT_EQ(readTextFile(path_, 100), "new text\n");
+  EXPECT_FALSE(fs::exists(path_ + ".tmp"));
+  EXPECT_THROW(file.write("more"), IoError);
+}
+
+TEST_F(TextFileTest, AnAtomicFileInAMissingDirectoryNamesThePath) {
+  const std::string path = (fs::temp_directory_path() / "no_such_directory_here" / "out.csv").string();
+  try {
+    AtomicFile file(path);
+    ADD_FAILURE() << "opened a file in a missing directory";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("No such file or directory"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace ppp

@@ -4,19 +4,23 @@
 // thread's trace overwrites the first's step, and the first walks off its gradient. Its path is then wrong, or it
 // never reaches the target and grows its path without bound (docs/explanation/findings.md). Unserialised, this
 // test saw 20 to 76 wrong paths and up to 5 runaway traces of 10,000 plans; MrptGridPlanner lets one plan at a time
-// into MRPT.
+// into MRPT. MRPT's holonomic reactive navigators (ND, VFF, FullEval) keep their memory (ND's and FullEval's last
+// chosen sector) in each navigator object and no static data: one object per thread answers as it does alone.
 #include <sys/resource.h>
 
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "map_picture.hpp"
 #include "mrpt_grid_planner.hpp"
+#include "mrpt_reactive_navigator.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/rng.hpp"
 
 namespace ppp {
 namespace planners {
@@ -62,6 +66,48 @@ TEST(MrptThreadsTest, TwoThreadsPlanningAtOnceGetTheAnswersOfOneThread) {
   other.join();
   EXPECT_EQ(differing, 0);
   EXPECT_EQ(failed, 0);
+}
+
+/// What a fresh navigator of `method` answers to each of `inputs` in turn (obstacles, target).
+std::vector<Heading> headings(const std::string& method,
+                              const std::vector<std::pair<std::vector<double>, MapPoint>>& inputs) {
+  MrptReactiveNavigator navigator(method);
+  std::vector<Heading> answers;
+  for (const auto& [obstacles, target] : inputs) answers.push_back(navigator.navigate(obstacles, target));
+  return answers;
+}
+
+TEST(MrptThreadsTest, ReactiveNavigatorsInThreadsOfTheirOwnAnswerAsAlone) {
+  // 300 random scenes; ND and FullEval carry their last choice from call to call, so the order is kept.
+  Rng rng(11);
+  std::vector<std::pair<std::vector<double>, MapPoint>> inputs(300);
+  for (auto& [obstacles, target] : inputs) {
+    for (int k = 0; k < kReactiveSectors; ++k) obstacles.push_back(0.05 + 0.95 * rng.uniform01());
+    target = MapPoint{2 * rng.uniform01() - 1, 2 * rng.uniform01() - 1};
+  }
+  for (const std::string& method : reactiveMethodNames()) {
+    const std::vector<Heading> alone = headings(method, inputs);
+    std::set<double> directions;
+    for (const Heading& h : alone) directions.insert(h.direction);
+    ASSERT_GT(directions.size(), 50u) << method << " answers the scenes alike: they test nothing";
+    std::vector<std::vector<std::vector<Heading>>> together(3);  // three threads, each 20 passes over the scenes
+    std::vector<std::thread> threads;
+    for (auto& answers : together) {
+      threads.emplace_back([&answers, &method, &inputs] {
+        for (int pass = 0; pass < 20; ++pass) answers.push_back(headings(method, inputs));
+      });
+    }
+    for (std::thread& t : threads) t.join();
+    for (const auto& answers : together) {
+      for (const std::vector<Heading>& pass : answers) {
+        ASSERT_EQ(pass.size(), alone.size());
+        for (std::size_t i = 0; i < alone.size(); ++i) {
+          ASSERT_EQ(pass[i].direction, alone[i].direction) << method << " scene " << i;
+          ASSERT_EQ(pass[i].speed, alone[i].speed) << method << " scene " << i;
+        }
+      }
+    }
+  }
 }
 
 }  // namespace
