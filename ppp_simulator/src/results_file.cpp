@@ -28,6 +28,7 @@ constexpr int kLinesPerStopCheck = 1 << 14;  // lines read or written between tw
 /// that holds them (a partial tail is excluded).
 std::size_t parseRows(const std::string& text, const std::string& path, std::vector<agents::EpisodeResult>* rows,
                       const StopCheck& stop = {}) {
+  rows->reserve(rows->size() + text.size() / 80);  // rows are about 90 bytes long: one allocation, not a series
   std::size_t pos = 0;
   int line = 0;
   while (pos < text.size()) {
@@ -84,7 +85,6 @@ std::vector<agents::EpisodeResult> readResultsFile(const std::string& path, cons
 
 std::vector<agents::EpisodeResult> parseResultsCsv(const std::string& text, const std::string& path, const StopCheck& stop) {
   std::vector<agents::EpisodeResult> rows;
-  rows.reserve(text.size() / 80);  // rows are about 90 bytes long
   parseRows(text, path, &rows, stop);
   return rows;
 }
@@ -93,7 +93,6 @@ ResultsFile::ResultsFile(const std::string& path, const StopCheck& stop) : path_
   namespace fs = std::filesystem;
   if (fs::exists(path)) {
     const std::string text = readTextFile(path, kMaxResultsBytes, stop);
-    existing_.reserve(text.size() / 80);  // rows are about 90 bytes long
     const std::size_t complete = parseRows(text, path, &existing_, stop);
     for (std::size_t i = 0; i < existing_.size(); ++i) {  // a run's last row decides, as in standingRows
       if (i % kLinesPerStopCheck == 0) stopIfAsked(stop);
