@@ -67,7 +67,7 @@ TEST(WindowMaskTest, CellsLandOnTheirBits) {
 
 TEST(WindowMaskTest, AScanFromMasksReadsAsTheAtlasScanItCameFrom) {
   // Every cell of a noisy sensor's atlas scans: the masks sent (packWindow of Scan::bits) make a scan whose cells
-  // and masks are the sent scan's.
+  // (read one at a time or all at once) and masks are the sent scan's.
   Rng rng(9);
   const SensorModel sensor(SensorOptions{2, 0.1});
   Grid g(8, 6);
@@ -83,6 +83,7 @@ TEST(WindowMaskTest, AScanFromMasksReadsAsTheAtlasScanItCameFrom) {
     for (int dy = -2; dy <= 2; ++dy) {
       for (int dx = -2; dx <= 2; ++dx) ASSERT_EQ(received.at(dx, dy), sent.at(dx, dy)) << i << ": " << dx << "," << dy;
     }
+    for (int k = 0; k < 25; ++k) ASSERT_EQ(received.cells()[k], sent.cells()[k]) << i << ": cell " << k;
     WindowBits back;
     ASSERT_TRUE(received.bits(&back));
     EXPECT_EQ(back.free, bits.free);

@@ -103,8 +103,10 @@ class Scan {
   int range() const { return range_; }         ///< Window radius.
   /// The reported value at offset (dx, dy) from the agent, |dx|, |dy| <= range.
   std::int8_t at(int dx, int dy) const {
+    const int i = (dy + range_) * (2 * range_ + 1) + (dx + range_);
+    if (received_bits_) return bitCell(i);  // a cell or two of masks is read without building every cell
     if (!filled_) fill();
-    return cells_[(dy + range_) * (2 * range_ + 1) + (dx + range_)];
+    return cells_[i];
   }
   /// The reported value of an absolute cell, or kScanUnknown outside the window.
   std::int8_t atCell(Cell c) const;
@@ -120,6 +122,14 @@ class Scan {
 
  private:
   void fill() const;
+  /// Window cell `i` of the received masks.
+  std::int8_t bitCell(int i) const {
+    const std::uint64_t bit = std::uint64_t{1} << i;
+    return (bits_.off_map & bit) != 0    ? kScanOutOfBounds
+           : (bits_.free & bit) != 0     ? kScanFree
+           : (bits_.obstacle & bit) != 0 ? kScanObstacle
+                                         : kScanUnknown;
+  }
   /// The noise flips of this scan (SensorModel::noiseFlips), computed once.
   std::uint64_t flips() const;
 
