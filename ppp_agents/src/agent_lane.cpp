@@ -11,6 +11,12 @@
 namespace ppp {
 namespace agents {
 
+namespace {
+
+constexpr std::size_t kPrefetchAhead = 8;  // episodes between fetching a trajectory's next entry and writing it
+
+}  // namespace
+
 AgentLane::AgentLane(const AgentConfig& config, const EpisodeOptions& options,
                      const std::vector<PreparedSet>& sets, SeedFunction seed_of, int runs, int batch_size,
                      const SkipFunction& skip, LaneShare share)
@@ -39,7 +45,7 @@ AgentLane::AgentLane(const AgentConfig& config, const EpisodeOptions& options,
   }
 }
 
-void AgentLane::scans(std::vector<ScanRequest>* requests) {
+void AgentLane::scans(protocol::ScanSink* sink) {
   while (static_cast<int>(active_.size()) < batch_size_ && !queue_.empty()) {
     const Work work = queue_.front();
     queue_.pop_front();
@@ -52,11 +58,10 @@ void AgentLane::scans(std::vector<ScanRequest>* requests) {
                                motionOf(set, work.problem)),
                        false, {}, {}, nullptr});
   }
-  requests->resize(active_.size());
-  for (std::size_t i = 0; i < active_.size(); ++i) {
-    Active& a = active_[i];
+  sink->begin(active_.size(), options_.sensor_range, reads_window_);
+  ScanRequest& r = request_;  // one for every scan: it stays in cache
+  for (Active& a : active_) {
     const Scan scan = a.episode.scan();
-    ScanRequest& r = (*requests)[i];
     r.start.reset();
     r.episode = a.id;
     r.step = scan.step();
@@ -86,6 +91,7 @@ void AgentLane::scans(std::vector<ScanRequest>* requests) {
       r.start = std::move(start);
       a.started = true;
     }
+    sink->add(r);
   }
 }
 
@@ -117,6 +123,7 @@ std::vector<EpisodeResult> AgentLane::answer(const std::vector<MoveReply>& moves
   std::vector<EpisodeResult> finished;
   std::size_t kept = 0;
   for (std::size_t i = 0; i < active_.size(); ++i) {
+    if (i + kPrefetchAhead < active_.size()) active_[i + kPrefetchAhead].episode.prefetchNextStep();
     Active& a = active_[i];
     const MoveReply* move = move_of(i, a.id);
     if (move == nullptr) {

@@ -112,72 +112,68 @@ void EpisodeRecorder::recordSets(const std::vector<ppp_msgs::ProblemSet>& sets) 
   }
 }
 
-void EpisodeRecorder::recordScans(const std::string& agent, const std::vector<protocol::ScanRequest>& scans) {
-  // Most batches hold no sampled scan: they go by without the lock every lane shares.
-  if (std::none_of(scans.begin(), scans.end(), [this](const protocol::ScanRequest& s) { return sampled(s); })) return;
+void EpisodeRecorder::recordScan(const std::string& agent, const protocol::ScanRequest& s) {
+  if (!sampled(s)) return;  // most scans: they go by without the lock every lane shares
   std::lock_guard<std::mutex> lock(mutex_);
-  for (const protocol::ScanRequest& s : scans) {
-    if (!sampled(s)) continue;
-    // One recorded episode per agent at a time; sampled episodes starting meanwhile are not drawn.
-    Recording& recording = recordings_[agent];
-    if (s.start && recording.done) {
-      recording = Recording{s.episode, sets_[s.set].name, sets_[s.set].set.ids[s.problem], s.run,
-                            slots_used_[agent]++, false};
-    } else if (recording.done || recording.episode != s.episode) {
-      continue;
-    }
-    const int slot = recording.slot;
-    const agents::PreparedSet& set = sets_[s.set];
-    const Problem& problem = set.set.problems[s.problem];
-    const MapFrame frame{problem.width, problem.height, parameters_.resolution};
-    const ros::Time stamp = slotTime(slot, s.step);
-    const std::string base_link = agents::agentGraphName(agent) + "/base_link";
-    if (s.start) {
-      nav_msgs::OccupancyGrid map = ppp_msgs::toOccupancyGrid(set.grids[s.problem], parameters_.resolution);
-      map.header.stamp = stamp;
-      visualization_msgs::MarkerArray markers;
-      markers.markers.push_back(cellMarker(frame, problem.start, 0, 0.1f, 0.8f, 0.1f, "start"));
-      markers.markers.push_back(cellMarker(frame, problem.goal, 1, 0.9f, 0.1f, 0.1f, "goal"));
-      if (slot >= maps_written_) {
-        // The first agent to start a slot publishes its map; every agent's slot runs on the same PPP.
-        map_publisher_.publish(map);
-        markers_publisher_.publish(markers);
-        write("/map", stamp, map, true);
-        write("/ppp/markers", stamp, markers, true);
-        maps_written_ = slot + 1;
-      }
-      paths_[agent] = nav_msgs::Path();
-      paths_[agent].header.frame_id = "map";
-    }
-    geometry_msgs::TransformStamped transform = ppp_msgs::cellTransform(frame, s.position, "map", base_link);
-    transform.header.stamp = ros::Time::now();
-    broadcaster_.sendTransform(transform);
-    transform.header.stamp = stamp;
-    tf2_msgs::TFMessage tf;
-    tf.transforms.push_back(transform);
-    write("/tf", stamp, tf);
-
-    nav_msgs::Path& path = paths_[agent];
-    geometry_msgs::PoseStamped pose;
-    pose.header = transform.header;
-    pose.pose.position.x = transform.transform.translation.x;
-    pose.pose.position.y = transform.transform.translation.y;
-    pose.pose.orientation.w = 1.0;
-    path.header.stamp = stamp;
-    path.poses.push_back(pose);
-    if (s.step % kPathEveryStep == 0) {
-      path_publishers_.at(agent).publish(path);
-      write("/" + agents::agentGraphName(agent) + "/path", stamp, path);
-    }
-
-    if (!s.window) continue;  // an agent that reads no window (random) is sent none: no scan to show
-    std::array<std::int8_t, kMaxScanCells> cells;
-    unpackWindow(s.free_cells.data(), s.obstacle_cells.data(), s.range, cells.data());
-    sensor_msgs::LaserScan laser = ppp_msgs::toLaserScan(cells.data(), s.range, parameters_.resolution, base_link);
-    laser.header.stamp = stamp;
-    scan_publishers_.at(agent).publish(laser);
-    write("/" + agents::agentGraphName(agent) + "/scan", stamp, laser);
+  // One recorded episode per agent at a time; sampled episodes starting meanwhile are not drawn.
+  Recording& recording = recordings_[agent];
+  if (s.start && recording.done) {
+    recording = Recording{s.episode, sets_[s.set].name, sets_[s.set].set.ids[s.problem], s.run,
+                          slots_used_[agent]++, false};
+  } else if (recording.done || recording.episode != s.episode) {
+    return;
   }
+  const int slot = recording.slot;
+  const agents::PreparedSet& set = sets_[s.set];
+  const Problem& problem = set.set.problems[s.problem];
+  const MapFrame frame{problem.width, problem.height, parameters_.resolution};
+  const ros::Time stamp = slotTime(slot, s.step);
+  const std::string base_link = agents::agentGraphName(agent) + "/base_link";
+  if (s.start) {
+    nav_msgs::OccupancyGrid map = ppp_msgs::toOccupancyGrid(set.grids[s.problem], parameters_.resolution);
+    map.header.stamp = stamp;
+    visualization_msgs::MarkerArray markers;
+    markers.markers.push_back(cellMarker(frame, problem.start, 0, 0.1f, 0.8f, 0.1f, "start"));
+    markers.markers.push_back(cellMarker(frame, problem.goal, 1, 0.9f, 0.1f, 0.1f, "goal"));
+    if (slot >= maps_written_) {
+      // The first agent to start a slot publishes its map; every agent's slot runs on the same PPP.
+      map_publisher_.publish(map);
+      markers_publisher_.publish(markers);
+      write("/map", stamp, map, true);
+      write("/ppp/markers", stamp, markers, true);
+      maps_written_ = slot + 1;
+    }
+    paths_[agent] = nav_msgs::Path();
+    paths_[agent].header.frame_id = "map";
+  }
+  geometry_msgs::TransformStamped transform = ppp_msgs::cellTransform(frame, s.position, "map", base_link);
+  transform.header.stamp = ros::Time::now();
+  broadcaster_.sendTransform(transform);
+  transform.header.stamp = stamp;
+  tf2_msgs::TFMessage tf;
+  tf.transforms.push_back(transform);
+  write("/tf", stamp, tf);
+
+  nav_msgs::Path& path = paths_[agent];
+  geometry_msgs::PoseStamped pose;
+  pose.header = transform.header;
+  pose.pose.position.x = transform.transform.translation.x;
+  pose.pose.position.y = transform.transform.translation.y;
+  pose.pose.orientation.w = 1.0;
+  path.header.stamp = stamp;
+  path.poses.push_back(pose);
+  if (s.step % kPathEveryStep == 0) {
+    path_publishers_.at(agent).publish(path);
+    write("/" + agents::agentGraphName(agent) + "/path", stamp, path);
+  }
+
+  if (!s.window) return;  // an agent that reads no window (random) is sent none: no scan to show
+  std::array<std::int8_t, kMaxScanCells> cells;
+  unpackWindow(s.free_cells.data(), s.obstacle_cells.data(), s.range, cells.data());
+  sensor_msgs::LaserScan laser = ppp_msgs::toLaserScan(cells.data(), s.range, parameters_.resolution, base_link);
+  laser.header.stamp = stamp;
+  scan_publishers_.at(agent).publish(laser);
+  write("/" + agents::agentGraphName(agent) + "/scan", stamp, laser);
 }
 
 void EpisodeRecorder::recordResults(const std::vector<agents::EpisodeResult>& results) {

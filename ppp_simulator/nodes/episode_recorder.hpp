@@ -33,8 +33,8 @@ class EpisodeRecorder {
                   const std::vector<std::string>& agent_names, int action_limit);
   /// Publishes and records the PPP sets (latched /ppp/sets/<name>).
   void recordSets(const std::vector<ppp_msgs::ProblemSet>& sets);
-  /// Publishes and records the sampled episodes among a batch of scans of `agent`.
-  void recordScans(const std::string& agent, const std::vector<protocol::ScanRequest>& scans);
+  /// Publishes and records a scan sent to `agent`, if its episode is sampled.
+  void recordScan(const std::string& agent, const protocol::ScanRequest& scan);
   /// Publishes and records finished episodes (grouped with those of the last moments).
   void recordResults(const std::vector<agents::EpisodeResult>& results);
   /// Publishes and records the results still grouped, then closes the bag.

@@ -17,6 +17,23 @@ namespace {
 
 const ros::WallDuration kShutdownCheck(0.1);  // a lane waiting for a reply notices a shutdown this often
 
+/// Writes a lane's scans into the message to send and shows each to an observer.
+class ObservedScans : public protocol::ScanSink {
+ public:
+  ObservedScans(ppp_msgs::ScanBatch* message, const std::string& agent, const LaneRunner::ScanObserver& observer)
+      : writer_(message), agent_(agent), observer_(observer) {}
+  void begin(std::size_t count, int range, bool window) override { writer_.begin(count, range, window); }
+  void add(protocol::ScanRequest& scan) override {
+    observer_(agent_, scan);  // before the writer may move the start away
+    writer_.add(scan);
+  }
+
+ private:
+  protocol::ScanBatchWriter writer_;
+  const std::string& agent_;
+  const LaneRunner::ScanObserver& observer_;
+};
+
 }  // namespace
 
 LaneRunner::LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameters, const NodeControl& control,
@@ -96,14 +113,18 @@ void LaneRunner::run(agents::AgentLane* lane) {
 
 void LaneRunner::sendBatch() {
   const std::uint32_t batch = ++batch_;
-  lane_->scans(&scans_buffer_);
   // A new message per batch, published by pointer: an agent in the same process gets this very object.
   auto message = boost::make_shared<ppp_msgs::ScanBatch>();
   message->agent = agent_.name;
   message->header.stamp = ros::Time::now();
   message->batch = batch;
-  protocol::encodeScans(scans_buffer_, message.get());
-  if (observer_) observer_(agent_.name, scans_buffer_);
+  if (observer_) {
+    ObservedScans scans(message.get(), agent_.name, observer_);
+    lane_->scans(&scans);
+  } else {
+    protocol::ScanBatchWriter scans(message.get());
+    lane_->scans(&scans);
+  }
   expected_batch_ = batch;
   deadline_ = ros::WallTime::now() + ros::WallDuration(step_timeout_);
   ppp_msgs::publishHandingOver(scans_, message);  // an agent nodelet answers here, in this thread

@@ -43,8 +43,8 @@ class LaneRunner {
  public:
   /// Where finished episodes go.
   using ResultSink = std::function<void(const std::vector<agents::EpisodeResult>&)>;
-  /// What sees each batch of scans (may be empty).
-  using ScanObserver = std::function<void(const std::string& agent, const std::vector<protocol::ScanRequest>&)>;
+  /// What sees each scan sent (may be empty).
+  using ScanObserver = std::function<void(const std::string& agent, const protocol::ScanRequest&)>;
 
   /// Advertises /NS/scans and subscribes to /NS/moves for instance `instance` of agent configuration `agent`
   /// (NS = agents::instanceGraphName); `log_rates` logs each lane's episodes per second when it is done.
@@ -80,7 +80,6 @@ class LaneRunner {
   std::uint32_t batch_ = 0;            // batches sent so far, over every lane
   std::uint32_t expected_batch_ = 0;   // the batch awaiting its reply; 0 when none
   ros::WallTime deadline_;             // when the awaited batch counts as unanswered
-  std::vector<protocol::ScanRequest> scans_buffer_;  // reused by every batch
   std::unique_ptr<ppp_msgs::InlineCallbackQueue> inline_replies_;  // runs onMoves in the network thread, or
   std::unique_ptr<ros::CallbackQueue> queued_replies_;             // holds the replies for run() (a nodelet)
   ros::Publisher scans_;

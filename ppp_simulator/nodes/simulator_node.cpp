@@ -106,9 +106,7 @@ int SimulatorNode::runExperiment() {
             recorder.recordResults(ended);
             ended_runs += static_cast<long>(ended.size());
           },
-          [&recorder](const std::string& name, const std::vector<protocol::ScanRequest>& scans) {
-            recorder.recordScans(name, scans);
-          }));
+          [&recorder](const std::string& name, const protocol::ScanRequest& scan) { recorder.recordScan(name, scan); }));
     }
   }
   ROS_INFO("running %ld episodes (%zu already done, %zu lost to the agent link played again) with %zu agent nodes and "

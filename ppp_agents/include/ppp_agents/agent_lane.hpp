@@ -48,9 +48,13 @@ class AgentLane {
   bool finished() const { return queue_.empty() && active_.empty(); }
   /// Runs not yet finished (active or queued).
   long remaining() const { return static_cast<long>(queue_.size() + active_.size()); }
-  /// Fills the batch from the queue and writes the scans of every active episode into `requests` (resized;
-  /// its elements' buffers are reused, so a caller keeping one vector allocates nothing per batch).
-  void scans(std::vector<ScanRequest>* requests);
+  /// Fills the batch from the queue and writes the scans of every active episode to `sink`, in episode order.
+  void scans(protocol::ScanSink* sink);
+  /// As above, into `requests` (resized; its elements' buffers are reused).
+  void scans(std::vector<ScanRequest>* requests) {
+    protocol::ScanList list(requests);
+    scans(&list);
+  }
   /// Applies a batch of moves. An active episode with no move gets `missing_reason`; a move for the wrong step
   /// or with an unknown action fails its episode with reason::kInvalidAction, a move with a failure fails it
   /// with that reason, and a planner agent's move that bumps a robot with a body (robot_radius) fails it with
@@ -101,6 +105,7 @@ class AgentLane {
   std::vector<Active> active_;
   std::uint32_t next_id_ = 0;
   int silent_batches_ = 0;
+  ScanRequest request_;  // the scan being written to a sink
 };
 
 }  // namespace agents

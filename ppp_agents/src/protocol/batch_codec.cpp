@@ -29,38 +29,55 @@ ppp_msgs::GridCell toGridCell(Cell cell) {
   return m;
 }
 
-void encodeScans(const std::vector<ScanRequest>& scans, ppp_msgs::ScanBatch* message) {
-  ppp_msgs::ScanBatch& m = *message;
-  const std::size_t n = scans.size();
-  m.range = n == 0 ? 0 : static_cast<std::uint8_t>(scans[0].range);
+void ScanBatchWriter::begin(std::size_t count, int range, bool window) {
+  ppp_msgs::ScanBatch& m = *message_;
+  m.range = count == 0 ? 0 : static_cast<std::uint8_t>(range);
+  words_ = count == 0 || !window ? 0 : static_cast<std::size_t>(windowWords(range));
   m.starts.clear();
-  m.episodes.resize(n);
-  m.steps.resize(n);
-  m.positions.resize(n);
-  m.bumped.resize(n);
-  const std::size_t words = n == 0 || !scans[0].window ? 0 : static_cast<std::size_t>(windowWords(scans[0].range));
-  m.free_cells.resize(n * words);
-  m.obstacle_cells.resize(n * words);
-  for (std::size_t i = 0; i < n; ++i) {
-    const ScanRequest& r = scans[i];
-    m.episodes[i] = r.episode;
-    m.steps[i] = static_cast<std::uint32_t>(r.step);
-    m.positions[i] = toGridCell(r.position);
-    m.bumped[i] = r.bumped ? 1 : 0;
-    std::copy(r.free_cells.begin(), r.free_cells.begin() + words, m.free_cells.begin() + i * words);
-    std::copy(r.obstacle_cells.begin(), r.obstacle_cells.begin() + words, m.obstacle_cells.begin() + i * words);
-    if (!r.start) continue;
-    ppp_msgs::EpisodeStart start;
-    start.episode = r.episode;
-    start.width = static_cast<std::uint32_t>(r.start->width);
-    start.height = static_cast<std::uint32_t>(r.start->height);
-    start.start = toGridCell(r.start->start);
-    start.goal = toGridCell(r.start->goal);
-    start.agent_seed = r.start->agent_seed;
-    start.prior_map = r.start->prior_map;
-    start.connectivity = static_cast<std::uint8_t>(neighbours(r.start->connectivity));
-    m.starts.push_back(std::move(start));
+  m.episodes.clear();
+  m.steps.clear();
+  m.positions.clear();
+  m.bumped.clear();
+  m.free_cells.clear();
+  m.obstacle_cells.clear();
+  m.episodes.reserve(count);
+  m.steps.reserve(count);
+  m.positions.reserve(count);
+  m.bumped.reserve(count);
+  m.free_cells.reserve(count * words_);
+  m.obstacle_cells.reserve(count * words_);
+}
+
+void ScanBatchWriter::add(ScanRequest& r) {
+  ppp_msgs::ScanBatch& m = *message_;
+  m.episodes.push_back(r.episode);
+  m.steps.push_back(static_cast<std::uint32_t>(r.step));
+  m.positions.push_back(toGridCell(r.position));
+  m.bumped.push_back(r.bumped ? 1 : 0);
+  if (words_ == 1) {  // the usual window of at most 64 cells: one word each, no copy loop
+    m.free_cells.push_back(r.free_cells[0]);
+    m.obstacle_cells.push_back(r.obstacle_cells[0]);
+  } else {
+    m.free_cells.insert(m.free_cells.end(), r.free_cells.begin(), r.free_cells.begin() + words_);
+    m.obstacle_cells.insert(m.obstacle_cells.end(), r.obstacle_cells.begin(), r.obstacle_cells.begin() + words_);
   }
+  if (!r.start) return;
+  ppp_msgs::EpisodeStart start;
+  start.episode = r.episode;
+  start.width = static_cast<std::uint32_t>(r.start->width);
+  start.height = static_cast<std::uint32_t>(r.start->height);
+  start.start = toGridCell(r.start->start);
+  start.goal = toGridCell(r.start->goal);
+  start.agent_seed = r.start->agent_seed;
+  start.prior_map = std::move(r.start->prior_map);
+  start.connectivity = static_cast<std::uint8_t>(neighbours(r.start->connectivity));
+  m.starts.push_back(std::move(start));
+}
+
+void encodeScans(const std::vector<ScanRequest>& scans, ppp_msgs::ScanBatch* message) {
+  ScanBatchWriter writer(message);
+  writer.begin(scans.size(), scans.empty() ? 0 : scans[0].range, !scans.empty() && scans[0].window);
+  for (ScanRequest scan : scans) writer.add(scan);
 }
 
 std::string checkScanBatch(const ppp_msgs::ScanBatch& batch, bool reads_window, std::string* what) {

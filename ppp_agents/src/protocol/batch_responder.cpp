@@ -139,9 +139,12 @@ void BatchResponder::start(std::uint32_t id, const EpisodeStart& start) {
 void BatchResponder::finishAbsent() {
   // Episodes this batch held no (accepted) scan of are over.
   std::size_t kept = 0;
-  for (const Episode& e : episodes_) {
+  for (std::size_t i = 0; i < episodes_.size(); ++i) {
+    const Episode& e = episodes_[i];
     if (e.round == round_ && !e.rejected) {
-      episodes_[kept++] = e;
+      // Copied only when an earlier one went: copying an entry onto itself stalls on its own overlapping stores.
+      if (kept != i) episodes_[kept] = e;
+      ++kept;
     } else {
       host_.finish(e.id);
     }

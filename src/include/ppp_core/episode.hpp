@@ -61,6 +61,12 @@ class Episode {
   EpisodeOutcome takeOutcome() { return std::move(outcome_); }
   /// Steps taken so far.
   int step() const { return outcome_.steps; }
+  /// Asks the processor to fetch, for writing, where the next apply() records its cell: a caller stepping many
+  /// episodes in turn calls it a few episodes ahead, since each one's trajectory has left the cache since its
+  /// last step.
+  void prefetchNextStep() const {
+    if (!done_) __builtin_prefetch(outcome_.cells.data() + outcome_.steps + 1, 1);
+  }
 
  private:
   const Problem* problem_;

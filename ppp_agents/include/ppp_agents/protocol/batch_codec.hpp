@@ -21,8 +21,20 @@ inline Cell toCell(const ppp_msgs::GridCell& cell) { return Cell{static_cast<int
 /// A grid cell as a message cell.
 ppp_msgs::GridCell toGridCell(Cell cell);
 
-/// Fills `message` with `scans` (one batch of one agent), reusing its buffers; the header, agent and batch number
-/// are left to the caller.
+/// Writes a lane's scans straight into a ScanBatch (one batch of one agent), reusing its buffers; the header, agent
+/// and batch number are left to the caller.
+class ScanBatchWriter : public ScanSink {
+ public:
+  explicit ScanBatchWriter(ppp_msgs::ScanBatch* message) : message_(message) {}
+  void begin(std::size_t count, int range, bool window) override;
+  void add(ScanRequest& scan) override;
+
+ private:
+  ppp_msgs::ScanBatch* message_;
+  std::size_t words_ = 0;  // mask words per scan: 0 without windows
+};
+
+/// Fills `message` with `scans`, as a ScanBatchWriter does.
 void encodeScans(const std::vector<ScanRequest>& scans, ppp_msgs::ScanBatch* message);
 
 /// Checks that a batch's per-scan arrays agree in length, its range is a sensor range and, for an agent that

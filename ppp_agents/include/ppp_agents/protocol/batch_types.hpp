@@ -47,6 +47,33 @@ struct ScanRequest {
   int run = 0;                        ///< Run number (not sent).
 };
 
+/// Where a simulator's lane writes a batch of scans, one at a time: straight into the message to send
+/// (batch_codec.hpp's ScanBatchWriter), or into a list (ScanList). A lane reuses one ScanRequest for every scan of
+/// a batch, so a batch of hundreds of scans never lives as hundreds of ScanRequests.
+class ScanSink {
+ public:
+  virtual ~ScanSink() = default;
+  /// A batch of `count` scans of windows of `range` begins; `window` is false for an agent that reads no window.
+  virtual void begin(std::size_t count, int range, bool window) = 0;
+  /// The batch's next scan; its start may be moved from.
+  virtual void add(ScanRequest& scan) = 0;
+};
+
+/// A ScanSink that keeps the batch's scans in a vector (replaced by each batch; its elements' buffers reused).
+class ScanList : public ScanSink {
+ public:
+  explicit ScanList(std::vector<ScanRequest>* scans) : scans_(scans) {}
+  void begin(std::size_t count, int, bool) override {
+    scans_->resize(count);
+    next_ = 0;
+  }
+  void add(ScanRequest& scan) override { (*scans_)[next_++] = std::move(scan); }
+
+ private:
+  std::vector<ScanRequest>* scans_;
+  std::size_t next_ = 0;
+};
+
 /// One move of a batch, as an agent answers it.
 struct MoveReply {
   std::uint32_t episode = 0;      ///< The episode answered.
