@@ -25,16 +25,20 @@ BatchResponder::BatchResponder(const agents::AgentConfig& config)
 ppp_msgs::MoveBatch BatchResponder::answer(const ppp_msgs::ScanBatch& batch) {
   ++round_;
   const std::size_t n = batch.episodes.size();
-  replies_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    replies_[i] = {batch.episodes[i], i < batch.steps.size() ? batch.steps[i] : 0, kRejectedAction, nullptr};
-  }
+  // The answer is written in place: every scan's move starts as kRejectedAction until its agent acts.
+  ppp_msgs::MoveBatch moves;
+  moves.agent = config_.name;
+  moves.batch = batch.batch;
+  moves.episodes = batch.episodes;
+  moves.steps.resize(n);
+  std::copy_n(batch.steps.begin(), std::min(n, batch.steps.size()), moves.steps.begin());
+  moves.actions.assign(n, kRejectedAction);
   std::string what;
   const std::string fault = checkScanBatch(batch, reads_window_, &what);
   if (!fault.empty()) {
-    for (const MoveReply& r : replies_) reject(r.episode, r.step, fault, what);
+    for (std::size_t i = 0; i < n; ++i) reject(moves.episodes[i], moves.steps[i], fault, what);
     finishAbsent();
-    return encodeMoves(config_.name, batch.batch, replies_);
+    return moves;
   }
   failed_starts_.clear();
   for (const ppp_msgs::EpisodeStart& s : batch.starts) {
@@ -54,7 +58,7 @@ ppp_msgs::MoveBatch BatchResponder::answer(const ppp_msgs::ScanBatch& batch) {
       episodes_[next_ + kPrefetchAhead].agent->prefetch(toCell(batch.positions[i + kPrefetchAhead]));
     }
     try {
-      replies_[i].action = act(batch, i);
+      moves.actions[i] = act(batch, i);
     } catch (const InvalidArgument& e) {
       reject(batch.episodes[i], batch.steps[i], e.name(), e.what());
     } catch (const std::exception& e) {
@@ -62,7 +66,7 @@ ppp_msgs::MoveBatch BatchResponder::answer(const ppp_msgs::ScanBatch& batch) {
     }
   }
   finishAbsent();
-  return encodeMoves(config_.name, batch.batch, replies_);
+  return moves;
 }
 
 std::vector<BatchResponder::Episode>::iterator BatchResponder::firstNotBefore(std::uint32_t id) {

@@ -61,7 +61,6 @@ class BatchResponder {
   std::vector<std::int8_t> unknown_window_;  // what an agent that reads no window is given
   std::uint32_t round_ = 0;
   std::map<std::string, long> rejections_;
-  std::vector<MoveReply> replies_;  // this batch's answer, reused
 };
 
 }  // namespace protocol
