@@ -15,7 +15,7 @@ std::string candidateId(std::size_t index) { return "c" + std::to_string(index);
 HuntEvaluation::HuntEvaluation(const std::vector<Problem>& problems, const std::vector<agents::AgentConfig>& panel,
                                const EpisodeOptions& episode, int runs, std::uint64_t generator_seed, int batch_size,
                                const std::vector<std::uint64_t>& run_seeds)
-    : runs_(runs) {
+    : runs_(runs), keeps_rows_(!run_seeds.empty()) {
   if (runs < 1 || runs > generator::kMaxRunsPerEval) {
     throw InvalidArgument("runs", "expected runs in [1, " + std::to_string(generator::kMaxRunsPerEval) + "], got " +
                                       std::to_string(runs));
@@ -69,7 +69,7 @@ void HuntEvaluation::record(const std::vector<agents::EpisodeResult>& ended) {
       ++e.reasons[r.soft_failure ? kSoftFailureReason : r.reason];
     }
   }
-  rows_.insert(rows_.end(), ended.begin(), ended.end());
+  if (keeps_rows_) rows_.insert(rows_.end(), ended.begin(), ended.end());
 }
 
 std::vector<agents::EpisodeResult> HuntEvaluation::rows() const {

@@ -48,11 +48,13 @@ class HuntEvaluation {
   void record(const std::vector<agents::EpisodeResult>& ended);
   /// Per candidate, in request order: what the recorded runs came to.
   std::vector<PanelEvaluation> evaluations() const;
-  /// The recorded runs, in the order they ended (their `problem` is the candidate's id, "c0", "c1", ...).
+  /// The recorded runs, in the order they ended (their `problem` is the candidate's id, "c0", "c1", ...). Kept only
+  /// when the evaluation was given `run_seeds` (a shrink replaying its runs); a hunt's estimates need none of them.
   std::vector<agents::EpisodeResult> rows() const;
 
  private:
   int runs_;
+  bool keeps_rows_;
   std::vector<agents::PreparedSet> sets_;  // one set of the candidates; the lanes refer to it
   std::vector<std::unique_ptr<agents::AgentLane>> lanes_;
   mutable std::mutex mutex_;
