@@ -13,7 +13,7 @@ namespace agents {
 
 namespace {
 
-constexpr std::size_t kPrefetchAhead = 8;  // episodes between fetching a trajectory's next entry and writing it
+constexpr std::size_t kPrefetchAhead = 8;  // episodes between fetching an episode's state and using it
 
 /// Asks the processor to fetch `*object` whole: a pass over hundreds of episodes reads each one's state once, long
 /// after the last pass evicted it, at a stride too large for the hardware to foresee.
