@@ -18,22 +18,9 @@
 #include "ppp_generator/genetic_algorithm.hpp"
 #include "ppp_agents/episode_runner.hpp"
 #include "ppp_generator/failure_fitness.hpp"
+#include "default_agents.hpp"
 
 namespace {
-
-
-/// The default experiment's ten agent configurations, indexed by the first argument of BM_Step.
-ppp::agents::AgentConfig agentConfig(int index) {
-  static const char* const kNames[] = {"astar",    "random",           "wall_follower_left", "wall_follower_right",
-                                       "explorer", "long_term_explorer", "explorer_memory_5x5", "explorer_noise_0.1",
-                                       "bumper",   "decision_bumper"};
-  ppp::agents::AgentConfig config;
-  config.name = kNames[index];
-  config.type = config.name;
-  if (config.name == "explorer_memory_5x5") config.type = "explorer", config.memory_window = 5;
-  if (config.name == "explorer_noise_0.1") config.type = "explorer", config.sensor_noise = 0.1;
-  return config;
-}
 
 /// A random solvable side x side PPP of the generator's kind.
 ppp::Problem scaledProblem(int side) {
@@ -49,7 +36,7 @@ ppp::Problem scaledProblem(int side) {
 /// Whole episodes (budget 300) of one agent configuration, with the window atlas where the engine keeps one
 /// (maps up to kMaxWindowAtlasBytes of windows); the reported time is per agent-step.
 void BM_Step(benchmark::State& state) {
-  const ppp::agents::AgentConfig config = agentConfig(static_cast<int>(state.range(0)));
+  const ppp::agents::AgentConfig config = ppp::bench::defaultAgent(static_cast<int>(state.range(0)));
   const int side = static_cast<int>(state.range(1));
   const ppp::Problem problem = scaledProblem(side);
   const ppp::Grid grid = ppp::decodeGrid(problem);

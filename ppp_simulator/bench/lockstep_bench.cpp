@@ -1,0 +1,116 @@
+// What the batch protocol costs per step, with no transport at all: each of the default experiment's ten built-in
+// agent configurations plays the same runs in process (an EpisodeRunner, one episode at a time, as `ppp experiment`
+// plays them) and in lockstep batches (an AgentLane writing its scans into a ScanBatch, a BatchResponder answering
+// with a MoveBatch, the lane applying the decoded moves: what the simulator and an agent node do, without ROS).
+// The time is per agent-step; the lockstep runs are checked to take the in-process runs' steps.
+//   lockstep_bench [--benchmark_filter=explorer]
+
+#include <benchmark/benchmark.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "default_agents.hpp"
+#include "ppp_agents/agent_lane.hpp"
+#include "ppp_agents/episode_runner.hpp"
+#include "ppp_agents/protocol/batch_codec.hpp"
+#include "ppp_agents/protocol/batch_responder.hpp"
+#include "ppp_core/random_problem.hpp"
+#include "ppp_core/rng.hpp"
+
+namespace {
+
+constexpr int kProblems = 60;  // a default experiment's set
+constexpr int kRuns = 20;      // runs per PPP and agent
+
+/// kProblems random solvable 20x20 PPPs of the generator's kind (10 descriptors), under the default episode rules.
+const std::vector<ppp::agents::PreparedSet>& benchSets() {
+  static const std::vector<ppp::agents::PreparedSet> sets = [] {
+    ppp::ProblemSet set;
+    ppp::Rng rng(47);
+    for (int p = 0; p < kProblems; ++p) {
+      set.ids.push_back("ppp_" + std::to_string(p));
+      set.problems.push_back(ppp::randomProblem(rng, ppp::Problem::empty(20, 20, 10), 10));
+    }
+    return std::vector<ppp::agents::PreparedSet>{ppp::agents::prepareSet("bench", set, ppp::EpisodeOptions{})};
+  }();
+  return sets;
+}
+
+std::uint64_t runSeed(int problem, int run) {
+  return ppp::deriveSeed(1, {static_cast<std::uint64_t>(problem), static_cast<std::uint64_t>(run)});
+}
+
+/// Every run played in process, one episode at a time; returns the steps taken.
+long playInProcess(const ppp::agents::AgentConfig& config) {
+  const ppp::agents::PreparedSet& set = benchSets()[0];
+  ppp::agents::EpisodeRunner runner(config, set.episode);
+  auto agent = ppp::agents::makeAgent(config);
+  long steps = 0;
+  for (int p = 0; p < kProblems; ++p) {
+    for (int run = 0; run < kRuns; ++run) {
+      steps += runner.run(set.set.problems[p], set.grids[p], *agent, runSeed(p, run), false,
+                          ppp::agents::windowsOf(set, p)).steps;
+    }
+  }
+  return steps;
+}
+
+/// Every run played in lockstep batches of `batch_size` through the protocol's messages, answered by `responder`
+/// (an agent node's, which keeps its pool of agents from lane to lane); returns the steps taken.
+long playInLockstep(const ppp::agents::AgentConfig& config, int batch_size,
+                    ppp::protocol::BatchResponder* responder) {
+  const std::vector<ppp::agents::PreparedSet>& sets = benchSets();
+  ppp::agents::AgentLane lane(config, sets[0].episode, sets, [](int, int p, int run) { return runSeed(p, run); },
+                              kRuns, batch_size);
+  long steps = 0;
+  std::uint32_t batch = 0;
+  while (!lane.finished()) {
+    ppp_msgs::ScanBatch scans;  // a new message per round trip, as the simulator publishes
+    scans.agent = config.name;
+    scans.batch = ++batch;
+    ppp::protocol::ScanBatchWriter writer(&scans);
+    lane.scans(&writer);
+    const ppp::protocol::DecodedMoves moves = ppp::protocol::decodeMoves(responder->answer(scans));
+    for (const ppp::agents::EpisodeResult& ended : lane.answer(moves.moves, moves.missing_reason)) {
+      steps += ended.steps;
+    }
+  }
+  return steps;
+}
+
+void reportSteps(benchmark::State& state, long steps) {
+  state.counters["per_step"] = benchmark::Counter(static_cast<double>(steps),
+                                                  benchmark::Counter::kIsIterationInvariantRate |
+                                                      benchmark::Counter::kInvert);
+}
+
+void BM_InProcess(benchmark::State& state) {
+  const ppp::agents::AgentConfig config = ppp::bench::defaultAgent(static_cast<int>(state.range(0)));
+  long steps = 0;
+  for (auto _ : state) steps = playInProcess(config);
+  reportSteps(state, steps);
+  state.SetLabel(config.name);
+}
+BENCHMARK(BM_InProcess)->DenseRange(0, ppp::bench::kDefaultAgentCount - 1)->Unit(benchmark::kMillisecond);
+
+void BM_Lockstep(benchmark::State& state) {
+  const ppp::agents::AgentConfig config = ppp::bench::defaultAgent(static_cast<int>(state.range(0)));
+  const int batch_size = static_cast<int>(state.range(1));
+  const long expected = playInProcess(config);
+  ppp::protocol::BatchResponder responder(config);
+  playInLockstep(config, batch_size, &responder);  // the agent pool filled, as in an agent node that ran a while
+  long steps = 0;
+  for (auto _ : state) steps = playInLockstep(config, batch_size, &responder);
+  if (steps != expected) {
+    state.SkipWithError("the lockstep runs took other steps than the in-process runs");
+    return;
+  }
+  reportSteps(state, steps);
+  state.SetLabel(config.name + ", batches of " + std::to_string(batch_size));
+}
+BENCHMARK(BM_Lockstep)
+    ->ArgsProduct({benchmark::CreateDenseRange(0, ppp::bench::kDefaultAgentCount - 1, 1), {8, 32, 128, 500}})
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
