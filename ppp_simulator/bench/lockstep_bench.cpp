@@ -1,8 +1,11 @@
-// What the batch protocol costs per step, with no transport at all: each of the default experiment's ten built-in
-// agent configurations plays the same runs in process (an EpisodeRunner, one episode at a time, as `ppp experiment`
-// plays them) and in lockstep batches (an AgentLane writing its scans into a ScanBatch, a BatchResponder answering
-// with a MoveBatch, the lane applying the decoded moves: what the simulator and an agent node do, without ROS).
-// The time is per agent-step; the lockstep runs are checked to take the in-process runs' steps.
+// What lockstep costs per step, with no transport at all. Each of the default experiment's ten built-in agent
+// configurations plays the same runs two ways:
+//   InProcess  an EpisodeRunner, one episode at a time, as `ppp experiment` plays them;
+//   Lockstep   batches of up to `batch` episodes through the protocol's messages: an AgentLane writing its scans
+//              into a ScanBatch, a BatchResponder answering with a MoveBatch, the lane applying the decoded moves
+//              (what the simulator and an agent node do, without ROS).
+// Both make every run into its results.csv row. The time is per agent-step; the lockstep runs are checked to take
+// the in-process runs' steps.
 //   lockstep_bench [--benchmark_filter=explorer]
 
 #include <benchmark/benchmark.h>
@@ -41,7 +44,8 @@ std::uint64_t runSeed(int problem, int run) {
   return ppp::deriveSeed(1, {static_cast<std::uint64_t>(problem), static_cast<std::uint64_t>(run)});
 }
 
-/// Every run played in process, one episode at a time; returns the steps taken.
+/// Every run played in process, one episode at a time, each made into its results.csv row as the lanes make theirs;
+/// returns the steps taken.
 long playInProcess(const ppp::agents::AgentConfig& config) {
   const ppp::agents::PreparedSet& set = benchSets()[0];
   ppp::agents::EpisodeRunner runner(config, set.episode);
@@ -49,8 +53,10 @@ long playInProcess(const ppp::agents::AgentConfig& config) {
   long steps = 0;
   for (int p = 0; p < kProblems; ++p) {
     for (int run = 0; run < kRuns; ++run) {
-      steps += runner.run(set.set.problems[p], set.grids[p], *agent, runSeed(p, run), false,
-                          ppp::agents::windowsOf(set, p)).steps;
+      const std::uint64_t seed = runSeed(p, run);
+      const ppp::EpisodeOutcome outcome =
+          runner.run(set.set.problems[p], set.grids[p], *agent, seed, false, ppp::agents::windowsOf(set, p));
+      steps += ppp::agents::episodeResult(set, p, config.name, run, seed, outcome).steps;
     }
   }
   return steps;
