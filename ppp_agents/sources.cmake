@@ -19,5 +19,9 @@ set(PPP_AGENTS_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/planner_episode.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/planner_bridge_options.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/velocity_command.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/continuous/pure_pursuit.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/continuous/continuous_agent.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/continuous/continuous_astar.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/continuous/continuous_runner.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/protocol/batch_types.cpp
 )

@@ -18,7 +18,8 @@ target_compile_options(ppp_planners PRIVATE -Wall -Wextra)
 
 # MRPT's wavefront planner and holonomic reactive navigators, in a library of their own so only their nodes and
 # tests link MRPT.
-add_library(ppp_planners_mrpt STATIC planners/mrpt_grid_planner.cpp planners/mrpt_reactive_navigator.cpp)
+add_library(ppp_planners_mrpt STATIC planners/mrpt_grid_planner.cpp planners/mrpt_reactive_navigator.cpp
+            planners/mrpt_laser.cpp)
 set_target_properties(ppp_planners_mrpt PROPERTIES POSITION_INDEPENDENT_CODE ON)
 target_link_libraries(ppp_planners_mrpt PUBLIC ppp_planners mrpt::nav)
 target_compile_options(ppp_planners_mrpt PRIVATE -Wall -Wextra)
@@ -76,6 +77,10 @@ if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(mrpt_livelock_test planners/test/mrpt_livelock_test.cpp)
   target_link_libraries(mrpt_livelock_test ppp_planners_mrpt ppp_agents GTest::gtest_main)
   target_compile_options(mrpt_livelock_test PRIVATE -Wall -Wextra)
+  # The continuous model's laser against MRPT's laser simulator.
+  catkin_add_gtest(mrpt_laser_test planners/test/mrpt_laser_test.cpp)
+  target_link_libraries(mrpt_laser_test ppp_planners_mrpt GTest::gtest_main)
+  target_compile_options(mrpt_laser_test PRIVATE -Wall -Wextra)
   # MRPT's wavefront planner from two threads at once (its trace-back keeps state in function-static variables).
   catkin_add_gtest(mrpt_threads_test planners/test/mrpt_threads_test.cpp)
   target_link_libraries(mrpt_threads_test ppp_planners_mrpt GTest::gtest_main)
@@ -84,10 +89,12 @@ if(CATKIN_ENABLE_TESTING)
   target_link_libraries(planner_node_parameters_test ppp_planners_ros GTest::gtest_main)
 endif()
 
-# Plan times on a 20x20 map (Google Benchmark): a separate executable, never a test.
+# Plan times on a 20x20 map, and laser scans against MRPT's (Google Benchmark): separate executables, never tests.
 find_package(benchmark CONFIG QUIET)
 if(benchmark_FOUND)
   add_executable(planners_bench planners/bench/planners_bench.cpp)
   target_link_libraries(planners_bench ppp_planners benchmark::benchmark_main)
+  add_executable(laser_bench planners/bench/laser_bench.cpp)
+  target_link_libraries(laser_bench ppp_planners_mrpt benchmark::benchmark_main)
   target_compile_options(planners_bench PRIVATE -Wall -Wextra)
 endif()

@@ -10,6 +10,7 @@
 #include "ppp_agents/agent_registry.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/grid.hpp"
+#include "ppp_core/motion_options.hpp"
 #include "ppp_core/option_yaml.hpp"
 #include "ppp_core/text_format.hpp"
 
@@ -324,6 +325,10 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
                            "a copy); an agent on another host runs in a process of its own there"},
                           {kProcessOwn, "in a process of its own (an agent that may crash takes nothing else down)"}})
             .notAffectingResults(),
+        declareOption("motion", "how this agent's robot moves", +[](A& a) -> std::string& { return a.motion; })
+            .withChoices("motion", {{kMotionOfExperiment, "as the experiment's motion option says"},
+                                          {kMotionGrid, "one cell per action"},
+                                          {kMotionContinuous, "velocity, heading and a 2D laser (astar, planners)"}}),
     };
     const std::vector<OptionSpec<BridgeOptions>> per_agent =
         selectOptions(bridgeOptionSpecs(), {"plan_timeout", "lockstep", "plan_requests", "interface", "endless_proof", "cells_per_ppp_cell"});

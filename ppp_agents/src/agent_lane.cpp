@@ -3,6 +3,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "ppp_agents/continuous/continuous_agent.hpp"
 #include "ppp_agents/episode_runner.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/footprint.hpp"
@@ -29,7 +30,7 @@ AgentLane::AgentLane(const AgentConfig& config, const EpisodeOptions& options,
                      const std::vector<PreparedSet>& sets, SeedFunction seed_of, int runs, int batch_size,
                      const SkipFunction& skip, LaneShare share)
     : config_((config.validate(), config)),
-      options_((options.validate(), options)),
+      options_((options.validate(), refuseContinuous(config, options), options)),
       sets_(sets),
       seed_of_(std::move(seed_of)),
       batch_size_(isPlanner(config) ? 1 : batch_size),

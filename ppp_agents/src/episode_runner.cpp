@@ -1,5 +1,6 @@
 #include "ppp_agents/episode_runner.hpp"
 
+#include "ppp_agents/continuous/continuous_agent.hpp"
 #include "ppp_core/footprint.hpp"
 #include "ppp_core/optimum.hpp"
 
@@ -21,7 +22,7 @@ EpisodeInfo episodeInfo(const Problem& problem, const Grid& grid, const AgentCon
 
 EpisodeRunner::EpisodeRunner(const AgentConfig& config, const EpisodeOptions& options)
     : config_((config.validate(), config)),
-      options_((options.validate(), options)),
+      options_((options.validate(), refuseContinuous(config, options), options)),
       sensor_(SensorOptions{options.sensor_range, config.sensor_noise}) {}
 
 EpisodeOutcome EpisodeRunner::run(const Problem& problem, const Grid& grid, Agent& agent,

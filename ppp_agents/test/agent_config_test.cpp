@@ -147,7 +147,7 @@ TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, colour: red}\n"),
             "agents.yaml:2: agents[0].colour: unknown key; valid keys: bumper_turn, cells_per_ppp_cell, "
             "endless_proof, explorer_idle, explorer_ties, frontier, goal_range, goal_seeking, goal_ties, host, "
-            "instances, interface, lockstep, memory, memory_model, name, plan_requests, plan_timeout, planner_args, "
+            "instances, interface, lockstep, memory, memory_model, motion, name, plan_requests, plan_timeout, planner_args, "
             "planner_node, prior_map, process, runs, "
             "sensor_noise, type, wall_leave, wall_sense, wall_start");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),

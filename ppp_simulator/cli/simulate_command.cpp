@@ -10,7 +10,9 @@
 #include "commands.hpp"
 #include "option_flags.hpp"
 #include "ppp_agents/agent_config.hpp"
+#include "ppp_agents/continuous/continuous_runner.hpp"
 #include "ppp_core/csv.hpp"
+#include "ppp_core/diagnosis.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/footprint.hpp"
 #include "ppp_core/picture.hpp"
@@ -18,6 +20,7 @@
 #include "ppp_core/reachability.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_core/text_file.hpp"
+#include "ppp_core/trajectory_picture.hpp"
 #include "ppp_agents/episode_runner.hpp"
 #include "ppp_agents/prepared_set.hpp"
 #include "ppp_simulator/report/episode_animation.hpp"
@@ -74,16 +77,28 @@ Problem loadProblem(const std::string& source, const EpisodeOptions& episode) {
 void runSimulate(const SimulateFlags& f) {
   if (f.runs <= 0) throw InvalidArgument("--runs", "expected a number of runs >= 1, got " + std::to_string(f.runs));
   const agents::AgentConfig config = f.agent.agent();
-  agents::EpisodeRunner runner(config, f.agent.episode());
-  const Problem problem = loadProblem(f.problem, f.agent.episode());
+  const EpisodeOptions episode = f.agent.episode();
+  const Problem problem = loadProblem(f.problem, episode);
   const Grid grid = decodeGrid(problem);
-  auto agent = agents::makeAgent(config);
   long passes = 0;
   long steps = 0;
-  for (int run = 0; run < f.runs; ++run) {
-    const auto outcome = runner.run(problem, grid, *agent, deriveSeed(f.seed, {static_cast<std::uint64_t>(run)}));
-    passes += outcome.passed ? 1 : 0;
-    steps += outcome.steps;
+  if (agents::playsContinuously(config, episode)) {
+    agents::ContinuousRunner runner(config, episode);
+    const int grid_moves = fewestMoves(grid, problem.start, problem.goal, Connectivity::Four);
+    for (int run = 0; run < f.runs; ++run) {
+      const ContinuousOutcome outcome =
+          runner.run(problem, grid, grid_moves, deriveSeed(f.seed, {static_cast<std::uint64_t>(run)}));
+      passes += outcome.passed ? 1 : 0;
+      steps += outcome.steps;
+    }
+  } else {
+    agents::EpisodeRunner runner(config, episode);
+    auto agent = agents::makeAgent(config);
+    for (int run = 0; run < f.runs; ++run) {
+      const auto outcome = runner.run(problem, grid, *agent, deriveSeed(f.seed, {static_cast<std::uint64_t>(run)}));
+      passes += outcome.passed ? 1 : 0;
+      steps += outcome.steps;
+    }
   }
   const double rate = static_cast<double>(passes) / f.runs;
   const double mean_steps = static_cast<double>(steps) / f.runs;
@@ -97,7 +112,31 @@ void runSimulate(const SimulateFlags& f) {
   }
 }
 
+/// `ppp replay` of an agent in continuous motion: its trajectory drawn as a curve with the robot's last pose.
+void replayContinuous(const ReplayFlags& f, const agents::AgentConfig& config, const EpisodeOptions& options) {
+  if (fileExtension(f.output) != ".png") {
+    throw InvalidArgument("--output", "expected a .png file name: a run in continuous motion is drawn as its "
+                                      "trajectory, got '" + f.output + "'");
+  }
+  const Problem problem = loadProblem(f.problem, options);
+  const Grid grid = decodeGrid(problem);
+  agents::ContinuousRunner runner(config, options);
+  const int grid_moves = fewestMoves(grid, problem.start, problem.goal, Connectivity::Four);
+  const ContinuousOutcome outcome = runner.run(problem, grid, grid_moves, f.seed, true);
+  writeTrajectoryPng(problem, outcome.poses, options.motion.resolution,
+                     options.robot_radius * options.motion.resolution, f.output);
+  std::cout << config.name << " with seed " << f.seed << ": " << (outcome.passed ? "passed" : "failed") << " ("
+            << outcome.reason << ") after " << outcome.steps << " control periods (" << formatNumber(outcome.seconds)
+            << " s), " << formatNumber(outcome.distance) << " m travelled; trajectory drawn in " << f.output << "\n";
+  const Diagnosis diagnosis = diagnoseRun(outcome.passed, false, outcome.reason, outcome.cells);
+  if (*diagnosis.kind != '\0') std::cout << "diagnosis: " << describeDiagnosis(diagnosis, outcome.reason) << "\n";
+}
+
 void runReplay(const ReplayFlags& f) {
+  if (agents::playsContinuously(f.agent.agent(), f.agent.episode())) {
+    replayContinuous(f, f.agent.agent(), f.agent.episode());
+    return;
+  }
   const std::string extension = fileExtension(f.output);
   const bool animated = extension == ".gif";
   if (!animated && extension != ".png") {

@@ -1,10 +1,12 @@
 #include "ppp_simulator/experiment_config.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
 #include <sstream>
 
+#include "ppp_agents/continuous/continuous_agent.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/option_yaml.hpp"
 #include "ppp_core/text_file.hpp"
@@ -115,6 +117,10 @@ void ExperimentConfig::validate() const {
           throw InvalidArgument("agents_file", "in an experiment the panel's names come from its agents");
         }
         generator::resolvePanel(s.generator->agents, agents, true);  // planners hunt through ROS; ppp experiment refuses them
+        for (const agents::AgentConfig& a : agents) {
+          const auto& panel = s.generator->agents;
+          if (std::find(panel.begin(), panel.end(), a.name) != panel.end()) agents::refuseContinuous(a, episode);
+        }
       }
     } catch (const InvalidArgument& e) {
       const std::string field = "sets[" + std::to_string(i) + "].generator." + e.name();
@@ -124,6 +130,7 @@ void ExperimentConfig::validate() const {
   names.clear();
   for (const agents::AgentConfig& a : agents) {
     a.validate();
+    agents::checkContinuousAgent(a, episode);
     if (!names.insert(a.name).second) throw InvalidArgument("agents", "duplicate agent name '" + a.name + "'");
   }
   std::set<std::pair<std::string, std::string>> referenced;

@@ -4,6 +4,7 @@
 #include <map>
 #include <set>
 
+#include "ppp_agents/continuous/continuous_agent.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/text_format.hpp"
 #include "ppp_generator/fitness.hpp"
@@ -277,6 +278,7 @@ std::string setTopic(const std::string& set_name) {
 ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const GraphOptions& options) {
   config.validate();
   options.validate(config);
+  for (const agents::AgentConfig& agent : config.agents) agents::refuseContinuous(agent, config.episode);
   const bool shrink = !options.shrink.input.empty();
   if (shrink) checkShrink(config, options);
   const SetSpec* hunted = options.hunt.empty() ? nullptr : &huntedSet(config, options.hunt);

@@ -13,6 +13,7 @@
 #include "ppp_core/rng.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_core/yaml_reader.hpp"
+#include "ppp_agents/continuous/continuous_runner.hpp"
 #include "ppp_simulator/canonical_order.hpp"
 #include "ppp_agents/episode_runner.hpp"
 #include "ppp_simulator/experiment_report.hpp"
@@ -41,6 +42,19 @@ struct Unit {
 
 void say(const std::function<void(const std::string&)>& log, const std::string& text) {
   if (log) log(text);
+}
+
+/// @throws InvalidArgument naming robot_radius when an agent plays in continuous motion and its disc cannot stand
+/// at the start of a PPP of `sets`.
+void checkContinuousStarts(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets) {
+  const bool any = std::any_of(config.agents.begin(), config.agents.end(), [&](const agents::AgentConfig& agent) {
+    return agents::playsContinuously(agent, config.episode);
+  });
+  for (const agents::PreparedSet& set : sets) {
+    for (int p = 0; any && p < static_cast<int>(set.set.problems.size()); ++p) {
+      agents::checkContinuousStart(set, p, config.episode);
+    }
+  }
 }
 
 }  // namespace
@@ -173,6 +187,7 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
   std::unique_ptr<ResultsFile> opened;
   try {
     sets = beginExperiment(config, dir, log, stop);
+    checkContinuousStarts(config, sets);
     if (fs::exists(resultsPath(dir))) say(log, "reading the runs already in " + resultsPath(dir));
     opened = std::make_unique<ResultsFile>(resultsPath(dir), stop);
   } catch (const Interrupted&) {
@@ -224,26 +239,37 @@ ExperimentReport runExperiment(const ExperimentConfig& config, const std::string
   auto worker = [&]() {
     try {
       std::map<int, std::pair<std::unique_ptr<agents::Agent>, std::unique_ptr<agents::EpisodeRunner>>> agents;
+      std::map<int, std::unique_ptr<agents::ContinuousRunner>> continuous;
       for (;;) {
         if ((stop && stop()) || failed.load()) return;
         const std::size_t u = next_unit.fetch_add(1);
         if (u >= units.size()) return;
         const Unit& unit = units[u];
-        auto& slot = agents[unit.agent];
-        if (!slot.first) {
-          slot.first = agents::makeAgent(config.agents[unit.agent]);
-          slot.second = std::make_unique<agents::EpisodeRunner>(config.agents[unit.agent], config.episode);
-        }
+        const agents::AgentConfig& config_of_agent = config.agents[unit.agent];
         const agents::PreparedSet& set = sets[unit.set];
         std::vector<agents::EpisodeResult> rows;
         rows.reserve(unit.runs.size());
-        const std::string& agent = config.agents[unit.agent].name;
-        for (int run : unit.runs) {
-          const std::uint64_t seed = runSeed(config.seed, set.name, set.set.ids[unit.problem], agent, run);
-          const EpisodeOutcome outcome =
-              slot.second->run(set.set.problems[unit.problem], set.grids[unit.problem], *slot.first, seed, false,
-                               agents::windowsOf(set, unit.problem));
-          rows.push_back(agents::episodeResult(set, unit.problem, agent, run, seed, outcome));
+        const std::string& agent = config_of_agent.name;
+        if (agents::playsContinuously(config_of_agent, config.episode)) {
+          auto& runner = continuous[unit.agent];
+          if (!runner) runner = std::make_unique<agents::ContinuousRunner>(config_of_agent, config.episode);
+          for (int run : unit.runs) {
+            const std::uint64_t seed = runSeed(config.seed, set.name, set.set.ids[unit.problem], agent, run);
+            rows.push_back(runner->row(set, unit.problem, run, seed));
+          }
+        } else {
+          auto& slot = agents[unit.agent];
+          if (!slot.first) {
+            slot.first = agents::makeAgent(config_of_agent);
+            slot.second = std::make_unique<agents::EpisodeRunner>(config_of_agent, config.episode);
+          }
+          for (int run : unit.runs) {
+            const std::uint64_t seed = runSeed(config.seed, set.name, set.set.ids[unit.problem], agent, run);
+            const EpisodeOutcome outcome =
+                slot.second->run(set.set.problems[unit.problem], set.grids[unit.problem], *slot.first, seed, false,
+                                 agents::windowsOf(set, unit.problem));
+            rows.push_back(agents::episodeResult(set, unit.problem, agent, run, seed, outcome));
+          }
         }
         const long count = static_cast<long>(rows.size());
         appender.add(u, std::move(rows));

@@ -24,7 +24,8 @@ void EpisodeOptions::validate() const {
 
 const std::vector<OptionSpec<EpisodeOptions>>& episodeOptionSpecs() {
   using E = EpisodeOptions;
-  static const std::vector<OptionSpec<E>> specs = {
+  static const std::vector<OptionSpec<E>> specs = [] {
+    std::vector<OptionSpec<E>> list = {
       declareOption("budget", "moves per episode before it fails", +[](E& e) -> int& { return e.budget; },
                     Bounds{1, kMaxEpisodeBudget}),
       declareOption("budget_factor",
@@ -44,7 +45,7 @@ const std::vector<OptionSpec<EpisodeOptions>>& episodeOptionSpecs() {
                     +[](E& e) -> double& { return e.soft_failure_ratio; }, Bounds{0, kMaxBudgetFactor}),
       declareOption("robot_radius",
                     "the robot as a disc of this radius in cells; a move that would put it over an obstacle or off "
-                    "the map bumps (0: a point)",
+                    "the map bumps (0: a point; in continuous motion a disc of radius x resolution metres)",
                     +[](E& e) -> double& { return e.robot_radius; }, Bounds{0, kMaxRobotRadius}),
       declareOption("stays_use_budget",
                     "a stay uses one move of the budget (false: stays are free; an episode then also ends after " +
@@ -55,7 +56,14 @@ const std::vector<OptionSpec<EpisodeOptions>>& episodeOptionSpecs() {
                     "an episode then also ends after " +
                         std::to_string(kFreeActionFactor) + " x budget actions, as action_limit)",
                     +[](E& e) -> bool& { return e.bumps_use_budget; }),
-  };
+    };
+    for (const OptionSpec<E>& spec : nestedOptions(motionOptionSpecs(), +[](E& e) -> MotionOptions& {
+           return e.motion;
+         })) {
+      list.push_back(spec);
+    }
+    return list;
+  }();
   return specs;
 }
 

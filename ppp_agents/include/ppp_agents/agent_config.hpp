@@ -72,6 +72,9 @@ constexpr const char* kProcessManager = "manager";
 /// process: through ROS, the agent's node runs in a process of its own.
 constexpr const char* kProcessOwn = "own";
 
+/// motion: the agent moves as the experiment's `motion` says.
+constexpr const char* kMotionOfExperiment = "experiment";
+
 /// One agent configuration of an experiment: a type plus handicaps, under a name of its own.
 struct AgentConfig {
   std::string name;            ///< Name in results and reports (e.g. "explorer_memory_5x5"); defaults to type.
@@ -97,6 +100,7 @@ struct AgentConfig {
   int instances = 0;           ///< Planner agents only: bridge and planner pairs sharing its runs; 0 = instanceCount's.
   std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
   std::string process = kProcessManager;  ///< Through ROS: kProcessManager or kProcessOwn.
+  std::string motion = kMotionOfExperiment;  ///< kMotionOfExperiment, or a motion model of its own.
   /// @throws InvalidArgument naming "type" (listing the valid ones), "name", "memory", "sensor_noise",
   /// "goal_seeking", "goal_range", "memory_model", "wall_start", "wall_leave", "goal_ties", "wall_sense",
   /// "bumper_turn", "explorer_idle", "explorer_ties", "frontier", "runs", "prior_map", "planner_node",

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "ppp_core/connectivity.hpp"
+#include "ppp_core/motion_options.hpp"
 #include "ppp_core/option_spec.hpp"
 
 namespace ppp {
@@ -41,6 +42,7 @@ struct EpisodeOptions {
   double robot_radius = 0;   ///< The robot as a disc of this radius in cells (footprint.hpp); <= 0.5: a point.
   bool stays_use_budget = true;  ///< A stay uses one of the budget (false: free, within the action limit).
   bool bumps_use_budget = true;  ///< A bump uses one of the budget (false: free, within the action limit).
+  MotionOptions motion;          ///< How the robot moves: the grid (the default) or continuous motion.
   /// The rule of an episode of `budget` (episodeBudget()) under these options.
   BudgetRule budgetRule(int budget) const { return BudgetRule(budget, stays_use_budget, bumps_use_budget); }
   /// @throws InvalidArgument naming the option.

@@ -1,0 +1,34 @@
+#include "ppp_agents/continuous/continuous_agent.hpp"
+
+#include <string>
+
+#include "ppp_agents/continuous/continuous_astar.hpp"
+#include "ppp_core/error.hpp"
+#include "ppp_core/motion_options.hpp"
+
+namespace ppp {
+namespace agents {
+
+bool playsContinuously(const AgentConfig& config, const EpisodeOptions& options) {
+  return (config.motion == kMotionOfExperiment ? options.motion.motion : config.motion) == kMotionContinuous;
+}
+
+void checkContinuousAgent(const AgentConfig& config, const EpisodeOptions& options) {
+  if (playsContinuously(config, options) && !isPlanner(config)) makeContinuousAgent(config);
+}
+
+void refuseContinuous(const AgentConfig& config, const EpisodeOptions& options) {
+  if (!playsContinuously(config, options)) return;
+  throw InvalidArgument("motion", "agent '" + config.name + "' plays in " + std::string(kMotionContinuous) +
+                                      " motion, which `ppp experiment` and `ppp simulate` play in process; hunts, "
+                                      "replays, shrinks and the ROS graph play the grid model only so far");
+}
+
+std::unique_ptr<ContinuousAgent> makeContinuousAgent(const AgentConfig& config) {
+  if (config.type == "astar") return std::make_unique<ContinuousAstar>();
+  throw InvalidArgument("motion", "agent '" + config.name + "' (" + config.type + ") moves only on the grid: " +
+                                      std::string(kMotionContinuous) + " motion plays astar in process");
+}
+
+}  // namespace agents
+}  // namespace ppp

@@ -1,0 +1,85 @@
+#include "ppp_agents/continuous/continuous_runner.hpp"
+
+#include <string>
+
+#include "ppp_core/episode.hpp"
+#include "ppp_core/error.hpp"
+#include "ppp_core/optimum.hpp"
+#include "ppp_core/reachability.hpp"
+#include "ppp_core/square_world.hpp"
+#include "ppp_core/text_format.hpp"
+
+namespace ppp {
+namespace agents {
+
+void checkContinuousStart(const PreparedSet& set, int problem, const EpisodeOptions& options) {
+  const SquareWorld world(set.grids[problem], options.motion.resolution);
+  const Cell start = set.set.problems[problem].start;
+  if (world.collides(world.frame().centreX(start), world.frame().centreY(start),
+                     options.robot_radius * options.motion.resolution)) {
+    throw InvalidArgument("robot_radius", "set '" + set.name + "', PPP " + set.set.ids[problem] + ": a disc of " +
+                                              formatShortest(options.robot_radius) +
+                                              " cells touches an obstacle or the border at the start in continuous "
+                                              "motion; expected a robot that can stand there");
+  }
+}
+
+int continuousOptimalMoves(const Problem& problem, const Grid& grid, const EpisodeOptions& options, int grid_moves) {
+  const SquareWorld world(grid, options.motion.resolution);
+  const Grid space = continuousConfigurationSpace(world, options.robot_radius * options.motion.resolution);
+  const int moves = space.isFree(problem.start) && space.isFree(problem.goal)
+                        ? fewestMoves(space, problem.start, problem.goal, Connectivity::Four)
+                        : -1;
+  return moves > 0 ? moves : grid_moves;
+}
+
+ContinuousRunner::ContinuousRunner(const AgentConfig& config, const EpisodeOptions& options)
+    : config_(config), options_(options), agent_(makeContinuousAgent(config)) {}
+
+ContinuousOutcome ContinuousRunner::run(const Problem& problem, const Grid& grid, int grid_moves,
+                                        std::uint64_t run_seed, bool record_poses) {
+  const int optimal = continuousOptimalMoves(problem, grid, options_, grid_moves);
+  ContinuousEpisode episode(problem, grid, options_.motion, options_.robot_radius,
+                            continuousStepBudget(options_.motion, optimal), run_seed, record_poses);
+  ContinuousStart start;
+  start.frame = episode.world().frame();
+  start.pose = episode.pose();
+  start.goal = episode.goal();
+  start.radius = episode.radius();
+  start.limits = episode.limits();
+  start.beams = episode.beams();
+  start.control_period = options_.motion.control_period;
+  start.seed = agentSeed(run_seed);
+  start.prior_map = givenPriorMap(config_) ? &grid : nullptr;
+  agent_->start(start);
+  const bool reads_laser = agent_->readsLaser();
+  ranges_.clear();
+  while (!episode.done()) {
+    if (reads_laser) episode.scan(&ranges_);
+    const ContinuousSensing sensing{episode.pose(), episode.velocity(), episode.time(), &ranges_};
+    episode.apply(agent_->command(sensing));
+  }
+  return episode.outcome();
+}
+
+EpisodeResult ContinuousRunner::row(const PreparedSet& set, int problem, int run_number, std::uint64_t run_seed) {
+  const Problem& ppp = set.set.problems[problem];
+  const ContinuousOutcome outcome = run(ppp, set.grids[problem], set.moves[problem], run_seed);
+  EpisodeResult r;
+  r.set = set.name;
+  r.problem = set.set.ids[problem];
+  r.agent = config_.name;
+  r.run = run_number;
+  r.seed = run_seed;
+  r.passed = outcome.passed;
+  r.steps = outcome.steps;
+  r.path_length = outcome.distance / options_.motion.resolution;
+  r.optimal_length = continuousOptimalMoves(ppp, set.grids[problem], options_, set.moves[problem]);
+  r.soft_failure = isSoftFailure(r.passed, r.path_length, r.optimal_length, options_.soft_failure_ratio);
+  r.reason = outcome.reason;
+  setDiagnosis(diagnoseRun(r.passed, r.soft_failure, r.reason, outcome.cells), &r);
+  return r;
+}
+
+}  // namespace agents
+}  // namespace ppp
