@@ -128,7 +128,7 @@ void replayContinuous(const ReplayFlags& f, const agents::AgentConfig& config, c
   std::cout << config.name << " with seed " << f.seed << ": " << (outcome.passed ? "passed" : "failed") << " ("
             << outcome.reason << ") after " << outcome.steps << " control periods (" << formatNumber(outcome.seconds)
             << " s), " << formatNumber(outcome.distance) << " m travelled; trajectory drawn in " << f.output << "\n";
-  const Diagnosis diagnosis = diagnoseRun(outcome.passed, false, outcome.reason, outcome.cells);
+  const Diagnosis diagnosis = diagnoseContinuousRun(outcome.passed, false, outcome.reason, outcome.cells);
   if (*diagnosis.kind != '\0') std::cout << "diagnosis: " << describeDiagnosis(diagnosis, outcome.reason) << "\n";
 }
 

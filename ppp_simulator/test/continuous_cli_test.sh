@@ -57,6 +57,11 @@ expect_ok "simulate continuous" "$ppp" simulate --agent astar --problem empty:8x
 grep -q '"passes":2' "$work/out" && pass || fail "simulate continuous: $(cat "$work/out")"
 expect_ok "replay continuous" "$ppp" replay empty:8x6 --agent astar --motion continuous --seed 1 -o "$work/run.png"
 grep -q 'control periods' "$work/out" && [ -s "$work/run.png" ] && pass || fail "replay continuous: $(cat "$work/out")"
+# A run too slow for its budget (time_factor 1 at top speed, slow turns) is diagnosed from its cells.
+expect_ok "replay continuous failure" "$ppp" replay empty:8x6 --agent astar --motion continuous --time-factor 1 \
+  --max-angular-speed 0.3 --seed 1 -o "$work/fail.png"
+grep -q 'failed (budget_exhausted) after 240 control periods' "$work/out" && grep -q '^diagnosis: wandering' "$work/out" \
+  && pass || fail "replay continuous failure: $(cat "$work/out")"
 expect_error "replay continuous as gif" "--output: expected a .png file name" \
   "$ppp" replay empty:8x6 --agent astar --motion continuous --seed 1 -o "$work/run.gif"
 

@@ -1,6 +1,7 @@
 #include "ppp_core/diagnosis.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include "ppp_core/episode_reason.hpp"
 
@@ -157,6 +158,50 @@ std::string describeDiagnosis(const Diagnosis& d, const std::string& reason, int
   }
   if (kind == diagnosis::kReported) return "reported: the run ended as " + reason;
   return "";
+}
+
+Diagnosis diagnoseContinuousTrajectory(const std::vector<Cell>& cells) {
+  const int last = static_cast<int>(cells.size()) - 1;  // control periods
+  Diagnosis d = diagnoseTrajectory(cells);
+  if (last < 1 || std::string(d.kind) == diagnosis::kStuck) return d;
+  // The cells entered, each with the period it was entered at.
+  std::vector<Cell> entered;
+  std::vector<int> entered_at;
+  for (int t = 0; t <= last; ++t) {
+    if (t == 0 || cells[t] != cells[t - 1]) entered.push_back(cells[t]), entered_at.push_back(t);
+  }
+  const int final_start = last - finalWindow(last);  // the final window: periods after final_start
+  const int n = static_cast<int>(entered.size()) - 1;
+  // The first entry of the final window (the cell the robot stood on as it began counts).
+  int window_entry = n;
+  while (window_entry > 0 && entered_at[window_entry] > final_start) --window_entry;
+  for (int period = 2; 2 * period <= n; ++period) {
+    const int needed = std::max(n - window_entry, 2 * period);
+    if (needed > n) break;
+    bool periodic = true;
+    for (int i = n; periodic && i >= n - needed + period; --i) periodic = entered[i] == entered[i - period];
+    if (!periodic) continue;
+    int start = n - needed;
+    while (start > 0 && entered[start - 1] == entered[start - 1 + period]) --start;
+    d = Diagnosis{};
+    d.kind = diagnosis::kLoop;
+    d.step = entered_at[start];
+    d.period = period;
+    return d;
+  }
+  if (std::string(d.kind) == diagnosis::kLoop) {  // periodic in time but not as cells entered: judge it again
+    const int first_visit = lastFirstVisit(cells);
+    d = Diagnosis{};
+    d.kind = first_visit <= final_start ? diagnosis::kConfined : diagnosis::kWandering;
+    d.step = first_visit <= final_start ? first_visit + 1 : first_visit;
+  }
+  return d;
+}
+
+Diagnosis diagnoseContinuousRun(bool passed, bool soft_failure, const std::string& reason,
+                                const std::vector<Cell>& cells) {
+  if (!passed && reason == reason::kBudgetExhausted) return diagnoseContinuousTrajectory(cells);
+  return diagnoseRun(passed, soft_failure, reason, cells);
 }
 
 }  // namespace ppp

@@ -230,3 +230,62 @@ TEST(DiagnosisTest, DescriptionsNameTheStepsAndThePeriod) {
 
 }  // namespace
 }  // namespace ppp
+
+namespace ppp {
+namespace {
+
+/// The cells of a continuous run that enters the cells `entered` in order, staying `dwell[i % dwell.size()]`
+/// control periods on the i-th, on row 0.
+std::vector<Cell> dwelling(const std::vector<int>& entered, const std::vector<int>& dwell) {
+  std::vector<Cell> cells;
+  for (std::size_t i = 0; i < entered.size(); ++i) {
+    for (int k = 0; k < dwell[i % dwell.size()]; ++k) cells.push_back(Cell{entered[i], 0});
+  }
+  return cells;
+}
+
+TEST(ContinuousDiagnosisTest, CirclingIsALoopOfTheCellsEnteredWhateverTheTimeSpentInEach) {
+  // Out along 0 1 2, then round 3 4 5 6 five times, staying 3, 5, 4, 2, 6, 3, 7 periods in turn: no period in
+  // time, but the cells entered repeat 3 4 5 6 from the 4th entry (period 4). The 3 entries before it took
+  // 3 + 5 + 4 = 12 periods, so the loop begins at period 12.
+  std::vector<int> entered = {0, 1, 2};
+  for (int lap = 0; lap < 5; ++lap) entered.insert(entered.end(), {3, 4, 5, 6});
+  const std::vector<Cell> cells = dwelling(entered, {3, 5, 4, 2, 6, 3, 7});
+  EXPECT_STRNE(diagnoseTrajectory(cells).kind, diagnosis::kLoop);  // the grid's rule sees no period in time
+  const Diagnosis d = diagnoseContinuousTrajectory(cells);
+  EXPECT_STREQ(d.kind, diagnosis::kLoop);
+  EXPECT_EQ(d.period, 4);
+  EXPECT_EQ(d.step, 12);
+  EXPECT_EQ(d.endless_step, -1);
+}
+
+TEST(ContinuousDiagnosisTest, StuckConfinedAndWanderingAreJudgedOverControlPeriods) {
+  // 0 1 2 then 40 periods on 2: stuck since period 2 (each cell one period).
+  std::vector<Cell> still = dwelling({0, 1, 2}, {1});
+  still.insert(still.end(), 40, Cell{2, 0});
+  const Diagnosis stuck = diagnoseContinuousTrajectory(still);
+  EXPECT_STREQ(stuck.kind, diagnosis::kStuck);
+  EXPECT_EQ(stuck.step, 2);
+  // New cells to the end: wandering, up to the last new cell (entered at period 2 x 9 = 18).
+  const Diagnosis wandering = diagnoseContinuousTrajectory(dwelling({0, 1, 2, 3, 4, 5, 6, 7, 8, 9}, {2}));
+  EXPECT_STREQ(wandering.kind, diagnosis::kWandering);
+  EXPECT_EQ(wandering.step, 18);
+  // Back over cells stood on before with no period among the cells entered: confined since the last new cell
+  // (cell 3 entered at period 3, so from period 4).
+  const Diagnosis confined =
+      diagnoseContinuousTrajectory(dwelling({0, 1, 2, 3, 2, 1, 2, 3, 2, 1, 0, 1, 0, 1, 2, 1, 2, 3, 2}, {1}));
+  EXPECT_STREQ(confined.kind, diagnosis::kConfined);
+  EXPECT_EQ(confined.step, 4);
+}
+
+TEST(ContinuousDiagnosisTest, AContinuousRunIsDiagnosedByHowItEnded) {
+  std::vector<int> entered;
+  for (int lap = 0; lap < 5; ++lap) entered.insert(entered.end(), {3, 4});
+  const std::vector<Cell> cells = dwelling(entered, {2, 3});
+  EXPECT_STREQ(diagnoseContinuousRun(false, false, reason::kBudgetExhausted, cells).kind, diagnosis::kLoop);
+  EXPECT_STREQ(diagnoseContinuousRun(false, false, reason::kCollision, cells).kind, diagnosis::kReported);
+  EXPECT_STREQ(diagnoseContinuousRun(true, false, reason::kGoalReached, cells).kind, "");
+}
+
+}  // namespace
+}  // namespace ppp

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "ppp_core/diagnosis.hpp"
 #include "ppp_core/episode.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/optimum.hpp"
@@ -77,7 +78,7 @@ EpisodeResult ContinuousRunner::row(const PreparedSet& set, int problem, int run
   r.optimal_length = continuousOptimalMoves(ppp, set.grids[problem], options_, set.moves[problem]);
   r.soft_failure = isSoftFailure(r.passed, r.path_length, r.optimal_length, options_.soft_failure_ratio);
   r.reason = outcome.reason;
-  setDiagnosis(diagnoseRun(r.passed, r.soft_failure, r.reason, outcome.cells), &r);
+  setDiagnosis(diagnoseContinuousRun(r.passed, r.soft_failure, r.reason, outcome.cells), &r);
   return r;
 }
 

@@ -60,6 +60,18 @@ int finalWindow(int steps);
 /// whole decision state as it chose that action (0: none given); it can prove a loop endless.
 Diagnosis diagnoseTrajectory(const std::vector<Cell>& cells, const std::vector<std::uint64_t>& states = {});
 
+/// The diagnosis of a continuous run whose budget ran out (docs/reference/continuous-motion.md). `cells[t]` is the
+/// robot's cell after t control periods. stuck, confined and wandering are judged as diagnoseTrajectory() judges
+/// them, over the final window of control periods; a loop on the cells the robot entered (each cell once per
+/// entry, however long it stayed): the smallest period p >= 2 of that sequence over a tail that covers the final
+/// window and two whole cycles. `step` is then the control period at which the tail begins, and `period` counts
+/// the cells entered per cycle. A loop is never proven endless here.
+Diagnosis diagnoseContinuousTrajectory(const std::vector<Cell>& cells);
+
+/// diagnoseRun() of a continuous run: diagnoseContinuousTrajectory() for a budget ending.
+Diagnosis diagnoseContinuousRun(bool passed, bool soft_failure, const std::string& reason,
+                                const std::vector<Cell>& cells);
+
 /// The diagnosis of any run: "" for a pass that is not a soft failure, detour for a soft one, the trajectory's
 /// for a budget ending (reason budget_exhausted or action_limit), `reported_kind` when the agent gave one for
 /// its own ending (missed_route or no_route), else reported.
