@@ -39,7 +39,11 @@ ContinuousRunner::ContinuousRunner(const AgentConfig& config, const EpisodeOptio
 
 ContinuousOutcome ContinuousRunner::run(const Problem& problem, const Grid& grid, int grid_moves,
                                         std::uint64_t run_seed, bool record_poses) {
-  const int optimal = continuousOptimalMoves(problem, grid, options_, grid_moves);
+  return play(problem, grid, continuousOptimalMoves(problem, grid, options_, grid_moves), run_seed, record_poses);
+}
+
+ContinuousOutcome ContinuousRunner::play(const Problem& problem, const Grid& grid, int optimal,
+                                         std::uint64_t run_seed, bool record_poses) {
   ContinuousEpisode episode(problem, grid, options_.motion, options_.robot_radius,
                             continuousStepBudget(options_.motion, optimal), run_seed, record_poses);
   ContinuousStart start;
@@ -65,7 +69,8 @@ ContinuousOutcome ContinuousRunner::run(const Problem& problem, const Grid& grid
 
 EpisodeResult ContinuousRunner::row(const PreparedSet& set, int problem, int run_number, std::uint64_t run_seed) {
   const Problem& ppp = set.set.problems[problem];
-  const ContinuousOutcome outcome = run(ppp, set.grids[problem], set.moves[problem], run_seed);
+  const int optimal = continuousOptimalMoves(ppp, set.grids[problem], options_, set.moves[problem]);
+  const ContinuousOutcome outcome = play(ppp, set.grids[problem], optimal, run_seed, false);
   EpisodeResult r;
   r.set = set.name;
   r.problem = set.set.ids[problem];
@@ -75,7 +80,7 @@ EpisodeResult ContinuousRunner::row(const PreparedSet& set, int problem, int run
   r.passed = outcome.passed;
   r.steps = outcome.steps;
   r.path_length = outcome.distance / options_.motion.resolution;
-  r.optimal_length = continuousOptimalMoves(ppp, set.grids[problem], options_, set.moves[problem]);
+  r.optimal_length = optimal;
   r.soft_failure = isSoftFailure(r.passed, r.path_length, r.optimal_length, options_.soft_failure_ratio);
   r.reason = outcome.reason;
   setDiagnosis(diagnoseContinuousRun(r.passed, r.soft_failure, r.reason, outcome.cells), &r);

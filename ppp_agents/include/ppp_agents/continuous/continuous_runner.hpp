@@ -36,6 +36,10 @@ class ContinuousRunner {
   EpisodeResult row(const PreparedSet& set, int problem, int run_number, std::uint64_t run_seed);
 
  private:
+  /// One run whose shortest route for the disc takes `optimal` moves.
+  ContinuousOutcome play(const Problem& problem, const Grid& grid, int optimal, std::uint64_t run_seed,
+                         bool record_poses);
+
   AgentConfig config_;
   EpisodeOptions options_;
   std::unique_ptr<ContinuousAgent> agent_;
