@@ -23,6 +23,7 @@
 #include "ppp_core/trajectory_picture.hpp"
 #include "ppp_agents/episode_runner.hpp"
 #include "ppp_agents/prepared_set.hpp"
+#include "ppp_simulator/report/continuous_animation.hpp"
 #include "ppp_simulator/report/episode_animation.hpp"
 
 namespace ppp {
@@ -112,22 +113,37 @@ void runSimulate(const SimulateFlags& f) {
   }
 }
 
-/// `ppp replay` of an agent in continuous motion: its trajectory drawn as a curve with the robot's last pose.
+/// `ppp replay` of an agent in continuous motion: its trajectory drawn as a curve with the robot's last pose, or
+/// the run animated with the laser's beams.
 void replayContinuous(const ReplayFlags& f, const agents::AgentConfig& config, const EpisodeOptions& options) {
-  if (fileExtension(f.output) != ".png") {
-    throw InvalidArgument("--output", "expected a .png file name: a run in continuous motion is drawn as its "
-                                      "trajectory, got '" + f.output + "'");
+  const std::string extension = fileExtension(f.output);
+  if (extension != ".png" && extension != ".gif") {
+    throw InvalidArgument("--output", "expected a .png (the trajectory drawn) or .gif (the run animated) file name, "
+                                      "got '" + f.output + "'");
   }
   const Problem problem = loadProblem(f.problem, options);
   const Grid grid = decodeGrid(problem);
-  agents::ContinuousRunner runner(config, options);
-  const int grid_moves = fewestMoves(grid, problem.start, problem.goal, Connectivity::Four);
-  const ContinuousOutcome outcome = runner.run(problem, grid, grid_moves, f.seed, true);
-  writeTrajectoryPng(problem, outcome.poses, options.motion.resolution,
-                     options.robot_radius * options.motion.resolution, f.output);
+  ContinuousOutcome outcome;
+  std::string drawn;
+  if (extension == ".gif") {
+    simulator::ContinuousAnimation animation =
+        simulator::animateContinuousRun(problem, grid, config, options, f.seed, f.animation);
+    writeFileAtomically(f.output, animation.gif);
+    outcome = std::move(animation.outcome);
+    drawn = "animated in " + f.output + " (" + std::to_string(animation.frames) + " frames" +
+            (animation.stride > 1 ? ", every " + std::to_string(animation.stride) + " control periods"
+                                  : std::string()) + ")";
+  } else {
+    agents::ContinuousRunner runner(config, options);
+    outcome = runner.run(problem, grid, fewestMoves(grid, problem.start, problem.goal, Connectivity::Four), f.seed,
+                         true);
+    writeTrajectoryPng(problem, outcome.poses, options.motion.resolution,
+                       options.robot_radius * options.motion.resolution, f.output);
+    drawn = "trajectory drawn in " + f.output;
+  }
   std::cout << config.name << " with seed " << f.seed << ": " << (outcome.passed ? "passed" : "failed") << " ("
             << outcome.reason << ") after " << outcome.steps << " control periods (" << formatNumber(outcome.seconds)
-            << " s), " << formatNumber(outcome.distance) << " m travelled; trajectory drawn in " << f.output << "\n";
+            << " s), " << formatNumber(outcome.distance) << " m travelled; " << drawn << "\n";
   const Diagnosis diagnosis = diagnoseContinuousRun(outcome.passed, false, outcome.reason, outcome.cells);
   if (*diagnosis.kind != '\0') std::cout << "diagnosis: " << describeDiagnosis(diagnosis, outcome.reason) << "\n";
 }

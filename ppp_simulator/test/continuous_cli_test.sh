@@ -62,8 +62,13 @@ expect_ok "replay continuous failure" "$ppp" replay empty:8x6 --agent astar --mo
   --max-angular-speed 0.3 --seed 1 -o "$work/fail.png"
 grep -q 'failed (budget_exhausted) after 240 control periods' "$work/out" && grep -q '^diagnosis: wandering' "$work/out" \
   && pass || fail "replay continuous failure: $(cat "$work/out")"
-expect_error "replay continuous as gif" "--output: expected a .png file name" \
-  "$ppp" replay empty:8x6 --agent astar --motion continuous --seed 1 -o "$work/run.gif"
+# The run animated: the start, every control period (258 of them), and the last frame; read back by Pillow.
+expect_ok "replay continuous gif" "$ppp" replay empty:8x6 --agent astar --motion continuous --seed 1 -o "$work/run.gif"
+grep -q 'animated in .* (259 frames)' "$work/out" && pass || fail "replay continuous gif: $(cat "$work/out")"
+frames=$(/usr/bin/python3 -c 'import sys; from PIL import Image; print(Image.open(sys.argv[1]).n_frames)' "$work/run.gif")
+[ "$frames" = 259 ] && pass || fail "replay continuous gif: Pillow reads $frames frames"
+expect_error "replay continuous as jpg" "--output: expected a .png (the trajectory drawn) or .gif (the run animated)" \
+  "$ppp" replay empty:8x6 --agent astar --motion continuous --seed 1 -o "$work/run.jpg"
 
 # Bad input, each refused naming what is wrong.
 expect_error "unknown motion" "--motion: unknown motion 'teleport'; valid: grid, continuous" \

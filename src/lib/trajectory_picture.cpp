@@ -15,6 +15,14 @@ constexpr Rgb kRobotColour{240, 120, 0};
 
 }  // namespace
 
+Pixel mapPixel(double x, double y, int rows, double resolution, const PictureOptions& options) {
+  // Map frame (metres, y up) to pixels: a cell's square spans cell_pixels from its origin (past its grid line).
+  const double scale = options.cell_pixels / resolution;
+  const double inset = options.grid_lines ? 0.5 : 0;
+  return Pixel{static_cast<int>(std::lround(x * scale + inset - 0.5)),
+               static_cast<int>(std::lround((rows * resolution - y) * scale + inset - 0.5))};
+}
+
 std::vector<std::uint8_t> renderTrajectoryRgb(const Problem& problem, const std::vector<Pose2D>& poses,
                                               double resolution, double radius, const PictureOptions& options) {
   if (poses.empty()) throw InvalidArgument("poses", "expected at least one pose of the robot to draw");
@@ -27,13 +35,8 @@ std::vector<std::uint8_t> renderTrajectoryRgb(const Problem& problem, const std:
       canvas.set(x, y, Rgb{base[i], base[i + 1], base[i + 2]});
     }
   }
-  // Map frame (metres, y up) to pixels: a cell's square spans cell_pixels from its origin (past its grid line).
   const double scale = options.cell_pixels / resolution;
-  const double inset = options.grid_lines ? 0.5 : 0;
-  const auto pixel = [&](double x, double y) {
-    return Pixel{static_cast<int>(std::lround(x * scale + inset - 0.5)),
-                 static_cast<int>(std::lround((problem.height * resolution - y) * scale + inset - 0.5))};
-  };
+  const auto pixel = [&](double x, double y) { return mapPixel(x, y, problem.height, resolution, options); };
   const int thickness = std::max(1, options.cell_pixels / 8);
   for (std::size_t i = 1; i < poses.size(); ++i) {
     canvas.line(pixel(poses[i - 1].x, poses[i - 1].y), pixel(poses[i].x, poses[i].y), thickness, kPathColour);

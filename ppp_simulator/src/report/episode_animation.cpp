@@ -107,25 +107,13 @@ std::size_t moveKey(const Problem& problem, Cell cell, Action action) {
 }
 
 /// The cell size for `options` on `problem`: as given, or chosen by map size.
-int cellPixels(const Problem& problem, const AnimationOptions& options) {
-  if (options.cell_pixels != 0) return options.cell_pixels;
-  return std::clamp(kAnimationTargetPixels / std::max(problem.width, problem.height), 3, 12);
-}
 
 /// Draws frames of one problem as palette indices.
 class FramePainter {
  public:
   FramePainter(const Problem& problem, const Grid& grid, int cell_pixels)
       : problem_(problem), grid_(grid), picture_{cell_pixels, true},
-        width_(pictureWidth(problem.width, picture_)), height_(pictureHeight(problem.height, picture_)) {
-    if (width_ > kMaxPictureSide || height_ > kMaxPictureSide) {
-      const int most = (kMaxPictureSide - 1) / cell_pixels;
-      throw InvalidArgument("map", "a " + std::to_string(problem.width) + "x" + std::to_string(problem.height) +
-                                       " map is too large to animate at " + std::to_string(cell_pixels) +
-                                       " pixels per cell (at most " + std::to_string(most) + " cells a side, " +
-                                       std::to_string(kMaxPictureSide) + " pixels); draw its path as a .png");
-    }
-  }
+        width_(pictureWidth(problem.width, picture_)), height_(pictureHeight(problem.height, picture_)) {}
   int width() const { return width_; }
   int height() const { return height_; }
 
@@ -189,6 +177,21 @@ class FramePainter {
 
 }  // namespace
 
+int animationCellPixels(const Problem& problem, const AnimationOptions& options) {
+  const int cell_pixels = options.cell_pixels != 0
+                              ? options.cell_pixels
+                              : std::clamp(kAnimationTargetPixels / std::max(problem.width, problem.height), 3, 12);
+  const PictureOptions picture{cell_pixels, true};
+  if (pictureWidth(problem.width, picture) > kMaxPictureSide || pictureHeight(problem.height, picture) > kMaxPictureSide) {
+    const int most = (kMaxPictureSide - 1) / cell_pixels;
+    throw InvalidArgument("map", "a " + std::to_string(problem.width) + "x" + std::to_string(problem.height) +
+                                     " map is too large to animate at " + std::to_string(cell_pixels) +
+                                     " pixels per cell (at most " + std::to_string(most) + " cells a side, " +
+                                     std::to_string(kMaxPictureSide) + " pixels); draw its path as a .png");
+  }
+  return cell_pixels;
+}
+
 void AnimationOptions::validate() const {
   if (cell_pixels != 0 && (cell_pixels < 3 || cell_pixels > 64)) {
     throw InvalidArgument("cell_pixels", "expected an integer in [3, 64], or 0 (by map size), got " +
@@ -214,7 +217,7 @@ EpisodeAnimation drawEpisode(const Problem& problem, const Grid& grid, const age
                              const EpisodeOptions& options, std::uint64_t run_seed, int steps, const NextAction& next,
                              const char* end_reason, const AnimationOptions& animation, const CycleMarks& marks,
                              const StopCheck& stop) {
-  const FramePainter painter(problem, grid, cellPixels(problem, animation));
+  const FramePainter painter(problem, grid, animationCellPixels(problem, animation));
   const agents::EpisodeRunner runner(config, options);
   EpisodeAnimation result;
   result.stride = std::max(1, (steps + animation.max_frames - 2) / (animation.max_frames - 1));

@@ -10,6 +10,10 @@
 
 namespace ppp {
 
+/// The pixel of the map-frame point (x, y) metres in a picture of a `rows`-row problem at `resolution` metres per
+/// cell drawn with `options`.
+Pixel mapPixel(double x, double y, int rows, double resolution, const PictureOptions& options);
+
 /// Draws a continuous run (ContinuousOutcome::poses) over its problem as row-major RGB bytes, sized and coloured as
 /// renderProblemRgb(): the robot centre's trajectory as a blue curve, and the robot at its last pose as a disc
 /// outline of `radius` metres (at least a few pixels) with a line from its centre along its heading.

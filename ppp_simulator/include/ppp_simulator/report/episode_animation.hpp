@@ -36,6 +36,10 @@ struct AnimationOptions {
   void validate() const;
 };
 
+/// The side of a cell in pixels an animation of `problem` uses under `options` (AnimationOptions::cell_pixels).
+/// @throws InvalidArgument naming "map" when the picture would exceed kMaxPictureSide pixels a side.
+int animationCellPixels(const Problem& problem, const AnimationOptions& options);
+
 /// Palette colours of the animation (with picture.hpp's map colours).
 constexpr Rgb kAgentColour{255, 120, 0};     ///< The agent's disc.
 constexpr Rgb kBumpColour{220, 0, 200};      ///< Bump marks.
