@@ -23,5 +23,6 @@ set(PPP_AGENTS_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/continuous/continuous_agent.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/continuous/continuous_astar.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/continuous/continuous_runner.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/continuous/continuous_lane.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/protocol/batch_types.cpp
 )

@@ -34,6 +34,46 @@ int continuousOptimalMoves(const Problem& problem, const Grid& grid, const Episo
   return moves > 0 ? moves : grid_moves;
 }
 
+ContinuousEpisode continuousEpisode(const Problem& problem, const Grid& grid, const EpisodeOptions& options,
+                                    int optimal, std::uint64_t run_seed, bool record_poses) {
+  return ContinuousEpisode(problem, grid, options.motion, options.robot_radius,
+                           continuousStepBudget(options.motion, optimal), run_seed, record_poses);
+}
+
+ContinuousStart continuousStart(const ContinuousEpisode& episode, const EpisodeOptions& options,
+                                const AgentConfig& config, const Grid& grid, std::uint64_t run_seed) {
+  ContinuousStart start;
+  start.frame = episode.world().frame();
+  start.pose = episode.pose();
+  start.goal = episode.goal();
+  start.radius = episode.radius();
+  start.limits = episode.limits();
+  start.beams = episode.beams();
+  start.control_period = options.motion.control_period;
+  start.seed = agentSeed(run_seed);
+  start.prior_map = givenPriorMap(config) ? &grid : nullptr;
+  return start;
+}
+
+EpisodeResult continuousResult(const PreparedSet& set, int problem, const std::string& agent, int run,
+                               std::uint64_t seed, int optimal, const ContinuousOutcome& outcome,
+                               const EpisodeOptions& options) {
+  EpisodeResult r;
+  r.set = set.name;
+  r.problem = set.set.ids[problem];
+  r.agent = agent;
+  r.run = run;
+  r.seed = seed;
+  r.passed = outcome.passed;
+  r.steps = outcome.steps;
+  r.path_length = outcome.distance / options.motion.resolution;
+  r.optimal_length = optimal;
+  r.soft_failure = isSoftFailure(r.passed, r.path_length, r.optimal_length, options.soft_failure_ratio);
+  r.reason = outcome.reason;
+  setDiagnosis(diagnoseContinuousRun(r.passed, r.soft_failure, r.reason, outcome.cells), &r);
+  return r;
+}
+
 ContinuousRunner::ContinuousRunner(const AgentConfig& config, const EpisodeOptions& options)
     : config_(config), options_(options), agent_(makeContinuousAgent(config)) {}
 
@@ -44,19 +84,8 @@ ContinuousOutcome ContinuousRunner::run(const Problem& problem, const Grid& grid
 
 ContinuousOutcome ContinuousRunner::play(const Problem& problem, const Grid& grid, int optimal,
                                          std::uint64_t run_seed, bool record_poses) {
-  ContinuousEpisode episode(problem, grid, options_.motion, options_.robot_radius,
-                            continuousStepBudget(options_.motion, optimal), run_seed, record_poses);
-  ContinuousStart start;
-  start.frame = episode.world().frame();
-  start.pose = episode.pose();
-  start.goal = episode.goal();
-  start.radius = episode.radius();
-  start.limits = episode.limits();
-  start.beams = episode.beams();
-  start.control_period = options_.motion.control_period;
-  start.seed = agentSeed(run_seed);
-  start.prior_map = givenPriorMap(config_) ? &grid : nullptr;
-  agent_->start(start);
+  ContinuousEpisode episode = continuousEpisode(problem, grid, options_, optimal, run_seed, record_poses);
+  agent_->start(continuousStart(episode, options_, config_, grid, run_seed));
   const bool reads_laser = agent_->readsLaser();
   ranges_.clear();
   while (!episode.done()) {
@@ -70,21 +99,8 @@ ContinuousOutcome ContinuousRunner::play(const Problem& problem, const Grid& gri
 EpisodeResult ContinuousRunner::row(const PreparedSet& set, int problem, int run_number, std::uint64_t run_seed) {
   const Problem& ppp = set.set.problems[problem];
   const int optimal = continuousOptimalMoves(ppp, set.grids[problem], options_, set.moves[problem]);
-  const ContinuousOutcome outcome = play(ppp, set.grids[problem], optimal, run_seed, false);
-  EpisodeResult r;
-  r.set = set.name;
-  r.problem = set.set.ids[problem];
-  r.agent = config_.name;
-  r.run = run_number;
-  r.seed = run_seed;
-  r.passed = outcome.passed;
-  r.steps = outcome.steps;
-  r.path_length = outcome.distance / options_.motion.resolution;
-  r.optimal_length = optimal;
-  r.soft_failure = isSoftFailure(r.passed, r.path_length, r.optimal_length, options_.soft_failure_ratio);
-  r.reason = outcome.reason;
-  setDiagnosis(diagnoseContinuousRun(r.passed, r.soft_failure, r.reason, outcome.cells), &r);
-  return r;
+  return continuousResult(set, problem, config_.name, run_number, run_seed, optimal,
+                          play(ppp, set.grids[problem], optimal, run_seed, false), options_);
 }
 
 }  // namespace agents

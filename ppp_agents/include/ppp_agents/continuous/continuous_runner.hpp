@@ -23,6 +23,24 @@ void checkContinuousStart(const PreparedSet& set, int problem, const EpisodeOpti
 /// configuration space, or, where the disc has no route, the PPP's `grid_moves`.
 int continuousOptimalMoves(const Problem& problem, const Grid& grid, const EpisodeOptions& options, int grid_moves);
 
+/// A continuous run of PPP `problem` (decoded as `grid`) whose shortest route for the disc takes `optimal` moves
+/// (continuousOptimalMoves()), seeded `run_seed`: its budget from `options`. @throws InvalidArgument naming
+/// robot_radius when the disc cannot stand at the start.
+ContinuousEpisode continuousEpisode(const Problem& problem, const Grid& grid, const EpisodeOptions& options,
+                                    int optimal, std::uint64_t run_seed, bool record_poses = false);
+
+/// What an agent of `config` is told at the start of `episode` (a run of a PPP decoded as `grid`, seeded
+/// `run_seed`): the true map only when the agent is given it (astar).
+ContinuousStart continuousStart(const ContinuousEpisode& episode, const EpisodeOptions& options,
+                                const AgentConfig& config, const Grid& grid, std::uint64_t run_seed);
+
+/// The results.csv row of run `run` (seeded `seed`) of `agent` on PPP `problem` of `set`, which went as `outcome`
+/// and whose shortest route for the disc takes `optimal` moves: steps are control periods, bumps 0, path and
+/// optimal lengths in cells (the distance travelled / resolution; `optimal`), the diagnosis from its cells.
+EpisodeResult continuousResult(const PreparedSet& set, int problem, const std::string& agent, int run,
+                               std::uint64_t seed, int optimal, const ContinuousOutcome& outcome,
+                               const EpisodeOptions& options);
+
 /// Plays one agent configuration's runs in continuous motion in process (ContinuousEpisode), one at a time.
 class ContinuousRunner {
  public:
@@ -31,8 +49,7 @@ class ContinuousRunner {
   /// One run of PPP `problem` (decoded as `grid`, with `grid_moves` fewest moves on the grid) seeded `run_seed`.
   ContinuousOutcome run(const Problem& problem, const Grid& grid, int grid_moves, std::uint64_t run_seed,
                         bool record_poses = false);
-  /// Run `run_number` of PPP `problem` of `set` as its results.csv row: steps are control periods, bumps 0, path and optimal
-  /// lengths in cells (the distance travelled / resolution; the disc's fewest moves).
+  /// Run `run_number` of PPP `problem` of `set` as its results.csv row (continuousResult()).
   EpisodeResult row(const PreparedSet& set, int problem, int run_number, std::uint64_t run_seed);
 
  private:

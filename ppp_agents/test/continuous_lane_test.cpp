@@ -1,0 +1,148 @@
+// Continuous runs played in lockstep batches (ContinuousLane, the simulator's side of continuous motion through
+// ROS) give the rows the in-process runner gives, whatever the batch size; missing, late, failed and invalid
+// answers end runs with their reasons.
+
+#include "ppp_agents/continuous/continuous_lane.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ppp_agents/continuous/continuous_runner.hpp"
+#include "ppp_core/episode_reason.hpp"
+#include "ppp_core/error.hpp"
+#include "ppp_core/random_problem.hpp"
+#include "ppp_core/rng.hpp"
+
+namespace ppp {
+namespace agents {
+namespace {
+
+AgentConfig astar() {
+  AgentConfig config;
+  config.name = config.type = "astar";
+  return config;
+}
+
+EpisodeOptions continuousOptions() {
+  EpisodeOptions options;
+  options.motion.motion = kMotionContinuous;
+  options.robot_radius = 0.3;
+  return options;
+}
+
+/// Two sets of three random 12x12 PPPs.
+std::vector<PreparedSet> smallSets(const EpisodeOptions& options) {
+  std::vector<PreparedSet> sets;
+  Rng rng(17);
+  for (const char* name : {"a", "b"}) {
+    ProblemSet set;
+    for (int i = 0; i < 3; ++i) {
+      set.ids.push_back("ppp_00" + std::to_string(i));
+      set.problems.push_back(randomProblem(rng, Problem::empty(12, 12, 6), 6));
+    }
+    sets.push_back(prepareSet(name, set, options));
+  }
+  return sets;
+}
+
+std::uint64_t seedOf(int set, int problem, int run) {
+  return deriveSeed(5, {static_cast<std::uint64_t>(set), static_cast<std::uint64_t>(problem),
+                        static_cast<std::uint64_t>(run)});
+}
+
+/// Plays `lane` to the end, answering each request as a fresh continuous A* per episode would.
+std::vector<EpisodeResult> playAll(ContinuousLane* lane) {
+  std::map<std::uint32_t, std::unique_ptr<ContinuousAgent>> agents;
+  std::vector<EpisodeResult> rows;
+  std::vector<ContinuousRequest> requests;
+  while (!lane->finished()) {
+    lane->requests(&requests);
+    std::vector<ContinuousReply> replies;
+    for (const ContinuousRequest& r : requests) {
+      auto& agent = agents[r.episode];
+      if (r.start) {
+        agent = makeContinuousAgent(astar());
+        agent->start(*r.start);
+      }
+      const ContinuousSensing sensing{r.pose, r.velocity, r.time, &r.ranges};
+      replies.push_back({r.episode, r.step, agent->command(sensing), nullptr});
+    }
+    for (EpisodeResult& row : lane->answer(replies, reason::kTimeout)) rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+std::string csv(const EpisodeResult& row) {
+  std::string line;
+  appendCsvRow(row, &line);
+  return line;
+}
+
+TEST(ContinuousLaneTest, LockstepRowsAreTheInProcessRowsWhateverTheBatchSize) {
+  const EpisodeOptions options = continuousOptions();
+  const std::vector<PreparedSet> sets = smallSets(options);
+  std::map<std::string, std::string> expected;  // by set, PPP and run
+  ContinuousRunner runner(astar(), options);
+  for (int s = 0; s < 2; ++s) {
+    for (int p = 0; p < 3; ++p) {
+      for (int run = 0; run < 2; ++run) {
+        const EpisodeResult row = runner.row(sets[s], p, run, seedOf(s, p, run));
+        EXPECT_TRUE(row.passed) << csv(row);
+        expected[row.set + row.problem + std::to_string(run)] = csv(row);
+      }
+    }
+  }
+  for (const int batch : {1, 5, 64}) {
+    ContinuousLane lane(astar(), options, sets, seedOf, 2, batch);
+    const std::vector<EpisodeResult> rows = playAll(&lane);
+    ASSERT_EQ(rows.size(), 12u) << "batch " << batch;
+    for (const EpisodeResult& row : rows) {
+      EXPECT_EQ(csv(row), expected[row.set + row.problem + std::to_string(row.run)]) << "batch " << batch;
+    }
+  }
+}
+
+TEST(ContinuousLaneTest, MissingLateFailedAndInvalidAnswersEndRunsWithTheirReasons) {
+  const EpisodeOptions options = continuousOptions();
+  const std::vector<PreparedSet> sets = smallSets(options);
+  ContinuousLane lane(astar(), options, sets, seedOf, 1, 4);
+  std::vector<ContinuousRequest> requests;
+  lane.requests(&requests);
+  ASSERT_EQ(requests.size(), 4u);
+  EXPECT_TRUE(requests[0].start.has_value());
+  EXPECT_TRUE(requests[0].ranges.empty());  // astar does not read the laser
+  ASSERT_NE(requests[0].start->prior_map, nullptr);
+  const std::vector<ContinuousReply> replies = {
+      {requests[0].episode, requests[0].step + 1, BodyVelocity{}, nullptr},            // for another step
+      {requests[1].episode, requests[1].step, BodyVelocity{std::nan(""), 0, 0}, nullptr},  // not a number
+      {requests[2].episode, requests[2].step, BodyVelocity{}, reason::kPlannerTimeout},   // the agent's failure
+  };  // and none for the fourth (set b's ppp_000)
+  std::map<std::string, std::string> reasons;
+  for (const EpisodeResult& row : lane.answer(replies, reason::kTimeout)) reasons[row.set + "/" + row.problem] = row.reason;
+  EXPECT_EQ(reasons["a/ppp_000"], reason::kInvalidCommand);
+  EXPECT_EQ(reasons["a/ppp_001"], reason::kInvalidCommand);
+  EXPECT_EQ(reasons["a/ppp_002"], reason::kPlannerTimeout);
+  EXPECT_EQ(reasons["b/ppp_000"], reason::kTimeout);
+  EXPECT_EQ(reasons.size(), 4u);
+  EXPECT_EQ(lane.remaining(), 2);  // set b's ppp_001 and ppp_002 still queued
+  const std::vector<EpisodeResult> lost = lane.failAll(reason::kAgentLost);
+  EXPECT_EQ(lost.size(), 2u);
+  for (const EpisodeResult& row : lost) EXPECT_EQ(row.reason, reason::kAgentLost);
+  EXPECT_TRUE(lane.finished());
+}
+
+TEST(ContinuousLaneTest, AnAgentThatMovesOnlyOnTheGridIsRefused) {
+  const EpisodeOptions options = continuousOptions();
+  const std::vector<PreparedSet> sets = smallSets(options);
+  AgentConfig explorer;
+  explorer.name = explorer.type = "explorer";
+  EXPECT_THROW(ContinuousLane(explorer, options, sets, seedOf, 1, 4), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace agents
+}  // namespace ppp
