@@ -88,6 +88,11 @@ robot_radius: 0.5" ""
 expect_error "a disc that cannot stand at the start" "robot_radius: set 'turns', PPP ppp_000: a disc of 0.5" \
   "$ppp" experiment "$work/wide.yaml" -o "$work/wide" --quiet
 [ ! -e "$work/wide/results.csv" ] && pass || fail "runs were played before refusing the disc"
+"$ppp" random --size 8x6 --obstacles 3 --seed 2 -o "$work/small.ppp" > /dev/null
+expect_error "continuous shrink" "motion: agent 'astar' plays in continuous motion" \
+  "$ppp" shrink "$work/small.ppp" --agent astar --motion continuous --runs 2 -o "$work/shrunk.ppp"
+expect_error "continuous hunt" "motion: agent 'astar' plays in continuous motion" \
+  "$ppp" generate --fitness failure --agents astar --motion continuous --matings 4 --population 4 -o "$work/hunt"
 expect_error "continuous through ROS" "motion: agent 'astar' plays in continuous motion" \
   "$ppp" launch-file "$work/continuous.yaml" -o "$work/ros"
 

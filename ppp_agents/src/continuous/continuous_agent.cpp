@@ -20,8 +20,8 @@ void checkContinuousAgent(const AgentConfig& config, const EpisodeOptions& optio
 void refuseContinuous(const AgentConfig& config, const EpisodeOptions& options) {
   if (!playsContinuously(config, options)) return;
   throw InvalidArgument("motion", "agent '" + config.name + "' plays in " + std::string(kMotionContinuous) +
-                                      " motion, which `ppp experiment` and `ppp simulate` play in process; hunts, "
-                                      "replays, shrinks and the ROS graph play the grid model only so far");
+                                      " motion, which `ppp experiment`, `ppp simulate` and `ppp replay` play in "
+                                      "process; hunts, shrinks and the ROS graph play the grid model only so far");
 }
 
 std::unique_ptr<ContinuousAgent> makeContinuousAgent(const AgentConfig& config) {

@@ -54,7 +54,7 @@ bool playsContinuously(const AgentConfig& config, const EpisodeOptions& options)
 /// only on the grid (every built-in type but astar).
 void checkContinuousAgent(const AgentConfig& config, const EpisodeOptions& options);
 
-/// For what plays the grid model only (the grid runner, lanes, hunts, replays, shrinks, the ROS graph):
+/// For what plays the grid model only (the grid runner, its lanes, hunts, shrinks, the ROS graph):
 /// @throws InvalidArgument naming "motion" when `config` plays in continuous motion under `options`.
 void refuseContinuous(const AgentConfig& config, const EpisodeOptions& options);
 
