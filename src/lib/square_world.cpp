@@ -81,12 +81,10 @@ double SquareWorld::clearance(double x, double y, double cap) const {
 }
 
 double SquareWorld::castRay(double x, double y, double angle, double max_range) const {
-  return castRayAlong(x, y, std::cos(angle), std::sin(angle), max_range);
-}
-
-double SquareWorld::castRayAlong(double x, double y, double dx, double dy, double max_range) const {
   const Origin origin = originAt(x, y);
-  return origin.index < 0 ? 0 : traverse(blocked_.data(), stride_, frame_.resolution, origin, dx, dy, max_range);
+  return origin.index < 0 ? 0
+                          : traverse(blocked_.data(), stride_, frame_.resolution, origin, std::cos(angle),
+                                     std::sin(angle), max_range);
 }
 
 void SquareWorld::castFan(double x, double y, double turn_cos, double turn_sin, const std::vector<double>& cosines,

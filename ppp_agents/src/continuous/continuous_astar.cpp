@@ -50,7 +50,7 @@ void ContinuousAstar::start(const ContinuousStart& start) {
     path.push_back(MapPoint{start.frame.centreX(c), start.frame.centreY(c)});
   }
   if (path.empty()) path.push_back(MapPoint{start.pose.x, start.pose.y});  // no route: it stays
-  follower_.follow(std::move(path), start.frame.resolution, start.limits, true, start.control_period);
+  follower_.follow(std::move(path), start.frame.resolution, start.limits, start.control_period);
 }
 
 }  // namespace agents

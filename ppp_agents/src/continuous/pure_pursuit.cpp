@@ -17,23 +17,29 @@ std::pair<double, double> nearestOnSegment(const MapPoint& a, const MapPoint& b,
   return {t, std::hypot(a.x + t * dx - px, a.y + t * dy - py)};
 }
 
+/// The fastest speed from which braking at `acceleration` a step each `period` (acceleration x period less each
+/// period) stops within `distance`, and reaches it in no less than one period: v^2 / 2a + v T / 2 <= d, v <= d / T.
+double brakingSpeed(double acceleration, double period, double distance) {
+  const double brake = acceleration * period / 2;
+  return std::min(std::sqrt(brake * brake + 2 * acceleration * distance) - brake, distance / period);
+}
+
 }  // namespace
 
 void PurePursuit::follow(std::vector<MapPoint> path, double resolution, const KinematicLimits& limits,
-                         bool stop_at_turns, double control_period) {
+                         double control_period) {
   path_ = std::move(path);
   remaining_.assign(path_.size(), 0);
   for (std::size_t i = path_.size(); i-- > 1;) {
     remaining_[i - 1] = remaining_[i] + std::hypot(path_[i].x - path_[i - 1].x, path_[i].y - path_[i - 1].y);
   }
   turns_.assign(path_.size(), false);
-  for (std::size_t i = 1; stop_at_turns && i + 1 < path_.size(); ++i) {
+  for (std::size_t i = 1; i + 1 < path_.size(); ++i) {
     const double cross = (path_[i].x - path_[i - 1].x) * (path_[i + 1].y - path_[i].y) -
                          (path_[i].y - path_[i - 1].y) * (path_[i + 1].x - path_[i].x);
     turns_[i] = std::fabs(cross) > 1e-12;
   }
   resolution_ = resolution;
-  stop_at_turns_ = stop_at_turns;
   control_period_ = control_period;
   segment_ = 0;
   look_ahead_ = std::max(kLookAheadCells * resolution, 2 * limits.max_linear_speed * control_period);
@@ -75,7 +81,7 @@ BodyVelocity PurePursuit::command(const Pose2D& pose, const BodyVelocity& veloci
   const double here = segment_ + 1 < path_.size()
                           ? remaining_[segment_] - along * (remaining_[segment_] - remaining_[segment_ + 1])
                           : 0;  // path length left from the robot's nearest point
-  // The next turn not yet reached at rest (stop_at_turns), else the end.
+  // The next turn not yet reached at rest, else the end.
   const bool moving = std::hypot(velocity.forward, velocity.left) > 0;
   std::size_t stop = path_.size() - 1;
   for (std::size_t i = segment_ + 1; i + 1 < path_.size(); ++i) {
@@ -88,12 +94,8 @@ BodyVelocity PurePursuit::command(const Pose2D& pose, const BodyVelocity& veloci
   const MapPoint target = pointAhead(segment_, along, std::min(look_ahead_, std::max(to_stop, 0.0)));
   double to_end = std::hypot(path_[stop].x - pose.x, path_[stop].y - pose.y);
   to_end = std::max(to_end, to_stop);
-  // The fastest speed from which braking a step a period (a x T less each period) stops within to_end:
-  // v^2 / (2a) + v T / 2 <= to_end.
-  const double brake = limits_.max_linear_acceleration * control_period_ / 2;
-  const double stop_speed = std::sqrt(brake * brake + 2 * limits_.max_linear_acceleration * to_end) - brake;
-  double speed = std::min(limits_.max_linear_speed, stop_speed);
-  if (stop_at_turns_) speed = std::min(speed, to_end / control_period_);
+  const double speed = std::min(limits_.max_linear_speed,
+                                brakingSpeed(limits_.max_linear_acceleration, control_period_, to_end));
   const double dx = target.x - pose.x, dy = target.y - pose.y;
   const double distance = std::hypot(dx, dy);
   if (distance < 1e-12) return BodyVelocity{};
@@ -105,12 +107,9 @@ BodyVelocity PurePursuit::command(const Pose2D& pose, const BodyVelocity& veloci
     return BodyVelocity{ahead * scale, beside * scale, 0};
   }
   const double alpha = std::atan2(beside, ahead);
-  if (std::fabs(alpha) > (stop_at_turns_ ? kTurnAlignedRadians : kTurnOnTheSpot)) {
-    const double turn_brake = limits_.max_angular_acceleration * control_period_ / 2;
-    double rate = std::min(limits_.max_angular_speed,
-                           std::sqrt(turn_brake * turn_brake + 2 * limits_.max_angular_acceleration * std::fabs(alpha)) -
-                               turn_brake);
-    if (stop_at_turns_) rate = std::min(rate, std::fabs(alpha) / control_period_);
+  if (std::fabs(alpha) > kTurnAlignedRadians) {
+    const double rate = std::min(limits_.max_angular_speed,
+                                 brakingSpeed(limits_.max_angular_acceleration, control_period_, std::fabs(alpha)));
     return BodyVelocity{0, 0, std::copysign(rate, alpha)};
   }
   const double curvature = 2 * std::sin(alpha) / distance;

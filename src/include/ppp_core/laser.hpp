@@ -25,8 +25,8 @@ struct LaserBeams {
 };
 
 /// The ranges a laser with `beams` (made by LaserBeams::of()) at `pose` reads in `world`, written into `ranges`
-/// (resized): each cast exactly (SquareWorld::castRayAlong), +infinity for no return; with noise, each finite range plus a Gaussian draw from
-/// `noise` (never below 0).
+/// (resized): each cast exactly (SquareWorld::castFan), +infinity for no return; with noise, each finite range
+/// plus a Gaussian draw from `noise` (never below 0).
 void scanLaser(const SquareWorld& world, const Pose2D& pose, const LaserBeams& beams, Rng* noise,
                std::vector<float>* ranges);
 

@@ -43,8 +43,6 @@ struct MotionOptions {
                                    ///< centre, in cells.
   double time_factor = 4;          ///< A run's budget of simulated time: factor x the time the optimal route
                                    ///< takes at top speed (ContinuousEpisode).
-  /// True for the continuous model.
-  bool continuous() const { return motion == kMotionContinuous; }
   /// True for a holonomic robot.
   bool holonomic() const { return kinematics == kKinematicsHolonomic; }
   /// @throws InvalidArgument naming the option.

@@ -36,9 +36,7 @@ class SquareWorld {
   /// square or the border, computed exactly (a grid traversal from crossing to crossing, not marched), or
   /// +infinity when it is farther than `max_range`. 0 when (x, y) is inside an obstacle or off the map.
   double castRay(double x, double y, double angle, double max_range) const;
-  /// castRay() along the unit vector (dx, dy).
-  double castRayAlong(double x, double y, double dx, double dy, double max_range) const;
-  /// castRayAlong() of many rays from (x, y): ray i along (cosines[i], sines[i]) turned by the angle whose cosine
+  /// castRay() of many rays from (x, y): ray i along (cosines[i], sines[i]) turned by the angle whose cosine
   /// and sine are `turn_cos` and `turn_sin`, into ranges[i] (count = cosines.size()).
   void castFan(double x, double y, double turn_cos, double turn_sin, const std::vector<double>& cosines,
                const std::vector<double>& sines, double max_range, float* ranges) const;
