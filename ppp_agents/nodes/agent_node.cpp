@@ -3,6 +3,7 @@
 #include <boost/make_shared.hpp>
 
 #include "agent_node_parameters.hpp"
+#include "ppp_agents/continuous/continuous_agent.hpp"
 #include "ppp_msgs/graph_names.h"
 
 namespace ppp {
@@ -17,6 +18,13 @@ AgentNode::AgentNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh, con
       scans_(ppp_msgs::subscribeLockstep<ppp_msgs::ScanBatch>(
           nh, ppp_msgs::topics::kScans, 10, [this](const ppp_msgs::ScanBatch::ConstPtr& batch) { onScans(batch); },
           queue_.get())) {
+  if (movesContinuously(config_)) {
+    continuous_ = std::make_unique<protocol::ContinuousResponder>(config_);
+    commands_ = nh.advertise<ppp_msgs::CommandBatch>(ppp_msgs::topics::kCommands, 10);
+    sensing_ = ppp_msgs::subscribeLockstep<ppp_msgs::SensingBatch>(
+        nh, ppp_msgs::topics::kSensing, 10,
+        [this](const ppp_msgs::SensingBatch::ConstPtr& batch) { onSensing(batch); }, queue_.get());
+  }
   const std::string topics = scans_.getTopic() + " -> " + moves_.getTopic();
   ROS_INFO("agent '%s': type %s, memory %s, sensor noise %g (applied by the simulator); %s", config_.name.c_str(),
            config_.type.c_str(), memoryWindowText(config_.memory_window).c_str(), config_.sensor_noise,
@@ -33,6 +41,12 @@ void AgentNode::onScans(const ppp_msgs::ScanBatch::ConstPtr& batch) {
   auto moves = boost::make_shared<ppp_msgs::MoveBatch>(responder_.answer(*batch));
   moves->header.stamp = ros::Time::now();
   moves_.publish(moves);
+}
+
+void AgentNode::onSensing(const ppp_msgs::SensingBatch::ConstPtr& batch) {
+  auto commands = boost::make_shared<ppp_msgs::CommandBatch>(continuous_->answer(*batch));
+  commands->header.stamp = ros::Time::now();
+  commands_.publish(commands);
 }
 
 }  // namespace agents

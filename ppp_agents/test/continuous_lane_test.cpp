@@ -12,47 +12,19 @@
 #include <vector>
 
 #include "ppp_agents/continuous/continuous_runner.hpp"
+#include "continuous_sets.hpp"
 #include "ppp_core/episode_reason.hpp"
 #include "ppp_core/error.hpp"
-#include "ppp_core/random_problem.hpp"
-#include "ppp_core/rng.hpp"
 
 namespace ppp {
 namespace agents {
 namespace {
 
-AgentConfig astar() {
-  AgentConfig config;
-  config.name = config.type = "astar";
-  return config;
-}
+using test::astar;
+using test::continuousOptions;
+using test::seedOf;
 
-EpisodeOptions continuousOptions() {
-  EpisodeOptions options;
-  options.motion.motion = kMotionContinuous;
-  options.robot_radius = 0.3;
-  return options;
-}
-
-/// Two sets of three random 12x12 PPPs.
-std::vector<PreparedSet> smallSets(const EpisodeOptions& options) {
-  std::vector<PreparedSet> sets;
-  Rng rng(17);
-  for (const char* name : {"a", "b"}) {
-    ProblemSet set;
-    for (int i = 0; i < 3; ++i) {
-      set.ids.push_back("ppp_00" + std::to_string(i));
-      set.problems.push_back(randomProblem(rng, Problem::empty(12, 12, 6), 6));
-    }
-    sets.push_back(prepareSet(name, set, options));
-  }
-  return sets;
-}
-
-std::uint64_t seedOf(int set, int problem, int run) {
-  return deriveSeed(5, {static_cast<std::uint64_t>(set), static_cast<std::uint64_t>(problem),
-                        static_cast<std::uint64_t>(run)});
-}
+std::vector<PreparedSet> smallSets(const EpisodeOptions& options) { return test::smallSets(options, 17); }
 
 /// Plays `lane` to the end, answering each request as a fresh continuous A* per episode would.
 std::vector<EpisodeResult> playAll(ContinuousLane* lane) {

@@ -6,6 +6,7 @@
 #include <boost/make_shared.hpp>
 
 #include "ppp_agents/protocol/batch_codec.hpp"
+#include "ppp_agents/protocol/continuous_codec.hpp"
 #include "ppp_msgs/hand_over.h"
 #include "ppp_msgs/node_liveness.h"
 #include "ppp_msgs/graph_names.h"
@@ -34,9 +35,48 @@ class ObservedScans : public protocol::ScanSink {
   const LaneRunner::ScanObserver& observer_;
 };
 
+/// A grid lane's next batch of scans, written into `message`.
+void fillBatch(agents::AgentLane* lane, ppp_msgs::ScanBatch* message, std::vector<protocol::ScanRequest>*,
+               const LaneRunner::ScanObserver& observer) {
+  if (observer) {
+    ObservedScans scans(message, message->agent, observer);
+    lane->scans(&scans);
+  } else {
+    protocol::ScanBatchWriter scans(message);
+    lane->scans(&scans);
+  }
+}
+
+/// A continuous lane's next batch of sensing, written into `message` through `requests`.
+void fillBatch(agents::ContinuousLane* lane, ppp_msgs::SensingBatch* message,
+               std::vector<agents::ContinuousRequest>* requests, const ContinuousLaneRunner::ScanObserver& observer) {
+  lane->requests(requests);
+  if (observer) {
+    for (const agents::ContinuousRequest& request : *requests) observer(message->agent, request);
+  }
+  protocol::encodeSensing(*requests, message);
+}
+
+/// Applies a grid lane's moves; returns the episodes that ended.
+std::vector<agents::EpisodeResult> applyBatch(agents::AgentLane* lane, const ppp_msgs::MoveBatch& message,
+                                              const std::string& label) {
+  protocol::DecodedMoves decoded = protocol::decodeMoves(message);
+  if (!decoded.fault.empty()) ROS_WARN_ONCE("%s: %s", label.c_str(), decoded.fault.c_str());
+  return lane->answer(decoded.moves, decoded.missing_reason);
+}
+
+/// Applies a continuous lane's commands; returns the episodes that ended.
+std::vector<agents::EpisodeResult> applyBatch(agents::ContinuousLane* lane, const ppp_msgs::CommandBatch& message,
+                                              const std::string& label) {
+  protocol::DecodedCommands decoded = protocol::decodeCommands(message);
+  if (!decoded.fault.empty()) ROS_WARN_ONCE("%s: %s", label.c_str(), decoded.fault.c_str());
+  return lane->answer(decoded.replies, decoded.missing_reason);
+}
+
 }  // namespace
 
-LaneRunner::LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameters, const NodeControl& control,
+template <class Lockstep>
+LaneRunnerOf<Lockstep>::LaneRunnerOf(ros::NodeHandle& nh, const SimulatorParameters& parameters, const NodeControl& control,
                        const agents::AgentConfig& agent, int instance, ResultSink sink, ScanObserver observer,
                        bool log_rates)
     : parameters_(parameters),
@@ -54,14 +94,17 @@ LaneRunner::LaneRunner(ros::NodeHandle& nh, const SimulatorParameters& parameter
   } else {
     queued_replies_ = std::make_unique<ros::CallbackQueue>();
   }
-  scans_ = nh.advertise<ppp_msgs::ScanBatch>(ppp_msgs::topics::under(graph_name, ppp_msgs::topics::kScans), 2);
-  moves_ = ppp_msgs::subscribeLockstep<ppp_msgs::MoveBatch>(
-      nh, ppp_msgs::topics::under(graph_name, ppp_msgs::topics::kMoves), 2,
-      [this](const ppp_msgs::MoveBatch::ConstPtr& m) { onMoves(m); },
+  using Requests = typename Lockstep::Requests;
+  using Replies = typename Lockstep::Replies;
+  request_publisher_ = nh.advertise<Requests>(ppp_msgs::topics::under(graph_name, Lockstep::kRequestTopic), 2);
+  reply_subscriber_ = ppp_msgs::subscribeLockstep<Replies>(
+      nh, ppp_msgs::topics::under(graph_name, Lockstep::kReplyTopic), 2,
+      [this](const typename Replies::ConstPtr& m) { onReplies(m); },
       inline_replies_ ? static_cast<ros::CallbackQueueInterface*>(inline_replies_.get()) : queued_replies_.get());
 }
 
-void LaneRunner::run(agents::AgentLane* lane) {
+template <class Lockstep>
+void LaneRunnerOf<Lockstep>::run(Lane* lane) {
   const char* name = label_.c_str();
   if (!connected_ && !waitForAgent()) {
     ROS_ERROR("%s never connected within %.0f s: its %ld runs fail as agent_lost", name,
@@ -83,12 +126,12 @@ void LaneRunner::run(agents::AgentLane* lane) {
   failure_ = nullptr;
   try {
     if (!lane_->finished()) sendBatch();
-    // Replies are played in the network thread (onMoves), or here from queued_replies_; this thread wakes for
+    // Replies are played in the network thread (onReplies), or here from queued_replies_; this thread wakes for
     // them, the deadline and a stop.
     while (!lane_->finished() && !failure_ && !control_.stopping()) {
       const ros::WallDuration left = deadline_ - ros::WallTime::now();
       if (left > ros::WallDuration(0) && queued_replies_) {
-        lock.unlock();  // onMoves takes it
+        lock.unlock();  // onReplies takes it
         queued_replies_->callAvailable(std::min(left, kShutdownCheck));
         lock.lock();
       } else if (left > ros::WallDuration(0)) {
@@ -111,26 +154,22 @@ void LaneRunner::run(agents::AgentLane* lane) {
   }
 }
 
-void LaneRunner::sendBatch() {
+template <class Lockstep>
+void LaneRunnerOf<Lockstep>::sendBatch() {
   const std::uint32_t batch = ++batch_;
   // A new message per batch, published by pointer: an agent in the same process gets this very object.
-  auto message = boost::make_shared<ppp_msgs::ScanBatch>();
+  auto message = boost::make_shared<typename Lockstep::Requests>();
   message->agent = agent_.name;
   message->header.stamp = ros::Time::now();
   message->batch = batch;
-  if (observer_) {
-    ObservedScans scans(message.get(), agent_.name, observer_);
-    lane_->scans(&scans);
-  } else {
-    protocol::ScanBatchWriter scans(message.get());
-    lane_->scans(&scans);
-  }
+  fillBatch(lane_, message.get(), &requests_, observer_);
   expected_batch_ = batch;
   deadline_ = ros::WallTime::now() + ros::WallDuration(step_timeout_);
-  ppp_msgs::publishHandingOver(scans_, message);  // an agent nodelet answers here, in this thread
+  ppp_msgs::publishHandingOver(request_publisher_, message);  // an agent nodelet answers here, in this thread
 }
 
-void LaneRunner::answerSilence() {
+template <class Lockstep>
+void LaneRunnerOf<Lockstep>::answerSilence() {
   const char* name = label_.c_str();
   const std::uint32_t batch = expected_batch_;
   expected_batch_ = 0;  // a late reply to it is dropped
@@ -152,25 +191,26 @@ void LaneRunner::answerSilence() {
   if (!lane_->finished()) sendBatch();
 }
 
-bool LaneRunner::waitForAgent() {
+template <class Lockstep>
+bool LaneRunnerOf<Lockstep>::waitForAgent() {
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(parameters_.connect_timeout);
   while (!control_.stopping() && ros::WallTime::now() < deadline) {
-    if (scans_.getNumSubscribers() > 0 && moves_.getNumPublishers() > 0) return true;
+    if (request_publisher_.getNumSubscribers() > 0 && reply_subscriber_.getNumPublishers() > 0) return true;
     ros::WallDuration(0.05).sleep();  // polling a connection count: there is no event to wait on
   }
   return false;
 }
 
-bool LaneRunner::agentAlive() const { return ppp_msgs::publisherAlive(moves_.getTopic()); }
+template <class Lockstep>
+bool LaneRunnerOf<Lockstep>::agentAlive() const { return ppp_msgs::publisherAlive(reply_subscriber_.getTopic()); }
 
-void LaneRunner::onMoves(const ppp_msgs::MoveBatch::ConstPtr& message) {
+template <class Lockstep>
+void LaneRunnerOf<Lockstep>::onReplies(const typename Lockstep::Replies::ConstPtr& message) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (lane_ == nullptr || failure_ || message->batch != expected_batch_) return;  // late or unexpected
   expected_batch_ = 0;
-  protocol::DecodedMoves decoded = protocol::decodeMoves(*message);
-  if (!decoded.fault.empty()) ROS_WARN_ONCE("%s: %s", label_.c_str(), decoded.fault.c_str());
   try {
-    report(lane_->answer(decoded.moves, decoded.missing_reason));
+    report(applyBatch(lane_, *message, label_));
     if (!lane_->finished()) sendBatch();
   } catch (...) {
     failure_ = std::current_exception();
@@ -178,9 +218,13 @@ void LaneRunner::onMoves(const ppp_msgs::MoveBatch::ConstPtr& message) {
   if (lane_->finished() || failure_) lane_done_.notify_all();
 }
 
-void LaneRunner::report(const std::vector<agents::EpisodeResult>& results) {
+template <class Lockstep>
+void LaneRunnerOf<Lockstep>::report(const std::vector<agents::EpisodeResult>& results) {
   if (!results.empty()) sink_(results);
 }
+
+template class LaneRunnerOf<GridLockstep>;
+template class LaneRunnerOf<ContinuousLockstep>;
 
 }  // namespace simulator
 }  // namespace ppp

@@ -21,6 +21,34 @@
 namespace ppp {
 namespace simulator {
 
+namespace {
+
+/// One agent instance's lane of the experiment and the runner that plays it, in either motion model.
+class PlayedLane {
+ public:
+  virtual ~PlayedLane() = default;
+  /// Plays the lane to its end (or until the node stops). @throws what the runner's result sink threw.
+  virtual void play() = 0;
+  /// Runs not yet played.
+  virtual long remaining() const = 0;
+};
+
+template <class Lockstep>
+class PlayedLaneOf : public PlayedLane {
+ public:
+  template <class... RunnerArguments>
+  PlayedLaneOf(typename Lockstep::Lane lane, RunnerArguments&&... arguments)
+      : lane_(std::move(lane)), runner_(std::forward<RunnerArguments>(arguments)...) {}
+  void play() override { runner_.run(&lane_); }
+  long remaining() const override { return lane_.remaining(); }
+
+ private:
+  typename Lockstep::Lane lane_;
+  LaneRunnerOf<Lockstep> runner_;
+};
+
+}  // namespace
+
 SimulatorNode::SimulatorNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh, bool in_network_thread)
     : nh_(nh),
       parameters_(readSimulatorParameters(private_nh)),
@@ -72,6 +100,7 @@ int SimulatorNode::runExperiment() {
     }
   }
   const std::vector<agents::PreparedSet>& sets = received.sets;
+  checkContinuousStarts(config, sets);
   std::unique_ptr<ResultsFile> opened;
   try {
     opened = std::make_unique<ResultsFile>(resultsPath(parameters.output_dir), stopping);
@@ -88,25 +117,33 @@ int SimulatorNode::runExperiment() {
   std::atomic<bool> failed{false};
   NodeControl lanes_control = control_;
   lanes_control.stopping = [&failed, stopping] { return failed || stopping(); };
-  std::vector<std::unique_ptr<agents::AgentLane>> lanes;
-  std::vector<std::unique_ptr<LaneRunner>> runners;
+  std::vector<std::unique_ptr<PlayedLane>> lanes;
   long remaining = 0;
   std::atomic<long> ended_runs{0};
+  const auto sink = [&results, &recorder, &ended_runs](const std::vector<agents::EpisodeResult>& ended) {
+    results.append(ended);
+    recorder.recordResults(ended);
+    ended_runs += static_cast<long>(ended.size());
+  };
   for (const auto& agent : config.agents) {
     const int instances = agents::instanceCount(agent);  // a planner's instances share its runs
     for (int instance = 0; instance < instances; ++instance) {
-      lanes.push_back(std::make_unique<agents::AgentLane>(experimentLane(agent, config.episode, sets, config.seed,
-                                                                         config.runsFor(agent), results.done(),
-                                                                         parameters.batch_size, {instance, instances})));
+      const agents::LaneShare share{instance, instances};
+      if (agents::playsContinuously(agent, config.episode)) {
+        lanes.push_back(std::make_unique<PlayedLaneOf<ContinuousLockstep>>(
+            experimentContinuousLane(agent, config.episode, sets, config.seed, config.runsFor(agent), results.done(),
+                                     parameters.batch_size, share),
+            nh, parameters, lanes_control, agent, instance, sink));
+      } else {
+        lanes.push_back(std::make_unique<PlayedLaneOf<GridLockstep>>(
+            experimentLane(agent, config.episode, sets, config.seed, config.runsFor(agent), results.done(),
+                           parameters.batch_size, share),
+            nh, parameters, lanes_control, agent, instance, sink,
+            [&recorder](const std::string& name, const protocol::ScanRequest& scan) {
+              recorder.recordScan(name, scan);
+            }));
+      }
       remaining += lanes.back()->remaining();
-      runners.push_back(std::make_unique<LaneRunner>(
-          nh, parameters, lanes_control, agent, instance,
-          [&results, &recorder, &ended_runs](const std::vector<agents::EpisodeResult>& ended) {
-            results.append(ended);
-            recorder.recordResults(ended);
-            ended_runs += static_cast<long>(ended.size());
-          },
-          [&recorder](const std::string& name, const protocol::ScanRequest& scan) { recorder.recordScan(name, scan); }));
     }
   }
   ROS_INFO("running %ld episodes (%zu already done, %zu lost to the agent link played again) with %zu agent nodes and "
@@ -115,10 +152,10 @@ int SimulatorNode::runExperiment() {
   {
     const ProgressReporter progress("episodes", "episodes", remaining, [&ended_runs] { return ended_runs.load(); });
     std::vector<std::thread> threads;
-    for (std::size_t i = 0; i < runners.size(); ++i) {
-      threads.emplace_back([&runners, &lanes, &failed, i] {
+    for (const std::unique_ptr<PlayedLane>& lane : lanes) {
+      threads.emplace_back([&lane, &failed] {
         try {
-          runners[i]->run(lanes[i].get());
+          lane->play();
         } catch (const std::exception& e) {  // results.csv or the bag cannot be written (a full disk, say)
           ROS_FATAL("simulator: %s", e.what());
           failed = true;  // every lane stops
@@ -128,7 +165,7 @@ int SimulatorNode::runExperiment() {
     for (std::thread& t : threads) t.join();
   }
   if (failed) return 1;
-  runners.clear();  // their agents are free for the report's planner runs
+  lanes.clear();  // their agents are free for the report's planner runs
   recorder.close();
   if (stopping()) {
     ROS_WARN("interrupted: every finished run is in results.csv; restart on the same output_dir to resume");

@@ -113,6 +113,10 @@ ppp_msgs::GraphNode agentNode(const agents::AgentConfig& agent, const std::strin
   node.agent = agent.name;
   addParams(agents::agentNodeOptionSpecs(), agent, &node);
   node.remaps = {privateTopic(ppp_msgs::topics::kScans), privateTopic(ppp_msgs::topics::kMoves)};
+  if (agents::movesContinuously(agent)) {
+    node.remaps.push_back(privateTopic(ppp_msgs::topics::kSensing));
+    node.remaps.push_back(privateTopic(ppp_msgs::topics::kCommands));
+  }
   return node;
 }
 
@@ -218,7 +222,7 @@ ppp_msgs::GraphNode shrinkNode(const ShrinkTask& task) {
 void checkShrink(const ExperimentConfig& config, const GraphOptions& options) {
   if (!options.hunt.empty()) throw InvalidArgument("hunt", "a graph hunts or shrinks, not both");
   options.shrink.validate();
-  shrinkAgent(options.shrink, config);
+  agents::refuseContinuous(shrinkAgent(options.shrink, config), config.episode);
 }
 
 }  // namespace
@@ -278,7 +282,12 @@ std::string setTopic(const std::string& set_name) {
 ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const GraphOptions& options) {
   config.validate();
   options.validate(config);
-  for (const agents::AgentConfig& agent : config.agents) agents::refuseContinuous(agent, config.episode);
+  for (const agents::AgentConfig& agent : config.agents) {
+    if (agents::isPlanner(agent) && agents::playsContinuously(agent, config.episode)) {
+      throw InvalidArgument("motion", "planner agent '" + agent.name + "' plays in " + kMotionContinuous +
+                                          " motion, which its bridge does not serve yet: set its motion: grid");
+    }
+  }
   const bool shrink = !options.shrink.input.empty();
   if (shrink) checkShrink(config, options);
   const SetSpec* hunted = options.hunt.empty() ? nullptr : &huntedSet(config, options.hunt);

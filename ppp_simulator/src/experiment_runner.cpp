@@ -44,8 +44,49 @@ void say(const std::function<void(const std::string&)>& log, const std::string& 
   if (log) log(text);
 }
 
-/// @throws InvalidArgument naming robot_radius when an agent plays in continuous motion and its disc cannot stand
-/// at the start of a PPP of `sets`.
+}  // namespace
+
+std::uint64_t runSeed(std::uint64_t experiment_seed, const std::string& set, const std::string& problem,
+                      const std::string& agent, int run) {
+  return deriveSeed(experiment_seed,
+                    {nameHash(set), nameHash(problem), nameHash(agent), static_cast<std::uint64_t>(run)});
+}
+
+namespace {
+
+/// Which runs of `config` an experiment lane plays (those not in `done`) and their seeds.
+struct LaneRuns {
+  agents::AgentLane::SeedFunction seed_of;
+  agents::AgentLane::SkipFunction skip;
+};
+
+LaneRuns laneRuns(const agents::AgentConfig& config, const std::vector<agents::PreparedSet>& sets,
+                  std::uint64_t experiment_seed, const std::set<RunKey>& done) {
+  return {[&sets, experiment_seed, name = config.name](int set, int problem, int run) {
+            return runSeed(experiment_seed, sets[set].name, sets[set].set.ids[problem], name, run);
+          },
+          [&sets, &done, name = config.name](int set, int problem, int run) {
+            return done.count(RunKey{sets[set].name, sets[set].set.ids[problem], name, run}) > 0;
+          }};
+}
+
+}  // namespace
+
+agents::AgentLane experimentLane(const agents::AgentConfig& config, const EpisodeOptions& options,
+                                 const std::vector<agents::PreparedSet>& sets, std::uint64_t experiment_seed, int runs,
+                                 const std::set<RunKey>& done, int batch_size, agents::LaneShare share) {
+  LaneRuns lane = laneRuns(config, sets, experiment_seed, done);
+  return agents::AgentLane(config, options, sets, std::move(lane.seed_of), runs, batch_size, lane.skip, share);
+}
+
+agents::ContinuousLane experimentContinuousLane(const agents::AgentConfig& config, const EpisodeOptions& options,
+                                                const std::vector<agents::PreparedSet>& sets,
+                                                std::uint64_t experiment_seed, int runs, const std::set<RunKey>& done,
+                                                int batch_size, agents::LaneShare share) {
+  LaneRuns lane = laneRuns(config, sets, experiment_seed, done);
+  return agents::ContinuousLane(config, options, sets, std::move(lane.seed_of), runs, batch_size, lane.skip, share);
+}
+
 void checkContinuousStarts(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets) {
   const bool any = std::any_of(config.agents.begin(), config.agents.end(), [&](const agents::AgentConfig& agent) {
     return agents::playsContinuously(agent, config.episode);
@@ -55,29 +96,6 @@ void checkContinuousStarts(const ExperimentConfig& config, const std::vector<age
       agents::checkContinuousStart(set, p, config.episode);
     }
   }
-}
-
-}  // namespace
-
-std::uint64_t runSeed(std::uint64_t experiment_seed, const std::string& set, const std::string& problem,
-                      const std::string& agent, int run) {
-  return deriveSeed(experiment_seed,
-                    {nameHash(set), nameHash(problem), nameHash(agent), static_cast<std::uint64_t>(run)});
-}
-
-agents::AgentLane experimentLane(const agents::AgentConfig& config, const EpisodeOptions& options,
-                                 const std::vector<agents::PreparedSet>& sets, std::uint64_t experiment_seed, int runs,
-                                 const std::set<RunKey>& done, int batch_size, agents::LaneShare share) {
-  return agents::AgentLane(
-      config, options, sets,
-      [&sets, experiment_seed, name = config.name](int set, int problem, int run) {
-        return runSeed(experiment_seed, sets[set].name, sets[set].set.ids[problem], name, run);
-      },
-      runs, batch_size,
-      [&sets, &done, name = config.name](int set, int problem, int run) {
-        return done.count(RunKey{sets[set].name, sets[set].set.ids[problem], name, run}) > 0;
-      },
-      share);
 }
 
 void checkExperimentDirectory(const ExperimentConfig& config, const std::string& dir) {

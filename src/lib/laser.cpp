@@ -9,21 +9,25 @@ constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
 LaserBeams LaserBeams::of(const MotionOptions& options) {
-  LaserBeams beams;
-  beams.count = options.laser_beams;
-  beams.range_max = options.laser_range;
-  beams.noise = options.laser_noise;
+  const int count = options.laser_beams;
   if (options.laser_field_of_view >= 360) {
-    beams.angle_min = -kPi;
-    beams.angle_increment = 2 * kPi / beams.count;
-  } else {
-    const double field = options.laser_field_of_view * kPi / 180;
-    beams.angle_min = beams.count > 1 ? -field / 2 : 0;
-    beams.angle_increment = beams.count > 1 ? field / (beams.count - 1) : 0;
+    return fan(count, -kPi, 2 * kPi / count, options.laser_range, options.laser_noise);
   }
-  for (int i = 0; i < beams.count; ++i) {
-    beams.cosines.push_back(std::cos(beams.angle_min + i * beams.angle_increment));
-    beams.sines.push_back(std::sin(beams.angle_min + i * beams.angle_increment));
+  const double field = options.laser_field_of_view * kPi / 180;
+  return fan(count, count > 1 ? -field / 2 : 0, count > 1 ? field / (count - 1) : 0, options.laser_range,
+             options.laser_noise);
+}
+
+LaserBeams LaserBeams::fan(int count, double angle_min, double angle_increment, double range_max, double noise) {
+  LaserBeams beams;
+  beams.count = count;
+  beams.angle_min = angle_min;
+  beams.angle_increment = angle_increment;
+  beams.range_max = range_max;
+  beams.noise = noise;
+  for (int i = 0; i < count; ++i) {
+    beams.cosines.push_back(std::cos(angle_min + i * angle_increment));
+    beams.sines.push_back(std::sin(angle_min + i * angle_increment));
   }
   return beams;
 }

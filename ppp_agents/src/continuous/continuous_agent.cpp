@@ -20,14 +20,16 @@ void checkContinuousAgent(const AgentConfig& config, const EpisodeOptions& optio
 void refuseContinuous(const AgentConfig& config, const EpisodeOptions& options) {
   if (!playsContinuously(config, options)) return;
   throw InvalidArgument("motion", "agent '" + config.name + "' plays in " + std::string(kMotionContinuous) +
-                                      " motion, which `ppp experiment`, `ppp simulate` and `ppp replay` play in "
-                                      "process; hunts, shrinks and the ROS graph play the grid model only so far");
+                                      " motion, which experiments (in process and through ROS), `ppp simulate` and "
+                                      "`ppp replay` play; hunts and shrinks play the grid model only so far");
 }
 
+bool movesContinuously(const AgentConfig& config) { return config.type == "astar"; }
+
 std::unique_ptr<ContinuousAgent> makeContinuousAgent(const AgentConfig& config) {
-  if (config.type == "astar") return std::make_unique<ContinuousAstar>();
+  if (movesContinuously(config)) return std::make_unique<ContinuousAstar>();
   throw InvalidArgument("motion", "agent '" + config.name + "' (" + config.type + ") moves only on the grid: " +
-                                      std::string(kMotionContinuous) + " motion plays astar in process");
+                                      std::string(kMotionContinuous) + " motion plays astar");
 }
 
 }  // namespace agents

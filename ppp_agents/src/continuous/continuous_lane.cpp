@@ -77,21 +77,30 @@ EpisodeResult ContinuousLane::result(const Work& work, std::uint64_t seed, int o
 
 std::vector<EpisodeResult> ContinuousLane::answer(const std::vector<ContinuousReply>& replies,
                                                   const char* missing_reason) {
+  if (!replies.empty()) silent_batches_ = 0;
+  // Agents answer in request order, so reply i is normally episode i's; the index is built only when not.
   std::unordered_map<std::uint32_t, const ContinuousReply*> by_episode;
-  for (const ContinuousReply& reply : replies) by_episode.emplace(reply.episode, &reply);
+  const auto reply_of = [&](std::size_t i, std::uint32_t id) -> const ContinuousReply* {
+    if (by_episode.empty() && i < replies.size() && replies[i].episode == id) return &replies[i];
+    if (by_episode.empty()) {
+      for (const ContinuousReply& reply : replies) by_episode.emplace(reply.episode, &reply);
+    }
+    const auto it = by_episode.find(id);
+    return it == by_episode.end() ? nullptr : it->second;
+  };
   std::vector<EpisodeResult> finished;
   std::size_t kept = 0;
   for (std::size_t i = 0; i < active_.size(); ++i) {
     Active& a = active_[i];
-    const auto it = by_episode.find(a.id);
-    if (it == by_episode.end()) {
+    const ContinuousReply* reply = reply_of(i, a.id);
+    if (reply == nullptr) {
       a.episode.fail(missing_reason);
-    } else if (it->second->failure != nullptr) {
-      a.episode.fail(it->second->failure);
-    } else if (it->second->step != a.episode.outcome().steps) {
+    } else if (reply->failure != nullptr) {
+      a.episode.fail(reply->failure);
+    } else if (reply->step != a.episode.outcome().steps) {
       a.episode.fail(reason::kInvalidCommand);
     } else {
-      a.episode.apply(it->second->command);
+      a.episode.apply(reply->command);
     }
     if (a.episode.done()) {
       finished.push_back(result(a.work, a.seed, a.optimal, a.episode.outcome()));
@@ -102,6 +111,14 @@ std::vector<EpisodeResult> ContinuousLane::answer(const std::vector<ContinuousRe
   }
   active_.erase(active_.begin() + static_cast<std::ptrdiff_t>(kept), active_.end());
   return finished;
+}
+
+std::vector<EpisodeResult> ContinuousLane::unanswered(const char* why, int give_up_after) {
+  std::vector<EpisodeResult> ended = answer({}, why);
+  if (++silent_batches_ >= give_up_after) {
+    for (EpisodeResult& r : failAll(why)) ended.push_back(std::move(r));
+  }
+  return ended;
 }
 
 std::vector<EpisodeResult> ContinuousLane::failAll(const char* why) {

@@ -33,6 +33,8 @@ namespace topics {
 // An agent's namespace /NAME (NAME = ppp::agents::agentGraphName of the agent's name).
 constexpr const char* kScans = "scans";  ///< ppp_msgs/ScanBatch, simulator -> agent node or planner bridge.
 constexpr const char* kMoves = "moves";  ///< ppp_msgs/MoveBatch, agent node or planner bridge -> simulator.
+constexpr const char* kSensing = "sensing";    ///< ppp_msgs/SensingBatch (continuous motion), simulator -> agent.
+constexpr const char* kCommands = "commands";  ///< ppp_msgs/CommandBatch (continuous motion), agent -> simulator.
 constexpr const char* kPath = "path";    ///< nav_msgs/Path of a recorded episode (simulator).
 constexpr const char* kScan = "scan";    ///< sensor_msgs/LaserScan of a recorded episode (simulator).
 

@@ -11,6 +11,7 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/window_atlas.hpp"
 #include "ppp_agents/agent_lane.hpp"
+#include "ppp_agents/continuous/continuous_lane.hpp"
 #include "ppp_agents/prepared_set.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_core/stop.hpp"
@@ -33,6 +34,16 @@ agents::AgentLane experimentLane(const agents::AgentConfig& config, const Episod
                                  const std::vector<agents::PreparedSet>& sets, std::uint64_t experiment_seed, int runs,
                                  const std::set<RunKey>& done, int batch_size,
                                  agents::LaneShare share = {});
+
+/// experimentLane()'s counterpart for an agent that plays in continuous motion.
+agents::ContinuousLane experimentContinuousLane(const agents::AgentConfig& config, const EpisodeOptions& options,
+                                                const std::vector<agents::PreparedSet>& sets,
+                                                std::uint64_t experiment_seed, int runs, const std::set<RunKey>& done,
+                                                int batch_size, agents::LaneShare share = {});
+
+/// @throws InvalidArgument naming robot_radius when an agent of `config` plays in continuous motion and its disc
+/// cannot stand at the start of a PPP of `sets`.
+void checkContinuousStarts(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets);
 
 /// Generates (or reads) every set of the experiment into `dir`/sets/<name>/, reusing sets already there; a set
 /// being generated when `stop` says stop is not written. @throws IoError, ParseError, InvalidArgument, Interrupted.

@@ -4,6 +4,7 @@
 # of its own), OUTPUT_DIR/sets holds only its set, results.csv equals `ppp experiment`'s byte for byte in both
 # modes, a rerun resumes from the generator's stored set, the manager killed mid-run is started again and loses and
 # changes no row, and configs naming an unknown agent type or an unreachable host stop before any node starts;
+# astar in continuous motion gives `ppp experiment`'s rows in both modes too;
 # launch/hunt.launch hunts a small set with only its panel's nodes, and launch/shrink.launch shrinks its failures as ppp shrink does.
 # Then the default config with 2 runs (three sets of 60 PPPs from three generator nodes, one of them hunting
 # through the simulator; the ten agents with 2 runs each and the four example planners with their own 3):
@@ -86,6 +87,26 @@ for bad in "flier.yaml:unknown agent type 'flier'" "host.yaml:host 'no-such-host
   [ "$(started "$work/small/bad.log")" = "experiment rosout " ] && [ ! -e "$work/small/bad" ] && pass || \
     fail "${bad%%:*} started nodes or wrote output: $(started "$work/small/bad.log")"
 done
+
+# Continuous motion through ROS: astar drives a disc over /astar/sensing and /astar/commands beside an explorer on
+# the grid, in one manager and with every node a process of its own; results.csv is `ppp experiment`'s byte for
+# byte in both. A disc that cannot stand at a start stops the simulator before any run, naming robot_radius.
+sed 's/^runs: 3/runs: 3\nmotion: continuous\nrobot_radius: 0.3/; s/type: explorer}/type: explorer, motion: grid}/' \
+  "$work/small/experiment.yaml" > "$work/small/continuous.yaml"
+"$devel/lib/ppp_simulator/ppp" experiment "$work/small/continuous.yaml" -o "$work/small/continuous_cli" --quiet \
+  > /dev/null 2>&1
+for processes in manager own; do
+  timeout 300 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/continuous_$processes" \
+    config:="$work/small/continuous.yaml" args:="--processes $processes" > "$work/small/continuous_$processes.log" 2>&1
+  cmp -s "$work/small/continuous_$processes/results.csv" "$work/small/continuous_cli/results.csv" && \
+    [ "$(grep -c ',astar,.*,goal_reached,' "$work/small/continuous_cli/results.csv")" -eq 18 ] && pass || \
+    fail "continuous motion through ROS ($processes) differs from ppp experiment: $(tail -20 "$work/small/continuous_$processes.log")"
+done
+sed 's/^robot_radius: 0.3/robot_radius: 0.5/' "$work/small/continuous.yaml" > "$work/small/fat.yaml"
+timeout 120 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/fat" \
+  config:="$work/small/fat.yaml" > "$work/small/fat.log" 2>&1
+grep -qF "robot_radius: set 'mine', PPP ppp_000: a disc of 0.5" "$work/small/fat.log" && \
+  [ ! -s "$work/small/fat/results.csv" ] && pass || fail "a disc too wide for its start: $(tail "$work/small/fat.log")"
 
 # launch/hunt.launch on a small hunted set: only the hunter, the simulator and the panel's nodes start, and the
 # set equals the one `ppp generate` makes in process with the options it stored.

@@ -22,6 +22,8 @@ struct LaserBeams {
   /// The beams `options` give: a full circle from -pi with count beams 2 pi / count apart, else the field of
   /// view centred ahead with its two edges included.
   static LaserBeams of(const MotionOptions& options);
+  /// `count` beams from `angle_min`, `angle_increment` apart (as a sensor_msgs/LaserScan describes them).
+  static LaserBeams fan(int count, double angle_min, double angle_increment, double range_max, double noise);
 };
 
 /// The ranges a laser with `beams` (made by LaserBeams::of()) at `pose` reads in `world`, written into `ranges`

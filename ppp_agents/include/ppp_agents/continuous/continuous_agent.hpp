@@ -54,9 +54,12 @@ bool playsContinuously(const AgentConfig& config, const EpisodeOptions& options)
 /// only on the grid (every built-in type but astar).
 void checkContinuousAgent(const AgentConfig& config, const EpisodeOptions& options);
 
-/// For what plays the grid model only (the grid runner, its lanes, hunts, shrinks, the ROS graph):
+/// For what plays the grid model only (the grid runner, its lanes, hunts, shrinks):
 /// @throws InvalidArgument naming "motion" when `config` plays in continuous motion under `options`.
 void refuseContinuous(const AgentConfig& config, const EpisodeOptions& options);
+
+/// True when a built-in agent of `config`'s type can move in continuous motion (astar).
+bool movesContinuously(const AgentConfig& config);
 
 /// The continuous agent of `config`. @throws InvalidArgument naming "motion" for an agent that moves only on the
 /// grid.

@@ -58,6 +58,11 @@ class ContinuousLane {
   /// step fails it with reason::kInvalidCommand (as does a command that is not finite), a reply with a failure
   /// with that reason; replies for unknown episodes are ignored. Returns the rows of the episodes that ended.
   std::vector<EpisodeResult> answer(const std::vector<ContinuousReply>& replies, const char* missing_reason);
+  /// A batch went unanswered: its episodes fail with `reason`, and once `give_up_after` batches in a row went
+  /// unanswered every remaining run fails with it too (a silent agent does not hold the experiment up).
+  std::vector<EpisodeResult> unanswered(const char* reason, int give_up_after);
+  /// Batches in a row that went unanswered.
+  int silentBatches() const { return silent_batches_; }
   /// Fails every active and queued run with `reason` (the agent is gone) and returns their rows.
   std::vector<EpisodeResult> failAll(const char* reason);
   /// The configuration served.
@@ -88,6 +93,7 @@ class ContinuousLane {
   std::deque<Work> queue_;
   std::vector<Active> active_;
   std::uint32_t next_id_ = 0;
+  int silent_batches_ = 0;
 };
 
 }  // namespace agents
