@@ -32,7 +32,8 @@ done
 # Generator benchmarks live in the catkin workspace (package ppp_generator).
 PATH="/usr/bin:$PATH" scripts/build.sh > /dev/null
 for bench in ppp_generator/upgma_bench ppp_generator/generator_bench ppp_agents/agent_step_bench \
-  ppp_agents/planners_bench ppp_agents/continuous_step_bench ppp_agents/laser_bench ppp_simulator/episode_bench \
+  ppp_agents/planners_bench ppp_agents/continuous_step_bench ppp_agents/continuous_lockstep_bench ppp_agents/laser_bench \
+  ppp_simulator/episode_bench \
   ppp_simulator/hunt_bench ppp_simulator/lockstep_bench; do
   echo "== ${bench}"
   "build/devel/lib/${bench}" \

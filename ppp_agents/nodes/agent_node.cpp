@@ -29,8 +29,10 @@ AgentNode::AgentNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh, con
   ROS_INFO("agent '%s': type %s, memory %s, sensor noise %g (applied by the simulator); %s", config_.name.c_str(),
            config_.type.c_str(), memoryWindowText(config_.memory_window).c_str(), config_.sensor_noise,
            topics.c_str());
+  // /NAME/scans, or /NAME/instance_K/scans for one of several instances.
   const std::string expected = ppp_msgs::topics::under(agentGraphName(config_.name), ppp_msgs::topics::kScans);
-  if (scans_.getTopic() != expected) {
+  const std::string instances = ppp_msgs::topics::under(agentGraphName(config_.name), "instance_");
+  if (scans_.getTopic() != expected && scans_.getTopic().rfind(instances, 0) != 0) {
     ROS_WARN("agent '%s' listens on %s, but the simulator sends its scans to %s: remap scans/moves or rename the node",
              config_.name.c_str(), topics.c_str(), expected.c_str());
   }

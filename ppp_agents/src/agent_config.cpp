@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "ppp_agents/agent_registry.hpp"
+#include "ppp_agents/continuous/continuous_agent.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/grid.hpp"
 #include "ppp_core/motion_options.hpp"
@@ -117,8 +118,9 @@ std::string agentInterfaceProblem(const AgentConfig& config) {
 
 /// What is wrong with the instances asked for, or "" when nothing is.
 std::string instancesProblem(const AgentConfig& config) {
-  if (config.instances == 0 || config.type == kPlannerType) return "";
-  return "only planner agents run as several instances (the other agents' nodes play batches of runs)";
+  if (config.instances == 0 || config.type == kPlannerType || movesContinuously(config)) return "";
+  return "only planner agents, and astar in continuous motion, run as several instances (the other agents' nodes "
+         "play batches of runs)";
 }
 
 /// Whether `name` is a legal ROS package or executable name: letters, digits, '_', '-' and '.', not empty.
@@ -309,9 +311,9 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
                       "_planning_time:=0.005)",
                       +[](A& a) -> std::string& { return a.planner_args; }),
         declareOption("instances",
-                      "planner agents: bridge and planner pairs playing its runs in parallel, results identical "
-                      "whatever their number (0: this machine's cores when the experiment starts the planner, "
-                      "else 1)",
+                      "planner agents and astar in continuous motion, through ROS: bridge and planner pairs, or "
+                      "agent nodes, playing its runs in parallel, results identical whatever their number (0: this "
+                      "machine's cores when the experiment starts the planner or in continuous motion, else 1)",
                       +[](A& a) -> int& { return a.instances; }, Bounds{0, kMaxInstances})
             .notAffectingResults(),
         declareOption("host", "through ROS: the machine the agent's nodes run on ('': the simulator's)",
@@ -371,16 +373,21 @@ const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs() {
 
 bool isPlanner(const AgentConfig& config) { return config.type == kPlannerType; }
 
-int instanceCount(const AgentConfig& config) {
-  if (!isPlanner(config)) return 1;
+bool playsContinuously(const AgentConfig& config, const EpisodeOptions& options) {
+  return (config.motion == kMotionOfExperiment ? options.motion.motion : config.motion) == kMotionContinuous;
+}
+
+int instanceCount(const AgentConfig& config, const EpisodeOptions& options) {
+  const bool planner = isPlanner(config);
+  if (!planner && !playsContinuously(config, options)) return 1;
   if (config.instances > 0) return config.instances;
-  if (config.planner_node.empty()) return 1;
+  if (planner && config.planner_node.empty()) return 1;
   return std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, kMaxInstances);
 }
 
-std::string instanceGraphName(const AgentConfig& config, int instance) {
+std::string instanceGraphName(const AgentConfig& config, int instance, int instances) {
   const std::string name = agentGraphName(config.name);
-  return instanceCount(config) == 1 ? name : name + "/instance_" + std::to_string(instance + 1);
+  return instances == 1 ? name : name + "/instance_" + std::to_string(instance + 1);
 }
 
 const std::vector<std::string>& agentTypeNames() {

@@ -332,19 +332,41 @@ TEST(AgentConfigTest, APlannerRunsAsInstancesEachInANamespaceOfItsOwn) {
       "  - {name: by_hand, type: planner}\n"
       "  - {name: one, type: planner, planner_node: ppp_agents/optimistic_planner_node, instances: 1}\n"
       "  - {type: explorer}\n");
-  EXPECT_EQ(instanceCount(configs[0]), 3);
-  EXPECT_EQ(instanceGraphName(configs[0], 0), "mine_v2/instance_1");
-  EXPECT_EQ(instanceGraphName(configs[0], 2), "mine_v2/instance_3");
+  const EpisodeOptions grid;
+  EXPECT_EQ(instanceCount(configs[0], grid), 3);
+  EXPECT_EQ(instanceGraphName(configs[0], 0, 3), "mine_v2/instance_1");
+  EXPECT_EQ(instanceGraphName(configs[0], 2, 3), "mine_v2/instance_3");
   // A planner the experiment starts: one per core; one the user starts: one; 1 alone keeps the agent's namespace.
-  EXPECT_EQ(instanceCount(configs[1]), std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, kMaxInstances));
-  EXPECT_EQ(instanceCount(configs[2]), 1);
-  EXPECT_EQ(instanceGraphName(configs[2], 0), "by_hand");
-  EXPECT_EQ(instanceGraphName(configs[3], 0), "one");
-  EXPECT_EQ(instanceCount(configs[4]), 1);
+  const int cores = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, kMaxInstances);
+  EXPECT_EQ(instanceCount(configs[1], grid), cores);
+  EXPECT_EQ(instanceCount(configs[2], grid), 1);
+  EXPECT_EQ(instanceGraphName(configs[2], 0, 1), "by_hand");
+  EXPECT_EQ(instanceGraphName(configs[3], 0, 1), "one");
+  EXPECT_EQ(instanceCount(configs[4], grid), 1);
   EXPECT_EQ(parseError("agents:\n  - {type: planner, instances: 65}\n").find("agents.yaml:2: agents[0].instances: "), 0u);
-  EXPECT_EQ(parseError("agents:\n  - {type: astar, instances: 2}\n"),
-            "agents.yaml:2: agents[0].instances: only planner agents run as several instances (the other agents' nodes "
-            "play batches of runs)");
+  EXPECT_EQ(parseError("agents:\n  - {type: explorer, instances: 2}\n"),
+            "agents.yaml:2: agents[0].instances: only planner agents, and astar in continuous motion, run as several "
+            "instances (the other agents' nodes play batches of runs)");
+}
+
+TEST(AgentConfigTest, AstarInContinuousMotionRunsAsInstancesOnlyThere) {
+  const auto configs = read(
+      "agents:\n"
+      "  - {type: astar}\n"
+      "  - {name: two, type: astar, instances: 2}\n"
+      "  - {name: on_grid, type: astar, motion: grid}\n"
+      "  - {name: own, type: astar, motion: continuous}\n");
+  EpisodeOptions continuous;
+  continuous.motion.motion = kMotionContinuous;
+  const EpisodeOptions grid;
+  const int cores = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, kMaxInstances);
+  // One lockstep stream keeps one core busy: one agent node per core, unless the agent says how many.
+  EXPECT_EQ(instanceCount(configs[0], continuous), cores);
+  EXPECT_EQ(instanceCount(configs[1], continuous), 2);
+  EXPECT_EQ(instanceCount(configs[2], continuous), 1);  // its own motion is the grid's
+  EXPECT_EQ(instanceCount(configs[0], grid), 1);        // on the grid its node plays batches
+  EXPECT_EQ(instanceCount(configs[1], grid), 1);
+  EXPECT_EQ(instanceCount(configs[3], grid), cores);    // its own motion is continuous
 }
 
 TEST(AgentConfigTest, APlannerIsAskedEveryStepUnlessTheAgentSaysOtherwise) {

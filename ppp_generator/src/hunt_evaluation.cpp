@@ -38,7 +38,7 @@ HuntEvaluation::HuntEvaluation(const std::vector<Problem>& problems, const std::
   for (const Grid& grid : sets_[0].grids) hashes.push_back(grid.hash());
   for (std::size_t a = 0; a < panel.size(); ++a) {
     agent_index_[panel[a].name] = static_cast<int>(a);
-    const int instances = agents::instanceCount(panel[a]);
+    const int instances = agents::instanceCount(panel[a], episode);
     for (int instance = 0; instance < instances; ++instance) {
       lanes_.push_back(std::make_unique<agents::AgentLane>(
           panel[a], episode, sets_,

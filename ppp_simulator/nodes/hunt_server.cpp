@@ -109,9 +109,10 @@ ppp_msgs::ProblemEvaluation HuntServer::toMessage(const generator::PanelEvaluati
 
 const std::vector<std::unique_ptr<LaneRunner>>& HuntServer::runnersFor(const agents::AgentConfig& agent) {
   std::vector<std::unique_ptr<LaneRunner>>& runners = runners_[agent.name];
-  for (int instance = static_cast<int>(runners.size()); instance < agents::instanceCount(agent); ++instance) {
+  const int instances = agents::instanceCount(agent, config_.episode);
+  for (int instance = static_cast<int>(runners.size()); instance < instances; ++instance) {
     runners.push_back(std::make_unique<LaneRunner>(
-        nh_, parameters_, control_, agent, instance,
+        nh_, parameters_, control_, agent, agents::LaneShare{instance, instances},
         [this](const std::vector<agents::EpisodeResult>& ended) { target_->record(ended); }, LaneRunner::ScanObserver{},
         false));
   }

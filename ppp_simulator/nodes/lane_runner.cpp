@@ -76,19 +76,19 @@ std::vector<agents::EpisodeResult> applyBatch(agents::ContinuousLane* lane, cons
 }  // namespace
 
 template <class Lockstep>
-LaneRunnerOf<Lockstep>::LaneRunnerOf(ros::NodeHandle& nh, const SimulatorParameters& parameters, const NodeControl& control,
-                       const agents::AgentConfig& agent, int instance, ResultSink sink, ScanObserver observer,
-                       bool log_rates)
+LaneRunnerOf<Lockstep>::LaneRunnerOf(ros::NodeHandle& nh, const SimulatorParameters& parameters,
+                                     const NodeControl& control, const agents::AgentConfig& agent,
+                                     agents::LaneShare share, ResultSink sink, ScanObserver observer, bool log_rates)
     : parameters_(parameters),
       control_(control),
       agent_(agent),
       label_("agent '" + agent.name + "'" +
-             (agents::instanceCount(agent) > 1 ? " instance " + std::to_string(instance + 1) : std::string())),
+             (share.count > 1 ? " instance " + std::to_string(share.index + 1) : std::string())),
       sink_(std::move(sink)),
       observer_(std::move(observer)),
       log_rates_(log_rates),
       step_timeout_(agents::isPlanner(agent) ? parameters.planner_step_timeout : parameters.step_timeout) {
-  const std::string graph_name = agents::instanceGraphName(agent, instance);
+  const std::string graph_name = agents::instanceGraphName(agent, share.index, share.count);
   if (control.in_network_thread) {
     inline_replies_ = std::make_unique<ppp_msgs::InlineCallbackQueue>();
   } else {

@@ -74,11 +74,12 @@ class LaneRunnerOf {
   /// What sees each request sent (may be empty).
   using ScanObserver = std::function<void(const std::string& agent, const typename Lockstep::Request&)>;
 
-  /// Advertises the requests' topic under /NS and subscribes to the replies' for instance `instance` of agent configuration `agent`
-  /// (NS = agents::instanceGraphName); `log_rates` logs each lane's episodes per second when it is done.
+  /// Advertises the requests' topic under /NS and subscribes to the replies' for instance `share.index` of the
+  /// `share.count` instances of agent configuration `agent` (NS = agents::instanceGraphName); `log_rates` logs
+  /// each lane's episodes per second when it is done.
   LaneRunnerOf(ros::NodeHandle& nh, const SimulatorParameters& parameters, const NodeControl& control,
-             const agents::AgentConfig& agent, int instance, ResultSink sink, ScanObserver observer = {},
-             bool log_rates = true);
+               const agents::AgentConfig& agent, agents::LaneShare share, ResultSink sink, ScanObserver observer = {},
+               bool log_rates = true);
   /// Plays every run of `lane` (whose agent is this runner's); returns when it is finished or the node stops.
   /// @throws what the result sink threw (an unwritable results file, say).
   void run(Lane* lane);

@@ -126,19 +126,19 @@ int SimulatorNode::runExperiment() {
     ended_runs += static_cast<long>(ended.size());
   };
   for (const auto& agent : config.agents) {
-    const int instances = agents::instanceCount(agent);  // a planner's instances share its runs
+    const int instances = agents::instanceCount(agent, config.episode);  // instances share the agent's runs
     for (int instance = 0; instance < instances; ++instance) {
       const agents::LaneShare share{instance, instances};
       if (agents::playsContinuously(agent, config.episode)) {
         lanes.push_back(std::make_unique<PlayedLaneOf<ContinuousLockstep>>(
             experimentContinuousLane(agent, config.episode, sets, config.seed, config.runsFor(agent), results.done(),
                                      parameters.batch_size, share),
-            nh, parameters, lanes_control, agent, instance, sink));
+            nh, parameters, lanes_control, agent, share, sink));
       } else {
         lanes.push_back(std::make_unique<PlayedLaneOf<GridLockstep>>(
             experimentLane(agent, config.episode, sets, config.seed, config.runsFor(agent), results.done(),
                            parameters.batch_size, share),
-            nh, parameters, lanes_control, agent, instance, sink,
+            nh, parameters, lanes_control, agent, share, sink,
             [&recorder](const std::string& name, const protocol::ScanRequest& scan) {
               recorder.recordScan(name, scan);
             }));

@@ -104,20 +104,30 @@ std::string plannerNodelet(const std::string& package, const std::string& type) 
   return package == "ppp_agents" && found != nodelets.end() ? found->second : "";
 }
 
-/// The agent node of `agent`, a nodelet in `manager` ("" for none) unless the agent asks for a process of its own
+/// The agent node of each instance of `agent` (agents::instanceCount: one, but for astar in continuous motion), as
+/// /NAME or /NAME/instance_K; nodelets in `manager` ("" for none) unless the agent asks for processes of their own
 /// or runs on another host.
-ppp_msgs::GraphNode agentNode(const agents::AgentConfig& agent, const std::string& manager) {
-  ppp_msgs::GraphNode node{"ppp_agents", "agent_node", agents::agentGraphName(agent.name)};
-  if (inManager(agent)) loadInto(manager, "ppp_agents/Agent", &node);
-  node.machine = machineOf(agent);
-  node.agent = agent.name;
-  addParams(agents::agentNodeOptionSpecs(), agent, &node);
-  node.remaps = {privateTopic(ppp_msgs::topics::kScans), privateTopic(ppp_msgs::topics::kMoves)};
-  if (agents::movesContinuously(agent)) {
-    node.remaps.push_back(privateTopic(ppp_msgs::topics::kSensing));
-    node.remaps.push_back(privateTopic(ppp_msgs::topics::kCommands));
+std::vector<ppp_msgs::GraphNode> agentNodes(const agents::AgentConfig& agent, const EpisodeOptions& episode,
+                                            const std::string& manager) {
+  const int instances = agents::instanceCount(agent, episode);
+  std::vector<ppp_msgs::GraphNode> nodes;
+  for (int instance = 0; instance < instances; ++instance) {
+    const std::string name = agents::instanceGraphName(agent, instance, instances);
+    const std::size_t slash = name.rfind('/');
+    ppp_msgs::GraphNode node{"ppp_agents", "agent_node", name.substr(slash + 1)};
+    if (slash != std::string::npos) node.group = name.substr(0, slash);
+    if (inManager(agent)) loadInto(manager, "ppp_agents/Agent", &node);
+    node.machine = machineOf(agent);
+    node.agent = agent.name;
+    addParams(agents::agentNodeOptionSpecs(), agent, &node);
+    node.remaps = {privateTopic(ppp_msgs::topics::kScans), privateTopic(ppp_msgs::topics::kMoves)};
+    if (agents::movesContinuously(agent)) {
+      node.remaps.push_back(privateTopic(ppp_msgs::topics::kSensing));
+      node.remaps.push_back(privateTopic(ppp_msgs::topics::kCommands));
+    }
+    nodes.push_back(node);
   }
-  return node;
+  return nodes;
 }
 
 /// How long a planner agent's bridges wait for their planner: five minutes for one the user starts by hand, 20 s
@@ -134,7 +144,7 @@ constexpr double kBridgeConnectMargin = 10.0;
 /// The bridge of each instance of a planner agent (told the robot's radius) and, when the config names it, its
 /// planner, in the instance's namespace (agents::instanceGraphName); nodelets of `manager` ("" for none) unless the
 /// agent asks for processes of its own or runs on another host (and the planner, unless it is one of ours).
-std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, double robot_radius,
+std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, const EpisodeOptions& episode,
                                               const std::string& manager) {
   const std::string in_manager = inManager(agent) ? manager : "";
   const std::size_t slash = agent.planner_node.find('/');
@@ -142,7 +152,7 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, 
   const std::string type = slash == std::string::npos ? "" : agent.planner_node.substr(slash + 1);
   agents::BridgeOptions options = agent.bridge;
   options.connect_timeout = plannerConnectTimeout(agent);
-  options.robot_radius = robot_radius;
+  options.robot_radius = episode.robot_radius;
   static const std::vector<OptionSpec<agents::AgentConfig>> named =
       selectOptions(agents::agentNodeOptionSpecs(), {"name", "memory"});
   static const std::vector<OptionSpec<agents::BridgeOptions>> written =
@@ -150,9 +160,10 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, 
                     {"plan_timeout", "lockstep", "plan_requests", "interface", "endless_proof", "connect_timeout", "cells_per_ppp_cell",
                      "robot_radius"});
   std::vector<ppp_msgs::GraphNode> nodes;
-  for (int instance = 0; instance < agents::instanceCount(agent); ++instance) {
+  const int instances = agents::instanceCount(agent, episode);
+  for (int instance = 0; instance < instances; ++instance) {
     ppp_msgs::GraphNode bridge{"ppp_agents", "planner_bridge_node", ppp_msgs::nodes::kBridge};
-    bridge.group = agents::instanceGraphName(agent, instance);
+    bridge.group = agents::instanceGraphName(agent, instance, instances);
     bridge.machine = machineOf(agent);
     bridge.agent = agent.name;
     addParams(named, agent, &bridge);
@@ -347,9 +358,9 @@ ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const Grap
   graph.nodes.push_back(simulator);
   for (const agents::AgentConfig& agent : agents) {
     if (agents::isPlanner(agent)) {
-      for (ppp_msgs::GraphNode& node : plannerNodes(agent, config.episode.robot_radius, manager)) graph.nodes.push_back(std::move(node));
+      for (ppp_msgs::GraphNode& node : plannerNodes(agent, config.episode, manager)) graph.nodes.push_back(node);
     } else {
-      graph.nodes.push_back(agentNode(agent, manager));
+      for (ppp_msgs::GraphNode& node : agentNodes(agent, config.episode, manager)) graph.nodes.push_back(node);
     }
   }
   if (!manager.empty()) addManager(&graph);

@@ -6,6 +6,7 @@
 
 #include "ppp_agents/agent.hpp"
 #include "ppp_agents/planner_bridge_options.hpp"
+#include "ppp_core/episode_options.hpp"
 #include "ppp_core/option_spec.hpp"
 #include "ppp_core/yaml_reader.hpp"
 
@@ -97,7 +98,7 @@ struct AgentConfig {
   std::string planner_node;    ///< Planner agents only: "package/executable" of the planner to start ("" = the user's).
   std::string planner_args;    ///< Planner agents only: arguments of planner_node ("_planning_time:=0.005 ...").
   BridgeOptions bridge;        ///< Planner agents only: its bridge's plan_timeout and cells_per_ppp_cell.
-  int instances = 0;           ///< Planner agents only: bridge and planner pairs sharing its runs; 0 = instanceCount's.
+  int instances = 0;           ///< Planner agents and astar in continuous motion: nodes sharing its runs; 0 = instanceCount's.
   std::string host;            ///< Through ROS: the machine its node runs on ("" = the simulator's).
   std::string process = kProcessManager;  ///< Through ROS: kProcessManager or kProcessOwn.
   std::string motion = kMotionOfExperiment;  ///< kMotionOfExperiment, or a motion model of its own.
@@ -127,14 +128,19 @@ constexpr const char* kPlannerType = "planner";
 /// True for an external planner agent (type kPlannerType), which cannot be built in-process.
 bool isPlanner(const AgentConfig& config);
 
-/// How many bridge and planner pairs play a planner agent's runs in parallel, each its share (every n-th run):
-/// `instances` when given; else as many as this machine has cores for a planner the experiment starts
-/// (planner_node), and 1 for one the user starts. 1 for every other agent (its node plays batches).
-int instanceCount(const AgentConfig& config);
+/// True when `config` plays in continuous motion under `options`: its own `motion`, else the experiment's.
+bool playsContinuously(const AgentConfig& config, const EpisodeOptions& options);
 
-/// The namespace of instance `instance` (0-based) of an agent as a ROS graph name: agentGraphName(name) for an
-/// agent of one instance, else agentGraphName(name) + "/instance_K" with K = instance + 1.
-std::string instanceGraphName(const AgentConfig& config, int instance);
+/// How many instances play an agent's runs in parallel through ROS, each its share (every n-th run): for a planner
+/// agent, bridge and planner pairs: `instances` when given, else as many as this machine has cores for a planner
+/// the experiment starts (planner_node), and 1 for one the user starts. For a built-in agent in continuous motion
+/// under `options`, agent nodes: `instances`, else as many as this machine has cores (one lockstep stream keeps
+/// one core busy). 1 for every other agent (its node plays batches, and the experiment's other agents the cores).
+int instanceCount(const AgentConfig& config, const EpisodeOptions& options);
+
+/// The namespace of instance `instance` (0-based) of an agent played as `instances` instances, as a ROS graph
+/// name: agentGraphName(name) for one instance, else agentGraphName(name) + "/instance_K" with K = instance + 1.
+std::string instanceGraphName(const AgentConfig& config, int instance, int instances);
 
 /// The built-in agent types of agentRegistry(), in its order (configurations may also name kPlannerType).
 const std::vector<std::string>& agentTypeNames();

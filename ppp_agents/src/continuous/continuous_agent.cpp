@@ -9,10 +9,6 @@
 namespace ppp {
 namespace agents {
 
-bool playsContinuously(const AgentConfig& config, const EpisodeOptions& options) {
-  return (config.motion == kMotionOfExperiment ? options.motion.motion : config.motion) == kMotionContinuous;
-}
-
 void checkContinuousAgent(const AgentConfig& config, const EpisodeOptions& options) {
   if (playsContinuously(config, options) && !isPlanner(config)) makeContinuousAgent(config);
 }

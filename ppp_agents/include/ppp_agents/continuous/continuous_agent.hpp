@@ -47,9 +47,6 @@ class ContinuousAgent {
   virtual bool readsLaser() const = 0;
 };
 
-/// True when `config` plays in continuous motion under `options`: its own `motion`, else the experiment's.
-bool playsContinuously(const AgentConfig& config, const EpisodeOptions& options);
-
 /// @throws InvalidArgument naming "motion" when `config` plays in continuous motion under `options` but moves
 /// only on the grid (every built-in type but astar).
 void checkContinuousAgent(const AgentConfig& config, const EpisodeOptions& options);

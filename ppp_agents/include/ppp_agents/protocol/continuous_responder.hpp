@@ -32,17 +32,23 @@ class ContinuousResponder {
 
  private:
   struct Episode {
+    std::uint32_t id = 0;
     std::unique_ptr<agents::ContinuousAgent> agent;
     std::unique_ptr<Grid> prior_map;  // what the agent's start points at
     std::uint32_t round = 0;          // the last batch that held the episode
   };
   void start(const ppp_msgs::ContinuousStart& message);
+  std::vector<Episode>::iterator firstNotBefore(std::uint32_t id);
+  Episode* find(std::uint32_t id);
   BodyVelocity command(const ppp_msgs::SensingBatch& batch, std::size_t i);
-  void reject(agents::ContinuousReply* reply, const std::string& kind, const std::string& what);
+  void reject(ppp_msgs::CommandBatch* commands, std::size_t i, const std::string& kind, const std::string& what);
   void finishAbsent();
 
   agents::AgentConfig config_;
-  std::unordered_map<std::uint32_t, Episode> episodes_;
+  // Sorted by id: the simulator sends each batch in id order, so the next episode is normally the one after the
+  // last found (a walk instead of a search per step).
+  std::vector<Episode> episodes_;
+  std::size_t next_ = 0;  // where find() looks first
   std::vector<std::unique_ptr<agents::ContinuousAgent>> idle_;
   std::unordered_map<std::uint32_t, InvalidArgument> failed_starts_;  // this batch's rejected starts
   std::vector<float> ranges_;  // the episode's scan being answered
