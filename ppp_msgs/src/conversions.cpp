@@ -118,6 +118,31 @@ geometry_msgs::TransformStamped cellTransform(const ppp::MapFrame& frame, ppp::C
   return transform;
 }
 
+geometry_msgs::TransformStamped poseTransform(const ppp::Pose2D& pose, const std::string& parent,
+                                              const std::string& child) {
+  geometry_msgs::TransformStamped transform;
+  transform.header.frame_id = parent;
+  transform.child_frame_id = child;
+  transform.transform.translation.x = pose.x;
+  transform.transform.translation.y = pose.y;
+  transform.transform.rotation.z = std::sin(pose.theta / 2);
+  transform.transform.rotation.w = std::cos(pose.theta / 2);
+  return transform;
+}
+
+sensor_msgs::LaserScan toLaserScan(const std::vector<float>& ranges, const ppp::LaserBeams& beams,
+                                   const std::string& frame_id) {
+  sensor_msgs::LaserScan scan;
+  scan.header.frame_id = frame_id;
+  scan.angle_min = static_cast<float>(beams.angle_min);
+  scan.angle_increment = static_cast<float>(beams.angle_increment);
+  scan.angle_max = static_cast<float>(beams.angle_min + (beams.count - 1) * beams.angle_increment);
+  scan.range_min = 0;
+  scan.range_max = static_cast<float>(beams.range_max);
+  scan.ranges = ranges;
+  return scan;
+}
+
 ppp::Grid fromOccupancyGrid(const nav_msgs::OccupancyGrid& map) {
   const int width = checkedSide(map.info.width, "map.info.width");
   const int height = checkedSide(map.info.height, "map.info.height");

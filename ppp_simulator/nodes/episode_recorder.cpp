@@ -51,8 +51,10 @@ visualization_msgs::Marker cellMarker(const MapFrame& frame, Cell cell, int id, 
 
 EpisodeRecorder::EpisodeRecorder(ros::NodeHandle& nh, const SimulatorParameters& parameters,
                                  const std::vector<agents::PreparedSet>& sets, const std::vector<std::string>& agent_names,
-                                 int action_limit)
-    : parameters_(parameters), sets_(sets), action_limit_(action_limit) {
+                                 int action_limit, double continuous_seconds)
+    : parameters_(parameters),
+      sets_(sets),
+      slot_seconds_(std::max((action_limit + 10) * kSecondsPerStep, continuous_seconds + 1)) {
   map_publisher_ = nh.advertise<nav_msgs::OccupancyGrid>(ppp_msgs::topics::kRecordedMap, 1, true);
   markers_publisher_ = nh.advertise<visualization_msgs::MarkerArray>(ppp_msgs::topics::kMarkers, 1, true);
   results_publisher_ = nh.advertise<ppp_msgs::EpisodeResults>(ppp_msgs::topics::kResults, 100);
@@ -95,13 +97,12 @@ void EpisodeRecorder::write(const std::string& topic, const ros::Time& time, con
   bag_.write(topic, time, message, header);
 }
 
-bool EpisodeRecorder::sampled(const protocol::ScanRequest& scan) const {
-  return scan.run < parameters_.record_runs && scan.problem < parameters_.record_problems;
+bool EpisodeRecorder::sampled(int problem, int run) const {
+  return run < parameters_.record_runs && problem < parameters_.record_problems;
 }
 
 ros::Time EpisodeRecorder::slotTime(int slot, int step) const {
-  const double slot_seconds = (action_limit_ + 10) * kSecondsPerStep;
-  return bag_start_ + ros::Duration(slot * slot_seconds + step * kSecondsPerStep);
+  return bag_start_ + ros::Duration(slot * slot_seconds_ + step * kSecondsPerStep);
 }
 
 void EpisodeRecorder::recordSets(const std::vector<ppp_msgs::ProblemSet>& sets) {
@@ -112,41 +113,41 @@ void EpisodeRecorder::recordSets(const std::vector<ppp_msgs::ProblemSet>& sets) 
   }
 }
 
-void EpisodeRecorder::recordScan(const std::string& agent, const protocol::ScanRequest& s) {
-  if (!sampled(s)) return;  // most scans: they go by without the lock every lane shares
-  std::lock_guard<std::mutex> lock(mutex_);
+const EpisodeRecorder::Recording* EpisodeRecorder::recordingOf(const std::string& agent, std::uint32_t episode,
+                                                                int set_index, int problem_index, int run,
+                                                                bool starting) {
   // One recorded episode per agent at a time; sampled episodes starting meanwhile are not drawn.
   Recording& recording = recordings_[agent];
-  if (s.start && recording.done) {
-    recording = Recording{s.episode, sets_[s.set].name, sets_[s.set].set.ids[s.problem], s.run,
-                          slots_used_[agent]++, false};
-  } else if (recording.done || recording.episode != s.episode) {
-    return;
+  const agents::PreparedSet& set = sets_[set_index];
+  if (starting && recording.done) {
+    recording = Recording{episode, set.name, set.set.ids[problem_index], run, slots_used_[agent]++, false};
+  } else if (recording.done || recording.episode != episode) {
+    return nullptr;
   }
-  const int slot = recording.slot;
-  const agents::PreparedSet& set = sets_[s.set];
-  const Problem& problem = set.set.problems[s.problem];
+  if (!starting) return &recording;
+  const Problem& problem = set.set.problems[problem_index];
   const MapFrame frame{problem.width, problem.height, parameters_.resolution};
-  const ros::Time stamp = slotTime(slot, s.step);
-  const std::string base_link = agents::agentGraphName(agent) + "/base_link";
-  if (s.start) {
-    nav_msgs::OccupancyGrid map = ppp_msgs::toOccupancyGrid(set.grids[s.problem], parameters_.resolution);
+  const ros::Time stamp = slotTime(recording.slot, 0);
+  if (recording.slot >= maps_written_) {
+    // The first agent to start a slot publishes its map; every agent's slot runs on the same PPP.
+    nav_msgs::OccupancyGrid map = ppp_msgs::toOccupancyGrid(set.grids[problem_index], parameters_.resolution);
     map.header.stamp = stamp;
     visualization_msgs::MarkerArray markers;
     markers.markers.push_back(cellMarker(frame, problem.start, 0, 0.1f, 0.8f, 0.1f, "start"));
     markers.markers.push_back(cellMarker(frame, problem.goal, 1, 0.9f, 0.1f, 0.1f, "goal"));
-    if (slot >= maps_written_) {
-      // The first agent to start a slot publishes its map; every agent's slot runs on the same PPP.
-      map_publisher_.publish(map);
-      markers_publisher_.publish(markers);
-      write("/map", stamp, map, true);
-      write("/ppp/markers", stamp, markers, true);
-      maps_written_ = slot + 1;
-    }
-    paths_[agent] = nav_msgs::Path();
-    paths_[agent].header.frame_id = "map";
+    map_publisher_.publish(map);
+    markers_publisher_.publish(markers);
+    write("/map", stamp, map, true);
+    write("/ppp/markers", stamp, markers, true);
+    maps_written_ = recording.slot + 1;
   }
-  geometry_msgs::TransformStamped transform = ppp_msgs::cellTransform(frame, s.position, "map", base_link);
+  paths_[agent] = nav_msgs::Path();
+  paths_[agent].header.frame_id = "map";
+  return &recording;
+}
+
+void EpisodeRecorder::recordPose(const std::string& agent, geometry_msgs::TransformStamped transform, int step) {
+  const ros::Time stamp = transform.header.stamp;
   transform.header.stamp = ros::Time::now();
   broadcaster_.sendTransform(transform);
   transform.header.stamp = stamp;
@@ -159,21 +160,54 @@ void EpisodeRecorder::recordScan(const std::string& agent, const protocol::ScanR
   pose.header = transform.header;
   pose.pose.position.x = transform.transform.translation.x;
   pose.pose.position.y = transform.transform.translation.y;
-  pose.pose.orientation.w = 1.0;
+  pose.pose.orientation = transform.transform.rotation;
   path.header.stamp = stamp;
   path.poses.push_back(pose);
-  if (s.step % kPathEveryStep == 0) {
+  if (step % kPathEveryStep == 0) {
     path_publishers_.at(agent).publish(path);
     write("/" + agents::agentGraphName(agent) + "/path", stamp, path);
   }
+}
+
+void EpisodeRecorder::recordLaser(const std::string& agent, const sensor_msgs::LaserScan& laser) {
+  scan_publishers_.at(agent).publish(laser);
+  write("/" + agents::agentGraphName(agent) + "/scan", laser.header.stamp, laser);
+}
+
+void EpisodeRecorder::recordScan(const std::string& agent, const protocol::ScanRequest& s) {
+  if (!sampled(s.problem, s.run)) return;  // most scans: they go by without the lock every lane shares
+  std::lock_guard<std::mutex> lock(mutex_);
+  const Recording* recording = recordingOf(agent, s.episode, s.set, s.problem, s.run, s.start.has_value());
+  if (recording == nullptr) return;
+  const Problem& problem = sets_[s.set].set.problems[s.problem];
+  const MapFrame frame{problem.width, problem.height, parameters_.resolution};
+  const std::string base_link = agents::agentGraphName(agent) + "/base_link";
+  geometry_msgs::TransformStamped transform = ppp_msgs::cellTransform(frame, s.position, "map", base_link);
+  transform.header.stamp = slotTime(recording->slot, s.step);
+  recordPose(agent, transform, s.step);
 
   if (!s.window) return;  // an agent that reads no window (random) is sent none: no scan to show
   std::array<std::int8_t, kMaxScanCells> cells;
   unpackWindow(s.free_cells.data(), s.obstacle_cells.data(), s.range, cells.data());
   sensor_msgs::LaserScan laser = ppp_msgs::toLaserScan(cells.data(), s.range, parameters_.resolution, base_link);
-  laser.header.stamp = stamp;
-  scan_publishers_.at(agent).publish(laser);
-  write("/" + agents::agentGraphName(agent) + "/scan", stamp, laser);
+  laser.header.stamp = transform.header.stamp;
+  recordLaser(agent, laser);
+}
+
+void EpisodeRecorder::recordSensing(const std::string& agent, const agents::ContinuousRequest& s) {
+  if (!sampled(s.problem, s.run)) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  const Recording* recording = recordingOf(agent, s.episode, s.set, s.problem, s.run, s.start.has_value());
+  if (recording == nullptr) return;
+  if (s.start) beams_[agent] = s.start->beams;
+  const std::string base_link = agents::agentGraphName(agent) + "/base_link";
+  geometry_msgs::TransformStamped transform = ppp_msgs::poseTransform(s.pose, "map", base_link);
+  transform.header.stamp = slotTime(recording->slot, 0) + ros::Duration(s.time);
+  recordPose(agent, transform, s.step);
+  if (s.ranges.empty()) return;  // an agent that reads no laser (astar) is cast none
+  sensor_msgs::LaserScan laser = ppp_msgs::toLaserScan(s.ranges, beams_.at(agent), base_link);
+  laser.header.stamp = transform.header.stamp;
+  recordLaser(agent, laser);
 }
 
 void EpisodeRecorder::recordResults(const std::vector<agents::EpisodeResult>& results) {

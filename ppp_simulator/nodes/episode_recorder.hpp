@@ -5,14 +5,17 @@
 #include <string>
 #include <vector>
 
+#include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <rosbag/bag.h>
+#include <sensor_msgs/LaserScan.h>
 #include <tf2_ros/transform_broadcaster.h>
 
 #include "ppp_msgs/EpisodeResults.h"
 #include "ppp_msgs/ProblemSet.h"
 #include "ppp_agents/agent_lane.hpp"
+#include "ppp_agents/continuous/continuous_lane.hpp"
 #include "simulator_parameters.hpp"
 
 namespace ppp {
@@ -28,13 +31,17 @@ namespace simulator {
 /// Thread-safe: every lane thread reports to it.
 class EpisodeRecorder {
  public:
-  /// Opens the bag (when recording) and advertises the topics. @throws IoError when the bag cannot be opened.
+  /// Opens the bag (when recording) and advertises the topics; `action_limit` is the most actions of a grid episode,
+  /// `continuous_seconds` the longest budget of a continuous one. @throws IoError when the bag cannot be opened.
   EpisodeRecorder(ros::NodeHandle& nh, const SimulatorParameters& parameters, const std::vector<agents::PreparedSet>& sets,
-                  const std::vector<std::string>& agent_names, int action_limit);
+                  const std::vector<std::string>& agent_names, int action_limit, double continuous_seconds = 0);
   /// Publishes and records the PPP sets (latched /ppp/sets/<name>).
   void recordSets(const std::vector<ppp_msgs::ProblemSet>& sets);
   /// Publishes and records a scan sent to `agent`, if its episode is sampled.
   void recordScan(const std::string& agent, const protocol::ScanRequest& scan);
+  /// Publishes and records the pose (with its heading) and laser of a continuous episode of `agent` in one
+  /// control period, if its episode is sampled; its steps are stamped by its simulated time.
+  void recordSensing(const std::string& agent, const agents::ContinuousRequest& sensing);
   /// Publishes and records finished episodes (grouped with those of the last moments).
   void recordResults(const std::vector<agents::EpisodeResult>& results);
   /// Publishes and records the results still grouped, then closes the bag.
@@ -50,7 +57,17 @@ class EpisodeRecorder {
     int slot = 0;
     bool done = true;
   };
-  bool sampled(const protocol::ScanRequest& scan) const;
+  bool sampled(int problem, int run) const;
+  /// The recording `agent`'s step of episode `episode` (run `run` of PPP `problem` of set `set`) belongs to,
+  /// started at the episode's first step (`starting`), or null when the step is not recorded; writes the map and
+  /// markers of a new slot. Called with mutex_ held.
+  const Recording* recordingOf(const std::string& agent, std::uint32_t episode, int set, int problem, int run,
+                               bool starting);
+  /// Sends and records `transform` (map -> the agent's base_link, stamped) and appends it to the agent's path,
+  /// writing the path every kPathEveryStep-th `step`.
+  void recordPose(const std::string& agent, geometry_msgs::TransformStamped transform, int step);
+  /// Publishes and records a scan of `agent`.
+  void recordLaser(const std::string& agent, const sensor_msgs::LaserScan& laser);
   ros::Time slotTime(int slot, int step) const;
   void flushResults();
   template <typename M>
@@ -69,9 +86,10 @@ class EpisodeRecorder {
   std::map<std::string, ros::Publisher> scan_publishers_;
   std::map<std::string, nav_msgs::Path> paths_;
   std::map<std::string, Recording> recordings_;    // per agent: the episode being (or last) recorded
+  std::map<std::string, LaserBeams> beams_;        // per agent in continuous motion: its laser's beams
   std::map<std::string, int> slots_used_;          // per agent: recorded episodes started so far
   int maps_written_ = 0;                           // slots whose map is in the bag
-  int action_limit_;  // the most actions of one episode: the length of a slot
+  double slot_seconds_;  // bag time of a slot: the longest episode, grid (0.1 s an action) or continuous
   ros::Time bag_start_;
   ros::Time latest_stamp_;  // the latest time written to the bag
   ppp_msgs::EpisodeResults pending_results_;  // not yet published

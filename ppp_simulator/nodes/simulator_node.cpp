@@ -14,6 +14,7 @@
 #include "ppp_core/text_file.hpp"
 #include "ppp_msgs/conversions.h"
 #include "ppp_agents/agent_lane.hpp"
+#include "ppp_agents/continuous/continuous_runner.hpp"
 #include "ppp_simulator/experiment_graph.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
 #include "set_receiver.hpp"
@@ -110,7 +111,11 @@ int SimulatorNode::runExperiment() {
   ResultsFile& results = *opened;
   std::vector<std::string> agent_names;
   for (const auto& a : config.agents) agent_names.push_back(a.name);
-  EpisodeRecorder recorder(nh, parameters, sets, agent_names, agents::largestActionLimit(sets));
+  const bool continuous = std::any_of(config.agents.begin(), config.agents.end(), [&](const agents::AgentConfig& a) {
+    return agents::playsContinuously(a, config.episode);
+  });
+  EpisodeRecorder recorder(nh, parameters, sets, agent_names, agents::largestActionLimit(sets),
+                           continuous ? agents::longestContinuousRun(sets, config.episode) : 0);
   recorder.recordSets(received.messages);
 
   // A lane whose results cannot be written stops every lane: the node exits 1.
@@ -133,7 +138,10 @@ int SimulatorNode::runExperiment() {
         lanes.push_back(std::make_unique<PlayedLaneOf<ContinuousLockstep>>(
             experimentContinuousLane(agent, config.episode, sets, config.seed, config.runsFor(agent), results.done(),
                                      parameters.batch_size, share),
-            nh, parameters, lanes_control, agent, share, sink));
+            nh, parameters, lanes_control, agent, share, sink,
+            [&recorder](const std::string& name, const agents::ContinuousRequest& sensing) {
+              recorder.recordSensing(name, sensing);
+            }));
       } else {
         lanes.push_back(std::make_unique<PlayedLaneOf<GridLockstep>>(
             experimentLane(agent, config.episode, sets, config.seed, config.runsFor(agent), results.done(),

@@ -62,6 +62,9 @@ void ContinuousLane::requests(std::vector<ContinuousRequest>* requests) {
     r.pose = a.episode.pose();
     r.velocity = a.episode.velocity();
     r.time = a.episode.time();
+    r.set = a.work.set;
+    r.problem = a.work.problem;
+    r.run = a.work.run;
     if (reads_laser_) {
       a.episode.scan(&r.ranges);
     } else {

@@ -40,6 +40,17 @@ ContinuousEpisode continuousEpisode(const Problem& problem, const Grid& grid, co
                            continuousStepBudget(options.motion, optimal), run_seed, record_poses);
 }
 
+double longestContinuousRun(const std::vector<PreparedSet>& sets, const EpisodeOptions& options) {
+  long periods = 0;
+  for (const PreparedSet& set : sets) {
+    for (std::size_t p = 0; p < set.set.problems.size(); ++p) {
+      const int optimal = continuousOptimalMoves(set.set.problems[p], set.grids[p], options, set.moves[p]);
+      periods = std::max(periods, continuousStepBudget(options.motion, optimal));
+    }
+  }
+  return static_cast<double>(periods) * options.motion.control_period;
+}
+
 ContinuousStart continuousStart(const ContinuousEpisode& episode, const EpisodeOptions& options,
                                 const AgentConfig& config, const Grid& grid, std::uint64_t run_seed) {
   ContinuousStart start;

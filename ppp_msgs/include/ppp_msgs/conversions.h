@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "ppp_core/grid.hpp"
+#include "ppp_core/kinematics.hpp"
+#include "ppp_core/laser.hpp"
 #include "ppp_core/map_frame.hpp"
 #include "ppp_core/problem.hpp"
 #include "ppp_msgs/Obstacle.h"
@@ -57,6 +59,17 @@ nav_msgs::OccupancyGrid toFinerOccupancyGrid(const std::vector<std::int8_t>& cel
 /// The transform `parent` -> `child` placing `child` on the centre of `cell` (identity rotation), unstamped.
 geometry_msgs::TransformStamped cellTransform(const ppp::MapFrame& frame, ppp::Cell cell, const std::string& parent,
                                               const std::string& child);
+
+/// The transform `parent` -> `child` placing `child` at `pose` (a map-frame pose in metres, its heading a rotation
+/// about z), unstamped.
+geometry_msgs::TransformStamped poseTransform(const ppp::Pose2D& pose, const std::string& parent,
+                                              const std::string& child);
+
+/// A laser's ranges (ppp::scanLaser's, +inf for no return) as a sensor_msgs/LaserScan in `frame_id`: the beams'
+/// angles, range_min 0 and range_max as `beams` says, no scan or time increments (a scan is one instant). The header
+/// stamp is left zero for the caller to set.
+sensor_msgs::LaserScan toLaserScan(const std::vector<float>& ranges, const ppp::LaserBeams& beams,
+                                   const std::string& frame_id);
 
 /// Rays of the laser scans made by toLaserScan (one every 5 degrees).
 constexpr int kLaserRays = 72;

@@ -90,7 +90,8 @@ done
 
 # Continuous motion through ROS: astar drives a disc over /astar/sensing and /astar/commands beside an explorer on
 # the grid, in one manager and with every node a process of its own; results.csv is `ppp experiment`'s byte for
-# byte in both. A disc that cannot stand at a start stops the simulator before any run, naming robot_radius.
+# byte in both, and the bag holds astar's recorded trajectory. A disc that cannot stand at a start stops the simulator
+# before any run, naming robot_radius.
 sed 's/^runs: 3/runs: 3\nmotion: continuous\nrobot_radius: 0.3/; s/type: explorer}/type: explorer, motion: grid}/' \
   "$work/small/experiment.yaml" > "$work/small/continuous.yaml"
 "$devel/lib/ppp_simulator/ppp" experiment "$work/small/continuous.yaml" -o "$work/small/continuous_cli" --quiet \
@@ -102,6 +103,18 @@ for processes in manager own; do
     [ "$(grep -c ',astar,.*,goal_reached,' "$work/small/continuous_cli/results.csv")" -eq 18 ] && pass || \
     fail "continuous motion through ROS ($processes) differs from ppp experiment: $(tail -20 "$work/small/continuous_$processes.log")"
 done
+# The bag holds a recorded continuous episode of astar: its path's poses turn with the robot's heading, stamped by
+# its simulated time (a control period of 0.1 s).
+/usr/bin/python3 - "$work/small/continuous_manager/experiment.bag" <<'EOF2' && pass || fail "the bag's continuous path"
+import math, sys
+import rosbag
+path = None
+for _, message, _ in rosbag.Bag(sys.argv[1]).read_messages(topics=["/astar/path"]):
+    path = message
+headings = {round(2 * math.atan2(p.pose.orientation.z, p.pose.orientation.w), 2) for p in path.poses}
+steps = [(b.header.stamp - a.header.stamp).to_sec() for a, b in zip(path.poses, path.poses[1:])]
+sys.exit(0 if len(headings) > 4 and all(abs(s - 0.1) < 1e-6 for s in steps) else 1)
+EOF2
 sed 's/^robot_radius: 0.3/robot_radius: 0.5/' "$work/small/continuous.yaml" > "$work/small/fat.yaml"
 timeout 120 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/fat" \
   config:="$work/small/fat.yaml" > "$work/small/fat.log" 2>&1

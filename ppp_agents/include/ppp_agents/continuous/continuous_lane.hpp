@@ -25,6 +25,9 @@ struct ContinuousRequest {
   BodyVelocity velocity;                 ///< Its velocity during the last period, robot frame.
   double time = 0;                       ///< Simulated seconds since the episode's start.
   std::vector<float> ranges;             ///< The laser (empty for an agent that does not read it).
+  int set = 0;                           ///< Index of the PPP's set (the simulator's own; not sent).
+  int problem = 0;                       ///< Index of the PPP in its set (not sent).
+  int run = 0;                           ///< Run number (not sent).
 };
 
 /// An agent's answer to a ContinuousRequest.

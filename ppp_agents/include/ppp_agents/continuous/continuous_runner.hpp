@@ -29,6 +29,9 @@ int continuousOptimalMoves(const Problem& problem, const Grid& grid, const Episo
 ContinuousEpisode continuousEpisode(const Problem& problem, const Grid& grid, const EpisodeOptions& options,
                                     int optimal, std::uint64_t run_seed, bool record_poses = false);
 
+/// The longest budget of simulated time, in seconds, of a continuous run of any PPP of `sets` under `options`.
+double longestContinuousRun(const std::vector<PreparedSet>& sets, const EpisodeOptions& options);
+
 /// What an agent of `config` is told at the start of `episode` (a run of a PPP decoded as `grid`, seeded
 /// `run_seed`): the true map only when the agent is given it (astar).
 ContinuousStart continuousStart(const ContinuousEpisode& episode, const EpisodeOptions& options,
