@@ -9,7 +9,8 @@ BridgeNode::BridgeNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh, c
                        bool in_network_thread)
     : nh_(nh),
       parameters_(readBridgeParameters(private_nh, nh.getNamespace())),
-      bridge_(nh_, parameters_, in_network_thread) {
+      bridge_(nh_, parameters_, in_network_thread),
+      continuous_(bridge_.link(), parameters_) {
   ROS_INFO("bridge '%s': waiting for a planner on %s", parameters_.config.name.c_str(),
            bridge_.plannerTopics().c_str());
   if (in_network_thread) {
@@ -34,6 +35,7 @@ void BridgeNode::connect() {
   if (!bridge_.waitForPlanner()) return;
   ROS_INFO("bridge '%s': planner connected", parameters_.config.name.c_str());
   bridge_.serve(nh_);
+  if (commandsVelocity(parameters_)) continuous_.serve(nh_);
 }
 
 }  // namespace agents

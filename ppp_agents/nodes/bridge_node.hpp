@@ -2,10 +2,12 @@
 
 // The planner bridge node: plays an agent of type planner with an external ROS planner, one episode at a time
 // (docs/reference/planner-interface.md). Start it in the agent's namespace (ns="NAME"), the planner in NAME/robot.
-//   simulator side  subscribes scans (ppp_msgs/ScanBatch)   publishes moves (ppp_msgs/MoveBatch)
+//   simulator side  subscribes scans (ppp_msgs/ScanBatch)   publishes moves (ppp_msgs/MoveBatch); in continuous
+//                   motion (interface cmd_vel) sensing (ppp_msgs/SensingBatch) and commands (ppp_msgs/CommandBatch)
 //   planner side    publishes robot/map (nav_msgs/OccupancyGrid, latched), robot/odom (nav_msgs/Odometry),
 //                   robot/scan (sensor_msgs/LaserScan), robot/move_base_simple/goal (geometry_msgs/PoseStamped)
-//                   and tf map_frame -> base_frame; subscribes robot/plan (nav_msgs/Path)
+//                   and tf map_frame -> base_frame; subscribes robot/plan (nav_msgs/Path); in continuous motion also
+//                   robot/clock (rosgraph_msgs/Clock) and tf map -> odom -> base_link, and takes robot/cmd_vel
 //   parameters      ~name (default: the namespace's last component), ~memory, ~sensor_noise (the simulator
 //                   applies it) and the bridge's own (~plan_timeout, ~lockstep, ~connect_timeout, ~map_frame, ...):
 //                   docs/reference/options.md#planner-bridge-node
@@ -18,6 +20,7 @@
 #include <string>
 #include <thread>
 
+#include "continuous_planner_bridge.hpp"
 #include "planner_bridge.hpp"
 #include "planner_bridge_parameters.hpp"
 
@@ -41,6 +44,7 @@ class BridgeNode {
   ros::NodeHandle nh_;
   BridgeParameters parameters_;
   PlannerBridge bridge_;
+  ContinuousPlannerBridge continuous_;  // the same planner in continuous motion (interface cmd_vel)
   std::thread connecting_;  // a nodelet's
 };
 

@@ -50,6 +50,8 @@ class PlannerBridge {
   void serve(ros::NodeHandle& nh);
   /// The planner-side topic names, for the log.
   std::string plannerTopics() const { return link_.topics(); }
+  /// The link to the planner (which the continuous-motion bridge shares).
+  PlannerLink* link() { return &link_; }
 
  private:
   /// What a step produced: a move, or a failure reason for the simulator.

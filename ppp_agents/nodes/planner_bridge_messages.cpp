@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "ppp_msgs/graph_names.h"
+
 namespace ppp {
 namespace agents {
 
@@ -47,6 +49,11 @@ nav_msgs::Odometry odometryOf(const geometry_msgs::TransformStamped& transform) 
   odom.pose.pose.position.z = transform.transform.translation.z;
   odom.pose.pose.orientation = transform.transform.rotation;
   return odom;
+}
+
+std::string odomFrameOf(const std::string& base_frame) {
+  const std::size_t slash = base_frame.rfind('/');
+  return slash == std::string::npos ? ppp_msgs::frames::kOdom : base_frame.substr(0, slash + 1) + ppp_msgs::frames::kOdom;
 }
 
 }  // namespace agents

@@ -26,6 +26,10 @@ std::string pathPoints(const nav_msgs::Path& path, const std::string& map_frame,
 std::string commandOf(const geometry_msgs::TwistStamped& command, const std::string& base_frame,
                       const std::string& map_frame, VelocityCommand* velocity);
 
+/// The odometry frame of a robot whose frame is `base_frame`: its sibling "odom" ("ompl/robot/base_link" ->
+/// "ompl/robot/odom"; "base_link" -> "odom").
+std::string odomFrameOf(const std::string& base_frame);
+
 /// The odometry a planner reads the robot's pose from: the pose `transform` gives its child frame in its parent
 /// frame (header and child frame as the transform's).
 nav_msgs::Odometry odometryOf(const geometry_msgs::TransformStamped& transform);

@@ -4,6 +4,7 @@
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/master.h>
+#include <rosgraph_msgs/Clock.h>
 #include <sensor_msgs/LaserScan.h>
 #include <tf2_msgs/TFMessage.h>
 
@@ -43,6 +44,8 @@ PlannerLink::PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters
   odom_ = nh_.advertise<nav_msgs::Odometry>(ppp_msgs::topics::kPlannerOdom, 10);
   scan_ = nh_.advertise<sensor_msgs::LaserScan>(ppp_msgs::topics::kPlannerScan, 10);
   goal_ = nh_.advertise<geometry_msgs::PoseStamped>(ppp_msgs::topics::kPlannerGoal, 10);
+  // Latched: a planner that subscribes late still learns the time (rospy's first sleep waits for it).
+  clock_ = nh_.advertise<rosgraph_msgs::Clock>(ppp_msgs::topics::kPlannerClock, 10, true);
   tf_ = nh.advertise<tf2_msgs::TFMessage>("/tf", 100);
   // Without Nagle's algorithm (it would hold each answer back 40 ms).
   if (commandsVelocity(parameters_)) {
@@ -242,6 +245,51 @@ void PlannerLink::publishGoal(const ros::Time& stamp, const PlannerEpisode& epis
   goal->pose.position.y = episode.frame().centreY(episode.goal());
   goal->pose.orientation.w = 1.0;
   ppp_msgs::publishHandingOver(goal_, goal);
+}
+
+void PlannerLink::publishContinuousStart(const ros::Time& stamp, const MapFrame& frame, const Grid* prior_map,
+                                         MapPoint goal) {
+  std::vector<std::int8_t> cells(static_cast<std::size_t>(frame.width) * frame.height, kScanUnknown);
+  if (prior_map != nullptr) {
+    for (std::size_t i = 0; i < cells.size(); ++i) cells[i] = prior_map->cells()[i] != 0 ? kScanObstacle : kScanFree;
+  }
+  auto map = boost::make_shared<nav_msgs::OccupancyGrid>(ppp_msgs::toFinerOccupancyGrid(
+      cells, frame.width, frame.height, frame.resolution, parameters_.cells_per_ppp_cell, parameters_.map_frame));
+  map->header.stamp = stamp;
+  map->info.map_load_time = stamp;
+  ppp_msgs::publishHandingOver(map_, map);
+  auto message = boost::make_shared<geometry_msgs::PoseStamped>();
+  message->header.stamp = stamp;
+  message->header.frame_id = parameters_.map_frame;
+  message->pose.position.x = goal.x;
+  message->pose.position.y = goal.y;
+  message->pose.orientation.w = 1.0;
+  ppp_msgs::publishHandingOver(goal_, message);
+}
+
+void PlannerLink::publishContinuous(const ros::Time& stamp, const Pose2D& pose, const BodyVelocity& velocity,
+                                    const std::vector<float>& ranges, const LaserBeams& beams) {
+  const std::string odom_frame = odomFrameOf(parameters_.base_frame);
+  auto transforms = boost::make_shared<tf2_msgs::TFMessage>();
+  transforms->transforms.push_back(ppp_msgs::poseTransform(Pose2D{}, parameters_.map_frame, odom_frame));
+  transforms->transforms.push_back(ppp_msgs::poseTransform(pose, odom_frame, parameters_.base_frame));
+  for (geometry_msgs::TransformStamped& t : transforms->transforms) t.header.stamp = stamp;
+  nav_msgs::Odometry odometry = odometryOf(transforms->transforms.back());
+  odometry.twist.twist.linear.x = velocity.forward;
+  odometry.twist.twist.linear.y = velocity.left;
+  odometry.twist.twist.angular.z = velocity.turn;
+  ppp_msgs::publishHandingOver(tf_, transforms);
+  ppp_msgs::publishHandingOver(odom_, boost::make_shared<nav_msgs::Odometry>(odometry));
+  auto laser = boost::make_shared<sensor_msgs::LaserScan>(ppp_msgs::toLaserScan(ranges, beams, parameters_.base_frame));
+  laser->header.stamp = stamp;
+  ppp_msgs::publishHandingOver(scan_, laser);
+  publishClock(stamp);
+}
+
+void PlannerLink::publishClock(const ros::Time& stamp) {
+  auto clock = boost::make_shared<rosgraph_msgs::Clock>();
+  clock->clock = stamp;
+  ppp_msgs::publishHandingOver(clock_, clock);
 }
 
 }  // namespace agents

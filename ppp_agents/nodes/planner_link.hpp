@@ -14,6 +14,8 @@
 #include "nav_msgs/Path.h"
 #include "planner_bridge_parameters.hpp"
 #include "ppp_agents/planner_episode.hpp"
+#include "ppp_core/kinematics.hpp"
+#include "ppp_core/laser.hpp"
 #include "ppp_msgs/lockstep_queue.h"
 
 namespace ppp {
@@ -63,6 +65,16 @@ class PlannerLink {
                    int range);
   /// Publishes a plan request: the episode's goal, stamped `stamp`.
   void publishGoal(const ros::Time& stamp, const PlannerEpisode& episode);
+  /// Continuous motion: publishes the map a planner is given at an episode's start (the true map, or every cell
+  /// unknown; its map_load_time `stamp`) and the goal `goal` (map frame), stamped `stamp`.
+  void publishContinuousStart(const ros::Time& stamp, const MapFrame& frame, const Grid* prior_map, MapPoint goal);
+  /// Continuous motion: publishes one control period's sensing at the simulated time `stamp`: tf map -> odom (the
+  /// identity: odometry is exact) and odom -> base_link, the odometry (`pose` and `velocity`), the laser's
+  /// `ranges`, then the clock at `stamp` (last, so a planner whose timer fires on it has the period's sensing).
+  void publishContinuous(const ros::Time& stamp, const Pose2D& pose, const BodyVelocity& velocity,
+                         const std::vector<float>& ranges, const LaserBeams& beams);
+  /// Continuous motion: publishes the planner's clock at `stamp` (latched).
+  void publishClock(const ros::Time& stamp);
   /// A new episode: paths sent so far answer an earlier one, and the planner has not answered in this one.
   void newEpisode();
   /// The newest path the planner published on its own since the last look, if any.
@@ -101,7 +113,7 @@ class PlannerLink {
   BridgeParameters parameters_;
   std::atomic<bool> stopping_{false};
   ros::NodeHandle nh_;  // robot/...
-  ros::Publisher map_, odom_, scan_, goal_;
+  ros::Publisher map_, odom_, scan_, goal_, clock_;
   ros::Publisher tf_;  // /tf as the node's remappings name it (a nodelet's too)
   ppp_msgs::LockstepQueue queue_;  // the answer subscription's
   ros::Subscriber answers_;  // plan or cmd_vel

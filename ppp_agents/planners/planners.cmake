@@ -57,9 +57,9 @@ install(TARGETS optimistic_planner_node ompl_planner_node mrpt_planner_node mrpt
   RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION}
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 # simple_planner.py, and two variants of it with a classic, rare fault each, for hunting
-# (docs/tutorials/hunt-your-planner.md).
+# (docs/tutorials/hunt-your-planner.md); steering_planner.py, a local planner on simulated time for continuous motion.
 catkin_install_python(PROGRAMS scripts/simple_planner.py scripts/horizon_planner.py scripts/greedy_planner.py
-                      DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+                      scripts/steering_planner.py DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
   foreach(test_name grid_map_test optimistic_astar_test ompl_grid_planner_test)

@@ -69,6 +69,10 @@ std::string launchXml(const LaunchGraph& graph) {
     out << "  <machine name=" << attribute(m.name, "host") << " address=" << attribute(m.address, "host")
         << " env-loader=" << attribute(m.env_loader, "env_loader") << "/>\n";
   }
+  for (const GraphParam& p : graph.params) {
+    out << "  <param name=" << attribute(p.name, p.name) << " type=" << attribute(p.type, p.name)
+        << " value=" << attribute(p.value, p.name) << "/>\n";
+  }
   for (std::size_t i = 0; i < graph.nodes.size();) {
     const std::string& group = graph.nodes[i].group;
     if (group.empty()) {

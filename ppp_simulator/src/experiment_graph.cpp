@@ -141,12 +141,24 @@ double plannerConnectTimeout(const agents::AgentConfig& agent) {
 /// Seconds the simulator waits for a planner agent beyond its bridge's wait for the planner: the bridge's own start.
 constexpr double kBridgeConnectMargin = 10.0;
 
+/// The clock a node on simulated time reads.
+constexpr const char* kClock = "/clock";
+/// Where the graph's nodes that keep the system's time look for /use_sim_time (a parameter nobody sets).
+constexpr const char* kSystemTimeParameter = "/ppp/use_system_time";
+
+/// True for a planner agent playing in continuous motion: its planner runs on the simulated time its bridge
+/// publishes.
+bool playsOnSimulatedTime(const agents::AgentConfig& agent, const EpisodeOptions& episode) {
+  return agents::isPlanner(agent) && agents::playsContinuously(agent, episode);
+}
+
 /// The bridge of each instance of a planner agent (told the robot's radius) and, when the config names it, its
 /// planner, in the instance's namespace (agents::instanceGraphName); nodelets of `manager` ("" for none) unless the
 /// agent asks for processes of its own or runs on another host (and the planner, unless it is one of ours).
 std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, const EpisodeOptions& episode,
                                               const std::string& manager) {
   const std::string in_manager = inManager(agent) ? manager : "";
+  const bool simulated_time = playsOnSimulatedTime(agent, episode);
   const std::size_t slash = agent.planner_node.find('/');
   const std::string package = agent.planner_node.substr(0, slash);
   const std::string type = slash == std::string::npos ? "" : agent.planner_node.substr(slash + 1);
@@ -186,6 +198,12 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, 
     planner.agent = agent.name;
     planner.args = agent.planner_args;
     planner.remaps = bridge.remaps;
+    if (simulated_time) {
+      // Its own clock, which its bridge publishes; a process of its own, as a process has one time for all its nodes.
+      planner.remaps.push_back({kClock, ns + ppp_msgs::topics::kRobotNamespace + "/" + ppp_msgs::topics::kPlannerClock});
+      nodes.push_back(planner);
+      continue;
+    }
     const std::string nodelet = plannerNodelet(package, type);
     if (!nodelet.empty()) loadInto(in_manager, nodelet, &planner);
     nodes.push_back(planner);
@@ -294,9 +312,10 @@ ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const Grap
   config.validate();
   options.validate(config);
   for (const agents::AgentConfig& agent : config.agents) {
-    if (agents::isPlanner(agent) && agents::playsContinuously(agent, config.episode)) {
-      throw InvalidArgument("motion", "planner agent '" + agent.name + "' plays in " + kMotionContinuous +
-                                          " motion, which its bridge does not serve yet: set its motion: grid");
+    if (playsOnSimulatedTime(agent, config.episode) && !agents::commandsVelocity(agent.bridge)) {
+      throw InvalidArgument("interface", "planner agent '" + agent.name + "' plays in " + kMotionContinuous +
+                                             " motion with interface: " + agent.bridge.interface +
+                                             ", which its bridge does not follow yet: give it interface: cmd_vel");
     }
   }
   const bool shrink = !options.shrink.input.empty();
@@ -364,6 +383,18 @@ ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const Grap
     }
   }
   if (!manager.empty()) addManager(&graph);
+  // Planners in continuous motion run on simulated time: /use_sim_time is set for the whole graph, each such
+  // planner reads the clock its bridge publishes (its /clock is remapped to it), and every other node is remapped
+  // to a parameter nobody sets, so it keeps the system's time (its stamps and timeouts).
+  if (std::any_of(agents.begin(), agents.end(),
+                  [&](const agents::AgentConfig& a) { return playsOnSimulatedTime(a, config.episode); })) {
+    graph.params.push_back({"/use_sim_time", "bool", "true"});
+    for (ppp_msgs::GraphNode& node : graph.nodes) {
+      const bool clocked = std::any_of(node.remaps.begin(), node.remaps.end(),
+                                       [](const ppp_msgs::GraphRemap& r) { return r.from == kClock; });
+      if (!clocked) node.remaps.push_back({"/use_sim_time", kSystemTimeParameter});
+    }
+  }
   return graph;
 }
 

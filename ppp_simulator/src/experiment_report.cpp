@@ -116,8 +116,10 @@ std::optional<ShrunkExample> shrunkRun(const ExperimentConfig& config, const age
   return example;
 }
 
-/// Whether the report shows runs of `agent`: not the control or the random baseline.
-bool replayedInReport(const agents::AgentConfig& agent) {
+/// Whether the report shows runs of `agent`: not the control or the random baseline, nor an agent in continuous
+/// motion (its runs are drawn as trajectories by `ppp replay`, not yet in the report).
+bool replayedInReport(const agents::AgentConfig& agent, const EpisodeOptions& episode) {
+  if (agents::playsContinuously(agent, episode)) return false;  // its runs are not replayed or shrunk yet
   const agents::AgentType& type = agents::agentType(agent.type);
   return !type.has(agents::AgentTrait::Control) && !type.has(agents::AgentTrait::Baseline);
 }
@@ -229,7 +231,7 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
   }
   std::vector<FailureExample> worst;
   for (const agents::AgentConfig& agent : config.agents) {
-    if (!replayedInReport(agent)) continue;
+    if (!replayedInReport(agent, config.episode)) continue;
     double lowest = 1.0;
     std::pair<int, int> at{-1, -1};
     for (const auto& [where, c] : counts[agent.name]) {  // set order, then PPP order: the first of equals wins
@@ -252,7 +254,7 @@ std::vector<FailureExample> longestDetours(const ExperimentConfig& config, const
                                            const std::vector<DetourStats>& detours, const StopCheck& stop) {
   std::vector<FailureExample> examples;
   for (const agents::AgentConfig& agent : config.agents) {
-    if (!replayedInReport(agent)) continue;
+    if (!replayedInReport(agent, config.episode)) continue;
     const DetourStats* worst = nullptr;
     for (const DetourStats& d : detours) {
       if (d.agent == agent.name && (worst == nullptr || d.worst_mean > worst->worst_mean)) worst = &d;

@@ -93,13 +93,13 @@ expect_error "continuous shrink" "motion: agent 'astar' plays in continuous moti
   "$ppp" shrink "$work/small.ppp" --agent astar --motion continuous --runs 2 -o "$work/shrunk.ppp"
 expect_error "continuous hunt" "motion: agent 'astar' plays in continuous motion" \
   "$ppp" generate --fitness failure --agents astar --motion continuous --matings 4 --population 4 -o "$work/hunt"
-# Through ROS, astar's node is given its continuous topics; a planner's bridge does not serve continuous motion yet.
+# Through ROS, astar's node is given its continuous topics; a planner that sends paths is not followed yet.
 expect_ok "continuous through ROS" "$ppp" launch-file "$work/continuous.yaml" -o "$work/ros"
 grep -q '<remap from="sensing" to="~sensing"/>' "$work/out" && pass || fail "astar's node has no sensing topic"
 write_experiment "$work/planner.yaml" "motion: continuous" ""
 sed -i 's/  - {name: astar, type: astar}/  - {name: ompl, type: planner, planner_node: ppp_agents\/ompl_planner_node}/' \
   "$work/planner.yaml"
-expect_error "a continuous planner through ROS" "motion: planner agent 'ompl' plays in continuous motion, which its bridge does not serve yet" \
+expect_error "a continuous planner that sends paths" "interface: planner agent 'ompl' plays in continuous motion with interface: path" \
   "$ppp" launch-file "$work/planner.yaml" -o "$work/planner"
 
 finish

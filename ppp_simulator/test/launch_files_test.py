@@ -428,6 +428,53 @@ sets:
             self.assertIn(expected, errors, text)
 
 
+class ContinuousGraphTest(unittest.TestCase):
+    SETS = "sets:\n  - name: s\n    generator: {fitness: turns, population: 4, matings: 5}\n"
+
+    def test_astar_in_continuous_motion_runs_one_agent_node_per_core(self):
+        path = write_config(tempfile.mkdtemp(), "motion: continuous\nagents:\n  - {name: astar, type: astar}\n"
+                            "  - {name: explorer, type: explorer, motion: grid}\n" + self.SETS)
+        graph, _ = load_graph(path)
+        agent_nodes = sorted(n.namespace + n.name for n in graph.nodes if role(n) == 'agent_node')
+        self.assertEqual(agent_nodes, sorted([ns.rstrip('/') for ns in instance_namespaces('astar', CORES)] +
+                                             ['/explorer']))
+        for node in graph.nodes:
+            remaps = [list(r) for r in node.remap_args]
+            if role(node) == 'agent_node' and node.namespace.startswith('/astar'):
+                self.assertIn(['sensing', '~sensing'], remaps)
+                self.assertIn(['commands', '~commands'], remaps)
+            # No planner: every node keeps the system's time, and nothing sets /use_sim_time.
+            self.assertNotIn('/use_sim_time', [r[0] for r in remaps])
+        self.assertNotIn('/use_sim_time', graph.params)
+
+    def test_a_planner_in_continuous_motion_runs_on_its_bridges_clock(self):
+        path = write_config(tempfile.mkdtemp(), "motion: continuous\nagents:\n  - {name: astar, type: astar}\n"
+                            "  - {name: steer, type: planner, interface: cmd_vel, instances: 2, "
+                            "planner_node: ppp_agents/steering_planner.py}\n" + self.SETS)
+        graph, _ = load_graph(path)
+        self.assertIs(graph.params['/use_sim_time'].value, True)
+        planners = [n for n in graph.nodes if n.namespace.endswith('/robot/')]
+        self.assertEqual(sorted(n.namespace for n in planners),
+                         [ns + 'robot/' for ns in instance_namespaces('steer', 2)])
+        for node in graph.nodes:
+            remaps = [list(r) for r in node.remap_args]
+            if node in planners:
+                # A process of its own (a process has one time), on the clock its bridge publishes.
+                self.assertIsNone(nodelet_of(node))
+                self.assertIn(['/clock', node.namespace + 'clock'], remaps)
+                self.assertNotIn('/use_sim_time', [r[0] for r in remaps])
+            else:
+                self.assertIn(['/use_sim_time', '/ppp/use_system_time'], remaps, node.namespace + node.name)
+
+    def test_a_planner_in_continuous_motion_that_sends_paths_is_refused_naming_interface(self):
+        path = write_config(tempfile.mkdtemp(), "motion: continuous\nagents:\n  - {name: ompl, type: planner, "
+                            "planner_node: ppp_agents/ompl_planner_node}\n" + self.SETS)
+        xml, status, errors, _ = launch_file(path)
+        self.assertNotEqual(status, 0)
+        self.assertEqual(xml, '')
+        self.assertIn("interface: planner agent 'ompl' plays in continuous motion with interface: path", errors)
+
+
 class InspectLaunchTest(unittest.TestCase):
     def test_rviz_alone_or_with_a_bag(self):
         config = load('inspect.launch')

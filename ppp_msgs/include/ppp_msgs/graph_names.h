@@ -18,6 +18,7 @@ constexpr const char* kPlanner = "planner";            ///< A planner agent's pl
 
 namespace frames {
 constexpr const char* kMap = "map";              ///< The fixed frame of maps, poses, goals and plans.
+constexpr const char* kOdom = "odom";            ///< A robot's odometry frame in continuous motion (NAME/robot/odom).
 constexpr const char* kBaseLink = "base_link";   ///< A robot's frame, under its namespace (NAME/robot/base_link).
 
 /// `frame` under the namespace `ns` as tf names it, without leading slashes
@@ -48,6 +49,9 @@ constexpr const char* kPlannerPath = "plan";               ///< nav_msgs/Path, p
 constexpr const char* kPlannerCommand = "cmd_vel";         ///< geometry_msgs/TwistStamped, local planner -> bridge.
 constexpr const char* kPlannerRobotRadius = "robot_radius";  ///< Parameter: the robot's radius in metres.
 constexpr const char* kPlannerFootprint = "footprint";       ///< Parameter: its footprint polygon, [[x, y], ...].
+/// rosgraph_msgs/Clock, bridge -> planner in continuous motion: the episode's simulated time (the planner's /clock
+/// remapped here, with /use_sim_time set).
+constexpr const char* kPlannerClock = "clock";
 
 // A generator node (private names once remapped to ~, as the experiment's graph does).
 constexpr const char* kProblemSet = "problem_set";  ///< ppp_msgs/ProblemSet (latched).

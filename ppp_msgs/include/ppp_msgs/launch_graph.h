@@ -57,6 +57,7 @@ struct GraphMachine {
 struct LaunchGraph {
   std::string comment;                 ///< What the graph is, one line.
   std::vector<GraphMachine> machines;  ///< Other hosts.
+  std::vector<GraphParam> params;      ///< Global parameters (absolute names), set before any node starts.
   std::vector<GraphNode> nodes;        ///< Every node, in start order.
   /// The private parameter a job run as a nodelet in the required manager sets to its exit status when it is done
   /// ("/simulator/exit_status"; the manager itself exits 0), or "" when the required node is the job itself.

@@ -90,8 +90,8 @@ done
 
 # Continuous motion through ROS: astar drives a disc over /astar/sensing and /astar/commands beside an explorer on
 # the grid, in one manager and with every node a process of its own; results.csv is `ppp experiment`'s byte for
-# byte in both, and the bag holds astar's recorded trajectory. A disc that cannot stand at a start stops the simulator
-# before any run, naming robot_radius.
+# byte in both, and the bag holds astar's recorded trajectory; a planner on simulated time plays reproducibly. A disc
+# that cannot stand at a start stops the simulator before any run, naming robot_radius.
 sed 's/^runs: 3/runs: 3\nmotion: continuous\nrobot_radius: 0.3/; s/type: explorer}/type: explorer, motion: grid}/' \
   "$work/small/experiment.yaml" > "$work/small/continuous.yaml"
 "$devel/lib/ppp_simulator/ppp" experiment "$work/small/continuous.yaml" -o "$work/small/continuous_cli" --quiet \
@@ -115,6 +115,34 @@ headings = {round(2 * math.atan2(p.pose.orientation.z, p.pose.orientation.w), 2)
 steps = [(b.header.stamp - a.header.stamp).to_sec() for a, b in zip(path.poses, path.poses[1:])]
 sys.exit(0 if len(headings) > 4 and all(abs(s - 0.1) < 1e-6 for s in steps) else 1)
 EOF2
+# A planner in Python on simulated time (rospy.Rate, /use_sim_time): every run ends on the robot's own account
+# (reached, collided, out of time), never on the link's, and a second launch with both cores kept busy gives the
+# same rows (the clock moves only when the planner has answered).
+cat > "$work/small/steer.yaml" <<'EOF2'
+seed: 3
+runs: 2
+motion: continuous
+robot_radius: 0.2
+agents:
+  - {name: astar, type: astar}
+  - {name: steer, type: planner, interface: cmd_vel, planner_node: ppp_agents/steering_planner.py}
+sets:
+  - name: small
+    generator: {fitness: turns, population: 6, matings: 60, width: 12, height: 12, seed: 2}
+EOF2
+timeout 300 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/steer" \
+  config:="$work/small/steer.yaml" > "$work/small/steer.log" 2>&1
+steer_rows=$(grep -c ',steer,' "$work/small/steer/results.csv")
+[ "$steer_rows" -eq 12 ] && ! grep ',steer,' "$work/small/steer/results.csv" | \
+  grep -q -e planner_timeout -e planner_lost -e agent_lost -e ',timeout,' && pass || \
+  fail "the steering planner's runs: $(cut -d, -f3,11 "$work/small/steer/results.csv" | sort | uniq -c) $(tail "$work/small/steer.log")"
+busy=()
+for _ in 1 2; do timeout 120 sh -c 'while :; do :; done' & busy+=($!); done
+timeout 300 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/steer_loaded" \
+  config:="$work/small/steer.yaml" > "$work/small/steer_loaded.log" 2>&1
+kill "${busy[@]}" 2> /dev/null
+cmp -s "$work/small/steer/results.csv" "$work/small/steer_loaded/results.csv" && pass || \
+  fail "the steering planner's rows differ under load: $(diff "$work/small/steer/results.csv" "$work/small/steer_loaded/results.csv" | head -5)"
 sed 's/^robot_radius: 0.3/robot_radius: 0.5/' "$work/small/continuous.yaml" > "$work/small/fat.yaml"
 timeout 120 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/fat" \
   config:="$work/small/fat.yaml" > "$work/small/fat.log" 2>&1

@@ -1,0 +1,121 @@
+#include "continuous_planner_bridge.hpp"
+
+#include <boost/make_shared.hpp>
+
+#include <string>
+#include <vector>
+
+#include "ppp_core/episode_reason.hpp"
+#include "ppp_core/error.hpp"
+#include "ppp_msgs/graph_names.h"
+
+namespace ppp {
+namespace agents {
+
+namespace {
+
+const ros::Duration kEpisodeGap(1.0);  // simulated time between one episode's last period and the next one's first
+
+}  // namespace
+
+ContinuousPlannerBridge::ContinuousPlannerBridge(PlannerLink* link, const BridgeParameters& parameters)
+    : link_(*link), parameters_(parameters), spinner_(1, &queue_) {}
+
+ContinuousPlannerBridge::~ContinuousPlannerBridge() {
+  sensing_.shutdown();
+  spinner_.stop();
+}
+
+void ContinuousPlannerBridge::serve(ros::NodeHandle& nh) {
+  commands_ = nh.advertise<ppp_msgs::CommandBatch>(ppp_msgs::topics::kCommands, 10);
+  ros::SubscribeOptions options;
+  options.init<ppp_msgs::SensingBatch>(ppp_msgs::topics::kSensing, 10,
+                                       [this](const ppp_msgs::SensingBatch::ConstPtr& b) { onSensing(b); });
+  options.callback_queue = &queue_;
+  // The planner's time starts before its first episode: a timer or rate started at time 0 waits for the first
+  // clock and then a whole period, which the episode's first period would wait on for ever.
+  last_stamp_ = ros::Time(1.0);
+  link_.publishClock(last_stamp_);
+  sensing_ = nh.subscribe(options);
+  spinner_.start();
+}
+
+void ContinuousPlannerBridge::warnOnce(const std::string& kind, const std::string& text) {
+  if (warnings_[kind]++ == 0) {
+    ROS_WARN("bridge '%s': %s (further '%s' warnings are not logged)", parameters_.config.name.c_str(),
+             text.c_str(), kind.c_str());
+  }
+}
+
+void ContinuousPlannerBridge::onSensing(const ppp_msgs::SensingBatch::ConstPtr& batch) {
+  std::vector<agents::ContinuousReply> replies(batch->episodes.size());
+  for (std::size_t i = 0; i < replies.size(); ++i) {
+    replies[i].episode = batch->episodes[i];
+    replies[i].step = i < batch->steps.size() ? static_cast<int>(batch->steps[i]) : 0;
+    replies[i].failure = reason::kInvalidCommand;  // unless played below
+  }
+  std::string what;
+  const std::string fault = protocol::checkSensingBatch(*batch, &what);
+  if (!fault.empty()) {
+    warnOnce(fault, "rejected a malformed batch: " + what);
+  } else if (!replies.empty()) {
+    for (std::size_t i = 1; i < replies.size(); ++i) {
+      warnOnce("batch_size", "the bridge plays one episode at a time; rejected episode " +
+                                 std::to_string(batch->episodes[i]) + " (give the agent type planner)");
+    }
+    replies[0] = step(*batch);
+  }
+  auto commands = boost::make_shared<ppp_msgs::CommandBatch>(
+      protocol::encodeCommands(parameters_.config.name, batch->batch, replies));
+  commands->header.stamp = ros::Time::now();
+  commands_.publish(commands);
+}
+
+agents::ContinuousReply ContinuousPlannerBridge::step(const ppp_msgs::SensingBatch& batch) {
+  agents::ContinuousReply reply{batch.episodes[0], static_cast<int>(batch.steps[0]), {}, nullptr};
+  for (const ppp_msgs::ContinuousStart& start : batch.starts) {
+    if (start.episode != reply.episode) continue;
+    try {
+      episode_ = protocol::decodeContinuousStart(start);
+    } catch (const InvalidArgument& e) {
+      warnOnce(e.name(), std::string("rejected an episode's start: ") + e.what());
+      episode_.reset();
+      reply.failure = reason::kInvalidCommand;
+      return reply;
+    }
+    episode_id_ = start.episode;
+    origin_ = last_stamp_ + kEpisodeGap;
+    link_.newEpisode();
+    link_.publishContinuousStart(origin_, episode_->start.frame, episode_->start.prior_map, episode_->start.goal);
+  }
+  if (!episode_ || episode_id_ != reply.episode) {
+    warnOnce("episode", "sensing for episode " + std::to_string(reply.episode) + " that never started");
+    reply.failure = reason::kInvalidCommand;
+    return reply;
+  }
+  const ros::Time stamp = origin_ + ros::Duration(batch.time[0]);
+  last_stamp_ = stamp;
+  const Pose2D pose{batch.x[0], batch.y[0], batch.theta[0]};
+  const BodyVelocity velocity{batch.forward[0], batch.left[0], batch.turn[0]};
+  const std::vector<float> ranges(batch.ranges.begin(), batch.ranges.end());
+  const auto publish = [&] { link_.publishContinuous(stamp, pose, velocity, ranges, episode_->start.beams); };
+  publish();
+  // A planner that (re)started while it was asked gets the period again, with the same time.
+  const std::optional<geometry_msgs::TwistStamped> command =
+      link_.waitForCommand(stamp, [&](const ros::Time&) { publish(); });
+  if (!command) {
+    reply.failure = link_.gone() ? reason::kPlannerLost : reason::kPlannerTimeout;
+    return reply;
+  }
+  const std::string& frame = command->header.frame_id;
+  if (!frame.empty() && frame != parameters_.base_frame) {
+    warnOnce("frame", "a command in frame '" + frame + "'; expected the robot's, '" + parameters_.base_frame + "'");
+    reply.failure = reason::kInvalidCommand;
+    return reply;
+  }
+  reply.command = BodyVelocity{command->twist.linear.x, command->twist.linear.y, command->twist.angular.z};
+  return reply;
+}
+
+}  // namespace agents
+}  // namespace ppp
