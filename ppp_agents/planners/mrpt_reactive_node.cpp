@@ -2,6 +2,7 @@
 
 #include <boost/make_shared.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "planner_node.hpp"
 #include "planner_node_parameters.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/motion_options.hpp"
 #include "ppp_msgs/graph_names.h"
 #include "ppp_msgs/hand_over.h"
 
@@ -68,13 +70,13 @@ std::string ReactiveNode::topics() const {
 void ReactiveNode::onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
   std::lock_guard<std::mutex> lock(mutex_);
   keep(&scans_, scan);
-  serve();
+  continuous() ? drive() : serve();
 }
 
 void ReactiveNode::onOdom(const nav_msgs::Odometry::ConstPtr& odom) {
   std::lock_guard<std::mutex> lock(mutex_);
   keep(&poses_, odom);
-  serve();
+  continuous() ? drive() : serve();
 }
 
 void ReactiveNode::onMap(const nav_msgs::OccupancyGrid::ConstPtr& map) {
@@ -91,7 +93,12 @@ void ReactiveNode::onGoal(const geometry_msgs::PoseStamped::ConstPtr& goal) {
   }
   std::lock_guard<std::mutex> lock(mutex_);
   pending_ = goal;
-  serve();
+  if (continuous()) {
+    goal_pose_ = goal;  // the episode's goal; the periods' scans and poses ask
+    drive();
+  } else {
+    serve();
+  }
 }
 
 void ReactiveNode::serve() {
@@ -107,6 +114,21 @@ void ReactiveNode::serve() {
              pose->header.frame_id.c_str(), frames_.base_frame.c_str(), frames_.map_frame.c_str());
     return;
   }
+  respond(stamp, *scan, *pose, goal);
+}
+
+void ReactiveNode::drive() {
+  if (!goal_pose_ || !map_message_ || scans_.empty()) return;
+  const ros::Time stamp = scans_.back()->header.stamp;
+  if (stamp <= answered_) return;
+  const nav_msgs::Odometry::ConstPtr pose = stampedAt<nav_msgs::Odometry>(poses_, stamp);
+  if (!pose) return;
+  answered_ = stamp;
+  respond(stamp, *scans_.back(), *pose, *goal_pose_);
+}
+
+void ReactiveNode::respond(const ros::Time& stamp, const sensor_msgs::LaserScan& scan, const nav_msgs::Odometry& pose,
+                           const geometry_msgs::PoseStamped& goal) {
   if (map_message_->info.map_load_time != episode_) {  // a new episode
     episode_ = map_message_->info.map_load_time;
     navigator_.reset();
@@ -116,9 +138,16 @@ void ReactiveNode::serve() {
   command->header.stamp = stamp;
   command->header.frame_id = frames_.base_frame;
   try {
-    const Heading heading = steer(*scan, *pose, goal);
-    command->twist.linear.x = heading.speed * parameters_.max_speed * std::cos(heading.direction);
-    command->twist.linear.y = heading.speed * parameters_.max_speed * std::sin(heading.direction);
+    const Heading heading = steer(scan, pose, goal);
+    const double speed = heading.speed * parameters_.max_speed;
+    if (parameters_.kinematics == kKinematicsDiffDrive) {
+      // Turn towards the direction, and drive as much of the speed as lies ahead.
+      command->twist.linear.x = speed * std::max(0.0, std::cos(heading.direction));
+      command->twist.angular.z = std::clamp(2 * heading.direction, -parameters_.max_turn, parameters_.max_turn);
+    } else {  // the direction itself: east and north on the grid, the robot's frame when holonomic
+      command->twist.linear.x = speed * std::cos(heading.direction);
+      command->twist.linear.y = speed * std::sin(heading.direction);
+    }
   } catch (const Error& e) {
     ROS_ERROR_THROTTLE(5, "the robot stays: %s", e.what());
   }
@@ -148,7 +177,13 @@ Heading ReactiveNode::steer(const sensor_msgs::LaserScan& scan, const nav_msgs::
                         scan.header.stamp.toSec(), invalid, scan.ranges.size());
     }
   }
-  const MapPoint target{(goal.pose.position.x - robot.x) / range, (goal.pose.position.y - robot.y) / range};
+  // The goal in the robot's frame, as the scan's directions are (on the grid the robot's frame is the map's).
+  const double east = (goal.pose.position.x - robot.x) / range;
+  const double north = (goal.pose.position.y - robot.y) / range;
+  const auto& q = pose.pose.pose.orientation;
+  const double heading = continuous() ? 2 * std::atan2(q.z, q.w) : 0.0;
+  const MapPoint target{std::cos(heading) * east + std::sin(heading) * north,
+                        -std::sin(heading) * east + std::cos(heading) * north};
   if (!std::isfinite(target.x) || !std::isfinite(target.y)) {
     throw InvalidArgument("goal", "a goal or pose that is not a finite point");
   }

@@ -9,7 +9,9 @@
 //               move_base_simple/goal (geometry_msgs/PoseStamped)  a request, answered once the scan, pose and map
 //                                                          of its stamp are in
 //   publishes   cmd_vel (geometry_msgs/TwistStamped)       the method's direction and speed (times ~max_speed) as
-//                                                          linear x (east) and y (north), stamped with the goal's stamp
+//                                                          linear x (east) and y (north), stamped with the goal's stamp;
+//                                                          in continuous motion (~kinematics set) one command per
+//                                                          control period, stamped with its scan's, in the robot's frame
 //   parameters  ~method, ~obstacles, ~range, ~max_speed, ~map_frame, ~base_frame:
 //               docs/reference/options.md#example-planner-nodes
 // Topics are relative: start the node in the bridge's robot namespace (/G/robot). It runs as a process of its own
@@ -47,6 +49,13 @@ class ReactiveNode {
   void onGoal(const geometry_msgs::PoseStamped::ConstPtr& goal);
   /// Answers the pending goal once the scan, pose and map of its step are in (mutex_ held).
   void serve();
+  /// Continuous motion: answers each control period once its scan and pose are in (mutex_ held).
+  void drive();
+  /// True in continuous motion (~kinematics set): the robot has a heading, and the periods ask, not goals.
+  bool continuous() const { return !parameters_.kinematics.empty(); }
+  /// Publishes the command for the robot at `pose` seeing `scan`, bound for `goal`, stamped `stamp` (mutex_ held).
+  void respond(const ros::Time& stamp, const sensor_msgs::LaserScan& scan, const nav_msgs::Odometry& pose,
+               const geometry_msgs::PoseStamped& goal);
   /// The method's choice for the robot at `pose` heading for `goal`.
   Heading steer(const sensor_msgs::LaserScan& scan, const nav_msgs::Odometry& pose,
                 const geometry_msgs::PoseStamped& goal);
@@ -60,6 +69,8 @@ class ReactiveNode {
   std::deque<nav_msgs::Odometry::ConstPtr> poses_;
   nav_msgs::OccupancyGrid::ConstPtr map_message_;
   geometry_msgs::PoseStamped::ConstPtr pending_;  // the goal not answered yet
+  geometry_msgs::PoseStamped::ConstPtr goal_pose_;  // continuous motion: the episode's goal
+  ros::Time answered_;                              // continuous motion: the last period answered
   ros::Time episode_;                             // the map_load_time of the episode being played
   ros::Publisher command_;
   ppp_msgs::LockstepQueue queue_;  // before the subscriptions: they unsubscribe first

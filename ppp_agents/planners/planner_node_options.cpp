@@ -2,6 +2,7 @@
 
 #include "ppp_core/error.hpp"
 #include "ppp_core/footprint.hpp"
+#include "ppp_core/motion_options.hpp"
 #include "ppp_core/option_yaml.hpp"
 
 namespace ppp {
@@ -106,6 +107,16 @@ const std::vector<OptionSpec<ReactiveNodeParameters>>& reactiveNodeOptionSpecs()
                     +[](R& r) -> double& { return r.range; }, Bounds{0, 1e6}),
       declareOption("max_speed", "metres per second the method's full speed commands",
                     +[](R& r) -> double& { return r.max_speed; }, Bounds{1e-6, 1e6}),
+      declareOption("max_turn", "continuous motion, diff drive: radians per second the robot turns at most",
+                    +[](R& r) -> double& { return r.max_turn; }, Bounds{1e-6, 1e6}),
+      declareOption("kinematics", "the robot the commands are for (the experiment's graph sets it in continuous motion)",
+                    +[](R& r) -> std::string& { return r.kinematics; })
+          .withChoices("kinematics",
+                       {{"", "the grid: linear x east and y north, the robot never turning"},
+                        {kKinematicsDiffDrive, "continuous motion, diff drive: turn towards the method's direction "
+                                               "(relative to the heading), drive along the heading as it comes ahead"},
+                        {kKinematicsHolonomic, "continuous motion, holonomic: the direction as linear x and y in "
+                                               "the robot's frame"}}),
   };
   return specs;
 }

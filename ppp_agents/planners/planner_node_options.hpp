@@ -63,6 +63,8 @@ struct ReactiveNodeParameters {
   std::string obstacles = kObstaclesFromScan;  ///< ~obstacles: where obstacle distances come from.
   double range = 0;                           ///< ~range: metres the distances are fractions of (0: the scan's range_max).
   double max_speed = 1.0;                     ///< ~max_speed: metres per second at the method's full speed.
+  double max_turn = 1.5;                      ///< ~max_turn: radians per second a diff-drive robot turns at most.
+  std::string kinematics;                     ///< ~kinematics: "" on the grid, else the continuous robot's.
   /// @throws InvalidArgument naming the parameter out of its declared range.
   void validate() const;
 };

@@ -201,6 +201,7 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, 
     if (simulated_time) {
       // Its own clock, which its bridge publishes; a process of its own, as a process has one time for all its nodes.
       planner.remaps.push_back({kClock, ns + ppp_msgs::topics::kRobotNamespace + "/" + ppp_msgs::topics::kPlannerClock});
+      planner.params.push_back({"kinematics", "str", episode.motion.kinematics});  // the robot it drives
       nodes.push_back(planner);
       continue;
     }

@@ -463,6 +463,8 @@ class ContinuousGraphTest(unittest.TestCase):
                 self.assertIsNone(nodelet_of(node))
                 self.assertIn(['/clock', node.namespace + 'clock'], remaps)
                 self.assertNotIn('/use_sim_time', [r[0] for r in remaps])
+                # It is told the robot it drives.
+                self.assertEqual(graph.params[node.namespace + node.name + '/kinematics'].value, 'diff_drive')
             else:
                 self.assertIn(['/use_sim_time', '/ppp/use_system_time'], remaps, node.namespace + node.name)
 

@@ -143,6 +143,31 @@ timeout 300 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$
 kill "${busy[@]}" 2> /dev/null
 cmp -s "$work/small/steer/results.csv" "$work/small/steer_loaded/results.csv" && pass || \
   fail "the steering planner's rows differ under load: $(diff "$work/small/steer/results.csv" "$work/small/steer_loaded/results.csv" | head -5)"
+# MRPT's ND through its node, on the grid and in continuous motion in one experiment: the grid's rows are those of
+# the experiment without the continuous entry (/use_sim_time, set for the graph, leaves them alone), and a second
+# launch gives the same rows.
+cat > "$work/small/nd.yaml" <<'EOF2'
+seed: 3
+runs: 2
+robot_radius: 0.2
+agents:
+  - {name: mrpt_nd, type: planner, interface: cmd_vel, endless_proof: false, planner_node: ppp_agents/mrpt_reactive_node, planner_args: "_method:=ND"}
+  - {name: mrpt_nd_driven, type: planner, motion: continuous, interface: cmd_vel, planner_node: ppp_agents/mrpt_reactive_node, planner_args: "_method:=ND"}
+sets:
+  - name: small
+    generator: {fitness: turns, population: 10, matings: 100, width: 12, height: 12, seed: 2}
+EOF2
+grep -v mrpt_nd_driven "$work/small/nd.yaml" > "$work/small/nd_grid.yaml"
+for run in nd nd_again nd_grid; do
+  timeout 300 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/$run" \
+    config:="$work/small/${run%_again}.yaml" > "$work/small/$run.log" 2>&1
+done
+[ "$(grep -c ',mrpt_nd_driven,' "$work/small/nd/results.csv")" -eq 20 ] && \
+  ! grep ',mrpt_nd_driven,' "$work/small/nd/results.csv" | grep -q -e planner_ -e agent_lost -e ',timeout,' && pass || \
+  fail "ND in continuous motion: $(cut -d, -f3,11 "$work/small/nd/results.csv" | sort | uniq -c) $(tail "$work/small/nd.log")"
+cmp -s "$work/small/nd/results.csv" "$work/small/nd_again/results.csv" && pass || fail "ND's rows differ between two launches"
+diff <(grep ',mrpt_nd,' "$work/small/nd/results.csv") <(grep ',mrpt_nd,' "$work/small/nd_grid/results.csv") > /dev/null && \
+  pass || fail "ND's grid rows changed beside its continuous entry"
 sed 's/^robot_radius: 0.3/robot_radius: 0.5/' "$work/small/continuous.yaml" > "$work/small/fat.yaml"
 timeout 120 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/fat" \
   config:="$work/small/fat.yaml" > "$work/small/fat.log" 2>&1
