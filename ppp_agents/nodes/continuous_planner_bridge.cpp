@@ -86,7 +86,7 @@ agents::ContinuousReply ContinuousPlannerBridge::step(const ppp_msgs::SensingBat
     episode_id_ = start.episode;
     origin_ = last_stamp_ + kEpisodeGap;
     link_.newEpisode();
-    link_.publishContinuousStart(origin_, episode_->start.frame, episode_->start.prior_map, episode_->start.goal);
+    link_.publishContinuousMap(origin_, episode_->start.frame, episode_->start.prior_map);
   }
   if (!episode_ || episode_id_ != reply.episode) {
     warnOnce("episode", "sensing for episode " + std::to_string(reply.episode) + " that never started");
@@ -98,7 +98,9 @@ agents::ContinuousReply ContinuousPlannerBridge::step(const ppp_msgs::SensingBat
   const Pose2D pose{batch.x[0], batch.y[0], batch.theta[0]};
   const BodyVelocity velocity{batch.forward[0], batch.left[0], batch.turn[0]};
   const std::vector<float> ranges(batch.ranges.begin(), batch.ranges.end());
-  const auto publish = [&] { link_.publishContinuous(stamp, pose, velocity, ranges, episode_->start.beams); };
+  const auto publish = [&] {
+    link_.publishContinuous(stamp, pose, velocity, ranges, episode_->start.beams, episode_->start.goal);
+  };
   publish();
   // A planner that (re)started while it was asked gets the period again, with the same time.
   const std::optional<geometry_msgs::TwistStamped> command =

@@ -18,8 +18,8 @@ namespace agents {
 
 /// Plays a planner agent in continuous motion (interface cmd_vel): for each control period of the simulator's
 /// episode (a SensingBatch of one episode) it publishes the robot's world to the planner at the period's simulated
-/// time (tf map -> odom -> base_link, odom with pose and twist, the laser, and robot/clock, which the planner reads
-/// as /clock with /use_sim_time set), waits for the planner's velocity command stamped at that time or later, and
+/// time (tf map -> odom -> base_link, odom with pose and twist, the laser, the goal as the period's request, and
+/// robot/clock, which the planner reads as /clock with /use_sim_time set), waits for the planner's velocity command stamped at that time or later, and
 /// answers the simulator with it (the simulator's base controller clamps it), or with the failure planner_timeout
 /// or planner_lost. Each episode's clock starts a second after the last one's end, so the planner's time never runs
 /// backwards. Periods are played in a thread of the bridge's own, which may wait for the planner.

@@ -247,8 +247,7 @@ void PlannerLink::publishGoal(const ros::Time& stamp, const PlannerEpisode& epis
   ppp_msgs::publishHandingOver(goal_, goal);
 }
 
-void PlannerLink::publishContinuousStart(const ros::Time& stamp, const MapFrame& frame, const Grid* prior_map,
-                                         MapPoint goal) {
+void PlannerLink::publishContinuousMap(const ros::Time& stamp, const MapFrame& frame, const Grid* prior_map) {
   std::vector<std::int8_t> cells(static_cast<std::size_t>(frame.width) * frame.height, kScanUnknown);
   if (prior_map != nullptr) {
     for (std::size_t i = 0; i < cells.size(); ++i) cells[i] = prior_map->cells()[i] != 0 ? kScanObstacle : kScanFree;
@@ -258,17 +257,10 @@ void PlannerLink::publishContinuousStart(const ros::Time& stamp, const MapFrame&
   map->header.stamp = stamp;
   map->info.map_load_time = stamp;
   ppp_msgs::publishHandingOver(map_, map);
-  auto message = boost::make_shared<geometry_msgs::PoseStamped>();
-  message->header.stamp = stamp;
-  message->header.frame_id = parameters_.map_frame;
-  message->pose.position.x = goal.x;
-  message->pose.position.y = goal.y;
-  message->pose.orientation.w = 1.0;
-  ppp_msgs::publishHandingOver(goal_, message);
 }
 
 void PlannerLink::publishContinuous(const ros::Time& stamp, const Pose2D& pose, const BodyVelocity& velocity,
-                                    const std::vector<float>& ranges, const LaserBeams& beams) {
+                                    const std::vector<float>& ranges, const LaserBeams& beams, MapPoint goal) {
   const std::string odom_frame = odomFrameOf(parameters_.base_frame);
   auto transforms = boost::make_shared<tf2_msgs::TFMessage>();
   transforms->transforms.push_back(ppp_msgs::poseTransform(Pose2D{}, parameters_.map_frame, odom_frame));
@@ -283,6 +275,13 @@ void PlannerLink::publishContinuous(const ros::Time& stamp, const Pose2D& pose, 
   auto laser = boost::make_shared<sensor_msgs::LaserScan>(ppp_msgs::toLaserScan(ranges, beams, parameters_.base_frame));
   laser->header.stamp = stamp;
   ppp_msgs::publishHandingOver(scan_, laser);
+  auto request = boost::make_shared<geometry_msgs::PoseStamped>();
+  request->header.stamp = stamp;
+  request->header.frame_id = parameters_.map_frame;
+  request->pose.position.x = goal.x;
+  request->pose.position.y = goal.y;
+  request->pose.orientation.w = 1.0;
+  ppp_msgs::publishHandingOver(goal_, request);
   publishClock(stamp);
 }
 

@@ -66,13 +66,14 @@ class PlannerLink {
   /// Publishes a plan request: the episode's goal, stamped `stamp`.
   void publishGoal(const ros::Time& stamp, const PlannerEpisode& episode);
   /// Continuous motion: publishes the map a planner is given at an episode's start (the true map, or every cell
-  /// unknown; its map_load_time `stamp`) and the goal `goal` (map frame), stamped `stamp`.
-  void publishContinuousStart(const ros::Time& stamp, const MapFrame& frame, const Grid* prior_map, MapPoint goal);
-  /// Continuous motion: publishes one control period's sensing at the simulated time `stamp`: tf map -> odom (the
-  /// identity: odometry is exact) and odom -> base_link, the odometry (`pose` and `velocity`), the laser's
-  /// `ranges`, then the clock at `stamp` (last, so a planner whose timer fires on it has the period's sensing).
+  /// unknown), stamped `stamp`, its map_load_time too.
+  void publishContinuousMap(const ros::Time& stamp, const MapFrame& frame, const Grid* prior_map);
+  /// Continuous motion: publishes one control period at the simulated time `stamp`: tf map -> odom (the identity:
+  /// odometry is exact) and odom -> base_link, the odometry (`pose` and `velocity`), the laser's `ranges`, the
+  /// request (`goal`, map frame), then the clock at `stamp` (last, so a planner whose timer fires on it has the
+  /// period's messages, which it can tell by their stamp).
   void publishContinuous(const ros::Time& stamp, const Pose2D& pose, const BodyVelocity& velocity,
-                         const std::vector<float>& ranges, const LaserBeams& beams);
+                         const std::vector<float>& ranges, const LaserBeams& beams, MapPoint goal);
   /// Continuous motion: publishes the planner's clock at `stamp` (latched).
   void publishClock(const ros::Time& stamp);
   /// A new episode: paths sent so far answer an earlier one, and the planner has not answered in this one.

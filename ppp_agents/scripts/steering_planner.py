@@ -29,10 +29,11 @@ def keep(kind, message):
 
 
 def sensing_at(now):
-    """The odometry and scan of the control period that starts at `now`, once both have come (the bridge sends
-    them before its clock ticks, but on other connections, and again while it waits); None when shutting down."""
+    """The odometry, scan and goal of the control period that starts at `now`, once all three have come (the bridge
+    sends them before its clock ticks, but on other connections, and again while it waits); None when shutting
+    down."""
     def ready():
-        return all(newest[k] is not None and newest[k].header.stamp >= now for k in ("odom", "scan"))
+        return all(newest[k] is not None and newest[k].header.stamp >= now for k in ("odom", "scan", "goal"))
     with arrived:
         while not arrived.wait_for(ready, timeout=0.5):
             if rospy.is_shutdown():
@@ -84,8 +85,8 @@ def main():
             return
         now = rospy.Time.now()
         sensing = sensing_at(now)
-        if sensing is None or sensing[2] is None:
-            continue
+        if sensing is None:
+            return
         odom, scan, goal = sensing
         out = TwistStamped()
         out.header.stamp = odom.header.stamp
