@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "ppp_msgs/conversions.h"
 #include "ppp_msgs/graph_names.h"
 
 namespace ppp {
@@ -54,6 +55,34 @@ nav_msgs::Odometry odometryOf(const geometry_msgs::TransformStamped& transform) 
 std::string odomFrameOf(const std::string& base_frame) {
   const std::size_t slash = base_frame.rfind('/');
   return slash == std::string::npos ? ppp_msgs::frames::kOdom : base_frame.substr(0, slash + 1) + ppp_msgs::frames::kOdom;
+}
+
+geometry_msgs::PoseStamped goalRequest(const ros::Time& stamp, const std::string& map_frame, MapPoint goal) {
+  geometry_msgs::PoseStamped request;
+  request.header.stamp = stamp;
+  request.header.frame_id = map_frame;
+  request.pose.position.x = goal.x;
+  request.pose.position.y = goal.y;
+  request.pose.orientation.w = 1.0;
+  return request;
+}
+
+tf2_msgs::TFMessage continuousTransforms(const ros::Time& stamp, const Pose2D& pose, const std::string& map_frame,
+                                         const std::string& base_frame) {
+  const std::string odom_frame = odomFrameOf(base_frame);
+  tf2_msgs::TFMessage transforms;
+  transforms.transforms.push_back(ppp_msgs::poseTransform(Pose2D{}, map_frame, odom_frame));
+  transforms.transforms.push_back(ppp_msgs::poseTransform(pose, odom_frame, base_frame));
+  for (geometry_msgs::TransformStamped& t : transforms.transforms) t.header.stamp = stamp;
+  return transforms;
+}
+
+nav_msgs::Odometry odometryOf(const geometry_msgs::TransformStamped& transform, const BodyVelocity& velocity) {
+  nav_msgs::Odometry odometry = odometryOf(transform);
+  odometry.twist.twist.linear.x = velocity.forward;
+  odometry.twist.twist.linear.y = velocity.left;
+  odometry.twist.twist.angular.z = velocity.turn;
+  return odometry;
 }
 
 }  // namespace agents

@@ -7,9 +7,12 @@
 #include <geometry_msgs/TwistStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
+#include <geometry_msgs/PoseStamped.h>
+#include <tf2_msgs/TFMessage.h>
 
 #include "ppp_agents/planner_episode.hpp"
 #include "ppp_agents/velocity_command.hpp"
+#include "ppp_core/kinematics.hpp"
 
 namespace ppp {
 namespace agents {
@@ -29,6 +32,17 @@ std::string commandOf(const geometry_msgs::TwistStamped& command, const std::str
 /// The odometry frame of a robot whose frame is `base_frame`: its sibling "odom" ("ompl/robot/base_link" ->
 /// "ompl/robot/odom"; "base_link" -> "odom").
 std::string odomFrameOf(const std::string& base_frame);
+
+/// A plan request: the goal `goal` (map frame `map_frame`), stamped `stamp`.
+geometry_msgs::PoseStamped goalRequest(const ros::Time& stamp, const std::string& map_frame, MapPoint goal);
+
+/// Continuous motion's tf at `stamp`: `map_frame` -> odom (the identity: odometry is exact) and odom ->
+/// `base_frame` at `pose` (the odometry frame: odomFrameOf(base_frame)).
+tf2_msgs::TFMessage continuousTransforms(const ros::Time& stamp, const Pose2D& pose, const std::string& map_frame,
+                                         const std::string& base_frame);
+
+/// odometryOf(transform) moving at `velocity` (its twist, in the robot's frame).
+nav_msgs::Odometry odometryOf(const geometry_msgs::TransformStamped& transform, const BodyVelocity& velocity);
 
 /// The odometry a planner reads the robot's pose from: the pose `transform` gives its child frame in its parent
 /// frame (header and child frame as the transform's).

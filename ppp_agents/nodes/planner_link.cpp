@@ -238,57 +238,9 @@ void PlannerLink::publishPose(const ros::Time& stamp, const PlannerEpisode& epis
 }
 
 void PlannerLink::publishGoal(const ros::Time& stamp, const PlannerEpisode& episode) {
-  auto goal = boost::make_shared<geometry_msgs::PoseStamped>();
-  goal->header.stamp = stamp;
-  goal->header.frame_id = parameters_.map_frame;
-  goal->pose.position.x = episode.frame().centreX(episode.goal());
-  goal->pose.position.y = episode.frame().centreY(episode.goal());
-  goal->pose.orientation.w = 1.0;
-  ppp_msgs::publishHandingOver(goal_, goal);
-}
-
-void PlannerLink::publishContinuousMap(const ros::Time& stamp, const MapFrame& frame, const Grid* prior_map) {
-  std::vector<std::int8_t> cells(static_cast<std::size_t>(frame.width) * frame.height, kScanUnknown);
-  if (prior_map != nullptr) {
-    for (std::size_t i = 0; i < cells.size(); ++i) cells[i] = prior_map->cells()[i] != 0 ? kScanObstacle : kScanFree;
-  }
-  auto map = boost::make_shared<nav_msgs::OccupancyGrid>(ppp_msgs::toFinerOccupancyGrid(
-      cells, frame.width, frame.height, frame.resolution, parameters_.cells_per_ppp_cell, parameters_.map_frame));
-  map->header.stamp = stamp;
-  map->info.map_load_time = stamp;
-  ppp_msgs::publishHandingOver(map_, map);
-}
-
-void PlannerLink::publishContinuous(const ros::Time& stamp, const Pose2D& pose, const BodyVelocity& velocity,
-                                    const std::vector<float>& ranges, const LaserBeams& beams, MapPoint goal) {
-  const std::string odom_frame = odomFrameOf(parameters_.base_frame);
-  auto transforms = boost::make_shared<tf2_msgs::TFMessage>();
-  transforms->transforms.push_back(ppp_msgs::poseTransform(Pose2D{}, parameters_.map_frame, odom_frame));
-  transforms->transforms.push_back(ppp_msgs::poseTransform(pose, odom_frame, parameters_.base_frame));
-  for (geometry_msgs::TransformStamped& t : transforms->transforms) t.header.stamp = stamp;
-  nav_msgs::Odometry odometry = odometryOf(transforms->transforms.back());
-  odometry.twist.twist.linear.x = velocity.forward;
-  odometry.twist.twist.linear.y = velocity.left;
-  odometry.twist.twist.angular.z = velocity.turn;
-  ppp_msgs::publishHandingOver(tf_, transforms);
-  ppp_msgs::publishHandingOver(odom_, boost::make_shared<nav_msgs::Odometry>(odometry));
-  auto laser = boost::make_shared<sensor_msgs::LaserScan>(ppp_msgs::toLaserScan(ranges, beams, parameters_.base_frame));
-  laser->header.stamp = stamp;
-  ppp_msgs::publishHandingOver(scan_, laser);
-  auto request = boost::make_shared<geometry_msgs::PoseStamped>();
-  request->header.stamp = stamp;
-  request->header.frame_id = parameters_.map_frame;
-  request->pose.position.x = goal.x;
-  request->pose.position.y = goal.y;
-  request->pose.orientation.w = 1.0;
-  ppp_msgs::publishHandingOver(goal_, request);
-  publishClock(stamp);
-}
-
-void PlannerLink::publishClock(const ros::Time& stamp) {
-  auto clock = boost::make_shared<rosgraph_msgs::Clock>();
-  clock->clock = stamp;
-  ppp_msgs::publishHandingOver(clock_, clock);
+  const MapPoint goal{episode.frame().centreX(episode.goal()), episode.frame().centreY(episode.goal())};
+  ppp_msgs::publishHandingOver(
+      goal_, boost::make_shared<geometry_msgs::PoseStamped>(goalRequest(stamp, parameters_.map_frame, goal)));
 }
 
 }  // namespace agents

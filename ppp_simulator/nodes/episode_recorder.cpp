@@ -1,4 +1,5 @@
 #include "episode_recorder.hpp"
+#include "recorded_messages.hpp"
 #include "ppp_msgs/graph_names.h"
 
 #include <algorithm>
@@ -24,28 +25,6 @@ constexpr double kSecondsPerStep = 0.1;     // bag time of one recorded step
 constexpr int kPathEveryStep = 10;          // a recorded path is written every this many steps (and at step 0)
 constexpr std::size_t kResultsPerMessage = 1000;  // results grouped in one /ppp/results message at most
 constexpr double kResultsPeriod = 0.2;            // seconds a result may wait for its group
-
-visualization_msgs::Marker cellMarker(const MapFrame& frame, Cell cell, int id, float r, float g, float b,
-                                      const std::string& ns) {
-  visualization_msgs::Marker m;
-  m.header.frame_id = "map";
-  m.header.stamp = ros::Time::now();
-  m.ns = ns;
-  m.id = id;
-  m.type = visualization_msgs::Marker::CUBE;
-  m.action = visualization_msgs::Marker::ADD;
-  m.pose.position.x = frame.centreX(cell);
-  m.pose.position.y = frame.centreY(cell);
-  m.pose.position.z = 0.1 * frame.resolution;
-  m.pose.orientation.w = 1.0;
-  m.scale.x = m.scale.y = 0.8 * frame.resolution;
-  m.scale.z = 0.2 * frame.resolution;
-  m.color.r = r;
-  m.color.g = g;
-  m.color.b = b;
-  m.color.a = 1.0;
-  return m;
-}
 
 }  // namespace
 
@@ -132,9 +111,7 @@ const EpisodeRecorder::Recording* EpisodeRecorder::recordingOf(const std::string
     // The first agent to start a slot publishes its map; every agent's slot runs on the same PPP.
     nav_msgs::OccupancyGrid map = ppp_msgs::toOccupancyGrid(set.grids[problem_index], parameters_.resolution);
     map.header.stamp = stamp;
-    visualization_msgs::MarkerArray markers;
-    markers.markers.push_back(cellMarker(frame, problem.start, 0, 0.1f, 0.8f, 0.1f, "start"));
-    markers.markers.push_back(cellMarker(frame, problem.goal, 1, 0.9f, 0.1f, 0.1f, "goal"));
+    const visualization_msgs::MarkerArray markers = startAndGoalMarkers(frame, problem);
     map_publisher_.publish(map);
     markers_publisher_.publish(markers);
     write("/map", stamp, map, true);
@@ -222,19 +199,7 @@ void EpisodeRecorder::recordResults(const std::vector<agents::EpisodeResult>& re
       path_publishers_.at(r.agent).publish(path);
       write("/" + agents::agentGraphName(r.agent) + "/path", path.header.stamp, path);
     }
-    ppp_msgs::EpisodeResult m;
-    m.set = r.set;
-    m.problem = r.problem;
-    m.agent = r.agent;
-    m.run = static_cast<std::uint32_t>(r.run);
-    m.seed = r.seed;
-    m.passed = r.passed;
-    m.steps = static_cast<std::uint32_t>(r.steps);
-    m.bumps = static_cast<std::uint32_t>(r.bumps);
-    m.path_length = r.path_length;
-    m.optimal_length = r.optimal_length;
-    m.reason = r.reason;
-    pending_results_.results.push_back(std::move(m));
+    pending_results_.results.push_back(resultMessage(r));
   }
   if (pending_results_.results.size() >= kResultsPerMessage ||
       (ros::WallTime::now() - last_results_flush_).toSec() >= kResultsPeriod) {
