@@ -29,11 +29,14 @@ def keep(kind, message):
 
 
 def sensing_at(now):
-    """The odometry, scan and goal of the control period that starts at `now`, once all three have come (the bridge
-    sends them before its clock ticks, but on other connections, and again while it waits); None when shutting
-    down."""
+    """The odometry, scan and goal of one control period no older than `now`, once all three of that period have
+    come (the bridge sends them before its clock ticks, but on other connections, and again while it waits: acting
+    on an odometry of one period and a scan of the last would depend on timing); None when shutting down."""
     def ready():
-        return all(newest[k] is not None and newest[k].header.stamp >= now for k in ("odom", "scan", "goal"))
+        if any(newest[k] is None for k in ("odom", "scan", "goal")):
+            return False
+        stamps = {newest[k].header.stamp for k in ("odom", "scan", "goal")}
+        return len(stamps) == 1 and stamps.pop() >= now
     with arrived:
         while not arrived.wait_for(ready, timeout=0.5):
             if rospy.is_shutdown():
