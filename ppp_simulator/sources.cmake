@@ -5,6 +5,7 @@ set(PPP_REPORT_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/report/statistics.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/report/detours.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/report/reference.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/report/motion_models.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/report/svg_plot.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/report/episode_animation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/report/continuous_animation.cpp

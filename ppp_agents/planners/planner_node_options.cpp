@@ -1,5 +1,7 @@
 #include "planner_node_options.hpp"
 
+#include <limits>
+
 #include "ppp_core/error.hpp"
 #include "ppp_core/footprint.hpp"
 #include "ppp_core/motion_options.hpp"
@@ -117,6 +119,73 @@ const std::vector<OptionSpec<ReactiveNodeParameters>>& reactiveNodeOptionSpecs()
                                                "(relative to the heading), drive along the heading as it comes ahead"},
                         {kKinematicsHolonomic, "continuous motion, holonomic: the direction as linear x and y in "
                                                "the robot's frame"}}),
+  };
+  return specs;
+}
+
+KinematicLimits DwaNodeParameters::limits() const {
+  KinematicLimits limits;
+  limits.holonomic = kinematics != kKinematicsDiffDrive;
+  limits.max_linear_speed = max_linear_speed;
+  limits.max_angular_speed = max_angular_speed;
+  const bool grid = kinematics.empty();
+  limits.max_linear_acceleration = grid ? std::numeric_limits<double>::infinity() : max_linear_acceleration;
+  limits.max_angular_acceleration = grid ? std::numeric_limits<double>::infinity() : max_angular_acceleration;
+  return limits;
+}
+
+DynamicWindowOptions DwaNodeParameters::windowOptions() const {
+  DynamicWindowOptions options = window;
+  options.grid_moves = kinematics.empty();
+  return options;
+}
+
+void DwaNodeParameters::validate() const { checkOptionRanges(dwaNodeOptionSpecs(), *this); }
+
+const std::vector<OptionSpec<DwaNodeParameters>>& dwaNodeOptionSpecs() {
+  using D = DwaNodeParameters;
+  static const std::vector<OptionSpec<D>> specs = {
+      declareOption("kinematics", "the robot the commands are for (the experiment's graph sets it in continuous motion)",
+                    +[](D& d) -> std::string& { return d.kinematics; })
+          .withChoices("kinematics",
+                       {{"", "the grid: the candidates are standing and the four moves at top speed (the grid "
+                             "rounds any other direction)"},
+                        {kKinematicsDiffDrive, "continuous motion, diff drive: forward speeds and turning rates"},
+                        {kKinematicsHolonomic, "continuous motion, holonomic: velocities in the robot's plane"}}),
+      declareOption("max_linear_speed", "the robot's top speed, metres per second (set by the graph)",
+                    +[](D& d) -> double& { return d.max_linear_speed; }, Bounds{1e-6, kMaxMotionMagnitude}),
+      declareOption("max_angular_speed", "the robot's top turning rate, radians per second (set by the graph)",
+                    +[](D& d) -> double& { return d.max_angular_speed; }, Bounds{1e-6, kMaxMotionMagnitude}),
+      declareOption("max_linear_acceleration", "continuous motion: metres per second squared (set by the graph)",
+                    +[](D& d) -> double& { return d.max_linear_acceleration; }, Bounds{1e-6, kMaxMotionMagnitude}),
+      declareOption("max_angular_acceleration", "continuous motion: radians per second squared (set by the graph)",
+                    +[](D& d) -> double& { return d.max_angular_acceleration; }, Bounds{1e-6, kMaxMotionMagnitude}),
+      declareOption("control_period", "seconds a command is held (set by the graph in continuous motion)",
+                    +[](D& d) -> double& { return d.control_period; }, Bounds{1e-6, 1e3}),
+      declareOption("robot_radius", "the robot's disc in metres (set by the graph in continuous motion)",
+                    +[](D& d) -> double& { return d.robot_radius; }, Bounds{0, kMaxMotionMagnitude}),
+      declareOption("costmap_resolution", "metres per cell of the memory of scan returns its routes are planned on",
+                    +[](D& d) -> double& { return d.costmap_resolution; }, Bounds{1e-3, 1e3}),
+      declareOption("inflation_radius", "metres around remembered returns within which routes cost more",
+                    +[](D& d) -> double& { return d.inflation_radius; }, Bounds{0, 1e3}),
+      declareOption("replan_every", "continuous motion: control periods between two plans of the route (the grid: "
+                                    "every step)",
+                    +[](D& d) -> int& { return d.replan_every; }, Bounds{1, 1000000}),
+      declareOption("sim_time", "seconds each sampled velocity is rolled out for",
+                    +[](D& d) -> double& { return d.window.sim_time; }, Bounds{1e-3, 60}),
+      declareOption("linear_samples", "forward speeds sampled (holonomic: rings of velocities)",
+                    +[](D& d) -> int& { return d.window.linear_samples; }, Bounds{1, 100}),
+      declareOption("angular_samples", "turning rates sampled (holonomic: directions per ring)",
+                    +[](D& d) -> int& { return d.window.angular_samples; }, Bounds{1, 100}),
+      declareOption("goal_bias", "cost per metre from a rollout's end to the goal",
+                    +[](D& d) -> double& { return d.window.goal_bias; }, Bounds{0, 1e6}),
+      declareOption("clearance_bias", "cost of a rollout touching the robot's disc to an obstacle (falling to 0 at "
+                                      "clearance_scale)",
+                    +[](D& d) -> double& { return d.window.clearance_bias; }, Bounds{0, 1e6}),
+      declareOption("clearance_scale", "metres of clearance beyond which an obstacle costs nothing",
+                    +[](D& d) -> double& { return d.window.clearance_scale; }, Bounds{1e-6, 1e6}),
+      declareOption("safety_margin", "metres a rollout keeps between the robot's disc and every scan return",
+                    +[](D& d) -> double& { return d.window.safety_margin; }, Bounds{0, 1e6}),
   };
   return specs;
 }

@@ -3,7 +3,9 @@
 #include <string>
 #include <vector>
 
+#include "dynamic_window.hpp"
 #include "ompl_grid_planner.hpp"
+#include "ppp_core/motion_options.hpp"
 #include "ppp_core/option_spec.hpp"
 #include "ppp_msgs/graph_names.h"
 
@@ -71,6 +73,31 @@ struct ReactiveNodeParameters {
 
 /// One declaration per `~` parameter of the MRPT reactive navigator node besides its frames.
 const std::vector<OptionSpec<ReactiveNodeParameters>>& reactiveNodeOptionSpecs();
+
+/// What the DWA example node reads besides its frames: the robot (the experiment's graph sets it in continuous
+/// motion, from the motion options; on the grid the window samples the grid's four moves) and the window's weights.
+struct DwaNodeParameters {
+  std::string kinematics;  ///< ~kinematics: "" on the grid, else the continuous robot's.
+  double max_linear_speed = MotionOptions{}.max_linear_speed;                ///< ~max_linear_speed
+  double max_angular_speed = MotionOptions{}.max_angular_speed;              ///< ~max_angular_speed
+  double max_linear_acceleration = MotionOptions{}.max_linear_acceleration;  ///< ~max_linear_acceleration
+  double max_angular_acceleration = MotionOptions{}.max_angular_acceleration;  ///< ~max_angular_acceleration
+  double control_period = MotionOptions{}.control_period;  ///< ~control_period: seconds a command is held.
+  double robot_radius = 0;                                 ///< ~robot_radius: metres.
+  double costmap_resolution = 0.1;  ///< ~costmap_resolution: metres per cell of its memory (ScanCostmap).
+  double inflation_radius = 0.5;    ///< ~inflation_radius: metres around obstacles routes avoid.
+  int replan_every = 10;            ///< ~replan_every: continuous motion: periods between two plans of the route.
+  DynamicWindowOptions window;  ///< ~sim_time, ~linear_samples, ~angular_samples, ~goal_bias, ~clearance_bias, ...
+  /// The robot's limits (on the grid: holonomic, accelerations unbounded).
+  KinematicLimits limits() const;
+  /// The window's options (on the grid: the grid's four moves).
+  DynamicWindowOptions windowOptions() const;
+  /// @throws InvalidArgument naming the parameter out of its declared range.
+  void validate() const;
+};
+
+/// One declaration per `~` parameter of the DWA example node besides its frames.
+const std::vector<OptionSpec<DwaNodeParameters>>& dwaNodeOptionSpecs();
 
 /// The default ~base_frame of a node in `node_namespace`: the namespace without its leading slash, then
 /// "/base_link" ("/ompl/robot" -> "ompl/robot/base_link", "/" -> "base_link").

@@ -42,5 +42,9 @@ ReactiveNodeParameters readReactiveNodeParameters(const ros::NodeHandle& private
   return readDeclared(private_nh, reactiveNodeOptionSpecs());
 }
 
+DwaNodeParameters readDwaNodeParameters(const ros::NodeHandle& private_nh) {
+  return readDeclared(private_nh, dwaNodeOptionSpecs());
+}
+
 }  // namespace planners
 }  // namespace ppp

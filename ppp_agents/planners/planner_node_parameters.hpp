@@ -28,5 +28,8 @@ MrptNodeParameters readMrptNodeParameters(const ros::NodeHandle& private_nh);
 /// @throws InvalidArgument naming the parameter and what was expected.
 ReactiveNodeParameters readReactiveNodeParameters(const ros::NodeHandle& private_nh);
 
+/// The DWA example node's `~` parameters besides its frames. @throws InvalidArgument naming a bad one.
+DwaNodeParameters readDwaNodeParameters(const ros::NodeHandle& private_nh);
+
 }  // namespace planners
 }  // namespace ppp

@@ -2,6 +2,7 @@
 // nodelet manager, planning in the thread of a bridge of the same manager that asked.
 #include <pluginlib/class_list_macros.hpp>
 
+#include "dwa_planner_node.hpp"
 #include "mrpt_planner_node.hpp"
 #include "mrpt_reactive_node.hpp"
 #include "ompl_planner_node.hpp"
@@ -15,6 +16,7 @@ class OptimisticPlannerNodelet : public ppp_msgs::NodeletOf<OptimisticPlannerNod
 class OmplPlannerNodelet : public ppp_msgs::NodeletOf<OmplPlannerNode> {};
 class MrptPlannerNodelet : public ppp_msgs::NodeletOf<MrptPlannerNode> {};
 class MrptReactiveNodelet : public ppp_msgs::NodeletOf<ReactiveNode> {};
+class DwaPlannerNodelet : public ppp_msgs::NodeletOf<DwaPlannerNode> {};
 
 }  // namespace planners
 }  // namespace ppp
@@ -23,3 +25,4 @@ PLUGINLIB_EXPORT_CLASS(ppp::planners::OptimisticPlannerNodelet, nodelet::Nodelet
 PLUGINLIB_EXPORT_CLASS(ppp::planners::OmplPlannerNodelet, nodelet::Nodelet)
 PLUGINLIB_EXPORT_CLASS(ppp::planners::MrptPlannerNodelet, nodelet::Nodelet)
 PLUGINLIB_EXPORT_CLASS(ppp::planners::MrptReactiveNodelet, nodelet::Nodelet)
+PLUGINLIB_EXPORT_CLASS(ppp::planners::DwaPlannerNodelet, nodelet::Nodelet)

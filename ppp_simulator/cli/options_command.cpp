@@ -103,7 +103,11 @@ std::string optionsReference() {
       << "\nand of `mrpt_planner_node` alone (its `~inflation` is MRPT's own robot radius):\n\n"
       << optionsMarkdownTable(planners::mrptNodeOptionSpecs(), planners::MrptNodeParameters{}, &parameter)
       << "\n`mrpt_reactive_node` (a local planner answering on `cmd_vel`) reads the frames above and:\n\n"
-      << optionsMarkdownTable(planners::reactiveNodeOptionSpecs(), planners::ReactiveNodeParameters{}, &parameter);
+      << optionsMarkdownTable(planners::reactiveNodeOptionSpecs(), planners::ReactiveNodeParameters{}, &parameter)
+      << "\n`dwa_planner_node` (a dynamic-window local planner answering on `cmd_vel`) reads the frames above and\n"
+      << "the robot's description, which the experiment's graph sets in continuous motion from the motion options\n"
+      << "(on the grid the window samples standing and the four moves), and its window's weights:\n\n"
+      << optionsMarkdownTable(planners::dwaNodeOptionSpecs(), planners::DwaNodeParameters{}, &parameter);
   return out.str();
 }
 

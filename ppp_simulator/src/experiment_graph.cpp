@@ -5,7 +5,9 @@
 #include <set>
 
 #include "ppp_agents/continuous/continuous_agent.hpp"
+#include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/motion_options.hpp"
 #include "ppp_core/text_format.hpp"
 #include "ppp_generator/fitness.hpp"
 #include "ppp_agents/planner_bridge_options.hpp"
@@ -42,6 +44,17 @@ void addParams(const std::vector<OptionSpec<Options>>& specs, const Options& val
     const std::string value = spec.plainText(values);
     node->params.push_back({spec.name, parameterType(spec, value), value});
   }
+}
+
+/// Tells a planner in continuous motion the robot it drives: its kinematics, limits and control period (as the
+/// motion options name them) and robot_radius in metres.
+void addRobotParams(const EpisodeOptions& episode, ppp_msgs::GraphNode* planner) {
+  static const std::vector<OptionSpec<MotionOptions>> robot =
+      selectOptions(motionOptionSpecs(), {"kinematics", "max_linear_speed", "max_angular_speed",
+                                          "max_linear_acceleration", "max_angular_acceleration", "control_period"});
+  addParams(robot, episode.motion, planner);
+  planner->params.push_back(
+      {"robot_radius", "double", formatNumber(episode.robot_radius * episode.motion.resolution)});
 }
 
 /// The remapping of `topic` under the node's own name.
@@ -99,7 +112,8 @@ std::string plannerNodelet(const std::string& package, const std::string& type) 
       {"optimistic_planner_node", "ppp_agents/OptimisticPlanner"},
       {"ompl_planner_node", "ppp_agents/OmplPlanner"},
       {"mrpt_planner_node", "ppp_agents/MrptPlanner"},
-      {"mrpt_reactive_node", "ppp_agents/MrptReactive"}};
+      {"mrpt_reactive_node", "ppp_agents/MrptReactive"},
+      {"dwa_planner_node", "ppp_agents/DwaPlanner"}};
   const auto found = nodelets.find(type);
   return package == "ppp_agents" && found != nodelets.end() ? found->second : "";
 }
@@ -201,7 +215,7 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, 
     if (simulated_time) {
       // Its own clock, which its bridge publishes; a process of its own, as a process has one time for all its nodes.
       planner.remaps.push_back({kClock, ns + ppp_msgs::topics::kRobotNamespace + "/" + ppp_msgs::topics::kPlannerClock});
-      planner.params.push_back({"kinematics", "str", episode.motion.kinematics});  // the robot it drives
+      addRobotParams(episode, &planner);
       nodes.push_back(planner);
       continue;
     }

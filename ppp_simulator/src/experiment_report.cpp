@@ -300,6 +300,7 @@ void writeExperimentReport(const std::string& dir, const ExperimentConfig& confi
   }
   input.rates = computeGroupedPassRates(groups, set_names, agent_names);
   input.references = compareWithReference(input.rates, config.reference);
+  input.motion_pairs = motionPairs(config.agents, config.episode);
   for (std::size_t a = 0; a < sets.size(); ++a) {
     for (std::size_t b = a + 1; b < sets.size(); ++b) input.comparisons.emplace_back(sets[a].name, sets[b].name);
   }

@@ -46,7 +46,7 @@ NODELET_EXECUTABLES = {'ppp_agents/Agent': 'agent_node', 'ppp_generator/Generato
                        'ppp_simulator/Simulator': 'simulator_node', 'ppp_agents/PlannerBridge': 'planner_bridge_node',
                        'ppp_agents/OptimisticPlanner': 'optimistic_planner_node',
                        'ppp_agents/OmplPlanner': 'ompl_planner_node', 'ppp_agents/MrptPlanner': 'mrpt_planner_node',
-                       'ppp_agents/MrptReactive': 'mrpt_reactive_node'}
+                       'ppp_agents/MrptReactive': 'mrpt_reactive_node', 'ppp_agents/DwaPlanner': 'dwa_planner_node'}
 
 
 def nodelet_of(node):
@@ -208,7 +208,7 @@ class DefaultGraphTest(unittest.TestCase):
 
     def test_one_bridge_and_its_planner_per_instance_of_a_planner_agent(self):
         planners = [a for a in self.agents if a['type'] == 'planner']
-        self.assertEqual(len(planners), 4)
+        self.assertEqual(len(planners), 7)
         bridges = sorted(n.namespace for n in self.config.nodes if role(n) == 'planner_bridge_node')
         self.assertEqual(bridges, sorted(ns for a in planners for ns in instance_namespaces(a['name'], CORES)))
         for agent in planners:
@@ -217,8 +217,18 @@ class DefaultGraphTest(unittest.TestCase):
                 self.assertEqual(self.params[namespace + 'bridge/name'], agent['name'])
                 planner_nodes = [n for n in self.config.nodes if n.namespace == namespace + 'robot/']
                 self.assertEqual([executable(n) for n in planner_nodes], [agent['planner_node']])
-                # The example planners are nodelets of the manager beside their bridges, asked in the simulator's
-                # thread.
+                if agent.get('motion') == 'continuous':
+                    # On simulated time, a process of its own with its bridge's clock, told the robot it drives.
+                    self.assertEqual([nodelet_of(n) for n in planner_nodes], [None])
+                    self.assertIn(['/clock', namespace + 'robot/clock'], [list(r) for r in planner_nodes[0].remap_args])
+                    planner = namespace + 'robot/planner/'
+                    self.assertEqual(self.params[planner + 'kinematics'], 'diff_drive')
+                    self.assertEqual(self.params[planner + 'max_linear_speed'], 0.5)
+                    self.assertEqual(self.params[planner + 'control_period'], 0.1)
+                    self.assertEqual(self.params[planner + 'robot_radius'], 0.0)
+                    continue
+                # The example planners on the grid are nodelets of the manager beside their bridges, asked in the
+                # simulator's thread.
                 self.assertEqual([nodelet_of(n) for n in planner_nodes],
                                  [k for k, v in NODELET_EXECUTABLES.items() if 'ppp_agents/' + v == agent['planner_node']])
                 # Each instance's bridge and planner talk tf in their namespace, not on the global /tf.
@@ -271,9 +281,9 @@ class DefaultGraphTest(unittest.TestCase):
     def test_every_node_in_a_process_of_its_own_on_request(self):
         config, _ = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--processes', 'own')
         types = sorted(set(n.type for n in config.nodes))
-        self.assertEqual(types, ['agent_node', 'generator_node', 'mrpt_planner_node', 'mrpt_reactive_node',
-                                 'ompl_planner_node', 'optimistic_planner_node', 'planner_bridge_node',
-                                 'simulator_node'])
+        self.assertEqual(types, ['agent_node', 'dwa_planner_node', 'generator_node', 'mrpt_planner_node',
+                                 'mrpt_reactive_node', 'ompl_planner_node', 'optimistic_planner_node',
+                                 'planner_bridge_node', 'simulator_node'])
         self.assertEqual([n.name for n in config.nodes if n.required], ['simulator'])
         self.assertEqual(config.params['/simulator/batch_size'].value, 2000)  # round trips between processes
         given, _ = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--batch-size', '7')
@@ -304,9 +314,13 @@ class DefaultGraphTest(unittest.TestCase):
         config, _ = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--planner',
                                'optimistic=ppp_agents/simple_planner.py', '--planner', 'ompl=')
         robots = sorted((n.namespace, role(n)) for n in config.nodes if n.namespace.endswith('/robot/'))
-        self.assertEqual(robots, [(ns + 'robot/', 'mrpt_planner_node') for ns in instance_namespaces('mrpt', CORES)] +
-                         [(ns + 'robot/', 'mrpt_reactive_node') for ns in instance_namespaces('mrpt_nd', CORES)] +
-                         [(ns + 'robot/', 'simple_planner.py') for ns in instance_namespaces('optimistic', CORES)])
+        self.assertEqual(robots, sorted(
+            [(ns + 'robot/', 'dwa_planner_node') for name in ('dwa', 'dwa_continuous')
+             for ns in instance_namespaces(name, CORES)] +
+            [(ns + 'robot/', 'mrpt_planner_node') for ns in instance_namespaces('mrpt', CORES)] +
+            [(ns + 'robot/', 'mrpt_reactive_node') for name in ('mrpt_nd', 'mrpt_nd_continuous')
+             for ns in instance_namespaces(name, CORES)] +
+            [(ns + 'robot/', 'simple_planner.py') for ns in instance_namespaces('optimistic', CORES)]))
         # A planner of the user's runs as a process of its own; its bridge joins the manager.
         simple = [n for n in config.nodes if n.namespace.endswith('/robot/') and role(n) == 'simple_planner.py']
         self.assertEqual(set((n.package, nodelet_of(n)) for n in simple), {('ppp_agents', None)})

@@ -8,6 +8,7 @@
 
 #include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/episode_reason.hpp"
 #include "ppp_core/text_file.hpp"
 
 namespace ppp {
@@ -105,11 +106,13 @@ void DiagnosisCounts::add(const agents::EpisodeResult& result) {
   const int index = diagnosis::kindIndex(result.diagnosis);
   if (index >= 0) ++kinds[static_cast<std::size_t>(index)];
   if (result.endless_step >= 0) ++endless;
+  if (result.reason == reason::kCollision) ++collisions;
 }
 
 void DiagnosisCounts::add(const DiagnosisCounts& other) {
   for (std::size_t i = 0; i < kinds.size(); ++i) kinds[i] += other.kinds[i];
   endless += other.endless;
+  collisions += other.collisions;
 }
 
 double ProblemPassRate::rate() const { return runs > 0 ? static_cast<double>(passes) / runs : 0.0; }

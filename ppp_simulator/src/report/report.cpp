@@ -760,6 +760,41 @@ void diagnosisSection(const PassRateTable& rates, Text* out) {
   out->html += "</tbody>\n</table>\n";
 }
 
+/// Each agent played in both motion models: its mean pass rates side by side, and how its failed runs ended.
+void motionSection(const ReportInput& input, Text* out) {
+  if (input.motion_pairs.empty()) return;
+  openSection("Both motion models",
+              "Agents played on the grid (one cell per command, no heading) and in continuous motion (a robot with a "
+              "heading, a velocity and a laser; docs/reference/continuous-motion.md): per set, the mean pass rate "
+              "in each model and how the failed runs ended. A collision exists only in continuous motion: on the "
+              "grid a move into an obstacle bumps.",
+              out);
+  out->md += "| Grid agent | Continuous agent | Set | Grid | Continuous | Grid failures | Continuous failures |\n"
+             "|:---|:---|:---|---:|---:|:---|:---|\n";
+  out->html += "<table>\n<thead><tr><th>Grid agent</th><th>Continuous agent</th><th>Set</th><th class=\"num\">Grid"
+               "</th><th class=\"num\">Continuous</th><th>Grid failures</th><th>Continuous failures</th></tr></thead>\n"
+               "<tbody>\n";
+  for (const MotionPair& pair : input.motion_pairs) {
+    for (const std::string& set : input.rates.sets) {
+      const SetPassRate* grid = input.rates.find(set, pair.grid_agent);
+      const SetPassRate* continuous = input.rates.find(set, pair.continuous_agent);
+      if (grid == nullptr || continuous == nullptr) continue;
+      const std::string cells[] = {percent(grid->mean_rate), percent(continuous->mean_rate), failureKinds(*grid),
+                                   failureKinds(*continuous)};
+      out->md += "| " + mdCode(pair.grid_agent, true) + " | " + mdCode(pair.continuous_agent, true) + " | " +
+                 mdCode(set, true) + " | " + cells[0] + " | " + cells[1] + " | " + cells[2] + " | " + cells[3] + " |\n";
+      out->html += "<tr><td><code>" + escapeMarkup(pair.grid_agent) + "</code></td><td><code>" +
+                   escapeMarkup(pair.continuous_agent) + "</code></td><td><code>" + escapeMarkup(set) +
+                   "</code></td><td class=\"num\" style=\"" + rateCellStyle(grid->mean_rate) + "\">" + cells[0] +
+                   "</td><td class=\"num\" style=\"" + rateCellStyle(continuous->mean_rate) + "\">" + cells[1] +
+                   "</td><td>" +
+                   escapeMarkup(cells[2]) + "</td><td>" + escapeMarkup(cells[3]) + "</td></tr>\n";
+    }
+  }
+  out->md += "\n";
+  out->html += "</tbody>\n</table>\n";
+}
+
 /// Per agent and set, how many PPPs the agent fails; each agent's worst PPP; the sets' archives.
 void faultSection(const ReportInput& input, const std::vector<Picture>& pictures, Text* out) {
   const PassRateTable& rates = input.rates;
@@ -889,6 +924,7 @@ void writeReport(const std::string& dir, const ReportInput& input, const StopChe
   referenceSection(input, &text);
   comparisonSection(input, &text);
   diagnosisSection(input.rates, &text);
+  motionSection(input, &text);
   faultSection(input, worst_pictures, &text);
   detourSection(input, detour_pictures, &text);
   plotSection(plots, &text);

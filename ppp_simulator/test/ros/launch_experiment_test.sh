@@ -221,7 +221,7 @@ cp "$root/config/agents.yaml" "$root/config/generator.yaml" "$work/"
 timeout 600 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/out" config:="$work/experiment.yaml" \
   > "$work/launch.log" 2>&1
 rows=$(($(wc -l < "$work/out/results.csv") - 1))
-expected=$((3 * 60 * (10 * 2 + 4 * 3)))
+expected=$((3 * 60 * (10 * 2 + 5 * 3 + 2 * 1)))
 [ "$rows" -eq "$expected" ] && pass || fail "results.csv has $rows rows, expected $expected: $(tail -20 "$work/launch.log")"
 for f in summary.csv report.html report.md experiment.bag sets/turns/tree.html sets/difficulty/set.csv sets/hunted/set.csv; do
   [ -s "$work/out/$f" ] && pass || fail "the launched experiment did not write $f"
@@ -279,13 +279,13 @@ grep -q '^- shrunk: .* obstacle cells, still endless loop in 1 of 1 run (`ppps/t
 # Every planner run that moved has its moves recorded, one action per step (the report draws planner runs from
 # them); a report entry of a planner says so.
 unmatched=$(awk -F, 'NR == FNR { if (FNR > 1) moves[$1 "," $2 "," $3 "," $4] = length($5); next }
-  FNR > 1 && ($3 == "ompl" || $3 == "optimistic" || $3 == "mrpt" || $3 == "mrpt_nd") && $7 > 0 && moves[$1 "," $2 "," $3 "," $4] != $7' \
+  FNR > 1 && ($3 == "ompl" || $3 == "optimistic" || $3 == "mrpt" || $3 == "mrpt_nd" || $3 == "dwa") && $7 > 0 && moves[$1 "," $2 "," $3 "," $4] != $7' \
   "$work/out/planner_moves.csv" "$work/out/results.csv" | wc -l)
 [ "$unmatched" -eq 0 ] && pass || fail "$unmatched planner runs without their moves in planner_moves.csv"
 
 # The same experiment in process gives the same rows (it runs no planner agents).
 "$devel/lib/ppp_simulator/ppp" experiment "$work/experiment.yaml" -o "$work/cli" --quiet > /dev/null 2>&1
-grep -v ",ompl,\|,optimistic,\|,mrpt,\|,mrpt_nd," "$work/out/results.csv" > "$work/ros_built_in.csv"
+grep -v ",ompl,\|,optimistic,\|,mrpt,\|,mrpt_nd,\|,dwa,\|,mrpt_nd_continuous,\|,dwa_continuous," "$work/out/results.csv" > "$work/ros_built_in.csv"
 cmp -s "$work/ros_built_in.csv" "$work/cli/results.csv" && pass || fail "roslaunch and ppp experiment results differ"
 
 # rviz, headless, on the recorded bag: the picture must show the map (pixels checked, not just a file).

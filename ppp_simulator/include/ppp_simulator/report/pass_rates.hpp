@@ -14,6 +14,7 @@ namespace simulator {
 struct DiagnosisCounts {
   std::array<int, diagnosis::kKindCount> kinds{};  ///< Runs per kind.
   int endless = 0;                                 ///< Loops with an endless_step.
+  int collisions = 0;                              ///< Of the `reported`, runs that ended in a collision.
   /// Counts `result`'s diagnosis.
   void add(const agents::EpisodeResult& result);
   /// Adds `other`'s counts.

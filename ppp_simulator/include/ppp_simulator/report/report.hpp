@@ -11,6 +11,7 @@
 #include "ppp_core/problem.hpp"
 #include "ppp_core/stop.hpp"
 #include "ppp_simulator/report/detours.hpp"
+#include "ppp_simulator/report/motion_models.hpp"
 #include "ppp_simulator/report/pass_rates.hpp"
 #include "ppp_simulator/report/reference.hpp"
 
@@ -70,6 +71,7 @@ struct ReportInput {
   std::vector<FailureExample> detour_examples;  ///< Per agent, its longest run on its worst-detour PPP.
   std::vector<SetInfo> sets;          ///< Diversity and archive of each set (may be empty).
   std::vector<ReferenceComparison> references;  ///< Published rates beside the measured ones ("Reference").
+  std::vector<MotionPair> motion_pairs;         ///< Agents played in both motion models ("Both motion models").
 };
 
 /// Writes the experiment report into `dir` (created if missing), replacing files of the same names (the

@@ -1,0 +1,88 @@
+#pragma once
+
+// What every example local planner node shares: it takes the robot's scan, odometry, map and goal as the planner
+// bridge publishes them, matches them by stamp and answers each request with one velocity command
+// (docs/reference/planner-interface.md, "Velocity commands"):
+//   subscribes  scan (sensor_msgs/LaserScan)                the robot's scan, in its frame
+//               odom (nav_msgs/Odometry)                   the robot's pose (frame ~map_frame, child ~base_frame)
+//               map (nav_msgs/OccupancyGrid)               what the robot knows; a new map_load_time starts a new
+//                                                          episode
+//               move_base_simple/goal (geometry_msgs/PoseStamped)  on the grid a request, answered once the scan,
+//                                                          pose and map of its stamp are in; in continuous motion
+//                                                          the episode's goal
+//   publishes   cmd_vel (geometry_msgs/TwistStamped)       on the grid stamped with the goal's stamp; in continuous
+//                                                          motion one command per control period, stamped with its
+//                                                          scan's, as soon as its scan and odometry are in
+// Topics are relative: the node runs in the bridge's robot namespace (/G/robot).
+
+#include <geometry_msgs/PoseStamped.h>
+#include <geometry_msgs/Twist.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+
+#include <deque>
+#include <functional>
+#include <mutex>
+#include <string>
+
+#include "planner_node_options.hpp"
+#include "ppp_msgs/lockstep_queue.h"
+
+namespace ppp {
+namespace planners {
+
+/// One request of a local planner: the robot's scan and odometry of one step or period, its goal.
+struct VelocityRequest {
+  const sensor_msgs::LaserScan& scan;
+  const nav_msgs::Odometry& pose;
+  const geometry_msgs::PoseStamped& goal;
+  const nav_msgs::OccupancyGrid& map;
+  bool new_episode;  ///< The first request of an episode (the map's map_load_time changed).
+};
+
+/// The lockstep plumbing of a local planner node; the node says how it answers.
+class VelocityPlannerLink {
+ public:
+  /// The command for a request; an Error thrown leaves the robot standing (logged).
+  using Answer = std::function<geometry_msgs::Twist(const VelocityRequest&)>;
+
+  /// Subscribes in `nh`'s namespace. `continuous`: the robot moves continuously (the periods ask, not goals).
+  VelocityPlannerLink(ros::NodeHandle& nh, const PlannerFrames& frames, bool continuous, bool in_network_thread,
+                      Answer answer);
+
+  /// "scan, odom, map, goal -> cmd_vel" with their resolved names, for the node's start-up line.
+  std::string topics() const;
+
+ private:
+  void onScan(const sensor_msgs::LaserScan::ConstPtr& scan);
+  void onOdom(const nav_msgs::Odometry::ConstPtr& odom);
+  void onMap(const nav_msgs::OccupancyGrid::ConstPtr& map);
+  void onGoal(const geometry_msgs::PoseStamped::ConstPtr& goal);
+  /// Grid: answers the pending goal once the scan, pose and map of its step are in (mutex_ held).
+  void serve();
+  /// Continuous motion: answers each control period once its scan and pose are in (mutex_ held).
+  void drive();
+  /// Publishes the answer to the request stamped `stamp` (mutex_ held).
+  void respond(const ros::Time& stamp, const sensor_msgs::LaserScan& scan, const nav_msgs::Odometry& pose,
+               const geometry_msgs::PoseStamped& goal);
+
+  PlannerFrames frames_;
+  bool continuous_;
+  Answer answer_;
+  std::mutex mutex_;  // held by each callback: a nodelet's may run in two threads (a publisher's and its own)
+  std::deque<sensor_msgs::LaserScan::ConstPtr> scans_;
+  std::deque<nav_msgs::Odometry::ConstPtr> poses_;
+  nav_msgs::OccupancyGrid::ConstPtr map_message_;
+  geometry_msgs::PoseStamped::ConstPtr pending_;    // grid: the goal not answered yet
+  geometry_msgs::PoseStamped::ConstPtr goal_pose_;  // continuous motion: the episode's goal
+  ros::Time answered_;                              // continuous motion: the last period answered
+  ros::Time episode_;                               // the map_load_time of the episode being played
+  ros::Publisher command_;
+  ppp_msgs::LockstepQueue queue_;  // before the subscriptions: they unsubscribe first
+  ros::Subscriber scan_, odom_, map_, goal_;
+};
+
+}  // namespace planners
+}  // namespace ppp
