@@ -429,7 +429,7 @@ TEST(AgentConfigTest, LoadRejectsUnknownTopLevelKeysAndMissingFiles) {
   EXPECT_THROW(loadAgentConfigs(path + ".missing"), IoError);
 }
 
-TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgentsAndFourPlanners) {
+TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgentsAndSevenPlannerEntries) {
   const auto configs = loadAgentConfigs(std::string(PPP_CONFIG_DIR) + "/agents.yaml");
   struct Expected {
     const char* name;
@@ -452,6 +452,9 @@ TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgentsAndFourPlanners) {
       {"optimistic", "planner", 0, 0.0},
       {"mrpt", "planner", 0, 0.0},
       {"mrpt_nd", "planner", 0, 0.0},
+      {"dwa", "planner", 0, 0.0},
+      {"mrpt_nd_continuous", "planner", 0, 0.0},
+      {"dwa_continuous", "planner", 0, 0.0},
   };
   ASSERT_EQ(configs.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
@@ -460,7 +463,10 @@ TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgentsAndFourPlanners) {
     EXPECT_EQ(configs[i].memory_window, expected[i].memory) << i;
     EXPECT_EQ(configs[i].sensor_noise, expected[i].noise) << i;
     EXPECT_NO_THROW(configs[i].validate()) << i;
-    EXPECT_EQ(configs[i].runs, isPlanner(configs[i]) ? 3 : 0) << i;
+    // The planners' own runs: 3 on the grid, 1 in continuous motion (nothing random there).
+    const bool driven = configs[i].motion == kMotionContinuous;
+    EXPECT_EQ(configs[i].runs, isPlanner(configs[i]) ? (driven ? 1 : 3) : 0) << i;
+    EXPECT_EQ(driven, i >= 15) << i;
   }
   EXPECT_TRUE(configs[10].prior_map);
   EXPECT_FALSE(configs[11].prior_map);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <functional>
 #include <thread>
 
 #include "ppp_core/error.hpp"
@@ -61,18 +62,29 @@ std::vector<agents::EpisodeResult> HuntServer::playRows(const agents::AgentConfi
 }
 
 void HuntServer::play(generator::HuntEvaluation& evaluation, const std::vector<agents::AgentConfig>& panel) {
-  std::vector<LaneRunner*> runners;  // one per lane: the panel's agents' instances, in panel order
+  // One task per lane, pairing the panel's runners with the evaluation's lanes of the same protocol, in order.
+  std::vector<std::function<void()>> tasks;
+  std::size_t grid = 0, continuous = 0;
   for (const agents::AgentConfig& agent : panel) {
-    for (const auto& runner : runnersFor(agent)) runners.push_back(runner.get());
+    if (agents::playsContinuously(agent, config_.episode)) {
+      for (const auto& runner : runnersFor(agent, &continuous_runners_)) {
+        tasks.push_back([runner = runner.get(), lane = evaluation.continuousLanes().at(continuous++).get()] {
+          runner->run(lane);
+        });
+      }
+    } else {
+      for (const auto& runner : runnersFor(agent, &runners_)) {
+        tasks.push_back([runner = runner.get(), lane = evaluation.lanes().at(grid++).get()] { runner->run(lane); });
+      }
+    }
   }
   target_ = &evaluation;  // the runners' sink
-  std::vector<std::exception_ptr> failures(runners.size());
+  std::vector<std::exception_ptr> failures(tasks.size());
   std::vector<std::thread> threads;
-  for (std::size_t i = 0; i < runners.size(); ++i) {
-    agents::AgentLane* lane = evaluation.lanes().at(i).get();
-    threads.emplace_back([runner = runners[i], lane, failure = &failures[i]] {
+  for (std::size_t i = 0; i < tasks.size(); ++i) {
+    threads.emplace_back([task = tasks[i], failure = &failures[i]] {
       try {
-        runner->run(lane);
+        task();
       } catch (...) {
         *failure = std::current_exception();
       }
@@ -83,9 +95,7 @@ void HuntServer::play(generator::HuntEvaluation& evaluation, const std::vector<a
   for (const std::exception_ptr& failure : failures) {
     if (failure) std::rethrow_exception(failure);
   }
-  for (const auto& lane : evaluation.lanes()) {
-    if (!lane->finished()) throw IoError("~evaluate", "shutting down before every run was played");
-  }
+  if (!evaluation.finished()) throw IoError("~evaluate", "shutting down before every run was played");
 }
 
 ppp_msgs::ProblemEvaluation HuntServer::toMessage(const generator::PanelEvaluation& e) {
@@ -107,14 +117,16 @@ ppp_msgs::ProblemEvaluation HuntServer::toMessage(const generator::PanelEvaluati
   return m;
 }
 
-const std::vector<std::unique_ptr<LaneRunner>>& HuntServer::runnersFor(const agents::AgentConfig& agent) {
-  std::vector<std::unique_ptr<LaneRunner>>& runners = runners_[agent.name];
+template <class Runner>
+const std::vector<std::unique_ptr<Runner>>& HuntServer::runnersFor(
+    const agents::AgentConfig& agent, std::map<std::string, std::vector<std::unique_ptr<Runner>>>* all) {
+  std::vector<std::unique_ptr<Runner>>& runners = (*all)[agent.name];
   const int instances = agents::instanceCount(agent, config_.episode);
   for (int instance = static_cast<int>(runners.size()); instance < instances; ++instance) {
-    runners.push_back(std::make_unique<LaneRunner>(
+    runners.push_back(std::make_unique<Runner>(
         nh_, parameters_, control_, agent, agents::LaneShare{instance, instances},
-        [this](const std::vector<agents::EpisodeResult>& ended) { target_->record(ended); }, LaneRunner::ScanObserver{},
-        false));
+        [this](const std::vector<agents::EpisodeResult>& ended) { target_->record(ended); },
+        typename Runner::ScanObserver{}, false));
   }
   return runners;
 }

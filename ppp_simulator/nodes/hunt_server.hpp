@@ -45,8 +45,10 @@ class HuntServer {
   /// Plays every lane of `evaluation` (the panel's, in panel order) on the panel's runners, one thread each.
   /// @throws what a runner threw; IoError when ROS shut down before every run was played.
   void play(generator::HuntEvaluation& evaluation, const std::vector<agents::AgentConfig>& panel);
-  /// The runners of the agent's instances (agents::instanceCount), made on first use.
-  const std::vector<std::unique_ptr<LaneRunner>>& runnersFor(const agents::AgentConfig& agent);
+  /// The runners of the agent's instances (agents::instanceCount) of one lockstep protocol, made on first use.
+  template <class Runner>
+  const std::vector<std::unique_ptr<Runner>>& runnersFor(const agents::AgentConfig& agent,
+                                                          std::map<std::string, std::vector<std::unique_ptr<Runner>>>* all);
 
   ros::NodeHandle& nh_;
   SimulatorParameters parameters_;
@@ -54,6 +56,7 @@ class HuntServer {
   ExperimentConfig config_;
   std::mutex serving_;
   std::map<std::string, std::vector<std::unique_ptr<LaneRunner>>> runners_;
+  std::map<std::string, std::vector<std::unique_ptr<ContinuousLaneRunner>>> continuous_runners_;
   generator::HuntEvaluation* target_ = nullptr;  // the request in flight, where the runners' results go
   long requests_ = 0;
   long episodes_ = 0;

@@ -119,7 +119,9 @@ void ExperimentConfig::validate() const {
         generator::resolvePanel(s.generator->agents, agents, true);  // planners hunt through ROS; ppp experiment refuses them
         for (const agents::AgentConfig& a : agents) {
           const auto& panel = s.generator->agents;
-          if (std::find(panel.begin(), panel.end(), a.name) != panel.end()) agents::refuseContinuous(a, episode);
+          // A planner in continuous motion hunts through ROS on continuous lanes; a built-in agent only on the grid.
+          const bool in_panel = std::find(panel.begin(), panel.end(), a.name) != panel.end();
+          if (in_panel && !agents::isPlanner(a)) agents::refuseContinuous(a, episode);
         }
       }
     } catch (const InvalidArgument& e) {

@@ -266,7 +266,8 @@ ppp_msgs::GraphNode shrinkNode(const ShrinkTask& task) {
 void checkShrink(const ExperimentConfig& config, const GraphOptions& options) {
   if (!options.hunt.empty()) throw InvalidArgument("hunt", "a graph hunts or shrinks, not both");
   options.shrink.validate();
-  agents::refuseContinuous(shrinkAgent(options.shrink, config), config.episode);
+  const agents::AgentConfig& agent = shrinkAgent(options.shrink, config);
+  if (!agents::isPlanner(agent)) agents::refuseContinuous(agent, config.episode);  // planners shrink in both models
 }
 
 }  // namespace

@@ -62,6 +62,34 @@ TEST(HuntEvaluationTest, APlannerHasALanePerInstanceSharingItsRuns) {
   }
 }
 
+TEST(HuntEvaluationTest, APlannerInContinuousMotionIsJudgedOnContinuousLanesInSimulatedTime) {
+  // Two instances of a planner driving continuously: two continuous lanes of 3 of the 6 runs (3 candidates x 2).
+  agents::AgentConfig driven = agent("planner", 2);
+  driven.motion = kMotionContinuous;
+  HuntEvaluation evaluation(candidates(), {driven}, EpisodeOptions{}, 2, 7, 16);
+  EXPECT_TRUE(evaluation.lanes().empty());
+  ASSERT_EQ(evaluation.continuousLanes().size(), 2u);
+  EXPECT_EQ(evaluation.continuousLanes()[0]->remaining(), 3);
+  EXPECT_EQ(evaluation.continuousLanes()[1]->remaining(), 3);
+  // On the third candidate (14 moves in the open) its budget is ceil(4 x 14 m / 0.5 m/s / 0.1 s) = 1120 control
+  // periods and the optimal route at top speed 280. A run passed in 560 periods used half its budget and took
+  // twice the optimum (regret 1); a failed run used all of it (regret 1120 / 280 - 1 = 3).
+  agents::EpisodeResult passed;
+  passed.agent = driven.name;
+  passed.problem = "c2";
+  passed.passed = true;
+  passed.steps = 560;
+  passed.optimal_length = 14;
+  agents::EpisodeResult failed = passed;
+  failed.passed = false;
+  failed.steps = 17;  // ended early (a collision): its whole budget all the same
+  evaluation.record({passed, failed});
+  const PanelEvaluation e = evaluation.evaluations().at(2);
+  EXPECT_DOUBLE_EQ(e.estimate.failure_rate, 0.5);
+  EXPECT_DOUBLE_EQ(e.estimate.budget_used, 0.75);
+  EXPECT_DOUBLE_EQ(e.estimate.regret, 2.0);
+}
+
 TEST(HuntEvaluationTest, EstimatesEqualTheInProcessFailureFitness) {
   // The random agent in 20 moves, 10 runs per candidate: the estimates through lanes are the in-process
   // fitness's, run for run (the same seeds), and they differ between the near and the far goal.

@@ -17,7 +17,7 @@ void refuseContinuous(const AgentConfig& config, const EpisodeOptions& options) 
   if (!playsContinuously(config, options)) return;
   throw InvalidArgument("motion", "agent '" + config.name + "' plays in " + std::string(kMotionContinuous) +
                                       " motion, which experiments (in process and through ROS), `ppp simulate` and "
-                                      "`ppp replay` play; hunts and shrinks play the grid model only so far");
+                                      "`ppp replay` play, and hunts and shrinks only with planner agents (through ROS)");
 }
 
 bool movesContinuously(const AgentConfig& config) { return config.type == "astar"; }

@@ -9,6 +9,7 @@
 
 #include "ppp_agents/agent_config.hpp"
 #include "ppp_agents/agent_lane.hpp"
+#include "ppp_agents/continuous/continuous_lane.hpp"
 #include "ppp_agents/episode_result.hpp"
 #include "ppp_agents/prepared_set.hpp"
 #include "ppp_generator/failure_fitness.hpp"
@@ -33,7 +34,10 @@ struct PanelEvaluation {
 /// one lane per instance (agents::instanceCount, each its share) of `runs` runs on every candidate, seeded by
 /// failureRunSeed() exactly as the in-process failure fitness, so built-in agents give the same estimates through
 /// ROS as in process; or, given `run_seeds`, run r seeded run_seeds[r] on every candidate (a shrink judging a
-/// failure on its own seeds). Lanes may be played on separate threads; record() is thread-safe.
+/// failure on its own seeds). A panel agent in continuous motion gets continuous lanes; its runs count in the
+/// estimates as fractions of their own budgets of control periods (scaled to the grid's move budget), so its
+/// budget used and regret are those of simulated time. Lanes may be played on separate threads; record() is
+/// thread-safe.
 class HuntEvaluation {
  public:
   /// Prepares the candidates (each must be solvable) and the lanes of every panel agent.
@@ -42,8 +46,13 @@ class HuntEvaluation {
   HuntEvaluation(const std::vector<Problem>& problems, const std::vector<agents::AgentConfig>& panel,
                  const EpisodeOptions& episode, int runs, std::uint64_t generator_seed, int batch_size,
                  const std::vector<std::uint64_t>& run_seeds = {});
-  /// The lanes in panel order, agents::instanceCount(agent) consecutive ones per panel agent.
+  /// The grid lanes in panel order, agents::instanceCount(agent) consecutive ones per panel agent on the grid.
   std::vector<std::unique_ptr<agents::AgentLane>>& lanes() { return lanes_; }
+  /// The continuous lanes in panel order, agents::instanceCount(agent) consecutive ones per panel agent in
+  /// continuous motion.
+  std::vector<std::unique_ptr<agents::ContinuousLane>>& continuousLanes() { return continuous_lanes_; }
+  /// True when every lane has played all its runs.
+  bool finished() const;
   /// Takes finished episodes of any lane.
   void record(const std::vector<agents::EpisodeResult>& ended);
   /// Per candidate, in request order: what the recorded runs came to.
@@ -57,6 +66,9 @@ class HuntEvaluation {
   bool keeps_rows_;
   std::vector<agents::PreparedSet> sets_;  // one set of the candidates; the lanes refer to it
   std::vector<std::unique_ptr<agents::AgentLane>> lanes_;
+  std::vector<std::unique_ptr<agents::ContinuousLane>> continuous_lanes_;
+  MotionOptions motion_;               // the continuous lanes' budgets
+  std::vector<bool> continuous_;       // per panel agent
   mutable std::mutex mutex_;
   std::vector<PanelTally> tallies_;
   std::vector<PanelEvaluation> evaluations_;

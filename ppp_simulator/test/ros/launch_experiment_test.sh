@@ -174,6 +174,37 @@ timeout 120 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$
 grep -qF "robot_radius: set 'mine', PPP ppp_000: a disc of 0.5" "$work/small/fat.log" && \
   [ ! -s "$work/small/fat/results.csv" ] && pass || fail "a disc too wide for its start: $(tail "$work/small/fat.log")"
 
+# A hunt and a shrink in continuous motion through ROS: the panel's local planners drive on simulated time over the
+# candidates; the hunt finds a PPP one of them fails and gives the same set when launched again, and that failure
+# shrinks through the planner's bridge, still failing the same way.
+cat > "$work/small/driven_hunt.yaml" <<'EOF2'
+seed: 1
+runs: 1
+agents:
+  - {name: nd, type: planner, motion: continuous, interface: cmd_vel, planner_node: ppp_agents/mrpt_reactive_node, planner_args: "_method:=ND"}
+  - {name: dwa, type: planner, motion: continuous, interface: cmd_vel, planner_node: ppp_agents/dwa_planner_node}
+sets:
+  - name: h
+    generator: {fitness: failure, agents: [nd, dwa], runs_per_eval: 1, population: 6, matings: 12, width: 10, height: 10}
+EOF2
+for run in driven_hunt driven_hunt_again; do
+  timeout 300 roslaunch -p "$port" "$root/launch/hunt.launch" output_dir:="$work/small/$run" set:=h \
+    config:="$work/small/driven_hunt.yaml" > "$work/small/$run.log" 2>&1
+done
+failing=$(awk -F, 'NR > 1 && $4 > 0 { print $2; exit }' "$work/small/driven_hunt/set.csv")
+[ -n "$failing" ] && diff -r "$work/small/driven_hunt" "$work/small/driven_hunt_again" > /dev/null && pass || \
+  fail "the hunt in continuous motion: $(cut -d, -f1,4 "$work/small/driven_hunt/set.csv" | tr '\n' ' ') $(tail "$work/small/driven_hunt.log")"
+shrunk=""
+for agent in nd dwa; do
+  timeout 300 roslaunch -p "$port" "$root/launch/shrink.launch" input:="$work/small/driven_hunt/$failing" agent:=$agent \
+    output:="$work/small/driven_$agent.ppp" config:="$work/small/driven_hunt.yaml" args:="--runs 1" \
+    > "$work/small/driven_shrink_$agent.log" 2>&1
+  [ -s "$work/small/driven_$agent.ppp" ] && shrunk="$work/small/driven_$agent.ppp"
+done
+[ -n "$shrunk" ] && [ "$(sed -n 's/^meta shrink_failed //p' "$shrunk")" = "1 of 1" ] && \
+  [ -n "$(sed -n 's/^meta shrink_kind //p' "$shrunk")" ] && pass || \
+  fail "no failure of $failing shrunk in continuous motion: $(tail -3 "$work/small/driven_shrink_nd.log") $(tail -3 "$work/small/driven_shrink_dwa.log")"
+
 # launch/hunt.launch on a small hunted set: only the hunter, the simulator and the panel's nodes start, and the
 # set equals the one `ppp generate` makes in process with the options it stored.
 cat > "$work/small/hunt.yaml" <<'EOF2'

@@ -51,7 +51,7 @@ class ContinuousAgent {
 /// only on the grid (every built-in type but astar).
 void checkContinuousAgent(const AgentConfig& config, const EpisodeOptions& options);
 
-/// For what plays the grid model only (the grid runner, its lanes, hunts, shrinks):
+/// For what plays the grid model only (the grid runner and its lanes, hunts and shrinks of built-in agents):
 /// @throws InvalidArgument naming "motion" when `config` plays in continuous motion under `options`.
 void refuseContinuous(const AgentConfig& config, const EpisodeOptions& options);
 
