@@ -24,5 +24,7 @@ set(PPP_AGENTS_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/continuous/continuous_astar.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/continuous/continuous_runner.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/continuous/continuous_lane.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/continuous/laser_memory.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/continuous/plan_follower.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/protocol/batch_types.cpp
 )

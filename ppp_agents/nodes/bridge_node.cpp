@@ -34,8 +34,9 @@ BridgeNode::~BridgeNode() {
 void BridgeNode::connect() {
   if (!bridge_.waitForPlanner()) return;
   ROS_INFO("bridge '%s': planner connected", parameters_.config.name.c_str());
+  // The simulator talks to the grid's bridge or the continuous one, as the agent's motion says: both listen.
   bridge_.serve(nh_);
-  if (commandsVelocity(parameters_)) continuous_.serve(nh_);
+  continuous_.serve(nh_);
 }
 
 }  // namespace agents

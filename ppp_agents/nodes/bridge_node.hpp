@@ -44,7 +44,7 @@ class BridgeNode {
   ros::NodeHandle nh_;
   BridgeParameters parameters_;
   PlannerBridge bridge_;
-  ContinuousPlannerBridge continuous_;  // the same planner in continuous motion (interface cmd_vel)
+  ContinuousPlannerBridge continuous_;  // the same planner in continuous motion
   std::thread connecting_;  // a nodelet's
 };
 

@@ -5,7 +5,10 @@
 #include <string>
 #include <vector>
 
+#include "planner_bridge_messages.hpp"
+#include "ppp_agents/protocol/batch_types.hpp"
 #include "ppp_core/episode_reason.hpp"
+#include "ppp_core/sensor.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_msgs/graph_names.h"
 
@@ -36,6 +39,7 @@ void ContinuousPlannerBridge::serve(ros::NodeHandle& nh) {
   // clock and then a whole period, which the episode's first period would wait on for ever.
   last_stamp_ = ros::Time(1.0);
   link_.publishClock(last_stamp_);
+  link_.publishOdometryFrame();
   sensing_ = nh.subscribe(options);
   spinner_.start();
 }
@@ -86,7 +90,13 @@ agents::ContinuousReply ContinuousPlannerBridge::step(const ppp_msgs::SensingBat
     episode_id_ = start.episode;
     origin_ = last_stamp_ + kEpisodeGap;
     link_.newEpisode();
-    link_.publishContinuousMap(origin_, episode_->start.frame, episode_->start.prior_map);
+    const MapFrame& frame = episode_->start.frame;
+    const Grid* prior = episode_->start.prior_map;
+    link_.publishContinuousMap(origin_, origin_, frame,
+                               prior != nullptr ? protocol::priorMapCells(*prior)
+                                                : std::vector<std::int8_t>(static_cast<std::size_t>(frame.width) *
+                                                                               frame.height, kScanUnknown));
+    if (!commandsVelocity(parameters_)) plans_.start(episode_->start, parameters_.plan_requests);
   }
   if (!episode_ || episode_id_ != reply.episode) {
     warnOnce("episode", "sensing for episode " + std::to_string(reply.episode) + " that never started");
@@ -95,28 +105,70 @@ agents::ContinuousReply ContinuousPlannerBridge::step(const ppp_msgs::SensingBat
   }
   const ros::Time stamp = origin_ + ros::Duration(batch.time[0]);
   last_stamp_ = stamp;
-  const Pose2D pose{batch.x[0], batch.y[0], batch.theta[0]};
-  const BodyVelocity velocity{batch.forward[0], batch.left[0], batch.turn[0]};
   const std::vector<float> ranges(batch.ranges.begin(), batch.ranges.end());
-  const auto publish = [&] {
-    link_.publishContinuous(stamp, pose, velocity, ranges, episode_->start.beams, episode_->start.goal);
-  };
-  publish();
+  const ContinuousSensing sensing{Pose2D{batch.x[0], batch.y[0], batch.theta[0]},
+                                  BodyVelocity{batch.forward[0], batch.left[0], batch.turn[0]}, batch.time[0], &ranges};
+  if (commandsVelocity(parameters_)) {
+    command(stamp, sensing, &reply);
+  } else {
+    followPlans(stamp, sensing, &reply);
+  }
+  return reply;
+}
+
+void ContinuousPlannerBridge::publish(const ros::Time& stamp, const ContinuousSensing& sensing, bool request) {
+  const ContinuousStart& start = episode_->start;
+  link_.publishContinuous(stamp, sensing.pose, sensing.velocity, *sensing.ranges, start.beams,
+                          request ? std::optional<MapPoint>(start.goal) : std::nullopt);
+}
+
+void ContinuousPlannerBridge::command(const ros::Time& stamp, const ContinuousSensing& sensing,
+                                      ContinuousReply* reply) {
+  publish(stamp, sensing, true);
   // A planner that (re)started while it was asked gets the period again, with the same time.
   const std::optional<geometry_msgs::TwistStamped> command =
-      link_.waitForCommand(stamp, [&](const ros::Time&) { publish(); });
+      link_.waitForCommand(stamp, [&](const ros::Time&) { publish(stamp, sensing, true); });
   if (!command) {
-    reply.failure = link_.gone() ? reason::kPlannerLost : reason::kPlannerTimeout;
-    return reply;
+    reply->failure = link_.gone() ? reason::kPlannerLost : reason::kPlannerTimeout;
+    return;
   }
   const std::string& frame = command->header.frame_id;
   if (!frame.empty() && frame != parameters_.base_frame) {
     warnOnce("frame", "a command in frame '" + frame + "'; expected the robot's, '" + parameters_.base_frame + "'");
-    reply.failure = reason::kInvalidCommand;
-    return reply;
+    reply->failure = reason::kInvalidCommand;
+    return;
   }
-  reply.command = BodyVelocity{command->twist.linear.x, command->twist.linear.y, command->twist.angular.z};
-  return reply;
+  reply->command = BodyVelocity{command->twist.linear.x, command->twist.linear.y, command->twist.angular.z};
+}
+
+void ContinuousPlannerBridge::followPlans(const ros::Time& stamp, const ContinuousSensing& sensing,
+                                          ContinuousReply* reply) {
+  const bool ask = plans_.observe(sensing);
+  if (ask) link_.publishContinuousMap(stamp, origin_, episode_->start.frame, plans_.map());
+  publish(stamp, sensing, ask);
+  if (ask) {
+    const auto resend = [&](const ros::Time&) {
+      link_.publishContinuousMap(stamp, origin_, episode_->start.frame, plans_.map());
+      publish(stamp, sensing, true);
+    };
+    const std::optional<nav_msgs::Path> path =
+        link_.waitForPath(stamp, [](const nav_msgs::Path&) { return true; }, resend);
+    if (!path) {
+      reply->failure = link_.gone() ? reason::kPlannerLost : reason::kPlannerTimeout;
+      return;
+    }
+    std::vector<MapPoint> points;
+    const std::string frame_problem = pathPoints(*path, parameters_.map_frame, &points);
+    const PlanVerdict verdict = frame_problem.empty() ? plans_.take(points, sensing.pose)
+                                                      : PlanVerdict{reason::kInvalidPath, frame_problem};
+    if (verdict.failure != nullptr) {
+      ROS_INFO_THROTTLE(5, "bridge '%s': episode %u fails as %s: %s", parameters_.config.name.c_str(), episode_id_,
+                        verdict.failure, verdict.detail.c_str());
+      reply->failure = verdict.failure;
+      return;
+    }
+  }
+  reply->command = plans_.command(sensing);
 }
 
 }  // namespace agents

@@ -10,19 +10,25 @@
 
 #include "planner_bridge_parameters.hpp"
 #include "planner_link.hpp"
+#include "ppp_agents/continuous/plan_follower.hpp"
 #include "ppp_agents/protocol/continuous_codec.hpp"
 #include "ppp_msgs/SensingBatch.h"
 
 namespace ppp {
 namespace agents {
 
-/// Plays a planner agent in continuous motion (interface cmd_vel): for each control period of the simulator's
-/// episode (a SensingBatch of one episode) it publishes the robot's world to the planner at the period's simulated
-/// time (tf map -> odom -> base_link, odom with pose and twist, the laser, the goal as the period's request, and
-/// robot/clock, which the planner reads as /clock with /use_sim_time set), waits for the planner's velocity command stamped at that time or later, and
-/// answers the simulator with it (the simulator's base controller clamps it), or with the failure planner_timeout
-/// or planner_lost. Each episode's clock starts a second after the last one's end, so the planner's time never runs
-/// backwards. Periods are played in a thread of the bridge's own, which may wait for the planner.
+/// Plays a planner agent in continuous motion: for each control period of the simulator's episode (a SensingBatch
+/// of one episode) it publishes the robot's world to the planner at the period's simulated time (tf map -> odom ->
+/// base_link, odom with pose and twist, the laser, and robot/clock, which the planner reads as /clock with
+/// /use_sim_time set) and answers the simulator with a velocity command (the simulator's base controller clamps
+/// it), or with a failure (planner_timeout, planner_lost, ...):
+/// - interface cmd_vel: every period is a request (the goal); the command is the planner's, stamped at that time
+///   or later;
+/// - interface path: a PlanFollower says which periods are requests (plan_requests); a request publishes the
+///   robot's map (the true one, or the one its laser built) and the goal and waits for the planner's path; the
+///   command follows the path taken by pure pursuit.
+/// Each episode's clock starts a second after the last one's end, so the planner's time never runs backwards.
+/// Periods are played in a thread of the bridge's own, which may wait for the planner.
 class ContinuousPlannerBridge {
  public:
   /// Talks to the planner through `link` (PlannerBridge's).
@@ -35,6 +41,13 @@ class ContinuousPlannerBridge {
   void onSensing(const ppp_msgs::SensingBatch::ConstPtr& batch);
   /// The reply to the batch's one episode: its command, or a failure reason.
   agents::ContinuousReply step(const ppp_msgs::SensingBatch& batch);
+  /// Publishes the period `sensing` at `stamp`, with the goal when it is a `request`.
+  void publish(const ros::Time& stamp, const ContinuousSensing& sensing, bool request);
+  /// interface cmd_vel: the planner's command for the period into `reply`, or its failure.
+  void command(const ros::Time& stamp, const ContinuousSensing& sensing, ContinuousReply* reply);
+  /// interface path: the command along the planner's path into `reply`, asking for one when the period is a
+  /// request, or the failure.
+  void followPlans(const ros::Time& stamp, const ContinuousSensing& sensing, ContinuousReply* reply);
   void warnOnce(const std::string& kind, const std::string& text);
 
   PlannerLink& link_;
@@ -45,6 +58,7 @@ class ContinuousPlannerBridge {
   ros::Subscriber sensing_;
 
   std::optional<protocol::DecodedStart> episode_;  // the episode being played
+  PlanFollower plans_;                             // interface path: the robot's map, requests and path
   std::uint32_t episode_id_ = 0;
   ros::Time origin_;      // the simulated time of the episode's start
   ros::Time last_stamp_;  // the latest time published

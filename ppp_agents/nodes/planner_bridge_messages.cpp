@@ -67,13 +67,16 @@ geometry_msgs::PoseStamped goalRequest(const ros::Time& stamp, const std::string
   return request;
 }
 
-tf2_msgs::TFMessage continuousTransforms(const ros::Time& stamp, const Pose2D& pose, const std::string& map_frame,
-                                         const std::string& base_frame) {
-  const std::string odom_frame = odomFrameOf(base_frame);
+tf2_msgs::TFMessage odometryFrameTransform(const std::string& map_frame, const std::string& base_frame) {
   tf2_msgs::TFMessage transforms;
-  transforms.transforms.push_back(ppp_msgs::poseTransform(Pose2D{}, map_frame, odom_frame));
-  transforms.transforms.push_back(ppp_msgs::poseTransform(pose, odom_frame, base_frame));
-  for (geometry_msgs::TransformStamped& t : transforms.transforms) t.header.stamp = stamp;
+  transforms.transforms.push_back(ppp_msgs::poseTransform(Pose2D{}, map_frame, odomFrameOf(base_frame)));
+  return transforms;
+}
+
+tf2_msgs::TFMessage continuousTransforms(const ros::Time& stamp, const Pose2D& pose, const std::string& base_frame) {
+  tf2_msgs::TFMessage transforms;
+  transforms.transforms.push_back(ppp_msgs::poseTransform(pose, odomFrameOf(base_frame), base_frame));
+  transforms.transforms.back().header.stamp = stamp;
   return transforms;
 }
 

@@ -36,10 +36,12 @@ std::string odomFrameOf(const std::string& base_frame);
 /// A plan request: the goal `goal` (map frame `map_frame`), stamped `stamp`.
 geometry_msgs::PoseStamped goalRequest(const ros::Time& stamp, const std::string& map_frame, MapPoint goal);
 
-/// Continuous motion's tf at `stamp`: `map_frame` -> odom (the identity: odometry is exact) and odom ->
-/// `base_frame` at `pose` (the odometry frame: odomFrameOf(base_frame)).
-tf2_msgs::TFMessage continuousTransforms(const ros::Time& stamp, const Pose2D& pose, const std::string& map_frame,
-                                         const std::string& base_frame);
+/// Continuous motion's static tf: `map_frame` -> odom, the identity (odometry is exact; the odometry frame is
+/// odomFrameOf(base_frame)).
+tf2_msgs::TFMessage odometryFrameTransform(const std::string& map_frame, const std::string& base_frame);
+
+/// Continuous motion's tf at `stamp`: odom -> `base_frame` at `pose`.
+tf2_msgs::TFMessage continuousTransforms(const ros::Time& stamp, const Pose2D& pose, const std::string& base_frame);
 
 /// odometryOf(transform) moving at `velocity` (its twist, in the robot's frame).
 nav_msgs::Odometry odometryOf(const geometry_msgs::TransformStamped& transform, const BodyVelocity& velocity);

@@ -47,6 +47,7 @@ PlannerLink::PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters
   // Latched: a planner that subscribes late still learns the time (rospy's first sleep waits for it).
   clock_ = nh_.advertise<rosgraph_msgs::Clock>(ppp_msgs::topics::kPlannerClock, 10, true);
   tf_ = nh.advertise<tf2_msgs::TFMessage>("/tf", 100);
+  tf_static_ = nh.advertise<tf2_msgs::TFMessage>("/tf_static", 1, true);
   // Without Nagle's algorithm (it would hold each answer back 40 ms).
   if (commandsVelocity(parameters_)) {
     answers_ = ppp_msgs::subscribeLockstep<geometry_msgs::TwistStamped>(

@@ -65,15 +65,19 @@ class PlannerLink {
                    int range);
   /// Publishes a plan request: the episode's goal, stamped `stamp`.
   void publishGoal(const ros::Time& stamp, const PlannerEpisode& episode);
-  /// Continuous motion: publishes the map a planner is given at an episode's start (the true map, or every cell
-  /// unknown), stamped `stamp`, its map_load_time too.
-  void publishContinuousMap(const ros::Time& stamp, const MapFrame& frame, const Grid* prior_map);
-  /// Continuous motion: publishes one control period at the simulated time `stamp`: tf map -> odom (the identity:
-  /// odometry is exact) and odom -> base_link, the odometry (`pose` and `velocity`), the laser's `ranges`, the
-  /// request (`goal`, map frame), then the clock at `stamp` (last, so a planner whose timer fires on it has the
-  /// period's messages, which it can tell by their stamp).
+  /// Continuous motion: publishes the robot's map `cells` (grid order, kScan... values) of `frame`'s size, stamped
+  /// `stamp`, loaded at `episode_stamp` (the episode's start, so a planner with memory of its own sees a new one).
+  void publishContinuousMap(const ros::Time& stamp, const ros::Time& episode_stamp, const MapFrame& frame,
+                            const std::vector<std::int8_t>& cells);
+  /// Continuous motion: publishes one control period at the simulated time `stamp`: tf odom -> base_link (map ->
+  /// odom is publishOdometryFrame's), the odometry (`pose` and `velocity`), the laser's `ranges`, the
+  /// request if any (the goal, map frame), then the clock at `stamp` (last, so a planner whose timer fires on it
+  /// has the period's messages, which it can tell by their stamp).
   void publishContinuous(const ros::Time& stamp, const Pose2D& pose, const BodyVelocity& velocity,
-                         const std::vector<float>& ranges, const LaserBeams& beams, MapPoint goal);
+                         const std::vector<float>& ranges, const LaserBeams& beams,
+                         const std::optional<MapPoint>& request);
+  /// Continuous motion: publishes the static tf map -> odom (latched; continuous motion's odometry is exact).
+  void publishOdometryFrame();
   /// Continuous motion: publishes the planner's clock at `stamp` (latched).
   void publishClock(const ros::Time& stamp);
   /// A new episode: paths sent so far answer an earlier one, and the planner has not answered in this one.
@@ -115,7 +119,8 @@ class PlannerLink {
   std::atomic<bool> stopping_{false};
   ros::NodeHandle nh_;  // robot/...
   ros::Publisher map_, odom_, scan_, goal_, clock_;
-  ros::Publisher tf_;  // /tf as the node's remappings name it (a nodelet's too)
+  ros::Publisher tf_;         // /tf as the node's remappings name it (a nodelet's too)
+  ros::Publisher tf_static_;  // /tf_static likewise
   ppp_msgs::LockstepQueue queue_;  // the answer subscription's
   ros::Subscriber answers_;  // plan or cmd_vel
   bool answered_ = false;     // the planner sent a path during this episode

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <utility>
 
@@ -46,7 +47,9 @@ PlannerNode::PlannerNode(ros::NodeHandle& nh, PlannerNodeOptions options, PlanFu
           queue_.get())),
       goal_subscriber_(ppp_msgs::subscribeLockstep<geometry_msgs::PoseStamped>(
           nh, ppp_msgs::topics::kPlannerGoal, 1, [this](const geometry_msgs::PoseStamped::ConstPtr& g) { onGoal(g); },
-          queue_.get())) {}
+          queue_.get())),
+      static_frames_subscriber_(nh.subscribe<tf2_msgs::TFMessage>(
+          "/tf_static", 10, [this](const tf2_msgs::TFMessage::ConstPtr& t) { onStaticFrames(t); })) {}
 
 std::string PlannerNode::topics() const {
   return map_subscriber_.getTopic() + ", " + goal_subscriber_.getTopic() + " -> " + plan_publisher_.getTopic() +
@@ -75,6 +78,37 @@ void PlannerNode::onGoal(const geometry_msgs::PoseStamped::ConstPtr& goal) {
   serveReady();
 }
 
+void PlannerNode::onStaticFrames(const tf2_msgs::TFMessage::ConstPtr& transforms) {
+  for (const geometry_msgs::TransformStamped& t : transforms->transforms) {
+    static_frames_.setTransform(t, "tf_static", true);
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  serveReady();  // a goal may have waited for the frame of its pose
+}
+
+std::string PlannerNode::positionOf(const nav_msgs::Odometry& pose, MapPoint* position) const {
+  const std::string& frame = pose.header.frame_id;
+  if (pose.child_frame_id != options_.frames.base_frame) {
+    return "odometry of frame '" + pose.child_frame_id + "', expected '" + options_.frames.base_frame + "'";
+  }
+  const geometry_msgs::Point& p = pose.pose.pose.position;
+  if (frame == options_.frames.map_frame) {
+    *position = MapPoint{p.x, p.y};
+    return "";
+  }
+  // Continuous motion: odometry in the odom frame, which /tf_static places in the map.
+  if (!static_frames_.canTransform(options_.frames.map_frame, frame, ros::Time(0))) {
+    return "odometry in frame '" + frame + "', which is neither '" + options_.frames.map_frame +
+           "' nor placed in it by /tf_static";
+  }
+  const geometry_msgs::TransformStamped t = static_frames_.lookupTransform(options_.frames.map_frame, frame, ros::Time(0));
+  const geometry_msgs::Quaternion& q = t.transform.rotation;
+  const double yaw = std::atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z));
+  *position = MapPoint{t.transform.translation.x + std::cos(yaw) * p.x - std::sin(yaw) * p.y,
+                       t.transform.translation.y + std::sin(yaw) * p.x + std::cos(yaw) * p.y};
+  return "";
+}
+
 nav_msgs::Odometry::ConstPtr PlannerNode::poseAt(const ros::Time& stamp) const {
   nav_msgs::Odometry::ConstPtr found;
   for (const nav_msgs::Odometry::ConstPtr& odom : poses_) {
@@ -96,6 +130,14 @@ void PlannerNode::serveReady() {
     // The bridge publishes map and pose, then the goal, all with one stamp: the goal waits for them.
     request.pose_stamp = goal_->header.stamp;
     if (!map_ || map_->header.stamp < request.pose_stamp || !hasPoseAt(request.pose_stamp)) return;
+    const nav_msgs::Odometry::ConstPtr pose = poseAt(request.pose_stamp);
+    const std::string frame = pose ? pose->header.frame_id : options_.frames.map_frame;
+    if (frame != options_.frames.map_frame &&
+        !static_frames_.canTransform(options_.frames.map_frame, frame, ros::Time(0))) {
+      ROS_WARN_THROTTLE(5, "the goal waits for /tf_static to place the odometry's frame '%s' in '%s'", frame.c_str(),
+                        options_.frames.map_frame.c_str());
+      return;
+    }
     goal_pending_ = false;
   } else {
     if (!replanDue() || !hasPoseAt(map_->header.stamp)) return;
@@ -119,15 +161,15 @@ void PlannerNode::serve(const Request& request) {
     ROS_WARN("no robot pose (odometry) stamped %.3f or earlier; not planning", request.pose_stamp.toSec());
     return;
   }
-  const nav_msgs::Odometry& pose = *request.pose;
-  if (pose.header.frame_id != options_.frames.map_frame || pose.child_frame_id != options_.frames.base_frame) {
-    ROS_WARN("odometry of frame '%s' in frame '%s', expected '%s' in '%s'; not planning", pose.child_frame_id.c_str(),
-             pose.header.frame_id.c_str(), options_.frames.base_frame.c_str(), options_.frames.map_frame.c_str());
+  MapPoint position;
+  const std::string pose_problem = positionOf(*request.pose, &position);
+  if (!pose_problem.empty()) {
+    ROS_WARN("%s; not planning", pose_problem.c_str());
     return;
   }
   try {
     const GridMap map = gridMapOf(*request.map, options_.unknown_is_free, options_.body.inflation);
-    const Cell robot = map.cellOf(MapPoint{pose.pose.pose.position.x, pose.pose.pose.position.y});
+    const Cell robot = map.cellOf(position);
     const Cell target = map.cellOf(MapPoint{goal.pose.position.x, goal.pose.position.y});
     if (!map.contains(target)) {
       ROS_WARN_THROTTLE(5, "the goal (%.3f, %.3f) lies off the map (%.3f x %.3f m): answering no path",

@@ -4,6 +4,8 @@
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
+#include <tf2/buffer_core.h>
+#include <tf2_msgs/TFMessage.h>
 
 #include <deque>
 #include <functional>
@@ -35,8 +37,8 @@ struct PlannerNodeOptions {
 
 /// The ROS side of the example planners (docs/reference/planner-interface.md): keeps the newest `map`, answers every
 /// `move_base_simple/goal` with a nav_msgs/Path on `plan` once it holds a map at least as new as the goal and
-/// the robot's pose at the goal's stamp (`odom`, frame map_frame, child base_frame; a newer goal replaces one still
-/// waiting for them), and, with replan_on_map, plans again on every new map. A plan is stamped with the stamp of the
+/// the robot's pose at the goal's stamp (`odom`, child base_frame, in map_frame or in a frame /tf_static places in
+/// it, as continuous motion's odom; a newer goal replaces one still waiting for them), and, with replan_on_map, plans again on every new map. A plan is stamped with the stamp of the
 /// pose it starts from (the goal's; a re-plan's map's); no path gives an empty Path. A request the last plan still
 /// answers (the same state, or the robot further along it on an unchanged map: a lockstep bridge asks every step) is
 /// answered with that plan again, not a new one. It plans in the callback that completes a request, so no thread
@@ -63,6 +65,9 @@ class PlannerNode {
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& map);
   void onOdom(const nav_msgs::Odometry::ConstPtr& odom);
   void onGoal(const geometry_msgs::PoseStamped::ConstPtr& goal);
+  void onStaticFrames(const tf2_msgs::TFMessage::ConstPtr& transforms);
+  /// The robot's position in the map frame from `pose`, into `position`; "" or why it cannot be had.
+  std::string positionOf(const nav_msgs::Odometry& pose, MapPoint* position) const;
   /// The newest odometry stamped no later than `stamp`, or null.
   nav_msgs::Odometry::ConstPtr poseAt(const ros::Time& stamp) const;
   /// True when odometry as new as `stamp` has come.
@@ -93,12 +98,14 @@ class PlannerNode {
   bool goal_reached_ = false;                      // a re-plan found the robot on goal_
   nav_msgs::OccupancyGrid::ConstPtr planned_map_;  // the newest map when the last request was served
   std::deque<nav_msgs::Odometry::ConstPtr> poses_;  // the newest odometry messages, oldest first
+  tf2::BufferCore static_frames_;                   // what /tf_static says (thread-safe)
 
   ros::Publisher plan_publisher_;
   ppp_msgs::LockstepQueue queue_;  // before the subscriptions: they unsubscribe first
   ros::Subscriber map_subscriber_;
   ros::Subscriber odom_subscriber_;
   ros::Subscriber goal_subscriber_;
+  ros::Subscriber static_frames_subscriber_;
 };
 
 }  // namespace planners

@@ -328,10 +328,9 @@ ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const Grap
   config.validate();
   options.validate(config);
   for (const agents::AgentConfig& agent : config.agents) {
-    if (playsOnSimulatedTime(agent, config.episode) && !agents::commandsVelocity(agent.bridge)) {
-      throw InvalidArgument("interface", "planner agent '" + agent.name + "' plays in " + kMotionContinuous +
-                                             " motion with interface: " + agent.bridge.interface +
-                                             ", which its bridge does not follow yet: give it interface: cmd_vel");
+    if (playsOnSimulatedTime(agent, config.episode) && !agent.bridge.lockstep) {
+      throw InvalidArgument("lockstep", "planner agent '" + agent.name + "' plays in " + kMotionContinuous +
+                                            " motion, which its bridge plays in lockstep only: give it lockstep: true");
     }
   }
   const bool shrink = !options.shrink.input.empty();

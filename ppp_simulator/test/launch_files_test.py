@@ -482,13 +482,14 @@ class ContinuousGraphTest(unittest.TestCase):
             else:
                 self.assertIn(['/use_sim_time', '/ppp/use_system_time'], remaps, node.namespace + node.name)
 
-    def test_a_planner_in_continuous_motion_that_sends_paths_is_refused_naming_interface(self):
+    def test_a_free_running_planner_in_continuous_motion_is_refused_naming_lockstep(self):
         path = write_config(tempfile.mkdtemp(), "motion: continuous\nagents:\n  - {name: ompl, type: planner, "
-                            "planner_node: ppp_agents/ompl_planner_node}\n" + self.SETS)
+                            "lockstep: false, planner_node: ppp_agents/ompl_planner_node}\n" + self.SETS)
         xml, status, errors, _ = launch_file(path)
         self.assertNotEqual(status, 0)
         self.assertEqual(xml, '')
-        self.assertIn("interface: planner agent 'ompl' plays in continuous motion with interface: path", errors)
+        self.assertIn("lockstep: planner agent 'ompl' plays in continuous motion, which its bridge plays in lockstep "
+                      "only", errors)
 
 
 class InspectLaunchTest(unittest.TestCase):

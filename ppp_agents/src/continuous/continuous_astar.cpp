@@ -40,15 +40,20 @@ std::vector<Cell> straightestRoute(const Grid& space, Cell start, Cell goal) {
 
 }  // namespace
 
+std::vector<MapPoint> centreRoute(const Grid& map, const MapFrame& frame, double radius, MapPoint from, MapPoint to) {
+  const SquareWorld world(map, frame.resolution);
+  const Grid space = continuousConfigurationSpace(world, radius);
+  std::vector<MapPoint> path;
+  for (const Cell& c : straightestRoute(space, world.cellAt(from.x, from.y), world.cellAt(to.x, to.y))) {
+    path.push_back(MapPoint{frame.centreX(c), frame.centreY(c)});
+  }
+  return path;
+}
+
 void ContinuousAstar::start(const ContinuousStart& start) {
   if (start.prior_map == nullptr) throw InvalidArgument("type", "astar in continuous motion needs the true map");
-  const SquareWorld world(*start.prior_map, start.frame.resolution);
-  const Grid space = continuousConfigurationSpace(world, start.radius);
-  std::vector<MapPoint> path;
-  for (const Cell& c : straightestRoute(space, world.cellAt(start.pose.x, start.pose.y),
-                                        world.cellAt(start.goal.x, start.goal.y))) {
-    path.push_back(MapPoint{start.frame.centreX(c), start.frame.centreY(c)});
-  }
+  std::vector<MapPoint> path =
+      centreRoute(*start.prior_map, start.frame, start.radius, MapPoint{start.pose.x, start.pose.y}, start.goal);
   if (path.empty()) path.push_back(MapPoint{start.pose.x, start.pose.y});  // no route: it stays
   follower_.follow(std::move(path), start.frame.resolution, start.limits, start.control_period);
 }

@@ -42,6 +42,8 @@ void PurePursuit::follow(std::vector<MapPoint> path, double resolution, const Ki
   resolution_ = resolution;
   control_period_ = control_period;
   segment_ = 0;
+  passed_ = 0;
+  left_ = remaining_.empty() ? 0 : remaining_[0];
   look_ahead_ = std::max(kLookAheadCells * resolution, 2 * limits.max_linear_speed * control_period);
   limits_ = limits;
 }
@@ -65,10 +67,11 @@ MapPoint PurePursuit::pointAhead(std::size_t segment, double along, double dista
 
 BodyVelocity PurePursuit::command(const Pose2D& pose, const BodyVelocity& velocity) {
   if (path_.empty()) return BodyVelocity{};
-  // The nearest point moves forward only: over the segment it is on and the next ones within look-ahead.
+  // The nearest point moves forward only: over the segment it is on and the next ones starting within twice the
+  // look-ahead of it.
   double along = 0, best = 1e300;
   std::size_t best_segment = segment_;
-  for (std::size_t i = segment_; i + 1 < path_.size() && remaining_[segment_] - remaining_[i] <= 2 * look_ahead_;
+  for (std::size_t i = segment_; i + 1 < path_.size() && (i == segment_ || left_ - remaining_[i] <= 2 * look_ahead_);
        ++i) {
     const auto [t, distance] = nearestOnSegment(path_[i], path_[i + 1], pose.x, pose.y);
     if (distance < best - 1e-12) {
@@ -81,14 +84,18 @@ BodyVelocity PurePursuit::command(const Pose2D& pose, const BodyVelocity& veloci
   const double here = segment_ + 1 < path_.size()
                           ? remaining_[segment_] - along * (remaining_[segment_] - remaining_[segment_ + 1])
                           : 0;  // path length left from the robot's nearest point
-  // The next turn not yet reached at rest, else the end.
+  left_ = here;
+  // The next turn not yet reached at rest, else the end. A turn reached at rest stays passed: steering off it
+  // (the next segment at any angle) moves the robot a little off the path, which must not bring it back.
   const bool moving = std::hypot(velocity.forward, velocity.left) > 0;
   std::size_t stop = path_.size() - 1;
-  for (std::size_t i = segment_ + 1; i + 1 < path_.size(); ++i) {
-    if (turns_[i] && (here - remaining_[i] > kTurnReachedCells * resolution_ || moving)) {
+  for (std::size_t i = std::max(segment_, passed_) + 1; i + 1 < path_.size(); ++i) {
+    if (!turns_[i]) continue;
+    if (here - remaining_[i] > kTurnReachedCells * resolution_ || moving) {
       stop = i;
       break;
     }
+    passed_ = i;
   }
   const double to_stop = here - remaining_[stop];
   const MapPoint target = pointAhead(segment_, along, std::min(look_ahead_, std::max(to_stop, 0.0)));

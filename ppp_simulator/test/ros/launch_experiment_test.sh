@@ -168,6 +168,35 @@ done
 cmp -s "$work/small/nd/results.csv" "$work/small/nd_again/results.csv" && pass || fail "ND's rows differ between two launches"
 diff <(grep ',mrpt_nd,' "$work/small/nd/results.csv") <(grep ',mrpt_nd,' "$work/small/nd_grid/results.csv") > /dev/null && \
   pass || fail "ND's grid rows changed beside its continuous entry"
+# Path planners in continuous motion: the robot follows their paths by pure pursuit, re-planning as plan_requests
+# says. An optimistic A* on the map the robot's laser builds passes wherever astar does; OMPL planning for a point
+# on the true map shortcuts past corners the disc of 0.2 m hits, and passes once its map is inflated by the body;
+# a second launch gives the same rows.
+cat > "$work/small/paths.yaml" <<'EOF2'
+seed: 3
+runs: 1
+motion: continuous
+robot_radius: 0.2
+agents:
+  - {name: astar, type: astar}
+  - {name: optimistic, type: planner, plan_requests: on_change, planner_node: ppp_agents/optimistic_planner_node}
+  - {name: ompl, type: planner, prior_map: true, plan_requests: on_blocked, planner_node: ppp_agents/ompl_planner_node}
+  - {name: ompl_inflated, type: planner, prior_map: true, plan_requests: on_blocked, cells_per_ppp_cell: 4, planner_node: ppp_agents/ompl_planner_node, planner_args: "_inflation:=1"}
+sets:
+  - name: small
+    generator: {fitness: turns, population: 10, matings: 100, width: 12, height: 12, seed: 2}
+EOF2
+for run in paths paths_again; do
+  timeout 300 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/$run" \
+    config:="$work/small/paths.yaml" > "$work/small/$run.log" 2>&1
+done
+reasons() { grep ",$1," "$work/small/paths/results.csv" | cut -d, -f11 | sort | uniq -c | tr -s ' ' | tr '\n' ' '; }
+[ "$(reasons astar)" = " 10 goal_reached " ] && [ "$(reasons optimistic)" = " 10 goal_reached " ] && \
+  [ "$(reasons ompl_inflated)" = " 10 goal_reached " ] && reasons ompl | grep -q collision && \
+  ! grep -q -e planner_ -e agent_lost "$work/small/paths/results.csv" && pass || \
+  fail "path planners in continuous motion: $(cut -d, -f3,11 "$work/small/paths/results.csv" | sort | uniq -c) $(tail "$work/small/paths.log")"
+cmp -s "$work/small/paths/results.csv" "$work/small/paths_again/results.csv" && pass || \
+  fail "path planners' continuous rows differ between two launches"
 sed 's/^robot_radius: 0.3/robot_radius: 0.5/' "$work/small/continuous.yaml" > "$work/small/fat.yaml"
 timeout 120 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/fat" \
   config:="$work/small/fat.yaml" > "$work/small/fat.log" 2>&1
