@@ -115,6 +115,44 @@ TEST(ContinuousLaneTest, AnAgentThatMovesOnlyOnTheGridIsRefused) {
   EXPECT_THROW(ContinuousLane(explorer, options, sets, seedOf, 1, 4), InvalidArgument);
 }
 
+TEST(ContinuousLaneTest, APlannersRowsCarryItsCommandsWhichPlayEachRunAgain) {
+  // A planner given the true map, answered here as the A* control would drive: its rows keep every command.
+  AgentConfig driver;
+  driver.name = "driver";
+  driver.type = kPlannerType;
+  driver.prior_map = true;
+  const EpisodeOptions options = continuousOptions();
+  const std::vector<PreparedSet> sets = smallSets(options);
+  ContinuousLane lane(driver, options, sets, seedOf, 1, 4);
+  const std::vector<EpisodeResult> rows = playAll(&lane);
+  ASSERT_EQ(rows.size(), 6u);
+  for (const EpisodeResult& row : rows) {
+    ASSERT_EQ(static_cast<int>(row.commands.size()), row.steps) << csv(row);
+    const int s = row.set == "a" ? 0 : 1;
+    const int p = row.problem.back() - '0';
+    const Problem& problem = sets[s].set.problems[p];
+    const ContinuousOutcome again = recordedContinuousRun(problem, sets[s].grids[p], options, sets[s].moves[p],
+                                                          row.seed, row.commands, row.reason, driver.name);
+    EXPECT_EQ(again.steps, row.steps) << csv(row);
+    EXPECT_EQ(again.reason, row.reason) << csv(row);
+    EXPECT_DOUBLE_EQ(again.distance / options.motion.resolution, row.path_length) << csv(row);
+    EXPECT_EQ(static_cast<int>(again.poses.size()), row.steps + 1) << csv(row);
+    // Commands cut short do not play the run again: the error names the agent and the seed.
+    const std::vector<BodyVelocity> cut(row.commands.begin(), row.commands.end() - 1);
+    try {
+      recordedContinuousRun(problem, sets[s].grids[p], options, sets[s].moves[p], row.seed, cut, row.reason,
+                            driver.name);
+      ADD_FAILURE() << "a cut run played again: " << csv(row);
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("driver with seed " + std::to_string(row.seed)), std::string::npos)
+          << e.what();
+    }
+  }
+  // A built-in agent's rows keep none: it plays again in process.
+  ContinuousLane control(astar(), options, sets, seedOf, 1, 4);
+  for (const EpisodeResult& row : playAll(&control)) EXPECT_TRUE(row.commands.empty());
+}
+
 }  // namespace
 }  // namespace agents
 }  // namespace ppp

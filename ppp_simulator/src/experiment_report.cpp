@@ -7,10 +7,14 @@
 #include <set>
 
 #include "ppp_agents/agent_registry.hpp"
+#include "ppp_agents/continuous/continuous_agent.hpp"
+#include "ppp_agents/continuous/continuous_runner.hpp"
 #include "ppp_core/csv.hpp"
+#include "ppp_core/reachability.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_agents/episode_runner.hpp"
 #include "ppp_simulator/failure_shrink.hpp"
+#include "ppp_simulator/report/continuous_animation.hpp"
 #include "ppp_simulator/report/episode_animation.hpp"
 #include "ppp_simulator/report/pass_rates.hpp"
 
@@ -18,6 +22,38 @@ namespace ppp {
 namespace simulator {
 
 namespace {
+
+/// True for a planner agent that plays in continuous motion: its runs are drawn from the commands it sent.
+bool drivenPlanner(const agents::AgentConfig& agent, const EpisodeOptions& episode) {
+  return agents::isPlanner(agent) && agents::playsContinuously(agent, episode);
+}
+
+/// A planner's run in continuous motion played again from its recorded `commands` (ended as `reason`): its
+/// trajectory, and its animation when the map is small enough.
+struct DrivenReplay {
+  ContinuousOutcome outcome;
+  std::string gif;
+};
+
+DrivenReplay replayDriven(const Problem& ppp, const Grid& grid, const agents::AgentConfig& agent,
+                          const EpisodeOptions& episode, std::uint64_t seed,
+                          const std::vector<BodyVelocity>& commands, const std::string& reason,
+                          const AnimationOptions& animation, const StopCheck& stop) {
+  if (std::max(ppp.width, ppp.height) <= kReportAnimationMaxSide) {
+    ContinuousAnimation drawn =
+        animateRecordedContinuousRun(ppp, grid, agent, episode, seed, commands, reason, animation, stop);
+    return {std::move(drawn.outcome), std::move(drawn.gif)};
+  }
+  return {agents::recordedContinuousRun(ppp, grid, episode, fewestMoves(grid, ppp.start, ppp.goal, Connectivity::Four),
+                                        seed, commands, reason, agent.name),
+          ""};
+}
+
+/// The picture of a continuous run `outcome` under `episode`.
+DrivenRun drivenRunOf(const ContinuousOutcome& outcome, const EpisodeOptions& episode) {
+  return DrivenRun{outcome.poses, episode.motion.resolution, episode.robot_radius * episode.motion.resolution,
+                   outcome.distance};
+}
 
 /// The run `row` of `agent` on PPP `problem` of `set`, replayed for its path and animated.
 FailureExample replayedRun(const ExperimentConfig& config, const agents::PreparedSet& set, int problem,
@@ -27,28 +63,36 @@ FailureExample replayedRun(const ExperimentConfig& config, const agents::Prepare
   const Problem& ppp = set.set.problems[problem];
   AnimationOptions animation;
   animation.max_frames = config.animation_frames;
-  EpisodeAnimation run;
-  if (agents::isPlanner(agent_config)) {  // another process's run: drawn from its recorded actions (replayable())
-    run = animateRecordedEpisode(ppp, set.grids[problem], agent_config, config.episode, row.seed, row.actions,
-                                 row.reason, animation, stop);
-  } else if (std::max(ppp.width, ppp.height) <= kReportAnimationMaxSide) {
-    run = animateEpisode(ppp, set.grids[problem], agent_config, config.episode, row.seed, animation, stop);
-  } else {
-    run.outcome = agents::recordEpisode(ppp, set.grids[problem], agent_config, config.episode, row.seed);
-  }
-  const EpisodeOutcome& outcome = run.outcome;
   FailureExample example;
+  example.diagnosis = agents::diagnosisOf(row);
+  if (drivenPlanner(agent_config, config.episode)) {  // drawn from its recorded commands (replayable())
+    DrivenReplay run = replayDriven(ppp, set.grids[problem], agent_config, config.episode, row.seed, row.commands,
+                                    row.reason, animation, stop);
+    example.path = run.outcome.cells;
+    example.reason = run.outcome.reason;
+    example.driven = drivenRunOf(run.outcome, config.episode);
+    example.animation_gif = std::move(run.gif);
+  } else {
+    EpisodeAnimation run;
+    if (agents::isPlanner(agent_config)) {  // another process's run: drawn from its recorded actions (replayable())
+      run = animateRecordedEpisode(ppp, set.grids[problem], agent_config, config.episode, row.seed, row.actions,
+                                   row.reason, animation, stop);
+    } else if (std::max(ppp.width, ppp.height) <= kReportAnimationMaxSide) {
+      run = animateEpisode(ppp, set.grids[problem], agent_config, config.episode, row.seed, animation, stop);
+    } else {
+      run.outcome = agents::recordEpisode(ppp, set.grids[problem], agent_config, config.episode, row.seed);
+    }
+    example.path = run.outcome.path;
+    example.reason = run.outcome.reason;
+    example.cycle = cycleCells(example.diagnosis, run.outcome.cells);
+    example.animation_gif = std::move(run.gif);
+  }
   example.set = set.name;
   example.problem = set.set.ids[problem];
   example.agent = agent_config.name;
   example.run = row.run;
   example.seed = row.seed;
   example.ppp = ppp;
-  example.path = outcome.path;
-  example.reason = outcome.reason;
-  example.diagnosis = agents::diagnosisOf(row);
-  example.cycle = cycleCells(example.diagnosis, outcome.cells);
-  example.animation_gif = run.gif;
   example.recorded = agents::isPlanner(agent_config);
   example.replay_flags = optionFlags(agents::agentPlayOptionSpecs(), agent_config, agents::AgentConfig{});
   const std::string episode_flags = optionFlags(episodeOptionSpecs(), config.episode, EpisodeOptions{});
@@ -89,7 +133,15 @@ std::optional<ShrunkExample> shrunkRun(const ExperimentConfig& config, const age
   AnimationOptions animation;
   animation.max_frames = config.animation_frames;
   const bool animated = std::max(shrunk.problem.width, shrunk.problem.height) <= kReportAnimationMaxSide;
-  if (planner) {  // its run again, through the simulator's lanes: drawn from its actions
+  if (drivenPlanner(agent, episode)) {  // its run again, through the simulator's lanes: drawn from its commands
+    const std::vector<agents::EpisodeResult> played = rows(shrunk.problem, {run.seed});
+    DrivenReplay replay = replayDriven(shrunk.problem, grid, agent, episode, run.seed, played.at(0).commands,
+                                       played.at(0).reason, animation, stop);
+    example.driven = drivenRunOf(replay.outcome, episode);
+    if (animated) example.animation_gif = std::move(replay.gif);
+    diagnosis = agents::diagnosisOf(played.at(0));
+    outcome.path = replay.outcome.cells;
+  } else if (planner) {  // its run again, through the simulator's lanes: drawn from its actions
     const std::vector<agents::EpisodeResult> played = rows(shrunk.problem, {run.seed});
     EpisodeAnimation recorded = animateRecordedEpisode(shrunk.problem, grid, agent, episode, run.seed,
                                                        played.at(0).actions, played.at(0).reason, animation, stop);
@@ -116,26 +168,48 @@ std::optional<ShrunkExample> shrunkRun(const ExperimentConfig& config, const age
   return example;
 }
 
-/// Whether the report shows runs of `agent`: not the control or the random baseline, nor an agent in continuous
-/// motion (its runs are drawn as trajectories by `ppp replay`, not yet in the report).
+/// Whether the report shows runs of `agent`: not the control or the random baseline (nor a built-in agent in
+/// continuous motion: only the control drives).
 bool replayedInReport(const agents::AgentConfig& agent, const EpisodeOptions& episode) {
-  if (agents::playsContinuously(agent, episode)) return false;  // its runs are not replayed or shrunk yet
+  if (agents::playsContinuously(agent, episode) && !agents::isPlanner(agent)) return false;
   const agents::AgentType& type = agents::agentType(agent.type);
   return !type.has(agents::AgentTrait::Control) && !type.has(agents::AgentTrait::Baseline);
 }
 
 /// Whether the run `row` of `agent` on `ppp` can be shown: any run of an agent played in process; a planner's
-/// when its actions were recorded (planner_moves.csv) and its map is small enough to animate.
+/// when its actions (planner_moves.csv) or, in continuous motion, its commands (kept in memory by this run of the
+/// experiment) were recorded, and its map is small enough to animate.
 bool replayable(const agents::AgentConfig& agent, const agents::EpisodeResult& row, const Problem& ppp) {
-  return !agents::isPlanner(agent) || (static_cast<int>(row.actions.size()) == row.steps &&
+  const std::size_t recorded = row.commands.empty() ? row.actions.size() : row.commands.size();
+  return !agents::isPlanner(agent) || (static_cast<int>(recorded) == row.steps &&
                                        std::max(ppp.width, ppp.height) <= kReportAnimationMaxSide);
 }
 
+/// `row` (of `agent` on `ppp`) with what draws it: a planner's run in continuous motion with its commands, played
+/// again through `planner_rows` (a planner in lockstep plays a run the same way each time); nothing when it cannot be
+/// played there or ends otherwise than `row` says.
+std::optional<agents::EpisodeResult> withRecording(const agents::EpisodeResult& row, const agents::AgentConfig& agent,
+                                                   const EpisodeOptions& episode, const Problem& ppp,
+                                                   const PlannerRows& planner_rows) {
+  if (!drivenPlanner(agent, episode) || !row.commands.empty()) return row;
+  if (!planner_rows || std::max(ppp.width, ppp.height) > kReportAnimationMaxSide) return std::nullopt;
+  std::vector<agents::EpisodeResult> played;
+  try {
+    played = planner_rows(agent, ppp, {row.seed});
+  } catch (const AgentUnreachable&) {
+    return std::nullopt;
+  }
+  if (played.size() != 1 || played[0].steps != row.steps || played[0].reason != row.reason) return std::nullopt;
+  agents::EpisodeResult recorded = row;
+  recorded.commands = std::move(played[0].commands);
+  return recorded;
+}
+
 /// The first failing run of `agent` on PPP `problem` of `set`, replayed for its path and animated; nothing when
-/// it cannot be (replayable()).
+/// it cannot be (replayable(), withRecording()).
 std::optional<FailureExample> failingRun(const ExperimentConfig& config, const agents::PreparedSet& set, int problem,
                           const agents::AgentConfig& agent_config, const std::vector<ResultGroup>& groups,
-                          const StopCheck& stop) {
+                          const StopCheck& stop, const PlannerRows& planner_rows) {
   const agents::EpisodeResult* first_fail = nullptr;
   for (const ResultGroup& g : groups) {
     const agents::EpisodeResult* f = g.first_fail;
@@ -144,8 +218,10 @@ std::optional<FailureExample> failingRun(const ExperimentConfig& config, const a
       first_fail = f;
     }
   }
-  if (!replayable(agent_config, *first_fail, set.set.problems[problem])) return std::nullopt;
-  return replayedRun(config, set, problem, agent_config, *first_fail, stop);
+  const std::optional<agents::EpisodeResult> row =
+      withRecording(*first_fail, agent_config, config.episode, set.set.problems[problem], planner_rows);
+  if (!row || !replayable(agent_config, *row, set.set.problems[problem])) return std::nullopt;
+  return replayedRun(config, set, problem, agent_config, *row, stop);
 }
 
 }  // namespace
@@ -206,7 +282,8 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
   std::vector<FailureExample> failures;
   for (const Candidate& c : candidates) {
     // Planners are not candidates, so every run here can be replayed.
-    failures.push_back(*failingRun(config, sets[c.set], c.problem, *agent_by_name.at(c.worst_agent), groups, stop));
+    failures.push_back(
+        *failingRun(config, sets[c.set], c.problem, *agent_by_name.at(c.worst_agent), groups, stop, {}));
   }
   return failures;
 }
@@ -239,7 +316,8 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
       if (rate < lowest) lowest = rate, at = where;
     }
     if (at.first < 0) continue;
-    if (std::optional<FailureExample> run = failingRun(config, sets[at.first], at.second, agent, groups, stop)) {
+    if (std::optional<FailureExample> run =
+            failingRun(config, sets[at.first], at.second, agent, groups, stop, planner_rows)) {
       // A run lost to the agent link, or to its planner's end, cannot be judged again: there is nothing to shrink.
       if (config.shrink_worst && (!run->recorded || planner_rows) && !leavesAgentUnreachable(run->reason)) {
         run->shrunk = shrunkRun(config, agent, *run, planner_rows, stop);
@@ -251,7 +329,8 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
 }
 
 std::vector<FailureExample> longestDetours(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets,
-                                           const std::vector<DetourStats>& detours, const StopCheck& stop) {
+                                           const std::vector<DetourStats>& detours, const StopCheck& stop,
+                                           const PlannerRows& planner_rows) {
   std::vector<FailureExample> examples;
   for (const agents::AgentConfig& agent : config.agents) {
     if (!replayedInReport(agent, config.episode)) continue;
@@ -264,8 +343,10 @@ std::vector<FailureExample> longestDetours(const ExperimentConfig& config, const
       if (set.name != worst->set) continue;
       const auto id = std::find(set.set.ids.begin(), set.set.ids.end(), worst->worst_problem);
       const int problem = static_cast<int>(id - set.set.ids.begin());
-      if (!replayable(agent, *worst->longest, set.set.problems[problem])) continue;
-      examples.push_back(replayedRun(config, set, problem, agent, *worst->longest, stop));
+      const std::optional<agents::EpisodeResult> row =
+          withRecording(*worst->longest, agent, config.episode, set.set.problems[problem], planner_rows);
+      if (!row || !replayable(agent, *row, set.set.problems[problem])) continue;
+      examples.push_back(replayedRun(config, set, problem, agent, *row, stop));
     }
   }
   return examples;
@@ -310,7 +391,7 @@ void writeExperimentReport(const std::string& dir, const ExperimentConfig& confi
   input.worst = worstFailures(config, sets, groups, stop, planner_rows);
   stopIfAsked(stop);
   input.detours = detourStats(rows, set_names, agent_names);
-  input.detour_examples = longestDetours(config, sets, input.detours, stop);
+  input.detour_examples = longestDetours(config, sets, input.detours, stop, planner_rows);
   stopIfAsked(stop);
   for (const agents::PreparedSet& set : sets) {
     SetInfo info{set.name, set.set.diversity, ""};

@@ -93,13 +93,14 @@ expect_error "continuous shrink" "motion: agent 'astar' plays in continuous moti
   "$ppp" shrink "$work/small.ppp" --agent astar --motion continuous --runs 2 -o "$work/shrunk.ppp"
 expect_error "continuous hunt" "motion: agent 'astar' plays in continuous motion" \
   "$ppp" generate --fitness failure --agents astar --motion continuous --matings 4 --population 4 -o "$work/hunt"
-# Through ROS, astar's node is given its continuous topics; a planner that sends paths is not followed yet.
+# Through ROS, astar's node is given its continuous topics; a planner that sends paths is followed in lockstep
+# only.
 expect_ok "continuous through ROS" "$ppp" launch-file "$work/continuous.yaml" -o "$work/ros"
 grep -q '<remap from="sensing" to="~sensing"/>' "$work/out" && pass || fail "astar's node has no sensing topic"
 write_experiment "$work/planner.yaml" "motion: continuous" ""
-sed -i 's/  - {name: astar, type: astar}/  - {name: ompl, type: planner, planner_node: ppp_agents\/ompl_planner_node}/' \
+sed -i 's/  - {name: astar, type: astar}/  - {name: ompl, type: planner, lockstep: false, planner_node: ppp_agents\/ompl_planner_node}/' \
   "$work/planner.yaml"
-expect_error "a continuous planner that sends paths" "interface: planner agent 'ompl' plays in continuous motion with interface: path" \
+expect_error "a free-running continuous planner" "lockstep: planner agent 'ompl' plays in continuous motion, which its bridge plays in lockstep only" \
   "$ppp" launch-file "$work/planner.yaml" -o "$work/planner"
 
 finish

@@ -12,6 +12,7 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/gif_animation.hpp"
 #include "ppp_core/picture.hpp"
+#include "ppp_core/trajectory_picture.hpp"
 #include "ppp_core/ppp_file.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_generator/tree_html.hpp"
@@ -361,6 +362,45 @@ TEST_F(ReportTest, PictureIsAPngOfTheProblemWithThePath) {
   const Pixel centre = cellCentre(Cell{1, 2}, options);
   const std::size_t at = (static_cast<std::size_t>(centre.y) * 201 + static_cast<std::size_t>(centre.x)) * 3;
   EXPECT_EQ((Rgb{rgb[at], rgb[at + 1], rgb[at + 2]}), kPathColour);
+}
+
+TEST_F(ReportTest, ARunInContinuousMotionIsDrawnAsItsTrajectoryAndReplayedThroughRos) {
+  ReportInput input = handMadeInput();
+  FailureExample worst = input.failures[0];
+  worst.agent = "dwa";
+  worst.recorded = true;
+  worst.reason = reason::kCollision;
+  // Three control periods from the start cell's centre, heading east, into the wall at x = 2.
+  DrivenRun driven;
+  driven.poses = {{0.5, 4.5, 0}, {1.0, 4.5, 0}, {1.5, 4.5, 0}, {1.8, 4.5, 0}};
+  driven.radius = 0.2;
+  driven.distance = 1.3;
+  worst.driven = driven;
+  worst.path = {{0, 0}, {1, 0}, {1, 0}, {1, 0}};
+  input.worst = {worst};
+  writeReport(dir_, input);
+  const std::string md = read("report.md");
+  EXPECT_NE(md.find("- path 3 control periods, 1.30 m driven, ending at (1.80, 4.50) m in the map frame, in cell "
+                    "(1, 0)"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("replay: `roslaunch launch/shrink.launch input:=ppps/beta_q1.ppp agent:=dwa output:=check.ppp "
+                    "config:=EXPERIMENT.yaml args:=\"--seed 12345\"`"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("A run in continuous motion is drawn as the robot centre's trajectory"), std::string::npos);
+  // The picture is the trajectory's, not the cells'.
+  const std::string png = read("pictures/beta_q1_dwa.png");
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  ASSERT_TRUE(png_image_begin_read_from_memory(&image, png.data(), png.size())) << image.message;
+  image.format = PNG_FORMAT_RGB;
+  std::vector<std::uint8_t> rgb(PNG_IMAGE_SIZE(image));
+  ASSERT_TRUE(png_image_finish_read(&image, nullptr, rgb.data(), 0, nullptr)) << image.message;
+  PictureOptions options;
+  options.cell_pixels = 40;
+  EXPECT_EQ(rgb, renderTrajectoryRgb(worst.ppp, driven.poses, 1.0, 0.2, options));
+  EXPECT_NE(rgb, renderProblemRgb(worst.ppp, worst.path, options));
 }
 
 TEST_F(ReportTest, UnsafeNamesAreSanitisedInFileNamesButShownInFull) {

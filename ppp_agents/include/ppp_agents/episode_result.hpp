@@ -8,6 +8,7 @@
 #include "ppp_agents/protocol/batch_types.hpp"
 #include "ppp_core/action.hpp"
 #include "ppp_core/diagnosis.hpp"
+#include "ppp_core/kinematics.hpp"
 
 namespace ppp {
 namespace agents {
@@ -34,6 +35,9 @@ struct EpisodeResult {
   /// Planner agents played by an AgentLane: every action of the run in order (not in results.csv; the simulator
   /// keeps them in planner_moves.csv so the report can show the run); empty otherwise.
   std::vector<Action> actions;
+  /// Planner agents played by a ContinuousLane: the velocity commanded in each control period, in order (not
+  /// written anywhere; what the report draws the run from); empty otherwise.
+  std::vector<BodyVelocity> commands;
 };
 
 /// The results.csv header: set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,

@@ -19,7 +19,8 @@ ContinuousLane::ContinuousLane(const AgentConfig& config, const EpisodeOptions& 
       sets_(sets),
       seed_of_(std::move(seed_of)),
       batch_size_(isPlanner(config) ? 1 : batch_size),
-      reads_laser_(isPlanner(config) || makeContinuousAgent(config)->readsLaser()) {
+      reads_laser_(isPlanner(config) || makeContinuousAgent(config)->readsLaser()),
+      keeps_commands_(isPlanner(config)) {
   if (batch_size < 1) throw InvalidArgument("batch_size", "expected at least 1, got " + std::to_string(batch_size));
   if (share.count < 1 || share.index < 0 || share.index >= share.count) {
     throw InvalidArgument("share", "expected instance " + std::to_string(share.index) + " of " +
@@ -45,7 +46,7 @@ void ContinuousLane::requests(std::vector<ContinuousRequest>* requests) {
     const std::uint64_t seed = seed_of_(work.set, work.problem, work.run);
     const int optimal = continuousOptimalMoves(problem, grid, options_, set.moves[work.problem]);
     active_.push_back({next_id_++, work, seed, optimal, continuousEpisode(problem, grid, options_, optimal, seed),
-                       false});
+                       false, {}});
   }
   requests->resize(active_.size());
   for (std::size_t i = 0; i < active_.size(); ++i) {
@@ -103,10 +104,12 @@ std::vector<EpisodeResult> ContinuousLane::answer(const std::vector<ContinuousRe
     } else if (reply->step != a.episode.outcome().steps) {
       a.episode.fail(reason::kInvalidCommand);
     } else {
+      if (keeps_commands_) a.commands.push_back(reply->command);
       a.episode.apply(reply->command);
     }
     if (a.episode.done()) {
       finished.push_back(result(a.work, a.seed, a.optimal, a.episode.outcome()));
+      finished.back().commands = std::move(a.commands);
     } else {
       if (kept != i) active_[kept] = std::move(a);
       ++kept;
@@ -129,6 +132,7 @@ std::vector<EpisodeResult> ContinuousLane::failAll(const char* why) {
   for (Active& a : active_) {
     a.episode.fail(why);
     failed.push_back(result(a.work, a.seed, a.optimal, a.episode.outcome()));
+    failed.back().commands = std::move(a.commands);
   }
   active_.clear();
   for (const Work& work : queue_) {

@@ -4,6 +4,7 @@
 
 #include "ppp_core/diagnosis.hpp"
 #include "ppp_core/episode.hpp"
+#include "ppp_core/episode_reason.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/optimum.hpp"
 #include "ppp_core/reachability.hpp"
@@ -83,6 +84,32 @@ EpisodeResult continuousResult(const PreparedSet& set, int problem, const std::s
   r.reason = outcome.reason;
   setDiagnosis(diagnoseContinuousRun(r.passed, r.soft_failure, r.reason, outcome.cells), &r);
   return r;
+}
+
+ContinuousOutcome recordedContinuousRun(const Problem& problem, const Grid& grid, const EpisodeOptions& options,
+                                        int grid_moves, std::uint64_t run_seed,
+                                        const std::vector<BodyVelocity>& commands, const std::string& end_reason,
+                                        const std::string& agent) {
+  ContinuousEpisode episode = continuousEpisode(
+      problem, grid, options, continuousOptimalMoves(problem, grid, options, grid_moves), run_seed, true);
+  for (const BodyVelocity& command : commands) {
+    if (episode.done()) break;
+    episode.apply(command);
+  }
+  // Only the world ends a run on the goal, in a collision or at its budget; any other end came from the agent or
+  // its link after the last command.
+  const bool world_ends = end_reason == reason::kGoalReached || end_reason == reason::kCollision ||
+                          end_reason == reason::kBudgetExhausted;
+  const char* named = reason::reasonNamed(end_reason);
+  if (!episode.done() && !world_ends && named != nullptr) episode.fail(named);
+  const ContinuousOutcome& outcome = episode.outcome();
+  if (!episode.done() || outcome.steps != static_cast<int>(commands.size()) || outcome.reason != end_reason) {
+    throw Error("the recorded run of " + agent + " with seed " + std::to_string(run_seed) + " (" +
+                std::to_string(commands.size()) + " commands, " + end_reason + ") plays again as " +
+                std::to_string(outcome.steps) + " control periods, " +
+                (episode.done() ? std::string("ending ") + outcome.reason : std::string("not ended")));
+  }
+  return outcome;
 }
 
 ContinuousRunner::ContinuousRunner(const AgentConfig& config, const EpisodeOptions& options)

@@ -27,7 +27,8 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
 
 /// Per agent (but the astar control and the random baseline), the first failing run on its worst PPP (lowest pass
 /// rate over every set; the first of equals), replayed for its path and animated as above (a planner's from the
-/// actions its row carries, planner_moves.csv; left out when it has none or the map is too large to animate);
+/// actions its row carries, planner_moves.csv, or in continuous motion from its commands, played again by
+/// `planner_rows`; left out when it has none, it plays differently, or the map is too large to animate);
 /// agents that never fail are left out. With the config's shrink_worst, each run's PPP is shrunk for its seed
 /// (FailureExample::shrunk): a built-in agent's in process, a planner's when `planner_rows` can play it.
 /// @throws Interrupted as hardestFailures().
@@ -37,9 +38,11 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
 
 /// Per agent (as worstFailures()), its longest passed run on the PPP of `detours` (detourStats() of the results)
 /// where its passed runs were longest against the optimum, replayed and animated; agents with no passed run are
-/// left out. @throws Interrupted as hardestFailures().
+/// left out; a planner's run in continuous motion is played again by `planner_rows` to be drawn, and left out
+/// without it. @throws Interrupted as hardestFailures().
 std::vector<FailureExample> longestDetours(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets,
-                                           const std::vector<DetourStats>& detours, const StopCheck& stop = {});
+                                           const std::vector<DetourStats>& detours, const StopCheck& stop = {},
+                                           const PlannerRows& planner_rows = {});
 
 /// Writes summary.csv and report.{md,html} (with plots and pictures) of a finished experiment into `dir`;
 /// `stop` is asked between the pieces (the pass rates, the failures replayed, each picture and file);

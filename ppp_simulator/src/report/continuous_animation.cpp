@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "ppp_agents/continuous/continuous_runner.hpp"
@@ -33,11 +34,34 @@ ContinuousAnimation animateContinuousRun(const Problem& problem, const Grid& gri
                                          const EpisodeOptions& options, std::uint64_t run_seed,
                                          const AnimationOptions& animation, const StopCheck& stop) {
   animation.validate();
+  agents::ContinuousRunner runner(config, options);
+  return drawContinuousRun(problem, grid, options,
+                           runner.run(problem, grid, fewestMoves(grid, problem.start, problem.goal, Connectivity::Four),
+                                      run_seed, true),
+                           animation, stop);
+}
+
+ContinuousAnimation animateRecordedContinuousRun(const Problem& problem, const Grid& grid,
+                                                 const agents::AgentConfig& config, const EpisodeOptions& options,
+                                                 std::uint64_t run_seed, const std::vector<BodyVelocity>& commands,
+                                                 const std::string& end_reason, const AnimationOptions& animation,
+                                                 const StopCheck& stop) {
+  animation.validate();
+  return drawContinuousRun(
+      problem, grid, options,
+      agents::recordedContinuousRun(problem, grid, options,
+                                    fewestMoves(grid, problem.start, problem.goal, Connectivity::Four), run_seed,
+                                    commands, end_reason, config.name),
+      animation, stop);
+}
+
+ContinuousAnimation drawContinuousRun(const Problem& problem, const Grid& grid, const EpisodeOptions& options,
+                                      ContinuousOutcome outcome, const AnimationOptions& animation,
+                                      const StopCheck& stop) {
+  animation.validate();
   const PictureOptions picture{animationCellPixels(problem, animation), true};
   ContinuousAnimation result;
-  agents::ContinuousRunner runner(config, options);
-  result.outcome = runner.run(problem, grid, fewestMoves(grid, problem.start, problem.goal, Connectivity::Four),
-                              run_seed, true);
+  result.outcome = std::move(outcome);
   const std::vector<Pose2D>& poses = result.outcome.poses;
   const int steps = result.outcome.steps;
   result.stride = std::max(1, (steps + animation.max_frames - 2) / (animation.max_frames - 1));

@@ -17,6 +17,7 @@
 #include "ppp_core/ppp_file.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_core/text_format.hpp"
+#include "ppp_core/trajectory_picture.hpp"
 #include "ppp_generator/tree_html.hpp"
 #include "ppp_agents/episode_result.hpp"
 #include "ppp_simulator/report/statistics.hpp"
@@ -265,6 +266,13 @@ PictureOptions pictureOptions(const Problem& problem) {
   return options;
 }
 
+/// The picture of a run: its trajectory in continuous motion, else its cells (the cycle's pink).
+std::vector<std::uint8_t> runRgb(const Problem& ppp, const std::vector<Cell>& path, const std::vector<Cell>& cycle,
+                                 const std::optional<DrivenRun>& driven, const PictureOptions& options) {
+  if (driven) return renderTrajectoryRgb(ppp, driven->poses, driven->resolution, driven->radius, options);
+  return renderProblemRgb(ppp, path, options, cycle);
+}
+
 std::vector<Picture> makePictures(const std::vector<FailureExample>& failures, const StopCheck& stop) {
   std::vector<Picture> pictures;
   FileNames png_names;
@@ -276,7 +284,7 @@ std::vector<Picture> makePictures(const std::vector<FailureExample>& failures, c
     Picture picture;
     try {
       const PictureOptions options = pictureOptions(failure.ppp);
-      const std::vector<std::uint8_t> rgb = renderProblemRgb(failure.ppp, failure.path, options, failure.cycle);
+      const std::vector<std::uint8_t> rgb = runRgb(failure.ppp, failure.path, failure.cycle, failure.driven, options);
       picture.width = pictureWidth(failure.ppp.width, options);
       picture.height = pictureHeight(failure.ppp.height, options);
       picture.png = encodePng(rgb, picture.width, picture.height);
@@ -299,7 +307,7 @@ std::vector<Picture> makePictures(const std::vector<FailureExample>& failures, c
     if (failure.shrunk) {
       const ShrunkExample& shrunk = *failure.shrunk;
       const PictureOptions options = pictureOptions(shrunk.ppp);
-      picture.shrunk_png = encodePng(renderProblemRgb(shrunk.ppp, shrunk.path, options, shrunk.cycle),
+      picture.shrunk_png = encodePng(runRgb(shrunk.ppp, shrunk.path, shrunk.cycle, shrunk.driven, options),
                                      pictureWidth(shrunk.ppp.width, options), pictureHeight(shrunk.ppp.height, options));
       picture.shrunk_width = pictureWidth(shrunk.ppp.width, options);
       picture.shrunk_height = pictureHeight(shrunk.ppp.height, options);
@@ -337,6 +345,12 @@ std::string reasonText(const std::string& reason) {
 }
 
 std::string pathText(const FailureExample& failure) {
+  if (failure.driven && !failure.driven->poses.empty()) {
+    const Pose2D& end = failure.driven->poses.back();
+    return std::to_string(failure.driven->poses.size() - 1) + " control periods, " +
+           formatFixed(failure.driven->distance, 2) + " m driven, ending at (" + formatFixed(end.x, 2) + ", " +
+           formatFixed(end.y, 2) + ") m in the map frame, in cell " + cellText(failure.path.back());
+  }
   if (failure.path.empty()) return "no path recorded";
   std::size_t moves = 0;
   for (std::size_t i = 1; i < failure.path.size(); ++i) {
@@ -352,15 +366,32 @@ std::string pathText(const FailureExample& failure) {
 std::string animationGuide(const std::vector<FailureExample>& examples) {
   const bool animated = std::any_of(examples.begin(), examples.end(),
                                     [](const FailureExample& f) { return !f.animation_gif.empty(); });
-  if (!animated) return "";
-  return " Beside a picture, the same run step by step (where the map is small enough to animate): the agent as "
+  const bool driven = std::any_of(examples.begin(), examples.end(), [](const FailureExample& f) { return f.driven; });
+  std::string guide =
+      driven ? " A run in continuous motion is drawn as the robot centre's trajectory, with the robot's disc and a "
+               "line along its heading at its last pose."
+             : "";
+  if (!animated) return guide;
+  return guide +
+         " Beside a picture, the same run step by step (where the map is small enough to animate): the agent as "
          "an orange disc, its scan window outlined in gold with the free cells it sees yellow, cells it has not "
          "sensed or has forgotten shaded, and a magenta mark on the side of a cell for every bump (replay with "
-         "-o run.gif).";
+         "-o run.gif)" +
+         (driven ? "; in continuous motion, the robot with its heading among its laser's beams (where each meets a "
+                   "square, red)."
+                 : ".");
 }
 
 /// How to play `failure`'s run again on the PPP in `ppp_file` (its own, or its shrunk one).
+/// The shrink of the PPP in `ppp_file` through ROS for `failure`'s planner on the run's seed: it plays the run again
+/// and says whether it still fails so.
+std::string shrinkLaunchCommand(const FailureExample& failure, const std::string& ppp_file) {
+  return "roslaunch launch/shrink.launch input:=" + shellWord(ppp_file) + " agent:=" + shellWord(failure.agent) +
+         " output:=check.ppp config:=EXPERIMENT.yaml args:=\"--seed " + std::to_string(failure.seed) + "\"";
+}
+
 std::string replayCommand(const FailureExample& failure, const std::string& ppp_file) {
+  if (failure.recorded && failure.driven) return shrinkLaunchCommand(failure, ppp_file);
   if (failure.recorded) return "its moves: planner_moves.csv, run " + std::to_string(failure.run);
   const std::string flags = failure.replay_flags.empty() ? "--agent " + shellWord(failure.agent) : failure.replay_flags;
   return "ppp replay " + shellWord(ppp_file) + " " + flags + " --seed " + std::to_string(failure.seed) + " -o path.png";
@@ -370,8 +401,7 @@ std::string replayCommand(const FailureExample& failure, const std::string& ppp_
 /// through ROS) the shrink of that PPP through ROS on the run's seed, which says whether it still fails so.
 std::string shrunkReplayCommand(const FailureExample& failure, const std::string& ppp_file) {
   if (!failure.recorded) return replayCommand(failure, ppp_file);
-  return "roslaunch launch/shrink.launch input:=" + shellWord(ppp_file) + " agent:=" + shellWord(failure.agent) +
-         " output:=check.ppp config:=EXPERIMENT.yaml args:=\"--seed " + std::to_string(failure.seed) + "\"";
+  return shrinkLaunchCommand(failure, ppp_file);
 }
 
 std::string readingGuide(const ReportInput& input) {
@@ -803,7 +833,8 @@ void faultSection(const ReportInput& input, const std::vector<Picture>& pictures
   const std::string intro =
       "Per agent and set: the PPPs the agent passes in fewer than half of its runs, out of the set's PPPs. "
       "Below, every agent that fails somewhere with a failing run on its worst PPP (not the control or the random "
-      "baseline; a planner's run is drawn from its recorded moves, planner_moves.csv).";
+      "baseline; a planner's run is drawn from its recorded moves, planner_moves.csv, or in continuous motion from the "
+      "velocity commands it sent).";
   const std::string text = intro + animationGuide(input.worst);
   out->md += mdText(text) + "\n\n";
   out->html += "<p>" + escapeMarkup(text) + "</p>\n";

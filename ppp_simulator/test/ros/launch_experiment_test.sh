@@ -197,6 +197,13 @@ reasons() { grep ",$1," "$work/small/paths/results.csv" | cut -d, -f11 | sort | 
   fail "path planners in continuous motion: $(cut -d, -f3,11 "$work/small/paths/results.csv" | sort | uniq -c) $(tail "$work/small/paths.log")"
 cmp -s "$work/small/paths/results.csv" "$work/small/paths_again/results.csv" && pass || \
   fail "path planners' continuous rows differ between two launches"
+# The report draws OMPL's worst run, played again through its bridge, as a trajectory with its animation, and
+# shrinks its PPP through ROS: OMPL still collides on the shrunk one.
+ls "$work/small/paths/pictures/"*_ompl.png "$work/small/paths/pictures/"*_ompl.gif \
+  "$work/small/paths/pictures/"*_ompl_shrunk.png > /dev/null 2>&1 && \
+  grep -q "control periods, .* m driven" "$work/small/paths/report.md" && \
+  grep -q "still reported in 1 of 1 run (\`ppps/small_ppp_[0-9]*_ompl_shrunk.ppp" "$work/small/paths/report.md" && pass || \
+  fail "the report's continuous runs: $(ls "$work/small/paths/pictures/") $(grep -n 'path \|shrunk' "$work/small/paths/report.md")"
 sed 's/^robot_radius: 0.3/robot_radius: 0.5/' "$work/small/continuous.yaml" > "$work/small/fat.yaml"
 timeout 120 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/fat" \
   config:="$work/small/fat.yaml" > "$work/small/fat.log" 2>&1

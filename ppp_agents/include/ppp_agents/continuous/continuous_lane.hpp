@@ -84,6 +84,7 @@ class ContinuousLane {
     int optimal;
     ContinuousEpisode episode;
     bool started;
+    std::vector<BodyVelocity> commands;  // a planner's run: its commands so far
   };
   EpisodeResult result(const Work& work, std::uint64_t seed, int optimal, const ContinuousOutcome& outcome) const;
 
@@ -93,6 +94,7 @@ class ContinuousLane {
   AgentLane::SeedFunction seed_of_;
   int batch_size_;
   bool reads_laser_;
+  bool keeps_commands_;  // a planner: its runs cannot be replayed, so each result carries its commands
   std::deque<Work> queue_;
   std::vector<Active> active_;
   std::uint32_t next_id_ = 0;

@@ -44,6 +44,15 @@ EpisodeResult continuousResult(const PreparedSet& set, int problem, const std::s
                                std::uint64_t seed, int optimal, const ContinuousOutcome& outcome,
                                const EpisodeOptions& options);
 
+/// The run of a PPP (decoded as `grid`, with `grid_moves` fewest moves on the grid) seeded `run_seed` played again
+/// from its recorded `commands` (EpisodeResult::commands), with its poses: ended as `end_reason` where the commands
+/// run out before the world ends it (a planner's failure). @throws Error naming the agent `agent` and the seed when
+/// the commands do not give a run that ends as `end_reason` after them all.
+ContinuousOutcome recordedContinuousRun(const Problem& problem, const Grid& grid, const EpisodeOptions& options,
+                                        int grid_moves, std::uint64_t run_seed,
+                                        const std::vector<BodyVelocity>& commands, const std::string& end_reason,
+                                        const std::string& agent);
+
 /// Plays one agent configuration's runs in continuous motion in process (ContinuousEpisode), one at a time.
 class ContinuousRunner {
  public:

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "ppp_agents/agent_config.hpp"
 #include "ppp_core/continuous_episode.hpp"
@@ -36,6 +37,20 @@ struct ContinuousAnimation {
 ContinuousAnimation animateContinuousRun(const Problem& problem, const Grid& grid, const agents::AgentConfig& config,
                                          const EpisodeOptions& options, std::uint64_t run_seed,
                                          const AnimationOptions& animation = {}, const StopCheck& stop = {});
+
+/// animateContinuousRun() of a planner's run played again from its recorded `commands`, ended as `end_reason`
+/// (agents::recordedContinuousRun()). @throws as both.
+ContinuousAnimation animateRecordedContinuousRun(const Problem& problem, const Grid& grid,
+                                                 const agents::AgentConfig& config, const EpisodeOptions& options,
+                                                 std::uint64_t run_seed, const std::vector<BodyVelocity>& commands,
+                                                 const std::string& end_reason, const AnimationOptions& animation = {},
+                                                 const StopCheck& stop = {});
+
+/// Draws the run `outcome` (with its poses) of PPP `problem` (decoded as `grid`) under `options` as
+/// animateContinuousRun() does.
+ContinuousAnimation drawContinuousRun(const Problem& problem, const Grid& grid, const EpisodeOptions& options,
+                                      ContinuousOutcome outcome, const AnimationOptions& animation = {},
+                                      const StopCheck& stop = {});
 
 }  // namespace simulator
 }  // namespace ppp

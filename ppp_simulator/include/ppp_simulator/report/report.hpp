@@ -8,6 +8,7 @@
 
 #include "ppp_core/diagnosis.hpp"
 #include "ppp_core/grid.hpp"
+#include "ppp_core/kinematics.hpp"
 #include "ppp_core/problem.hpp"
 #include "ppp_core/stop.hpp"
 #include "ppp_simulator/report/detours.hpp"
@@ -18,10 +19,19 @@
 namespace ppp {
 namespace simulator {
 
+/// A run in continuous motion, drawn as the robot's trajectory rather than by its cells.
+struct DrivenRun {
+  std::vector<ppp::Pose2D> poses;  ///< The robot's pose after each control period, start first.
+  double resolution = 1;           ///< Metres per cell.
+  double radius = 0;               ///< The robot's radius, metres.
+  double distance = 0;             ///< Metres its centre travelled.
+};
+
 /// A pictured run's PPP shrunk to the smallest on which the run still fails the same way (ppp shrink).
 struct ShrunkExample {
   ppp::Problem ppp;              ///< The 1-minimal PPP; its metadata says where it came from.
   std::vector<ppp::Cell> path;   ///< The run's cells on it, from the start.
+  std::optional<DrivenRun> driven;  ///< In continuous motion: the run's trajectory, its picture.
   std::vector<ppp::Cell> cycle;  ///< A loop's cycle cells, pink on its picture; else empty.
   std::string summary;           ///< "1 of 10 descriptors, 1 of 54 obstacle cells, still loop in 1 of 1 runs".
   std::string animation_gif;     ///< The run on it frame by frame; empty when the map is too large to animate.
@@ -37,14 +47,15 @@ struct FailureExample {
   std::uint64_t seed = 0;       ///< Seed of that run.
   ppp::Problem ppp;             ///< The PPP itself.
   std::vector<ppp::Cell> path;  ///< Cells the agent stood on, in order, from the start (may be empty).
+  std::optional<DrivenRun> driven;  ///< In continuous motion: the run's trajectory, its picture (path: its cells).
   std::string reason;           ///< Why the episode ended (a reason:: constant).
   ppp::Diagnosis diagnosis;     ///< The run's diagnosis (results.csv's).
   std::vector<ppp::Cell> cycle; ///< A loop's cycle cells (cycleCells()), marked on the picture; else empty.
   std::string replay_flags;     ///< `ppp replay` flags recreating the agent configuration (e.g. "--agent explorer
                                 ///< --memory 5x5"); empty means "--agent <agent>".
   std::string animation_gif;    ///< The run frame by frame (animateEpisode's GIF bytes); empty when there is none.
-  bool recorded = false;        ///< A planner's run, drawn from its moves in planner_moves.csv (`ppp replay`
-                                ///< cannot play a planner).
+  bool recorded = false;        ///< A planner's run, drawn from its moves in planner_moves.csv or, in continuous
+                                ///< motion, from the commands it sent (`ppp replay` cannot play a planner).
   std::optional<ShrunkExample> shrunk;  ///< Its PPP shrunk, when the report shows it.
 };
 
