@@ -504,6 +504,17 @@ class InspectLaunchTest(unittest.TestCase):
         self.assertIn('/data/x.bag', players[0].args)
         self.assertIs(config.params['/use_sim_time'].value, True)
 
+    def test_rviz_shows_each_shipped_agent_in_continuous_motion_with_its_heading(self):
+        with open(os.path.join(ROOT, 'config', 'agents.yaml')) as f:
+            driven = [a['name'] for a in yaml.safe_load(f)['agents'] if a.get('motion') == 'continuous']
+        self.assertGreaterEqual(len(driven), 2)
+        with open(os.path.join(ROOT, 'launch', 'ppp.rviz')) as f:
+            displays = yaml.safe_load(f)['Visualization Manager']['Displays']
+        paths = {d['Topic']: d for d in displays if d['Class'] == 'rviz/Path'}
+        for name in driven:
+            # Its recorded path's poses, each an arrow along the robot's heading.
+            self.assertEqual(paths['/' + name + '/path']['Pose Style'], 'Arrows', name)
+
 
 class HuntLaunchTest(unittest.TestCase):
     def test_the_entry_runs_the_launcher_for_one_set(self):
