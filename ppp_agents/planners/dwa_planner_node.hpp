@@ -12,18 +12,16 @@
 // (scan_costmap.hpp, over the extent of the map the bridge publishes). It runs as a process of its own
 // (dwa_planner_node) or as the nodelet ppp_agents/DwaPlanner.
 
-#include <memory>
 #include <string>
 
-#include "dynamic_window.hpp"
+#include "dwa_planner.hpp"
 #include "planner_node_options.hpp"
-#include "scan_costmap.hpp"
 #include "velocity_planner_link.hpp"
 
 namespace ppp {
 namespace planners {
 
-/// Answers each request with the dynamic window's choice.
+/// Answers each request with DwaPlanner's choice.
 class DwaPlannerNode {
  public:
   /// @throws InvalidArgument naming a bad parameter.
@@ -35,9 +33,7 @@ class DwaPlannerNode {
   geometry_msgs::Twist command(const VelocityRequest& request);
 
   DwaNodeParameters parameters_;
-  DynamicWindow window_;
-  std::unique_ptr<ScanCostmap> costmap_;  // this episode's
-  long requests_ = 0;                     // this episode's so far
+  DwaPlanner planner_;
   VelocityPlannerLink link_;  // last: its callbacks use the members above
 };
 

@@ -11,6 +11,7 @@ add_library(ppp_planners STATIC
   planners/planner_node_options.cpp
   planners/dynamic_window.cpp
   planners/scan_costmap.cpp
+  planners/dwa_planner.cpp
 )
 set_target_properties(ppp_planners PROPERTIES POSITION_INDEPENDENT_CODE ON)  # linked into the nodelet library
 target_include_directories(ppp_planners PUBLIC planners ${ppp_core_INCLUDE_DIRS} ${CMAKE_CURRENT_SOURCE_DIR}/../ppp_msgs/include)
@@ -65,7 +66,7 @@ catkin_install_python(PROGRAMS scripts/simple_planner.py scripts/horizon_planner
                       scripts/steering_planner.py DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(test_name grid_map_test optimistic_astar_test ompl_grid_planner_test dynamic_window_test
+  foreach(test_name grid_map_test optimistic_astar_test ompl_grid_planner_test dynamic_window_test dwa_planner_test
                   scan_costmap_test)
     catkin_add_gtest(${test_name} planners/test/${test_name}.cpp)
     target_link_libraries(${test_name} ppp_planners GTest::gtest_main)
