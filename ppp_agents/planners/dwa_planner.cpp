@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "ppp_core/error.hpp"
+#include "robot_frame.hpp"
 
 namespace ppp {
 namespace planners {
@@ -41,7 +42,7 @@ BodyVelocity DwaPlanner::command(const DwaRequest& request) {
   ++requests_;
   const double east = request.goal.x - pose.x;
   const double north = request.goal.y - pose.y;
-  const MapPoint goal{cos_h * east + sin_h * north, -sin_h * east + cos_h * north};
+  const MapPoint goal = inRobotFrame(MapPoint{east, north}, heading);
   if (!std::isfinite(goal.x) || !std::isfinite(goal.y)) {
     throw InvalidArgument("goal", "a goal or pose that is not a finite point");
   }

@@ -38,11 +38,14 @@ void requirePositive(double value, const char* name) {
 DynamicWindow::DynamicWindow(const KinematicLimits& limits, double period, double radius,
                              const DynamicWindowOptions& options)
     : limits_(limits), period_(period), radius_(radius), options_(options) {
-  requirePositive(limits.max_linear_speed, "max_speed");
-  requirePositive(limits.max_angular_speed, "max_turn");
-  if (!(limits.max_linear_acceleration > 0)) throw InvalidArgument("acceleration", "expected a positive number");
+  // Named as the node's parameters and the motion options name them.
+  requirePositive(limits.max_linear_speed, "max_linear_speed");
+  requirePositive(limits.max_angular_speed, "max_angular_speed");
+  if (!(limits.max_linear_acceleration > 0)) {
+    throw InvalidArgument("max_linear_acceleration", "expected a positive number");
+  }
   if (!(limits.max_angular_acceleration > 0)) {
-    throw InvalidArgument("angular_acceleration", "expected a positive number");
+    throw InvalidArgument("max_angular_acceleration", "expected a positive number");
   }
   requirePositive(period, "control_period");
   if (!(radius >= 0) || !std::isfinite(radius)) throw InvalidArgument("robot_radius", "expected metres >= 0");

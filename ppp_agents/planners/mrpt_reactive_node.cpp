@@ -6,6 +6,7 @@
 
 #include "planner_node.hpp"
 #include "planner_node_parameters.hpp"
+#include "robot_frame.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/motion_options.hpp"
 
@@ -68,8 +69,7 @@ Heading ReactiveNode::steer(const VelocityRequest& request) {
   const double north = (request.goal.pose.position.y - robot.y) / range;
   const auto& q = request.pose.pose.pose.orientation;
   const double heading = continuous() ? 2 * std::atan2(q.z, q.w) : 0.0;
-  const MapPoint target{std::cos(heading) * east + std::sin(heading) * north,
-                        -std::sin(heading) * east + std::cos(heading) * north};
+  const MapPoint target = inRobotFrame(MapPoint{east, north}, heading);
   if (!std::isfinite(target.x) || !std::isfinite(target.y)) {
     throw InvalidArgument("goal", "a goal or pose that is not a finite point");
   }

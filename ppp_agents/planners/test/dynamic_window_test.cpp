@@ -142,10 +142,16 @@ TEST(DynamicWindowTest, BadLimitsAndOptionsAreRefusedByName) {
   };
   KinematicLimits no_speed = diffDrive();
   no_speed.max_linear_speed = 0;
-  refused(no_speed, 0.1, 0, {}, "max_speed");
+  refused(no_speed, 0.1, 0, {}, "max_linear_speed");
   KinematicLimits nan_turn = diffDrive();
   nan_turn.max_angular_speed = std::nan("");
-  refused(nan_turn, 0.1, 0, {}, "max_turn");
+  refused(nan_turn, 0.1, 0, {}, "max_angular_speed");
+  KinematicLimits no_braking = diffDrive();
+  no_braking.max_linear_acceleration = 0;
+  refused(no_braking, 0.1, 0, {}, "max_linear_acceleration");
+  KinematicLimits no_turning = diffDrive();
+  no_turning.max_angular_acceleration = -1;
+  refused(no_turning, 0.1, 0, {}, "max_angular_acceleration");
   refused(diffDrive(), 0, 0, {}, "control_period");
   refused(diffDrive(), 0.1, -1, {}, "robot_radius");
   DynamicWindowOptions options;
