@@ -26,8 +26,8 @@ packages=(
   # a network namespace of its own for the main command (unshare, ip) and the sockets check (ss); the
   # multi-machine test's second host: ssh keys, and the library Debian's sshd (unpacked below) needs
   util-linux iproute2 openssh-client libwrap0
-  # tests, benchmarks and the fuzzer
-  libgtest-dev libbenchmark-dev clang libclang-rt-14-dev
+  # tests, benchmarks and the fuzzer; valgrind sees MRPT's out-of-bounds write
+  libgtest-dev libbenchmark-dev clang libclang-rt-14-dev valgrind
   # peak memory in the scale benchmark (/usr/bin/time)
   time
   # scripts/seed_spread.py reads experiment YAML

@@ -1,15 +1,21 @@
 // MRPT's wavefront planner called from two threads at once, as two planner nodelets of one manager call it.
-// PlannerSimple2D::computePath (MRPT 2.5.8) keeps the step of its trace toward the target in function-static
-// variables (`static signed char dx = 0, dy = 0;`, libs/nav/src/planners/PlannerSimple2D.cpp line 383): a second
-// thread's trace overwrites the first's step, and the first walks off its gradient. Its path is then wrong, or it
-// never reaches the target and grows its path without bound (docs/explanation/findings.md). Unserialised, this
-// test saw 20 to 76 wrong paths and up to 5 runaway traces of 10,000 plans; MrptGridPlanner lets one plan at a time
-// into MRPT. MRPT's holonomic reactive navigators (ND, VFF, FullEval) keep their memory (ND's and FullEval's last
-// chosen sector) in each navigator object and no static data: one object per thread answers as it does alone.
+// PlannerSimple2D::computePath (MRPT 2.x, through 2.15.19) keeps the step of its trace toward the target in
+// function-static variables (`static signed char dx = 0, dy = 0;`, libs/nav/src/planners/PlannerSimple2D.cpp line
+// 383 in 2.5.8; local since 3.0.0): a second thread's trace can overwrite the first's step between its choice and
+// its use, and the first walks off its gradient. Its path is then wrong, or it never reaches the target and grows
+// its path without bound, or MRPT's own check that the step is not (0, 0) fails when one thread's dx = 0 meets
+// the other's dy = 0 (docs/explanation/findings.md).
+//
+// MRPT's race itself, without any code of ours, is mrpt_planner_race.cpp (docs/upstream/mrpt-planner-thread-race.md).
+// This test checks PPP Lab's mitigation: MrptGridPlanner lets one plan at a time into MRPT, so two threads get the
+// single-threaded paths, point for point.
+// MRPT's holonomic reactive navigators (ND, VFF, FullEval) keep their memory (ND's and FullEval's last chosen
+// sector) in each navigator object and no static data: one object per thread answers as it does alone.
 #include <sys/resource.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <set>
 #include <string>
@@ -36,6 +42,12 @@ GridMap windingMap() {
   return test::mapPicture(picture);
 }
 
+/// True when two paths have the same points, exactly.
+bool samePoints(const std::vector<MapPoint>& a, const std::vector<MapPoint>& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                    [](const MapPoint& p, const MapPoint& q) { return p.x == q.x && p.y == q.y; });
+}
+
 TEST(MrptThreadsTest, TwoThreadsPlanningAtOnceGetTheAnswersOfOneThread) {
   // A runaway trace-back throws std::bad_alloc within this limit instead of taking the machine's memory.
   const rlimit limit{2ul << 30, 2ul << 30};
@@ -54,8 +66,7 @@ TEST(MrptThreadsTest, TwoThreadsPlanningAtOnceGetTheAnswersOfOneThread) {
     for (int i = 0; i < 5000; ++i) {
       const std::size_t k = (first + i) % requests.size();
       try {
-        const std::vector<MapPoint> path = planner.plan(map, requests[k].first, requests[k].second);
-        if (path.size() != alone[k].size()) ++differing;
+        if (!samePoints(planner.plan(map, requests[k].first, requests[k].second), alone[k])) ++differing;
       } catch (const Error&) {
         ++failed;
       }
