@@ -91,23 +91,21 @@ if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(mrpt_threads_test planners/test/mrpt_threads_test.cpp)
   target_link_libraries(mrpt_threads_test ppp_planners_mrpt GTest::gtest_main)
   target_compile_options(mrpt_threads_test PRIVATE -Wall -Wextra)
-  # MRPT's wavefront planner writing outside its grid for a goal off the map, seen by valgrind: the program of the
-  # upstream report, which the test checks is the one the report shows.
-  add_executable(mrpt_goal_off_map planners/test/mrpt_goal_off_map.cpp)
-  target_link_libraries(mrpt_goal_off_map mrpt::nav)
-  target_compile_options(mrpt_goal_off_map PRIVATE -Wall -Wextra)
-  add_dependencies(tests mrpt_goal_off_map)
-  add_test(NAME mrpt_valgrind_test COMMAND /bin/bash ${CMAKE_CURRENT_SOURCE_DIR}/planners/test/mrpt_valgrind_test.sh
-           $<TARGET_FILE:mrpt_goal_off_map> ${CMAKE_CURRENT_SOURCE_DIR}/planners/test/mrpt_goal_off_map.cpp
-           ${CMAKE_CURRENT_SOURCE_DIR}/../docs/upstream/mrpt-goal-off-the-map.md)
-  # MRPT's wavefront planner from two threads with no code of ours: the program of the upstream report.
-  add_executable(mrpt_planner_race planners/test/mrpt_planner_race.cpp)
-  target_link_libraries(mrpt_planner_race mrpt::nav Threads::Threads)
-  target_compile_options(mrpt_planner_race PRIVATE -Wall -Wextra)
-  add_dependencies(tests mrpt_planner_race)
-  add_test(NAME mrpt_race_test COMMAND /bin/bash ${CMAKE_CURRENT_SOURCE_DIR}/planners/test/mrpt_race_test.sh
-           $<TARGET_FILE:mrpt_planner_race> ${CMAKE_CURRENT_SOURCE_DIR}/planners/test/mrpt_planner_race.cpp
-           ${CMAKE_CURRENT_SOURCE_DIR}/../docs/upstream/mrpt-planner-thread-race.md)
+  # MRPT's wavefront planner's defects, each shown by the program of its upstream report (docs/upstream/REPORT),
+  # which its test runs and checks the report shows line for line: a goal off the map written outside the grid
+  # (under valgrind), the thread race, and paths that are not shortest beside the change the report proposes.
+  function(upstream_report_test program test report)
+    add_executable(${program} planners/test/${program}.cpp)
+    target_link_libraries(${program} mrpt::nav Threads::Threads)
+    target_compile_options(${program} PRIVATE -Wall -Wextra)
+    add_dependencies(tests ${program})
+    add_test(NAME ${test} COMMAND /bin/bash ${CMAKE_CURRENT_SOURCE_DIR}/planners/test/${test}.sh
+             $<TARGET_FILE:${program}> ${CMAKE_CURRENT_SOURCE_DIR}/planners/test/${program}.cpp
+             ${CMAKE_CURRENT_SOURCE_DIR}/../docs/upstream/${report})
+  endfunction()
+  upstream_report_test(mrpt_goal_off_map mrpt_valgrind_test mrpt-goal-off-the-map.md)
+  upstream_report_test(mrpt_planner_race mrpt_race_test mrpt-planner-thread-race.md)
+  upstream_report_test(mrpt_planner_paths mrpt_paths_test mrpt-planner-paths.md)
   catkin_add_gtest(planner_node_parameters_test planners/test/planner_node_parameters_test.cpp)
   target_link_libraries(planner_node_parameters_test ppp_planners_ros GTest::gtest_main)
 endif()
