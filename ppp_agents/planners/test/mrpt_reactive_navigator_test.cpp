@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 #include <mrpt/math/TPoint2D.h>
+#include <mrpt/nav/holonomic/CAbstractHolonomicReactiveMethod.h>
 #include <mrpt/nav/holonomic/CHolonomicND.h>
 #include <mrpt/nav/holonomic/ClearanceDiagram.h>
 
@@ -336,6 +337,44 @@ TEST(MrptReactiveNavigatorTest, NdRemembersItsLastChoiceAndVffDoesNot) {
     } else {
       EXPECT_EQ(a, b);
     }
+  }
+}
+
+// MRPT's ND called directly, on nothing within range: the goal half the range away in each of the 72 sector
+// directions. Heading straight for it is every method's answer (VFF's and FullEval's, checked alike), and ND's
+// for 67 of the 72. For the five within two sectors of the ±π seam ND's "straight path" case is not tried
+// (CHolonomicND.cpp in 2.5.8, lines 308-321: the target sector must lie in (2, 70)), and its gaps do not wrap
+// round (lines 461-463): the open circle is one gap whose two "edges" are the seam, and ND steers to that gap's
+// representative sector, 9 sectors inside the edge nearer the target (sector 9, or 62), 7 to 9 sectors (35° to
+// 45°) off the target. The seam is where sector 0 begins: straight behind a robot given its scan in its own
+// frame, due west on the grid.
+TEST(MrptReactiveNavigatorTest, NdTurnsAwayFromAnOpenTargetWithinTwoSectorsOfItsSeam) {
+  const double sector = 2 * M_PI / kReactiveSectors;
+  for (const std::string method : {"ND", "VFF", "FullEval"}) {
+    std::vector<int> turned_away;
+    for (int k = 0; k < kReactiveSectors; ++k) {
+      const double angle = -M_PI + (k + 0.5) * sector;
+      auto navigator = mrpt::nav::CAbstractHolonomicReactiveMethod::Factory("CHolonomic" + method);
+      ASSERT_TRUE(navigator) << method;
+      mrpt::nav::ClearanceDiagram clearance;
+      mrpt::nav::CAbstractHolonomicReactiveMethod::NavInput input;
+      input.obstacles.assign(kReactiveSectors, 1.0);
+      input.targets = {mrpt::math::TPoint2D(0.5 * std::cos(angle), 0.5 * std::sin(angle))};
+      input.maxRobotSpeed = 1.0;
+      input.maxObstacleDist = 1.0;
+      input.clearance = &clearance;
+      mrpt::nav::CAbstractHolonomicReactiveMethod::NavOutput output;
+      navigator->navigate(input, output);
+      const double off = std::remainder(output.desiredDirection - angle, 2 * M_PI);
+      if (std::fabs(off) > 1e-9) {
+        turned_away.push_back(k);
+        const double representative = -M_PI + ((k < kReactiveSectors / 2 ? 9 : 62) + 0.5) * sector;
+        EXPECT_NEAR(std::remainder(output.desiredDirection - representative, 2 * M_PI), 0, 1e-9)
+            << method << " sector " << k;
+      }
+    }
+    const std::vector<int> expected = method == "ND" ? std::vector<int>{0, 1, 2, 70, 71} : std::vector<int>{};
+    EXPECT_EQ(turned_away, expected) << method;
   }
 }
 
