@@ -56,14 +56,15 @@ if [ "$skip_default" != "--skip-default" ]; then
     echo "default experiment, built-in agents, through ppp experiment: $cli s (ratio $(awk "BEGIN { printf \"%.2f\", $seconds / $cli }"))"
     cmp -s "$work/builtin/results.csv" "$work/cli/results.csv" && echo "results.csv identical" || echo "results.csv DIFFER"
   done
-  # The shipped default: the same plus the four example planners through planner_bridge_node.
+  # The shipped default: the same plus the example planners through planner_bridge_node (on the grid, and the two
+  # local ones again in continuous motion).
   cp config/agents.yaml "$work/agents.yaml"
   seconds=$(launch "$work/full" 1000 "$default_batch" true)
   echo "default experiment with the example planners through roslaunch: $seconds s"
-  grep -ho "agent '\(ompl\|optimistic\|mrpt\|mrpt_nd\)': .*episodes/s)" "$work/full.log"
+  grep -ho "agent '\(ompl\|optimistic\|mrpt\|mrpt_nd\|dwa\|mrpt_nd_continuous\|dwa_continuous\)': .*episodes/s)" "$work/full.log"
   # The planners alone (the built-in agent nodes idle): episodes per second through the bridge, unloaded.
   grep "type: planner" config/agents.yaml | sed '1i agents:' > "$work/agents.yaml"
   seconds=$(launch "$work/planners" 1000 "$default_batch" false)
-  echo "the four example planners alone, 3 runs per PPP each: $seconds s"
-  grep -ho "agent '\(ompl\|optimistic\|mrpt\|mrpt_nd\)': .*episodes/s)" "$work/planners.log"
+  echo "the example planners alone, their runs per PPP each: $seconds s"
+  grep -ho "agent '\(ompl\|optimistic\|mrpt\|mrpt_nd\|dwa\|mrpt_nd_continuous\|dwa_continuous\)': .*episodes/s)" "$work/planners.log"
 fi
