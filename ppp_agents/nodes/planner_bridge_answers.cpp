@@ -1,22 +1,10 @@
 // How the bridge turns its planner's answer, a velocity command or a path, into the robot's move.
-#include <algorithm>
-
 #include "planner_bridge.hpp"
 #include "planner_bridge_messages.hpp"
 #include "ppp_core/episode_reason.hpp"
 
 namespace ppp {
 namespace agents {
-
-namespace {
-
-/// True when two paths have the same poses.
-bool samePoints(const std::vector<MapPoint>& a, const std::vector<MapPoint>& b) {
-  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
-                    [](const MapPoint& p, const MapPoint& q) { return p.x == q.x && p.y == q.y; });
-}
-
-}  // namespace
 
 PlannerBridge::StepOutcome PlannerBridge::takeCommand(const geometry_msgs::TwistStamped& command) {
   VelocityCommand velocity;

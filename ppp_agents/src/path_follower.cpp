@@ -1,5 +1,6 @@
 #include "ppp_agents/path_follower.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 
 #include "ppp_core/error.hpp"
@@ -8,6 +9,11 @@
 
 namespace ppp {
 namespace agents {
+
+bool samePoints(const std::vector<MapPoint>& a, const std::vector<MapPoint>& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                    [](const MapPoint& p, const MapPoint& q) { return p.x == q.x && p.y == q.y; });
+}
 
 std::int8_t KnownMap::at(Cell c) const {
   if (c.x < 0 || c.y < 0 || c.x >= width || c.y >= height) return kScanOutOfBounds;

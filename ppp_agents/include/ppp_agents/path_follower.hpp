@@ -24,6 +24,9 @@ struct KnownMap {
 
 /// A planner's path, turned into one move per step: the waypoints are joined by walkMapSegment (the cells the
 /// straight segments pass through, 4-connected), the robot advances one cell of that walk per step, and the
+/// True when two paths have the same points, exactly (a planner sent the path being followed again).
+bool samePoints(const std::vector<MapPoint>& a, const std::vector<MapPoint>& b);
+
 /// follower asks for a re-plan when the robot leaves the walk or its next cell is known to be an obstacle.
 class PathFollower {
  public:

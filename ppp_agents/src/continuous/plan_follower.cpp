@@ -4,7 +4,9 @@
 #include <cmath>
 #include <utility>
 
+#include "ppp_agents/path_follower.hpp"
 #include "ppp_agents/planner_bridge_options.hpp"
+#include "ppp_agents/protocol/batch_types.hpp"
 #include "ppp_core/episode_reason.hpp"
 #include "ppp_core/sensor.hpp"
 
@@ -16,21 +18,13 @@ namespace {
 /// Points per cell at which the path ahead is checked against the map.
 constexpr int kChecksPerCell = 4;
 
-bool samePoints(const std::vector<MapPoint>& a, const std::vector<MapPoint>& b) {
-  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
-                    [](const MapPoint& p, const MapPoint& q) { return p.x == q.x && p.y == q.y; });
-}
-
 }  // namespace
 
 void PlanFollower::start(const ContinuousStart& start, const std::string& plan_requests) {
   start_ = start;
   start_.prior_map = nullptr;  // copied into prior_: the caller's grid need not outlive the run
   plan_requests_ = plan_requests;
-  prior_.clear();
-  if (start.prior_map != nullptr) {
-    for (const std::uint8_t cell : start.prior_map->cells()) prior_.push_back(cell != 0 ? kScanObstacle : kScanFree);
-  }
+  prior_ = start.prior_map != nullptr ? protocol::priorMapCells(*start.prior_map) : std::vector<std::int8_t>();
   memory_.start(start.frame, start.pose);
   asked_ = false;
   path_.clear();
