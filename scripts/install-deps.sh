@@ -13,6 +13,8 @@ packages=(
   libnodeletlib-dev libnodeletlib-tools
   python3-diagnostic-msgs python3-nav-msgs python3-geometry-msgs python3-sensor-msgs
   python3-visualization-msgs python3-tf2-msgs
+  # a local planner giving up (actionlib_msgs/GoalStatus on planner_status)
+  libactionlib-msgs-dev python3-actionlib-msgs
   # the example planners: OMPL (sampling-based planning)
   libompl-dev
   # the MRPT example planner: MRPT's navigation library (its wavefront planner for circular robots)

@@ -140,11 +140,18 @@ void ContinuousPlannerBridge::command(const ros::Time& stamp, const ContinuousSe
     }
     publish(asked, sensing, true);
   };
-  const std::optional<geometry_msgs::TwistStamped> command = link_.waitForCommand(stamp, resend);
-  if (!command) {
+  const std::optional<VelocityAnswer> answer = link_.waitForCommand(stamp, resend);
+  if (!answer) {
     reply->failure = link_.gone() ? reason::kPlannerLost : reason::kPlannerTimeout;
     return;
   }
+  if (answer->aborted) {
+    ROS_INFO_THROTTLE(5, "bridge '%s': episode %u fails as %s: the planner gave up: %s",
+                      parameters_.config.name.c_str(), episode_id_, reason::kPlannerAborted, answer->aborted->c_str());
+    reply->failure = reason::kPlannerAborted;
+    return;
+  }
+  const geometry_msgs::TwistStamped* command = &answer->command;
   const std::string& frame = command->header.frame_id;
   if (!frame.empty() && frame != parameters_.base_frame) {
     warnOnce("frame", "a command in frame '" + frame + "'; expected the robot's, '" + parameters_.base_frame + "'");

@@ -201,8 +201,10 @@ PlannerBridge::StepOutcome PlannerBridge::request() {
                 std::string("no ") + what + " within " + std::to_string(parameters_.plan_timeout) + " s");
   };
   if (commandsVelocity(parameters_)) {
-    const std::optional<geometry_msgs::TwistStamped> command = link_.waitForCommand(r.stamp, resend);
-    return command ? takeCommand(*command) : silent("velocity command");
+    const std::optional<VelocityAnswer> answer = link_.waitForCommand(r.stamp, resend);
+    if (!answer) return silent("velocity command");
+    if (answer->aborted) return fail(reason::kPlannerAborted, "the planner gave up: " + *answer->aborted);
+    return takeCommand(answer->command);
   }
   const std::optional<nav_msgs::Path> path =
       link_.waitForPath(r.stamp, [&](const nav_msgs::Path& p) { return answers(p, r.robot); }, resend);

@@ -1,5 +1,6 @@
 #include "planner_link.hpp"
 
+#include <actionlib_msgs/GoalStatus.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Odometry.h>
@@ -52,7 +53,19 @@ PlannerLink::PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters
   if (commandsVelocity(parameters_)) {
     answers_ = ppp_msgs::subscribeLockstep<geometry_msgs::TwistStamped>(
         nh_, ppp_msgs::topics::kPlannerCommand, 10,
-        [this](const geometry_msgs::TwistStamped::ConstPtr& command) { onAnswer(&commands_, *command); },
+        [this](const geometry_msgs::TwistStamped::ConstPtr& command) {
+          onAnswer(&commands_, VelocityAnswer{command->header, *command, std::nullopt});
+        },
+        queue_.get());
+    statuses_ = ppp_msgs::subscribeLockstep<actionlib_msgs::GoalStatus>(
+        nh_, ppp_msgs::topics::kPlannerStatus, 10,
+        [this](const actionlib_msgs::GoalStatus::ConstPtr& status) {
+          if (status->status != actionlib_msgs::GoalStatus::ABORTED) return;  // only giving up answers a request
+          VelocityAnswer answer;
+          answer.header.stamp = status->goal_id.stamp;
+          answer.aborted = status->text;
+          onAnswer(&commands_, answer);
+        },
         queue_.get());
   } else {
     answers_ = ppp_msgs::subscribeLockstep<nav_msgs::Path>(
@@ -200,10 +213,10 @@ std::optional<nav_msgs::Path> PlannerLink::waitForPath(const ros::Time& request,
   return waitFor(&paths_, request, fits, resend);
 }
 
-std::optional<geometry_msgs::TwistStamped> PlannerLink::waitForCommand(
-    const ros::Time& request, const std::function<void(const ros::Time&)>& resend) {
-  return waitFor<geometry_msgs::TwistStamped>(
-      &commands_, request, [](const geometry_msgs::TwistStamped&) { return true; }, resend);
+std::optional<VelocityAnswer> PlannerLink::waitForCommand(const ros::Time& request,
+                                                         const std::function<void(const ros::Time&)>& resend) {
+  return waitFor<VelocityAnswer>(
+      &commands_, request, [](const VelocityAnswer&) { return true; }, resend);
 }
 
 void PlannerLink::publishState(const ros::Time& stamp, const ros::Time& episode_stamp, const PlannerEpisode& episode,

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "geometry_msgs/TwistStamped.h"
+#include "std_msgs/Header.h"
 #include "nav_msgs/Path.h"
 #include "planner_bridge_parameters.hpp"
 #include "ppp_agents/planner_episode.hpp"
@@ -35,6 +36,13 @@ struct AnswerInbox {
     std::lock_guard<std::mutex> lock(mutex);
     used = received;
   }
+};
+
+/// A local planner's answer to a request: a velocity command, or its giving up on the goal.
+struct VelocityAnswer {
+  std_msgs::Header header;                ///< The command's; when aborted, stamped with the status's goal_id.stamp.
+  geometry_msgs::TwistStamped command;    ///< The command, unless aborted.
+  std::optional<std::string> aborted;     ///< When the planner gave up (a status ABORTED): its text.
 };
 
 /// The planner bridge's side towards the external planner (docs/reference/planner-interface.md): publishes what the robot
@@ -91,10 +99,10 @@ class PlannerLink {
   std::optional<nav_msgs::Path> waitForPath(const ros::Time& request,
                                             const std::function<bool(const nav_msgs::Path&)>& fits,
                                             const std::function<void(const ros::Time&)>& resend);
-  /// Waits up to plan_timeout for a velocity command stamped at or after `request`, as waitForPath waits for a
-  /// path (every command fits).
-  std::optional<geometry_msgs::TwistStamped> waitForCommand(const ros::Time& request,
-                                                            const std::function<void(const ros::Time&)>& resend);
+  /// Waits up to plan_timeout for a velocity command stamped at or after `request`, or a status ABORTED on
+  /// planner_status for such a goal stamp, as waitForPath waits for a path (every command fits).
+  std::optional<VelocityAnswer> waitForCommand(const ros::Time& request,
+                                               const std::function<void(const ros::Time&)>& resend);
   /// True when the planner that answered in this episode is gone: disconnected, or its process dead
   /// (asked over XML-RPC at most every 0.2 s).
   bool gone();
@@ -123,12 +131,13 @@ class PlannerLink {
   ros::Publisher tf_static_;  // /tf_static likewise
   ppp_msgs::LockstepQueue queue_;  // the answer subscription's
   ros::Subscriber answers_;  // plan or cmd_vel
+  ros::Subscriber statuses_;  // planner_status, with cmd_vel
   bool answered_ = false;     // the planner sent a path during this episode
   ros::WallTime next_probe_;  // when gone() may ask the planner's process again
 
   // Answers from the planner (written on the queue's thread): one inbox is used, as `interface` says.
   AnswerInbox<nav_msgs::Path> paths_;
-  AnswerInbox<geometry_msgs::TwistStamped> commands_;
+  AnswerInbox<VelocityAnswer> commands_;  // commands and statuses ABORTED
 };
 
 }  // namespace agents

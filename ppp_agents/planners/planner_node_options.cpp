@@ -1,5 +1,6 @@
 #include "planner_node_options.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include "ppp_core/error.hpp"
@@ -186,6 +187,34 @@ const std::vector<OptionSpec<DwaNodeParameters>>& dwaNodeOptionSpecs() {
                     +[](D& d) -> double& { return d.window.clearance_scale; }, Bounds{1e-6, 1e6}),
       declareOption("safety_margin", "metres a rollout keeps between the robot's disc and every scan return",
                     +[](D& d) -> double& { return d.window.safety_margin; }, Bounds{0, 1e6}),
+  };
+  return specs;
+}
+
+double TpSpaceNodeParameters::bodyRadius() const { return std::max(robot_radius, kTpSpaceSmallestBody); }
+
+void TpSpaceNodeParameters::validate() const { checkOptionRanges(tpSpaceNodeOptionSpecs(), *this); }
+
+const std::vector<OptionSpec<TpSpaceNodeParameters>>& tpSpaceNodeOptionSpecs() {
+  using T = TpSpaceNodeParameters;
+  static const std::vector<OptionSpec<T>> specs = {
+      declareOption("config", "an MRPT reactive navigation configuration (INI: PTGs, holonomic method, motion "
+                              "decider; empty: the shipped config/mrpt_tpspace.ini, MRPT's example)",
+                    +[](T& t) -> std::string& { return t.config; }),
+      declareOption("kinematics", "the robot the commands are for (the experiment's graph sets it in continuous motion)",
+                    +[](T& t) -> std::string& { return t.kinematics; })
+          .withChoices("kinematics", {{kKinematicsDiffDrive, "continuous motion, diff drive: linear x and angular z, "
+                                                             "as the PTGs drive"}}),
+      declareOption("max_linear_speed", "the robot's top speed, metres per second (set by the graph)",
+                    +[](T& t) -> double& { return t.max_linear_speed; }, Bounds{1e-6, kMaxMotionMagnitude}),
+      declareOption("max_angular_speed", "the robot's top turning rate, radians per second (set by the graph)",
+                    +[](T& t) -> double& { return t.max_angular_speed; }, Bounds{1e-6, kMaxMotionMagnitude}),
+      declareOption("robot_radius", "the robot's disc in metres (set by the graph); MRPT's PTGs need a body, so "
+                                    "a smaller one, a point included, is given a disc of 0.05 m, their grid's cell",
+                    +[](T& t) -> double& { return t.robot_radius; }, Bounds{0, kMaxMotionMagnitude}),
+      declareOption("target_allowed_distance", "metres from the goal at which the navigator ends its navigation "
+                                               "(below the goal tolerance, or the robot stops short of the goal)",
+                    +[](T& t) -> double& { return t.target_allowed_distance; }, Bounds{1e-3, 1e3}),
   };
   return specs;
 }

@@ -99,6 +99,27 @@ struct DwaNodeParameters {
 /// One declaration per `~` parameter of the DWA example node besides its frames.
 const std::vector<OptionSpec<DwaNodeParameters>>& dwaNodeOptionSpecs();
 
+/// Metres of the smallest body MRPT's PTGs are given (a point has none): one cell of their collision grid.
+constexpr double kTpSpaceSmallestBody = 0.05;
+
+/// What the TP-space example node (MRPT's CReactiveNavigationSystem) reads besides its frames: its configuration
+/// and the robot, which the experiment's graph sets in continuous motion from the motion options.
+struct TpSpaceNodeParameters {
+  std::string config;      ///< ~config: an MRPT reactive navigation INI file ("": the shipped one).
+  std::string kinematics;  ///< ~kinematics: diff_drive (the navigator's PTGs are for a differential drive).
+  double max_linear_speed = MotionOptions{}.max_linear_speed;    ///< ~max_linear_speed
+  double max_angular_speed = MotionOptions{}.max_angular_speed;  ///< ~max_angular_speed
+  double robot_radius = 0;                                       ///< ~robot_radius: metres.
+  /// The body the navigator is given: the robot's disc, at least kTpSpaceSmallestBody metres.
+  double bodyRadius() const;
+  double target_allowed_distance = 0.1;  ///< ~target_allowed_distance: metres from the goal the navigator stops.
+  /// @throws InvalidArgument naming the parameter out of its declared range or choices.
+  void validate() const;
+};
+
+/// One declaration per `~` parameter of the TP-space example node besides its frames.
+const std::vector<OptionSpec<TpSpaceNodeParameters>>& tpSpaceNodeOptionSpecs();
+
 /// The default ~base_frame of a node in `node_namespace`: the namespace without its leading slash, then
 /// "/base_link" ("/ompl/robot" -> "ompl/robot/base_link", "/" -> "base_link").
 std::string defaultBaseFrame(const std::string& node_namespace);

@@ -46,5 +46,9 @@ DwaNodeParameters readDwaNodeParameters(const ros::NodeHandle& private_nh) {
   return readDeclared(private_nh, dwaNodeOptionSpecs());
 }
 
+TpSpaceNodeParameters readTpSpaceNodeParameters(const ros::NodeHandle& private_nh) {
+  return readDeclared(private_nh, tpSpaceNodeOptionSpecs());
+}
+
 }  // namespace planners
 }  // namespace ppp

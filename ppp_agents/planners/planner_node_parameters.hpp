@@ -31,5 +31,8 @@ ReactiveNodeParameters readReactiveNodeParameters(const ros::NodeHandle& private
 /// The DWA example node's `~` parameters besides its frames. @throws InvalidArgument naming a bad one.
 DwaNodeParameters readDwaNodeParameters(const ros::NodeHandle& private_nh);
 
+/// The TP-space example node's `~` parameters besides its frames. @throws InvalidArgument naming a bad one.
+TpSpaceNodeParameters readTpSpaceNodeParameters(const ros::NodeHandle& private_nh);
+
 }  // namespace planners
 }  // namespace ppp

@@ -23,7 +23,7 @@ target_compile_options(ppp_planners PRIVATE -Wall -Wextra)
 # MRPT's wavefront planner and holonomic reactive navigators, in a library of their own so only their nodes and
 # tests link MRPT.
 add_library(ppp_planners_mrpt STATIC planners/mrpt_grid_planner.cpp planners/mrpt_reactive_navigator.cpp
-            planners/mrpt_laser.cpp)
+            planners/mrpt_laser.cpp planners/mrpt_tpspace_navigator.cpp)
 set_target_properties(ppp_planners_mrpt PROPERTIES POSITION_INDEPENDENT_CODE ON)
 target_link_libraries(ppp_planners_mrpt PUBLIC ppp_planners mrpt::nav)
 target_compile_options(ppp_planners_mrpt PRIVATE -Wall -Wextra)
@@ -37,7 +37,11 @@ target_include_directories(ppp_planners_ros SYSTEM PUBLIC ${catkin_INCLUDE_DIRS}
 target_link_libraries(ppp_planners_ros PUBLIC ppp_planners ${catkin_LIBRARIES})
 target_compile_options(ppp_planners_ros PRIVATE -Wall -Wextra)
 add_dependencies(ppp_planners_ros ${catkin_EXPORTED_TARGETS})
-add_library(ppp_planners_mrpt_ros STATIC planners/mrpt_planner_node.cpp planners/mrpt_reactive_node.cpp)
+add_library(ppp_planners_mrpt_ros STATIC planners/mrpt_planner_node.cpp planners/mrpt_reactive_node.cpp
+  planners/mrpt_tpspace_node.cpp)
+# The TP-space node's configuration when its ~config is empty: MRPT's example, as shipped in config/.
+set_source_files_properties(planners/mrpt_tpspace_node.cpp PROPERTIES COMPILE_DEFINITIONS
+  PPP_TPSPACE_DEFAULT_CONFIG="${CMAKE_CURRENT_SOURCE_DIR}/../config/mrpt_tpspace.ini")
 set_target_properties(ppp_planners_mrpt_ros PROPERTIES POSITION_INDEPENDENT_CODE ON)
 target_link_libraries(ppp_planners_mrpt_ros PUBLIC ppp_planners_ros ppp_planners_mrpt)
 target_compile_options(ppp_planners_mrpt_ros PRIVATE -Wall -Wextra)
@@ -48,7 +52,7 @@ foreach(node optimistic_planner ompl_planner dwa_planner)
   target_link_libraries(${node}_node ppp_planners_ros)
   target_compile_options(${node}_node PRIVATE -Wall -Wextra)
 endforeach()
-foreach(node mrpt_planner mrpt_reactive)
+foreach(node mrpt_planner mrpt_reactive mrpt_tpspace)
   add_executable(${node}_node planners/${node}_main.cpp)
   target_link_libraries(${node}_node ppp_planners_mrpt_ros)
   target_compile_options(${node}_node PRIVATE -Wall -Wextra)
@@ -58,7 +62,7 @@ add_library(ppp_planners_nodelets planners/planner_nodelets.cpp)
 target_link_libraries(ppp_planners_nodelets ppp_planners_mrpt_ros)
 target_compile_options(ppp_planners_nodelets PRIVATE -Wall -Wextra)
 
-install(TARGETS optimistic_planner_node ompl_planner_node dwa_planner_node mrpt_planner_node mrpt_reactive_node ppp_planners_nodelets
+install(TARGETS optimistic_planner_node ompl_planner_node dwa_planner_node mrpt_planner_node mrpt_reactive_node mrpt_tpspace_node ppp_planners_nodelets
   RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION}
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 # simple_planner.py, and two variants of it with a classic, rare fault each, for hunting
@@ -76,6 +80,11 @@ if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(mrpt_grid_planner_test planners/test/mrpt_grid_planner_test.cpp)
   target_link_libraries(mrpt_grid_planner_test ppp_planners_mrpt GTest::gtest_main)
   target_compile_options(mrpt_grid_planner_test PRIVATE -Wall -Wextra)
+  catkin_add_gtest(mrpt_tpspace_navigator_test planners/test/mrpt_tpspace_navigator_test.cpp)
+  target_link_libraries(mrpt_tpspace_navigator_test ppp_planners_mrpt ppp_agents GTest::gtest_main)
+  target_compile_definitions(mrpt_tpspace_navigator_test PRIVATE
+    PPP_TPSPACE_CONFIG="${CMAKE_CURRENT_SOURCE_DIR}/../config/mrpt_tpspace.ini")
+  target_compile_options(mrpt_tpspace_navigator_test PRIVATE -Wall -Wextra)
   catkin_add_gtest(mrpt_reactive_navigator_test planners/test/mrpt_reactive_navigator_test.cpp)
   target_link_libraries(mrpt_reactive_navigator_test ppp_planners_mrpt ppp_agents GTest::gtest_main)
   target_compile_options(mrpt_reactive_navigator_test PRIVATE -Wall -Wextra)

@@ -1,5 +1,6 @@
 #include "velocity_planner_link.hpp"
 
+#include <actionlib_msgs/GoalStatus.h>
 #include <boost/make_shared.hpp>
 #include <geometry_msgs/TwistStamped.h>
 
@@ -39,6 +40,7 @@ VelocityPlannerLink::VelocityPlannerLink(ros::NodeHandle& nh, const PlannerFrame
     : frames_(frames), continuous_(continuous), answer_(std::move(answer)), queue_(in_network_thread) {
   namespace names = ppp_msgs::topics;
   command_ = nh.advertise<geometry_msgs::TwistStamped>(names::kPlannerCommand, 10);
+  status_ = nh.advertise<actionlib_msgs::GoalStatus>(names::kPlannerStatus, 10);
   scan_ = ppp_msgs::subscribeLockstep<sensor_msgs::LaserScan>(
       nh, names::kPlannerScan, 10, [this](const sensor_msgs::LaserScan::ConstPtr& m) { onScan(m); }, queue_.get());
   odom_ = ppp_msgs::subscribeLockstep<nav_msgs::Odometry>(
@@ -125,6 +127,13 @@ void VelocityPlannerLink::respond(const ros::Time& stamp, const sensor_msgs::Las
   command->header.frame_id = frames_.base_frame;
   try {
     command->twist = answer_(VelocityRequest{scan, pose, goal, *map_message_, new_episode});
+  } catch (const GoalAbandoned& e) {
+    auto status = boost::make_shared<actionlib_msgs::GoalStatus>();
+    status->goal_id.stamp = stamp;
+    status->status = actionlib_msgs::GoalStatus::ABORTED;
+    status->text = e.what();
+    ppp_msgs::publishHandingOver(status_, status);
+    return;
   } catch (const Error& e) {
     ROS_ERROR_THROTTLE(5, "the robot stays: %s", e.what());
   }

@@ -13,6 +13,9 @@
 //   publishes   cmd_vel (geometry_msgs/TwistStamped)       on the grid stamped with the goal's stamp; in continuous
 //                                                          motion one command per control period, stamped with its
 //                                                          scan's, as soon as its scan and odometry are in
+//               planner_status (actionlib_msgs/GoalStatus) instead of the command when the node gives up on its
+//                                                          goal: ABORTED, its goal_id stamped as the command would
+//                                                          be, the reason as text
 // Topics are relative: the node runs in the bridge's robot namespace (/G/robot).
 
 #include <geometry_msgs/PoseStamped.h>
@@ -28,6 +31,7 @@
 #include <string>
 
 #include "planner_node_options.hpp"
+#include "ppp_core/error.hpp"
 #include "ppp_msgs/lockstep_queue.h"
 
 namespace ppp {
@@ -42,10 +46,18 @@ struct VelocityRequest {
   bool new_episode;  ///< The first request of an episode (the map's map_load_time changed).
 };
 
+/// Thrown by a node's answer when it gives up on its goal: the link answers with a status ABORTED whose text is the
+/// message, and the run ends as planner_aborted.
+class GoalAbandoned : public Error {
+ public:
+  using Error::Error;
+};
+
 /// The lockstep plumbing of a local planner node; the node says how it answers.
 class VelocityPlannerLink {
  public:
-  /// The command for a request; an Error thrown leaves the robot standing (logged).
+  /// The command for a request; GoalAbandoned thrown gives up on the goal, another Error leaves the robot standing
+  /// (logged).
   using Answer = std::function<geometry_msgs::Twist(const VelocityRequest&)>;
 
   /// Subscribes in `nh`'s namespace. `continuous`: the robot moves continuously (the periods ask, not goals).
@@ -80,6 +92,7 @@ class VelocityPlannerLink {
   ros::Time answered_;                              // continuous motion: the last period answered
   ros::Time episode_;                               // the map_load_time of the episode being played
   ros::Publisher command_;
+  ros::Publisher status_;
   ppp_msgs::LockstepQueue queue_;  // before the subscriptions: they unsubscribe first
   ros::Subscriber scan_, odom_, map_, goal_;
 };

@@ -429,7 +429,7 @@ TEST(AgentConfigTest, LoadRejectsUnknownTopLevelKeysAndMissingFiles) {
   EXPECT_THROW(loadAgentConfigs(path + ".missing"), IoError);
 }
 
-TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgentsAndSevenPlannerEntries) {
+TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgentsAndEightPlannerEntries) {
   const auto configs = loadAgentConfigs(std::string(PPP_CONFIG_DIR) + "/agents.yaml");
   struct Expected {
     const char* name;
@@ -455,6 +455,7 @@ TEST(AgentConfigTest, ShippedConfigurationLoadsTheTenAgentsAndSevenPlannerEntrie
       {"dwa", "planner", 0, 0.0},
       {"mrpt_nd_continuous", "planner", 0, 0.0},
       {"dwa_continuous", "planner", 0, 0.0},
+      {"mrpt_tpspace", "planner", 0, 0.0},
   };
   ASSERT_EQ(configs.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {

@@ -64,9 +64,11 @@ TEST(BatchCodecTest, TheWiresReasonConstantsAreTheCoresReasons) {
   EXPECT_EQ(ppp_msgs::EpisodeFailure::INVALID_COMMAND, reason::kInvalidCommand);
   EXPECT_EQ(ppp_msgs::EpisodeFailure::PLANNER_TIMEOUT, reason::kPlannerTimeout);
   EXPECT_EQ(ppp_msgs::EpisodeFailure::PLANNER_LOST, reason::kPlannerLost);
+  EXPECT_EQ(ppp_msgs::EpisodeFailure::PLANNER_ABORTED, reason::kPlannerAborted);
   for (const std::string& wire : {ppp_msgs::EpisodeFailure::NO_PATH, ppp_msgs::EpisodeFailure::INVALID_PATH,
                                   ppp_msgs::EpisodeFailure::INVALID_COMMAND,
-                                  ppp_msgs::EpisodeFailure::PLANNER_TIMEOUT, ppp_msgs::EpisodeFailure::PLANNER_LOST}) {
+                                  ppp_msgs::EpisodeFailure::PLANNER_TIMEOUT, ppp_msgs::EpisodeFailure::PLANNER_LOST,
+                                  ppp_msgs::EpisodeFailure::PLANNER_ABORTED}) {
     ASSERT_NE(reason::agentReportedReason(wire), nullptr) << wire;
     EXPECT_EQ(reason::agentReportedReason(wire), wire);
   }

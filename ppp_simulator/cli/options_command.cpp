@@ -107,7 +107,11 @@ std::string optionsReference() {
       << "\n`dwa_planner_node` (a dynamic-window local planner answering on `cmd_vel`) reads the frames above and\n"
       << "the robot's description, which the experiment's graph sets in continuous motion from the motion options\n"
       << "(on the grid the window samples standing and the four moves), and its window's weights:\n\n"
-      << optionsMarkdownTable(planners::dwaNodeOptionSpecs(), planners::DwaNodeParameters{}, &parameter);
+      << optionsMarkdownTable(planners::dwaNodeOptionSpecs(), planners::DwaNodeParameters{}, &parameter)
+      << "\n`mrpt_tpspace_node` (MRPT's TP-space navigator, a local planner answering on `cmd_vel` in continuous\n"
+      << "motion only) reads the frames above, its configuration and the robot's description, which the experiment's\n"
+      << "graph sets from the motion options:\n\n"
+      << optionsMarkdownTable(planners::tpSpaceNodeOptionSpecs(), planners::TpSpaceNodeParameters{}, &parameter);
   return out.str();
 }
 

@@ -208,7 +208,7 @@ class DefaultGraphTest(unittest.TestCase):
 
     def test_one_bridge_and_its_planner_per_instance_of_a_planner_agent(self):
         planners = [a for a in self.agents if a['type'] == 'planner']
-        self.assertEqual(len(planners), 7)
+        self.assertEqual(len(planners), 8)
         bridges = sorted(n.namespace for n in self.config.nodes if role(n) == 'planner_bridge_node')
         self.assertEqual(bridges, sorted(ns for a in planners for ns in instance_namespaces(a['name'], CORES)))
         for agent in planners:
@@ -282,8 +282,8 @@ class DefaultGraphTest(unittest.TestCase):
         config, _ = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--processes', 'own')
         types = sorted(set(n.type for n in config.nodes))
         self.assertEqual(types, ['agent_node', 'dwa_planner_node', 'generator_node', 'mrpt_planner_node',
-                                 'mrpt_reactive_node', 'ompl_planner_node', 'optimistic_planner_node',
-                                 'planner_bridge_node', 'simulator_node'])
+                                 'mrpt_reactive_node', 'mrpt_tpspace_node', 'ompl_planner_node',
+                                 'optimistic_planner_node', 'planner_bridge_node', 'simulator_node'])
         self.assertEqual([n.name for n in config.nodes if n.required], ['simulator'])
         self.assertEqual(config.params['/simulator/batch_size'].value, 2000)  # round trips between processes
         given, _ = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--batch-size', '7')
@@ -320,6 +320,7 @@ class DefaultGraphTest(unittest.TestCase):
             [(ns + 'robot/', 'mrpt_planner_node') for ns in instance_namespaces('mrpt', CORES)] +
             [(ns + 'robot/', 'mrpt_reactive_node') for name in ('mrpt_nd', 'mrpt_nd_continuous')
              for ns in instance_namespaces(name, CORES)] +
+            [(ns + 'robot/', 'mrpt_tpspace_node') for ns in instance_namespaces('mrpt_tpspace', CORES)] +
             [(ns + 'robot/', 'simple_planner.py') for ns in instance_namespaces('optimistic', CORES)]))
         # A planner of the user's runs as a process of its own; its bridge joins the manager.
         simple = [n for n in config.nodes if n.namespace.endswith('/robot/') and role(n) == 'simple_planner.py']

@@ -17,13 +17,13 @@ const char* reasonAmong(const std::string& text, std::initializer_list<const cha
 }  // namespace
 
 const char* reason::agentReportedReason(const std::string& text) {
-  return reasonAmong(text, {kNoPath, kInvalidPath, kInvalidCommand, kPlannerTimeout, kPlannerLost});
+  return reasonAmong(text, {kNoPath, kInvalidPath, kInvalidCommand, kPlannerTimeout, kPlannerLost, kPlannerAborted});
 }
 
 const char* reason::reasonNamed(const std::string& text) {
   return reasonAmong(text, {kGoalReached, kBudgetExhausted, kActionLimit, kTimeout, kAgentLost, kInvalidAction,
                             kNoPath, kInvalidPath, kInvalidCommand, kPlannerTimeout, kPlannerLost,
-                            kCollision});
+                            kPlannerAborted, kCollision});
 }
 
 }  // namespace ppp

@@ -47,6 +47,8 @@ constexpr const char* kPlannerScan = "scan";               ///< sensor_msgs/Lase
 constexpr const char* kPlannerGoal = "move_base_simple/goal";  ///< geometry_msgs/PoseStamped, bridge -> planner.
 constexpr const char* kPlannerPath = "plan";               ///< nav_msgs/Path, planner -> bridge.
 constexpr const char* kPlannerCommand = "cmd_vel";         ///< geometry_msgs/TwistStamped, local planner -> bridge.
+/// actionlib_msgs/GoalStatus, local planner -> bridge: ABORTED instead of a command when it gives up.
+constexpr const char* kPlannerStatus = "planner_status";
 constexpr const char* kPlannerRobotRadius = "robot_radius";  ///< Parameter: the robot's radius in metres.
 constexpr const char* kPlannerFootprint = "footprint";       ///< Parameter: its footprint polygon, [[x, y], ...].
 /// rosgraph_msgs/Clock, bridge -> planner in continuous motion: the episode's simulated time (the planner's /clock

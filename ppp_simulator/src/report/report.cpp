@@ -341,6 +341,12 @@ std::string reasonText(const std::string& reason) {
   if (reason == reason::kAgentLost) return "the agent process went away";
   if (reason == reason::kInvalidAction) return "the agent sent an unusable action";
   if (reason == reason::kCollision) return "the planner drove the robot's body into an obstacle";
+  if (reason == reason::kNoPath) return "the planner found no path";
+  if (reason == reason::kInvalidPath) return "the planner's path was unusable";
+  if (reason == reason::kInvalidCommand) return "the planner's velocity command was unusable";
+  if (reason == reason::kPlannerTimeout) return "the planner did not answer in time";
+  if (reason == reason::kPlannerLost) return "the planner's process went away";
+  if (reason == reason::kPlannerAborted) return "the planner gave up on the goal";
   return "";
 }
 

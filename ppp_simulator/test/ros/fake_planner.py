@@ -9,7 +9,8 @@
 ~marker  file that records the death in die_once mode (required there)
 ~answer  path (default) or cmd_vel: a local planner answering each goal with a geometry_msgs/TwistStamped on
          cmd_vel stamped with the goal's stamp, in modes silent, straight (the velocity points at the goal),
-         follow (towards the next cell of simple_planner.py's path), nan (linear.x NaN) and fast (5,000 m/s)
+         follow (towards the next cell of simple_planner.py's path), nan (linear.x NaN), fast (5,000 m/s) and
+         give_up (an actionlib_msgs/GoalStatus ABORTED on planner_status instead of a command)
 """
 import math
 import os
@@ -18,6 +19,7 @@ import sys
 
 import rospkg
 import rospy
+from actionlib_msgs.msg import GoalStatus
 from geometry_msgs.msg import PoseStamped, TwistStamped
 from nav_msgs.msg import OccupancyGrid, Odometry, Path
 
@@ -30,7 +32,7 @@ class FakePlanner:
         self.mode = rospy.get_param("~mode")
         self.answer = rospy.get_param("~answer", "path")
         modes = {"path": ("silent", "straight", "unstamped", "die_once"),
-                 "cmd_vel": ("silent", "straight", "follow", "nan", "fast")}
+                 "cmd_vel": ("silent", "straight", "follow", "nan", "fast", "give_up")}
         if self.answer not in modes:
             raise SystemExit("~answer: expected path or cmd_vel, got %r" % self.answer)
         if self.mode not in modes[self.answer]:
@@ -44,6 +46,7 @@ class FakePlanner:
         self.map = None
         if self.answer == "cmd_vel":
             self.command = rospy.Publisher("cmd_vel", TwistStamped, queue_size=10)
+            self.status = rospy.Publisher("planner_status", GoalStatus, queue_size=10)
         else:
             self.plan = rospy.Publisher("plan", Path, queue_size=10)
         rospy.Subscriber("odom", Odometry, self.on_odom, tcp_nodelay=True)
@@ -69,6 +72,11 @@ class FakePlanner:
         if not self.ready(goal.header.stamp):
             return
         pose = self.odom.pose.pose
+        if self.answer == "cmd_vel" and self.mode == "give_up":
+            status = GoalStatus(status=GoalStatus.ABORTED, text="no way through")
+            status.goal_id.stamp = goal.header.stamp
+            self.status.publish(status)
+            return
         if self.answer == "cmd_vel":
             self.command.publish(self.velocity(goal, pose))
             return

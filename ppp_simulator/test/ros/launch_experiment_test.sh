@@ -170,8 +170,10 @@ diff <(grep ',mrpt_nd,' "$work/small/nd/results.csv") <(grep ',mrpt_nd,' "$work/
   pass || fail "ND's grid rows changed beside its continuous entry"
 # Path planners in continuous motion: the robot follows their paths by pure pursuit, re-planning as plan_requests
 # says. An optimistic A* on the map the robot's laser builds passes wherever astar does; OMPL planning for a point
-# on the true map shortcuts past corners the disc of 0.2 m hits, and passes once its map is inflated by the body;
-# a second launch gives the same rows.
+# on the true map shortcuts past corners the disc of 0.2 m hits, and passes once its map is inflated by the body.
+# Beside them MRPT's TP-space navigator, two instances sharing its runs: each run ends as the navigator drove it
+# (reached, collided, or given up: planner_aborted), none lost or timed out. A second launch gives the same rows
+# (the TP-space navigator is new at each episode, on the robot's clock).
 cat > "$work/small/paths.yaml" <<'EOF2'
 seed: 3
 runs: 1
@@ -182,6 +184,7 @@ agents:
   - {name: optimistic, type: planner, plan_requests: on_change, planner_node: ppp_agents/optimistic_planner_node}
   - {name: ompl, type: planner, prior_map: true, plan_requests: on_blocked, planner_node: ppp_agents/ompl_planner_node}
   - {name: ompl_inflated, type: planner, prior_map: true, plan_requests: on_blocked, cells_per_ppp_cell: 4, planner_node: ppp_agents/ompl_planner_node, planner_args: "_inflation:=1"}
+  - {name: tpspace, type: planner, interface: cmd_vel, planner_node: ppp_agents/mrpt_tpspace_node, instances: 2}
 sets:
   - name: small
     generator: {fitness: turns, population: 10, matings: 100, width: 12, height: 12, seed: 2}
@@ -193,10 +196,11 @@ done
 reasons() { grep ",$1," "$work/small/paths/results.csv" | cut -d, -f11 | sort | uniq -c | tr -s ' ' | tr '\n' ' '; }
 [ "$(reasons astar)" = " 10 goal_reached " ] && [ "$(reasons optimistic)" = " 10 goal_reached " ] && \
   [ "$(reasons ompl_inflated)" = " 10 goal_reached " ] && reasons ompl | grep -q collision && \
-  ! grep -q -e planner_ -e agent_lost "$work/small/paths/results.csv" && pass || \
+  [ "$(grep -c ',tpspace,' "$work/small/paths/results.csv")" -eq 10 ] && reasons tpspace | grep -q planner_aborted && \
+  ! grep -q -e planner_timeout -e planner_lost -e agent_lost "$work/small/paths/results.csv" && pass || \
   fail "path planners in continuous motion: $(cut -d, -f3,11 "$work/small/paths/results.csv" | sort | uniq -c) $(tail "$work/small/paths.log")"
 cmp -s "$work/small/paths/results.csv" "$work/small/paths_again/results.csv" && pass || \
-  fail "path planners' continuous rows differ between two launches"
+  fail "path planners' and the TP-space navigator's continuous rows differ between two launches"
 # The report draws OMPL's worst run, played again through its bridge, as a trajectory with its animation, and
 # shrinks its PPP through ROS: OMPL still collides on the shrunk one.
 ls "$work/small/paths/pictures/"*_ompl.png "$work/small/paths/pictures/"*_ompl.gif \
@@ -288,7 +292,7 @@ cp "$root/config/agents.yaml" "$root/config/generator.yaml" "$work/"
 timeout 600 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/out" config:="$work/experiment.yaml" \
   > "$work/launch.log" 2>&1
 rows=$(($(wc -l < "$work/out/results.csv") - 1))
-expected=$((3 * 60 * (10 * 2 + 5 * 3 + 2 * 1)))
+expected=$((3 * 60 * (10 * 2 + 5 * 3 + 3 * 1)))
 [ "$rows" -eq "$expected" ] && pass || fail "results.csv has $rows rows, expected $expected: $(tail -20 "$work/launch.log")"
 for f in summary.csv report.html report.md experiment.bag sets/turns/tree.html sets/difficulty/set.csv sets/hunted/set.csv; do
   [ -s "$work/out/$f" ] && pass || fail "the launched experiment did not write $f"
@@ -352,7 +356,7 @@ unmatched=$(awk -F, 'NR == FNR { if (FNR > 1) moves[$1 "," $2 "," $3 "," $4] = l
 
 # The same experiment in process gives the same rows (it runs no planner agents).
 "$devel/lib/ppp_simulator/ppp" experiment "$work/experiment.yaml" -o "$work/cli" --quiet > /dev/null 2>&1
-grep -v ",ompl,\|,optimistic,\|,mrpt,\|,mrpt_nd,\|,dwa,\|,mrpt_nd_continuous,\|,dwa_continuous," "$work/out/results.csv" > "$work/ros_built_in.csv"
+grep -v ",ompl,\|,optimistic,\|,mrpt,\|,mrpt_nd,\|,dwa,\|,mrpt_nd_continuous,\|,dwa_continuous,\|,mrpt_tpspace," "$work/out/results.csv" > "$work/ros_built_in.csv"
 cmp -s "$work/ros_built_in.csv" "$work/cli/results.csv" && pass || fail "roslaunch and ppp experiment results differ"
 
 # rviz, headless, on the recorded bag: the picture must show the map (pixels checked, not just a file).

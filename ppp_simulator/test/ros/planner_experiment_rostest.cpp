@@ -49,7 +49,7 @@ TEST(PlannerExperimentTest, ExamplePlannersPassAndFaultyPlannersFailWithTheirRea
   std::string out;
   auto rows = runExperiment("planners", "planner_experiment.yaml", &out);
   attachPlannerMoves(out + "/" + kPlannerMovesFile, &rows);
-  ASSERT_EQ(rows.size(), 3u * 2 * 8 + 3u * 11);  // 3 maps; 8 agents of 2 runs, 11 of 1
+  ASSERT_EQ(rows.size(), 3u * 2 * 8 + 3u * 12);  // 3 maps; 8 agents of 2 runs, 12 of 1
   auto r = reasons(rows);
   for (const char* map : {"open", "wall", "hidden"}) {
     // OMPL plans on the true map; the optimistic re-planner starts blind and must find the route behind the
@@ -64,13 +64,14 @@ TEST(PlannerExperimentTest, ExamplePlannersPassAndFaultyPlannersFailWithTheirRea
     EXPECT_EQ(r["unstamped_free"][map]["goal_reached"], 1) << map;
   }
   // Local planners: steering along a path passes; steering straight at the goal passes the open map and pushes
-  // against the wall of the others until the budget is spent; a silent, a NaN and an absurdly fast command fail
-  // with their reasons.
+  // against the wall of the others until the budget is spent; a silent, a NaN and an absurdly fast command, and a
+  // planner giving up (a status ABORTED), fail with their reasons.
   for (const char* map : {"open", "wall", "hidden"}) {
     EXPECT_EQ(r["cmd_vel_follow"][map]["goal_reached"], 2) << map;
     EXPECT_EQ(r["cmd_vel_silent"][map]["planner_timeout"], 1) << map;
     EXPECT_EQ(r["cmd_vel_nan"][map]["invalid_command"], 1) << map;
     EXPECT_EQ(r["cmd_vel_fast"][map]["invalid_command"], 1) << map;
+    EXPECT_EQ(r["cmd_vel_give_up"][map]["planner_aborted"], 1) << map;
   }
   EXPECT_EQ(r["cmd_vel_straight"]["open"]["goal_reached"], 1);
   EXPECT_EQ(r["cmd_vel_straight"]["wall"]["budget_exhausted"], 1);

@@ -19,8 +19,10 @@ constexpr const char* kInvalidPath = "invalid_path";          ///< Fail (planner
 constexpr const char* kInvalidCommand = "invalid_command";
 constexpr const char* kPlannerTimeout = "planner_timeout";    ///< Fail (planner): no path in time.
 constexpr const char* kPlannerLost = "planner_lost";          ///< Fail (planner): its process went away.
+/// Fail (local planner): it gave up on its goal (an actionlib_msgs/GoalStatus ABORTED instead of a command).
+constexpr const char* kPlannerAborted = "planner_aborted";
 constexpr const char* kCollision = "collision";  ///< Fail (planner, robot with a body): it drove into an obstacle.
-/// The reason constant equal to `text` among those an agent may report itself (the four planner ones), or
+/// The reason constant equal to `text` among those an agent may report itself (the planner ones), or
 /// nullptr.
 const char* agentReportedReason(const std::string& text);
 /// The reason constant equal to `text` among all of them, or nullptr.
