@@ -289,7 +289,7 @@ grep -qF -- "--agent: the config has no agent 'nobody'; it has: wall_follower_le
 
 sed 's/^runs: 1000 .*/runs: 2/' "$root/config/experiment.yaml" > "$work/experiment.yaml"
 cp "$root/config/agents.yaml" "$root/config/generator.yaml" "$work/"
-timeout 600 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/out" config:="$work/experiment.yaml" \
+timeout 900 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/out" config:="$work/experiment.yaml" \
   > "$work/launch.log" 2>&1
 rows=$(($(wc -l < "$work/out/results.csv") - 1))
 expected=$((3 * 60 * (10 * 2 + 5 * 3 + 3 * 1)))
