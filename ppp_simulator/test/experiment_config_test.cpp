@@ -35,8 +35,8 @@ TEST(ExperimentConfigTest, ShippedDefaultExperiment) {
   EXPECT_EQ(c.sets[2].generator->fitness, "failure");
   EXPECT_EQ(c.sets[2].generator->agents, (std::vector<std::string>{"wall_follower_left", "explorer", "bumper"}));
   EXPECT_EQ(c.sets[2].generator->runs_per_eval, 20);
-  // The ten built-in agents, five example planners on the grid and the two local ones in continuous motion.
-  ASSERT_EQ(c.agents.size(), 17u);
+  // The ten built-in agents, five example planners on the grid and three local ones in continuous motion.
+  ASSERT_EQ(c.agents.size(), 18u);
   EXPECT_EQ(c.agents[6].name, "explorer_memory_5x5");
   EXPECT_EQ(c.agents[6].memory_window, 5);
   EXPECT_EQ(c.agents[7].sensor_noise, 0.1);
@@ -50,7 +50,8 @@ TEST(ExperimentConfigTest, ShippedDefaultExperiment) {
   EXPECT_EQ(c.agents[14].planner_node, "ppp_agents/dwa_planner_node");
   EXPECT_EQ(c.agents[15].planner_node, "ppp_agents/mrpt_reactive_node");
   EXPECT_EQ(c.agents[16].planner_node, "ppp_agents/dwa_planner_node");
-  for (int a : {15, 16}) {
+  EXPECT_EQ(c.agents[17].planner_node, "ppp_agents/mrpt_tpspace_node");
+  for (int a : {15, 16, 17}) {
     EXPECT_TRUE(agents::playsContinuously(c.agents[a], c.episode)) << a;
     EXPECT_EQ(c.agents[a].runs, 1) << a;
   }
@@ -59,21 +60,21 @@ TEST(ExperimentConfigTest, ShippedDefaultExperiment) {
 TEST(ExperimentConfigTest, WorkOfTheDefaultExperimentAndTheLimit) {
   ExperimentConfig c = loadExperimentConfig(PPP_CONFIG_DIR "/experiment.yaml");
   const ExperimentWork work = estimateWork(c);
-  // 3 sets x 60 PPPs x (10 agents x 1000 runs + 5 planners x 3 runs + 2 planners in continuous motion x 1 run).
-  EXPECT_EQ(work.episodes, 3.0 * 60 * (10 * 1000 + 5 * 3 + 2 * 1));
+  // 3 sets x 60 PPPs x (10 agents x 1000 runs + 5 planners x 3 runs + 3 planners in continuous motion x 1 run).
+  EXPECT_EQ(work.episodes, 3.0 * 60 * (10 * 1000 + 5 * 3 + 3 * 1));
   // The hunt: (60 initial PPPs + 2 children x 10,000 matings) x 3 panel agents x 20 runs.
   EXPECT_EQ(work.hunt_episodes, (60.0 + 2 * 10000) * 3 * 20);
   EXPECT_EQ(work.matings, 30000.0);
   EXPECT_NO_THROW(checkWork(work, false));
-  EXPECT_EQ(workSummary(work), "1803060 episodes, 1203600 more while hunting, 30000 matings, results.csv about 163 MB");
-  // 56 times the runs: 100,803,060 episodes, above 1e8 (the planners keep their own runs).
+  EXPECT_EQ(workSummary(work), "1803240 episodes, 1203600 more while hunting, 30000 matings, results.csv about 163 MB");
+  // 56 times the runs: 100,803,240 episodes, above 1e8 (the planners keep their own runs).
   c.runs = 56 * 1000;
   const ExperimentWork large = estimateWork(c);
   try {
     checkWork(large, false);
     ADD_FAILURE() << "a large experiment was not refused";
   } catch (const InvalidArgument& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("work: a large experiment (more than 1e8 episodes): 100803060 episodes", 0), 0u)
+    EXPECT_EQ(std::string(e.what()).rfind("work: a large experiment (more than 1e8 episodes): 100803240 episodes", 0), 0u)
         << e.what();
   }
   EXPECT_NO_THROW(checkWork(large, true));
