@@ -77,10 +77,8 @@ void ContinuousPlannerBridge::onSensing(const ppp_msgs::SensingBatch::ConstPtr& 
 
 agents::ContinuousReply ContinuousPlannerBridge::step(const ppp_msgs::SensingBatch& batch) {
   agents::ContinuousReply reply{batch.episodes[0], static_cast<int>(batch.steps[0]), {}, nullptr};
-  bool first_period = false;
   for (const ppp_msgs::ContinuousStart& start : batch.starts) {
     if (start.episode != reply.episode) continue;
-    first_period = true;
     try {
       episode_ = protocol::decodeContinuousStart(start);
     } catch (const InvalidArgument& e) {
@@ -111,7 +109,7 @@ agents::ContinuousReply ContinuousPlannerBridge::step(const ppp_msgs::SensingBat
   const ContinuousSensing sensing{Pose2D{batch.x[0], batch.y[0], batch.theta[0]},
                                   BodyVelocity{batch.forward[0], batch.left[0], batch.turn[0]}, batch.time[0], &ranges};
   if (commandsVelocity(parameters_)) {
-    command(stamp, sensing, first_period, &reply);
+    command(stamp, sensing, &reply);
   } else {
     followPlans(stamp, sensing, &reply);
   }
@@ -124,20 +122,20 @@ void ContinuousPlannerBridge::publish(const ros::Time& stamp, const ContinuousSe
                           request ? std::optional<MapPoint>(start.goal) : std::nullopt);
 }
 
-void ContinuousPlannerBridge::command(const ros::Time& stamp, const ContinuousSensing& sensing, bool first_period,
+void ContinuousPlannerBridge::command(const ros::Time& stamp, const ContinuousSensing& sensing,
                                       ContinuousReply* reply) {
   publish(stamp, sensing, true);
-  // A planner that (re)started while it was asked gets the period again. A timer the planner started on the robot's
-  // clock at the time of the episode's first period fires a whole period later, on a clock that moves only when the
-  // planner answers: until the first period is answered, each resend starts the episode one control period later.
-  // Nothing the planner has answered is moved, so the rows do not depend on when it started.
+  // A timer on the robot's clock can sleep past the period it is asked: a planner that started its timer at the
+  // period's time (it started late), or rospy's Rate, which reads the clock once to reckon its sleep and again to
+  // start it, and oversleeps by a period when the clock moved between the two. The clock moves only when the
+  // planner answers, so such a planner would never wake: each resend (a planner silent for a wall second, or one
+  // that restarted) asks the period again one control period later, the rest of the episode moved with it. The
+  // period's sensing is the same, so a planner whose answer depends on what it senses answers as it would have.
   ros::Time asked = stamp;
   const auto resend = [&](const ros::Time&) {
-    if (first_period) {
-      origin_ += ros::Duration(episode_->start.control_period);
-      asked = origin_ + ros::Duration(sensing.time);
-      last_stamp_ = asked;
-    }
+    origin_ += ros::Duration(episode_->start.control_period);
+    asked = origin_ + ros::Duration(sensing.time);
+    last_stamp_ = asked;
     publish(asked, sensing, true);
   };
   const std::optional<VelocityAnswer> answer = link_.waitForCommand(stamp, resend);

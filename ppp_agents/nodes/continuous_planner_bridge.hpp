@@ -43,9 +43,9 @@ class ContinuousPlannerBridge {
   agents::ContinuousReply step(const ppp_msgs::SensingBatch& batch);
   /// Publishes the period `sensing` at `stamp`, with the goal when it is a `request`.
   void publish(const ros::Time& stamp, const ContinuousSensing& sensing, bool request);
-  /// interface cmd_vel: the planner's command for the period into `reply`, or its failure; the episode's
-  /// `first_period` is asked again a control period later each time the planner leaves it unanswered for a second.
-  void command(const ros::Time& stamp, const ContinuousSensing& sensing, bool first_period, ContinuousReply* reply);
+  /// interface cmd_vel: the planner's command for the period into `reply`, or its failure; the period is asked
+  /// again a control period later each time the planner leaves it unanswered for a wall second.
+  void command(const ros::Time& stamp, const ContinuousSensing& sensing, ContinuousReply* reply);
   /// interface path: the command along the planner's path into `reply`, asking for one when the period is a
   /// request, or the failure.
   void followPlans(const ros::Time& stamp, const ContinuousSensing& sensing, ContinuousReply* reply);
