@@ -1,6 +1,5 @@
 #include "planner_link.hpp"
 
-#include <actionlib_msgs/GoalStatus.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Odometry.h>
@@ -51,26 +50,11 @@ PlannerLink::PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters
   tf_static_ = nh.advertise<tf2_msgs::TFMessage>("/tf_static", 1, true);
   // Without Nagle's algorithm (it would hold each answer back 40 ms).
   if (commandsVelocity(parameters_)) {
-    answers_ = ppp_msgs::subscribeLockstep<geometry_msgs::TwistStamped>(
-        nh_, ppp_msgs::topics::kPlannerCommand, 10,
-        [this](const geometry_msgs::TwistStamped::ConstPtr& command) {
-          onAnswer(&commands_, VelocityAnswer{command->header, *command, std::nullopt});
-        },
-        queue_.get());
-    statuses_ = ppp_msgs::subscribeLockstep<actionlib_msgs::GoalStatus>(
-        nh_, ppp_msgs::topics::kPlannerStatus, 10,
-        [this](const actionlib_msgs::GoalStatus::ConstPtr& status) {
-          if (status->status != actionlib_msgs::GoalStatus::ABORTED) return;  // only giving up answers a request
-          VelocityAnswer answer;
-          answer.header.stamp = status->goal_id.stamp;
-          answer.aborted = status->text;
-          onAnswer(&commands_, answer);
-        },
-        queue_.get());
+    subscribeVelocityAnswers();
   } else {
     answers_ = ppp_msgs::subscribeLockstep<nav_msgs::Path>(
         nh_, ppp_msgs::topics::kPlannerPath, 10,
-        [this](const nav_msgs::Path::ConstPtr& path) { onAnswer(&paths_, *path); }, queue_.get());
+        [this](const nav_msgs::Path::ConstPtr& path) { paths_.put(*path); }, queue_.get());
   }
   // The robot's body as costmaps read it, in metres, for planners that plan with a footprint.
   const double radius = parameters_.robot_radius * parameters_.resolution;
@@ -123,14 +107,6 @@ bool PlannerLink::waitForPlanner() {
 
 const char* PlannerLink::answerType() const {
   return commandsVelocity(parameters_) ? "geometry_msgs/TwistStamped" : "nav_msgs/Path";
-}
-
-template <class Message>
-void PlannerLink::onAnswer(AnswerInbox<Message>* inbox, const Message& answer) {
-  std::lock_guard<std::mutex> lock(inbox->mutex);
-  inbox->latest = answer;
-  ++inbox->received;
-  inbox->arrived.notify_one();
 }
 
 void PlannerLink::newEpisode() {

@@ -31,6 +31,13 @@ struct AnswerInbox {
   std::optional<Message> latest;
   std::uint64_t received = 0;
   std::uint64_t used = 0;
+  /// Keeps `answer` as the newest and wakes a wait for it.
+  void put(const Message& answer) {
+    std::lock_guard<std::mutex> lock(mutex);
+    latest = answer;
+    ++received;
+    arrived.notify_one();
+  }
   /// Marks every answer received so far as looked at.
   void skipReceived() {
     std::lock_guard<std::mutex> lock(mutex);
@@ -110,8 +117,8 @@ class PlannerLink {
   bool alive() const;
 
  private:
-  template <class Message>
-  void onAnswer(AnswerInbox<Message>* inbox, const Message& answer);
+  /// interface cmd_vel: subscribes to the planner's commands and its statuses (planner_link_velocity.cpp).
+  void subscribeVelocityAnswers();
   template <class Message>
   std::optional<Message> waitFor(AnswerInbox<Message>* inbox, const ros::Time& request,
                                  const std::function<bool(const Message&)>& fits,
