@@ -122,16 +122,12 @@ class MrptTpSpaceNavigator::Robot : public mrpt::nav::CRobot2NavInterface {
   }
   double getNavigationTime() override { return sensing_.time - started_; }
   void resetNavigationTimer() override { started_ = sensing_.time; }
-  void sendNavigationEndEvent() override { arrived_ = true; }
-  void startEpisode() { arrived_ = false; }
-  bool arrived() const { return arrived_; }
 
  private:
   TpSpaceSensing sensing_;
   BodyVelocity command_;
   BodyVelocity kept_;
   double started_ = 0;
-  bool arrived_ = false;
 };
 
 /// A directory of this process's own in the system's temporary directory, removed with everything in it.
@@ -205,7 +201,6 @@ void MrptTpSpaceNavigator::start(MapPoint goal, double tolerance) {
   } catch (const std::exception& e) {
     throw Error("MRPT CReactiveNavigationSystem: " + mrptMessage(e));
   }
-  robot_->startEpisode();
   navigator_->navigate(&request);
 }
 
@@ -225,8 +220,6 @@ std::string MrptTpSpaceNavigator::error() const {
   const std::string& message = navigator_->getErrorReason().error_msg;
   return message.empty() ? "navigation error" : message;
 }
-
-bool MrptTpSpaceNavigator::arrived() const { return robot_->arrived(); }
 
 }  // namespace planners
 }  // namespace ppp

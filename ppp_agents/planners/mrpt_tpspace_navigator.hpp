@@ -57,8 +57,6 @@ class MrptTpSpaceNavigator {
   BodyVelocity step(const TpSpaceSensing& sensing);
   /// Why the navigator stopped navigating ("" while it navigates or after it arrived).
   std::string error() const;
-  /// True once the navigator says the goal is reached.
-  bool arrived() const;
 
  private:
   /// A new navigator from the configuration.
