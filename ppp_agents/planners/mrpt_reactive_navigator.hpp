@@ -4,8 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "grid_map.hpp"
+#include "ppp_core/kinematics.hpp"
 #include "ppp_core/map_frame.hpp"
+#include "sector_obstacles.hpp"
 
 namespace mrpt::nav {
 class CAbstractHolonomicReactiveMethod;
@@ -18,10 +19,6 @@ namespace planners {
 /// MRPT's holonomic reactive methods by the names `~method` takes: Nearness Diagram, virtual force field, and
 /// full evaluation of every direction.
 const std::vector<std::string>& reactiveMethodNames();
-
-/// The directions obstacles are given in: sector k is centred at -π + (k + ½)·2π/kReactiveSectors in the map frame
-/// (MRPT's holonomic convention: the first sector points backwards, counter-clockwise from there).
-constexpr int kReactiveSectors = 72;
 
 /// What a holonomic method chose: a direction in the map frame (radians in [-π, π], 0 east, counter-clockwise)
 /// and a speed as a fraction of the robot's top speed, in [0, 1].
@@ -53,21 +50,11 @@ class MrptReactiveNavigator {
   std::unique_ptr<mrpt::nav::ClearanceDiagram> clearance_;  // FullEval asks for one; none of them reads it
 };
 
-/// A laser scan as sensor_msgs/LaserScan gives it, in the robot's frame (aligned with the map's).
-struct LaserRays {
-  double angle_min = 0;        ///< Radians of the first ray, counter-clockwise from east.
-  double angle_increment = 0;  ///< Radians between rays.
-  std::vector<float> ranges;   ///< Metres; +inf: no return within range, NaN: no valid reading.
-};
-
-/// Distances to obstacles per sector, as fractions of `range` metres (1: nothing nearer): the nearest ray that
-/// lies in a sector (a ray on the border of two counts for both); a sector no ray falls in sees nothing. A ray
-/// that is NaN is taken as an obstacle touching the robot (0) and counted in `*invalid_rays`.
-std::vector<double> sectorObstacles(const LaserRays& scan, double range, int* invalid_rays);
-
-/// Distances to obstacles per sector as fractions of `range` metres, cast from `from` on what `map` knows: each
-/// sector's centre ray ends at the first cell that is not passable (an obstacle, or off the map).
-std::vector<double> sectorObstaclesInMap(const GridMap& map, MapPoint from, double range);
+/// The velocity mrpt_reactive_node commands for a method's `heading` (its direction relative to the robot's x axis)
+/// with `max_speed` metres per second at the method's full speed: a diff-drive robot turns towards the direction
+/// at twice its angle (at most `max_turn` rad/s) and drives as much of the speed as lies ahead; any other robot
+/// (holonomic, or on the grid) drives along the direction.
+BodyVelocity reactiveVelocity(const Heading& heading, bool diff_drive, double max_speed, double max_turn);
 
 }  // namespace planners
 }  // namespace ppp

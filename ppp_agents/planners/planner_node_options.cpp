@@ -102,8 +102,13 @@ const std::vector<OptionSpec<ReactiveNodeParameters>>& reactiveNodeOptionSpecs()
       declareOption("obstacles", "where the distances to obstacles per direction come from",
                     +[](R& r) -> std::string& { return r.obstacles; })
           .withChoices("obstacle source",
-                       {{kObstaclesFromScan, "the robot's scan (scan)"},
-                        {kObstaclesFromMemory, "rays cast on the robot's map (map): what it remembers, unknown cells free"}}),
+                       {{kObstaclesFromScan, "the robot's scan: how far its body (~robot_radius) travels in each "
+                                             "direction before it touches a return, as MRPT's navigator gives them "
+                                             "(a point: the nearest ray in each direction)"},
+                        {kObstaclesFromRays, "the nearest ray of the robot's scan in each direction, whatever its "
+                                             "body (what a point would have)"},
+                        {kObstaclesFromMemory, "how far its body travels in each direction on the robot's map: what "
+                                               "it remembers, unknown cells free"}}),
       declareOption("range",
                     "metres the obstacle distances and the goal are given to the method as fractions of (0: the "
                     "scan's range_max)",
@@ -112,6 +117,10 @@ const std::vector<OptionSpec<ReactiveNodeParameters>>& reactiveNodeOptionSpecs()
                     +[](R& r) -> double& { return r.max_speed; }, Bounds{1e-6, 1e6}),
       declareOption("max_turn", "continuous motion, diff drive: radians per second the robot turns at most",
                     +[](R& r) -> double& { return r.max_turn; }, Bounds{1e-6, 1e6}),
+      declareOption("robot_radius",
+                    "metres of the robot's disc, which obstacle distances are for (0: a point; the experiment's "
+                    "graph sets it in continuous motion)",
+                    +[](R& r) -> double& { return r.robot_radius; }, Bounds{0, kMaxMotionMagnitude}),
       declareOption("kinematics", "the robot the commands are for (the experiment's graph sets it in continuous motion)",
                     +[](R& r) -> std::string& { return r.kinematics; })
           .withChoices("kinematics",

@@ -54,8 +54,10 @@ struct MrptNodeParameters {
 /// One declaration per `~` parameter of the MRPT planner node besides its frames and body.
 const std::vector<OptionSpec<MrptNodeParameters>>& mrptNodeOptionSpecs();
 
-/// `~obstacles` of the reactive node: obstacle distances from the robot's scan.
+/// `~obstacles` of the reactive node: obstacle distances from the robot's scan, for its body (a disc's travel).
 inline constexpr const char* kObstaclesFromScan = "scan";
+/// `~obstacles` of the reactive node: the nearest ray per sector of the robot's scan, whatever its body.
+inline constexpr const char* kObstaclesFromRays = "rays";
 /// `~obstacles` of the reactive node: obstacle distances cast on the robot's map (its memory).
 inline constexpr const char* kObstaclesFromMemory = "memory";
 
@@ -66,6 +68,7 @@ struct ReactiveNodeParameters {
   double range = 0;                           ///< ~range: metres the distances are fractions of (0: the scan's range_max).
   double max_speed = 1.0;                     ///< ~max_speed: metres per second at the method's full speed.
   double max_turn = 1.5;                      ///< ~max_turn: radians per second a diff-drive robot turns at most.
+  double robot_radius = 0;                    ///< ~robot_radius: metres of the robot's disc (0: a point).
   std::string kinematics;                     ///< ~kinematics: "" on the grid, else the continuous robot's.
   /// @throws InvalidArgument naming the parameter out of its declared range.
   void validate() const;

@@ -13,6 +13,7 @@ add_library(ppp_planners STATIC
   planners/dynamic_window.cpp
   planners/scan_costmap.cpp
   planners/dwa_planner.cpp
+  planners/sector_obstacles.cpp
 )
 set_target_properties(ppp_planners PROPERTIES POSITION_INDEPENDENT_CODE ON)  # linked into the nodelet library
 target_include_directories(ppp_planners PUBLIC planners ${ppp_core_INCLUDE_DIRS} ${CMAKE_CURRENT_SOURCE_DIR}/../ppp_msgs/include)
@@ -85,6 +86,17 @@ if(CATKIN_ENABLE_TESTING)
   target_compile_definitions(mrpt_tpspace_navigator_test PRIVATE
     PPP_TPSPACE_CONFIG="${CMAKE_CURRENT_SOURCE_DIR}/../config/mrpt_tpspace.ini")
   target_compile_options(mrpt_tpspace_navigator_test PRIVATE -Wall -Wextra)
+  catkin_add_gtest(sector_obstacles_test planners/test/sector_obstacles_test.cpp)
+  target_link_libraries(sector_obstacles_test ppp_planners_mrpt GTest::gtest_main)
+  target_compile_options(sector_obstacles_test PRIVATE -Wall -Wextra)
+  catkin_add_gtest(mrpt_reactive_continuous_test planners/test/mrpt_reactive_continuous_test.cpp)
+  target_link_libraries(mrpt_reactive_continuous_test ppp_planners_mrpt GTest::gtest_main)
+  target_compile_options(mrpt_reactive_continuous_test PRIVATE -Wall -Wextra)
+  # Their pictures for docs/images/reactive-traps-continuous.png.
+  add_executable(reactive_trap_pictures planners/test/reactive_trap_pictures.cpp)
+  target_link_libraries(reactive_trap_pictures ppp_planners_mrpt)
+  target_compile_options(reactive_trap_pictures PRIVATE -Wall -Wextra)
+  add_dependencies(tests reactive_trap_pictures)
   catkin_add_gtest(mrpt_reactive_navigator_test planners/test/mrpt_reactive_navigator_test.cpp)
   target_link_libraries(mrpt_reactive_navigator_test ppp_planners_mrpt ppp_agents GTest::gtest_main)
   target_compile_options(mrpt_reactive_navigator_test PRIVATE -Wall -Wextra)

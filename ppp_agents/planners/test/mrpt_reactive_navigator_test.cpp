@@ -97,72 +97,6 @@ TEST(MrptReactiveNavigatorTest, UnknownMethodIsRefusedNamingIt) {
   EXPECT_THROW(navigator.navigate(negative, MapPoint{1, 0}), InvalidArgument);
 }
 
-// Sector k spans [-180° + 5k, -175° + 5k]: a ray at 0° lies on the border of sectors 35 and 36 and counts for
-// both; one at 92° lies inside sector 54 ([90°, 95°]) alone.
-TEST(MrptReactiveNavigatorTest, ScanRaysBecomeSectorDistancesAsFractionsOfTheRange) {
-  std::vector<float> ranges(kRays, std::numeric_limits<float>::infinity());
-  ranges[0] = 1.0f;  // 0°
-  ranges[18] = 0.5f;  // 90°: the border of sectors 53 and 54
-  LaserRays scan{0, 2 * M_PI / kRays, ranges};
-  int invalid = -1;
-  std::vector<double> sectors = sectorObstacles(scan, 2.0, &invalid);
-  EXPECT_EQ(invalid, 0);
-  EXPECT_DOUBLE_EQ(sectors[35], 0.5);
-  EXPECT_DOUBLE_EQ(sectors[36], 0.5);
-  EXPECT_DOUBLE_EQ(sectors[53], 0.25);
-  EXPECT_DOUBLE_EQ(sectors[54], 0.25);
-  EXPECT_DOUBLE_EQ(sectors[37], 1.0);  // +inf: nothing within range
-  EXPECT_DOUBLE_EQ(sectors[0], 1.0);
-  // Rays rotated by 2°: each lies inside one sector.
-  scan.angle_min = 2 * M_PI / 180;
-  sectors = sectorObstacles(scan, 2.0, &invalid);
-  EXPECT_DOUBLE_EQ(sectors[36], 0.5);
-  EXPECT_DOUBLE_EQ(sectors[35], 1.0);
-  EXPECT_DOUBLE_EQ(sectors[54], 0.25);
-  // A NaN ray is no reading: taken as an obstacle at the robot, and counted.
-  scan.angle_min = 0;
-  scan.ranges[36] = std::numeric_limits<float>::quiet_NaN();  // 180°: the border of sectors 71 and 0
-  sectors = sectorObstacles(scan, 2.0, &invalid);
-  EXPECT_EQ(invalid, 1);
-  EXPECT_DOUBLE_EQ(sectors[0], 0.0);
-  EXPECT_DOUBLE_EQ(sectors[71], 0.0);
-  // Beyond the range a distance is 1.
-  scan.ranges[0] = 7.0f;
-  sectors = sectorObstacles(scan, 2.0, &invalid);
-  EXPECT_DOUBLE_EQ(sectors[36], 1.0);
-}
-
-// A LaserScan's angle increment is a float, so its rays come out a little off the sector borders they lie on
-// (up to 2e-6 sector widths for 72 rays). Each ray must still count for both sectors: every ray alone, at a
-// distance of its own, gives the same sectors with the float increment as with the exact one.
-TEST(MrptReactiveNavigatorTest, FloatScanAnglesGiveTheSectorsOfTheExactAngles) {
-  for (int ray = 0; ray < kRays; ++ray) {
-    std::vector<float> ranges(kRays, std::numeric_limits<float>::infinity());
-    ranges[ray] = 1.0f;
-    int invalid = 0;
-    const std::vector<double> exact = sectorObstacles(LaserRays{0, 2 * M_PI / kRays, ranges}, 2.0, &invalid);
-    const std::vector<double> rounded =
-        sectorObstacles(LaserRays{0, static_cast<float>(2 * M_PI / kRays), ranges}, 2.0, &invalid);
-    EXPECT_EQ(rounded, exact) << "ray " << ray;
-    EXPECT_EQ(std::count(exact.begin(), exact.end(), 0.5), 2) << "ray " << ray << " is not on a border";
-  }
-}
-
-// Cast on a known map: from the centre of cell (1, 1) of a 4x3 map of 1 m cells, east meets the wall at x = 3
-// (1.5 m), west the map's edge (1.5 m), north the edge (1.5 m from y = 1.5 to 3... the top row is free).
-TEST(MrptReactiveNavigatorTest, MapCastsEndAtKnownObstaclesAndTheMapsEdge) {
-  const GridMap map = test::mapPicture({"....", ".S.#", "...."});
-  const MapPoint robot = map.centre(Cell{1, 1});
-  const std::vector<double> sectors = sectorObstaclesInMap(map, robot, 3.0);
-  // Sector 36 is centred at 2.5°, so its ray meets x = 3 at 1.5 / cos 2.5° m; sector 71 (177.5°) meets x = 0
-  // after 1.5 / cos 2.5° m; sector 54 (92.5°) meets y = 3 after 1.5 / cos 2.5° m.
-  const double along = 1.5 / std::cos(2.5 * M_PI / 180) / 3.0;
-  const double step = 1.0 / 8 / 3.0;  // the cast's resolution, as a fraction of the range
-  EXPECT_NEAR(sectors[36], along, step);
-  EXPECT_NEAR(sectors[71], along, step);
-  EXPECT_NEAR(sectors[54], along, step);
-}
-
 // Far from obstacles every method heads for the goal: on an open 8x8 map each reaches a goal inside it along a
 // shortest route (8 moves from (0, 0) to (4, 4)).
 TEST(MrptReactiveNavigatorTest, EveryMethodCrossesAnOpenMapToAGoalAwayFromItsEdges) {
@@ -223,7 +157,9 @@ TEST(MrptReactiveNavigatorTest, VffAndNdOscillateForEverInAUFacingAwayFromTheGoa
     EXPECT_NE(choices[10].robot, choices[11].robot) << method;
     for (std::size_t i = 1; i + 1 < choices.size(); ++i) {
       EXPECT_TRUE(choices[i].move == Action::North || choices[i].move == Action::South) << method << " step " << i;
-      if (method == "VFF") EXPECT_NEAR(std::fabs(choices[i].degrees), 90.0, 1e-9) << "step " << i;
+      if (method == "VFF") {
+        EXPECT_NEAR(std::fabs(choices[i].degrees), 90.0, 1e-9) << "step " << i;
+      }
     }
   }
 }
