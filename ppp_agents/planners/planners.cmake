@@ -86,6 +86,11 @@ if(CATKIN_ENABLE_TESTING)
   target_compile_definitions(mrpt_tpspace_navigator_test PRIVATE
     PPP_TPSPACE_CONFIG="${CMAKE_CURRENT_SOURCE_DIR}/../config/mrpt_tpspace.ini")
   target_compile_options(mrpt_tpspace_navigator_test PRIVATE -Wall -Wextra)
+  catkin_add_gtest(mrpt_tpspace_source_test planners/test/mrpt_tpspace_source_test.cpp)
+  target_link_libraries(mrpt_tpspace_source_test mrpt::nav GTest::gtest_main)
+  target_compile_definitions(mrpt_tpspace_source_test PRIVATE
+    PPP_TPSPACE_CONFIG="${CMAKE_CURRENT_SOURCE_DIR}/../config/mrpt_tpspace.ini")
+  target_compile_options(mrpt_tpspace_source_test PRIVATE -Wall -Wextra)
   catkin_add_gtest(sector_obstacles_test planners/test/sector_obstacles_test.cpp)
   target_link_libraries(sector_obstacles_test ppp_planners_mrpt GTest::gtest_main)
   target_compile_options(sector_obstacles_test PRIVATE -Wall -Wextra)
