@@ -6,14 +6,16 @@
 //                                                          the grid as linear x (east) and y (north); in continuous
 //                                                          motion (~kinematics set) in the robot's frame, a diff-drive
 //                                                          robot turning towards the direction
-//   parameters  ~method, ~obstacles, ~range, ~max_speed, ~max_turn, ~kinematics, ~map_frame, ~base_frame:
+//   parameters  ~method, ~obstacles, ~frame, ~range, ~max_speed, ~max_turn, ~robot_radius, ~kinematics, ~map_frame,
+//               ~base_frame:
 //               docs/reference/options.md#example-planner-nodes
-// It runs as a process of its own (mrpt_reactive_node) or as the nodelet ppp_agents/MrptReactive.
+// Its steering is ReactiveSteering (ROS-free). It runs as a process of its own (mrpt_reactive_node) or as the nodelet
+// ppp_agents/MrptReactive.
 
 #include <string>
 
-#include "mrpt_reactive_navigator.hpp"
 #include "planner_node_options.hpp"
+#include "reactive_steering.hpp"
 #include "velocity_planner_link.hpp"
 
 namespace ppp {
@@ -31,11 +33,9 @@ class ReactiveNode {
   bool continuous() const { return !parameters_.kinematics.empty(); }
   /// The command for `request`.
   geometry_msgs::Twist command(const VelocityRequest& request);
-  /// The method's choice for the robot of `request`.
-  Heading steer(const VelocityRequest& request);
 
   ReactiveNodeParameters parameters_;
-  MrptReactiveNavigator navigator_;
+  ReactiveSteering steering_;
   VelocityPlannerLink link_;  // last: its callbacks use the members above
 };
 

@@ -109,6 +109,14 @@ const std::vector<OptionSpec<ReactiveNodeParameters>>& reactiveNodeOptionSpecs()
                                              "body (what a point would have)"},
                         {kObstaclesFromMemory, "how far its body travels in each direction on the robot's map: what "
                                                "it remembers, unknown cells free"}}),
+      declareOption("frame", "the frame the method's 72 directions are counted in, from its seam straight behind",
+                    +[](R& r) -> std::string& { return r.frame; })
+          .withChoices("frame",
+                       {{kReactiveFrameRobot, "the robot's, as MRPT's navigator gives them (on the grid the map's: the "
+                                              "seam points west)"},
+                        {kReactiveFrameGoal, "turned so that the goal lies on the centre of the sector ahead, the "
+                                             "seam straight away from it (ND mishandles goals within two sectors of "
+                                             "its seam)"}}),
       declareOption("range",
                     "metres the obstacle distances and the goal are given to the method as fractions of (0: the "
                     "scan's range_max)",

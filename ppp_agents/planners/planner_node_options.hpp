@@ -61,10 +61,16 @@ inline constexpr const char* kObstaclesFromRays = "rays";
 /// `~obstacles` of the reactive node: obstacle distances cast on the robot's map (its memory).
 inline constexpr const char* kObstaclesFromMemory = "memory";
 
+/// `~frame` of the reactive node: the method's sectors in the robot's frame (MRPT's navigator's).
+inline constexpr const char* kReactiveFrameRobot = "robot";
+/// `~frame` of the reactive node: the method's sectors turned so that the goal lies on the centre of the sector ahead.
+inline constexpr const char* kReactiveFrameGoal = "goal";
+
 /// What the MRPT reactive navigator node reads besides its frames.
 struct ReactiveNodeParameters {
   std::string method = "ND";                  ///< ~method: the holonomic method (reactiveMethodNames()).
   std::string obstacles = kObstaclesFromScan;  ///< ~obstacles: where obstacle distances come from.
+  std::string frame = kReactiveFrameRobot;     ///< ~frame: the frame the method's sectors are in.
   double range = 0;                           ///< ~range: metres the distances are fractions of (0: the scan's range_max).
   double max_speed = 1.0;                     ///< ~max_speed: metres per second at the method's full speed.
   double max_turn = 1.5;                      ///< ~max_turn: radians per second a diff-drive robot turns at most.

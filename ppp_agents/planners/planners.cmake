@@ -23,7 +23,7 @@ target_compile_options(ppp_planners PRIVATE -Wall -Wextra)
 
 # MRPT's wavefront planner and holonomic reactive navigators, in a library of their own so only their nodes and
 # tests link MRPT.
-add_library(ppp_planners_mrpt STATIC planners/mrpt_grid_planner.cpp planners/mrpt_reactive_navigator.cpp
+add_library(ppp_planners_mrpt STATIC planners/mrpt_grid_planner.cpp planners/mrpt_reactive_navigator.cpp planners/reactive_steering.cpp
             planners/mrpt_laser.cpp planners/mrpt_tpspace_navigator.cpp)
 set_target_properties(ppp_planners_mrpt PROPERTIES POSITION_INDEPENDENT_CODE ON)
 target_link_libraries(ppp_planners_mrpt PUBLIC ppp_planners mrpt::nav)
@@ -91,6 +91,9 @@ if(CATKIN_ENABLE_TESTING)
   target_compile_definitions(mrpt_tpspace_source_test PRIVATE
     PPP_TPSPACE_CONFIG="${CMAKE_CURRENT_SOURCE_DIR}/../config/mrpt_tpspace.ini")
   target_compile_options(mrpt_tpspace_source_test PRIVATE -Wall -Wextra)
+  catkin_add_gtest(reactive_steering_test planners/test/reactive_steering_test.cpp)
+  target_link_libraries(reactive_steering_test ppp_planners_mrpt GTest::gtest_main)
+  target_compile_options(reactive_steering_test PRIVATE -Wall -Wextra)
   catkin_add_gtest(sector_obstacles_test planners/test/sector_obstacles_test.cpp)
   target_link_libraries(sector_obstacles_test ppp_planners_mrpt GTest::gtest_main)
   target_compile_options(sector_obstacles_test PRIVATE -Wall -Wextra)

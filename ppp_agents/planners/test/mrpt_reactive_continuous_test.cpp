@@ -2,7 +2,7 @@
 // continuous motion: a diff-drive disc of 0.2 m with heading, velocity and acceleration limits, its 360-beam laser
 // turned into how far the disc travels in each of the 72 directions (what MRPT's own navigator gives a holonomic
 // method), one method call per 0.1 s control period, for 300 s. Each test says whether the trap survives, and in
-// which form; driveReactive() is mrpt_reactive_node's own steering, without ROS.
+// which form; driveReactive() plays mrpt_reactive_node's own steering (ReactiveSteering), without ROS.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -93,7 +93,7 @@ TEST(MrptReactiveContinuousTest, VffComesToRestBesideThePocketOfTwoDiagonalCells
   EXPECT_LT(distance(vff.poses.back(), 5.0, 3.0), 1.5);
   for (const std::string method : {"ND", "FullEval"}) {
     EXPECT_STREQ(driveReactive(pocket, method, kRadius, kPeriods).reason, reason::kGoalReached) << method;
-    EXPECT_STREQ(driveReactive(pocket, method, kRadius, kPeriods, true).reason, reason::kCollision) << method;
+    EXPECT_STREQ(driveReactive(pocket, method, kRadius, kPeriods, kObstaclesFromRays).reason, reason::kCollision) << method;
   }
 }
 

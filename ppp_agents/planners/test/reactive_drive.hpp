@@ -1,16 +1,16 @@
 #pragma once
 // MRPT's holonomic reactive methods driving a diff-drive disc in continuous motion, in process, exactly as
 // mrpt_reactive_node drives them through ROS: each control period the laser's returns become distances per
-// sector for the robot's body, the goal is put in the robot's frame, the method chooses, and reactiveVelocity()
-// makes the command. Shared by the continuous trap tests and the program drawing their pictures.
+// sector for the robot's body, the goal is put in the robot's frame, the method chooses and its choice becomes a
+// command (ReactiveSteering, the node's own steering). Shared by the continuous trap tests and the program drawing
+// their pictures.
 #include <string>
 #include <vector>
 
 #include "map_picture.hpp"
-#include "mrpt_reactive_navigator.hpp"
 #include "ppp_core/continuous_episode.hpp"
 #include "ppp_core/problem.hpp"
-#include "robot_frame.hpp"
+#include "reactive_steering.hpp"
 
 namespace ppp {
 namespace planners {
@@ -48,28 +48,33 @@ inline Problem pictureProblem(const std::vector<std::string>& picture) {
   return problemFromGrid(pictureGrid(picture), markedCell(picture, 'S'), markedCell(picture, 'G'));
 }
 
-/// One run of `method` on `problem` for a disc of `radius` metres, at most `periods` control periods, the node's
-/// defaults (full speed 1 m/s, turns up to 1.5 rad/s, distances as fractions of the laser's range); `rays`: the
-/// nearest ray per sector instead of the disc's travel (~obstacles:=rays). The outcome has every pose.
+/// One run of `method` on `problem` for a disc of `radius` metres, at most `periods` control periods, with
+/// mrpt_reactive_node's steering and its defaults (full speed 1 m/s, turns up to 1.5 rad/s, distances as fractions
+/// of the laser's range); `obstacles` and `frame` as its ~obstacles and ~frame. The outcome has every pose.
 inline ContinuousOutcome driveReactive(const Problem& problem, const std::string& method, double radius,
-                                       long periods, bool rays = false) {
+                                       long periods, const std::string& obstacles = kObstaclesFromScan,
+                                       const std::string& frame = kReactiveFrameRobot) {
   const MotionOptions options = continuousDiffDrive();
   ContinuousEpisode episode(problem, decodeGrid(problem), options, radius / options.resolution, periods, 1, true);
-  MrptReactiveNavigator navigator(method);
+  ReactiveNodeParameters parameters;
+  parameters.method = method;
+  parameters.obstacles = obstacles;
+  parameters.frame = frame;
+  parameters.robot_radius = radius;
+  parameters.kinematics = options.kinematics;
+  ReactiveSteering steering(parameters);
   const LaserBeams& beams = episode.beams();
-  const double range = options.laser_range;
   std::vector<float> ranges;
   while (!episode.done()) {
     episode.scan(&ranges);
     const LaserRays scan{beams.angle_min, beams.angle_increment, ranges};
+    ReactiveView view;
+    view.goal = MapPoint{episode.goal().x - episode.pose().x, episode.goal().y - episode.pose().y};
+    view.heading = episode.pose().theta;
+    view.range = options.laser_range;
+    view.scan = &scan;
     int invalid = 0;
-    const std::vector<double> obstacles = radius > 0 && !rays
-                                              ? sectorObstaclesForDisc(scan, range, radius, &invalid)
-                                              : sectorObstacles(scan, range, &invalid);
-    const Pose2D& pose = episode.pose();
-    const MapPoint target =
-        inRobotFrame(MapPoint{(episode.goal().x - pose.x) / range, (episode.goal().y - pose.y) / range}, pose.theta);
-    episode.apply(reactiveVelocity(navigator.navigate(obstacles, target), true, 1.0, 1.5));
+    episode.apply(steering.command(view, &invalid));
   }
   return episode.outcome();
 }
