@@ -1,13 +1,21 @@
 // A laser scan of the continuous model (exact casts against the cell squares) against MRPT's laserScanSimulator
 // (rays marched over its occupancy grid) on the same 20x20 PPP, beams and poses: 360 beams over 360 degrees,
-// 3.5 m range, 1 m cells.
+// 3.5 m range, 1 m cells. Then what a holonomic method is given from such a scan: the nearest ray per sector (a
+// point), the disc's travel per sector (a body of 0.2 m), and the same travel from MRPT's own straight trajectories
+// for a round robot (CPTG_Holo_Blend::updateTPObstacle, what its navigator computes).
 //   laser_bench [--benchmark_repetitions=3]
 
 #include <benchmark/benchmark.h>
 
 #include <vector>
 
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/nav/tpspace/CPTG_Holo_Blend.h>
+
+#include <cmath>
+
 #include "../mrpt_laser.hpp"
+#include "../sector_obstacles.hpp"
 #include "ppp_core/random_problem.hpp"
 #include "ppp_core/square_world.hpp"
 
@@ -58,7 +66,71 @@ void mrptScan(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 
+/// The scans at every pose of the scene, as a LaserScan gives them.
+const std::vector<ppp::planners::LaserRays>& sceneScans() {
+  static const std::vector<ppp::planners::LaserRays> scans = [] {
+    const Scene& s = scene();
+    const ppp::SquareWorld world(s.grid, 1.0);
+    std::vector<ppp::planners::LaserRays> made;
+    for (const ppp::Pose2D& pose : s.poses) {
+      made.push_back({s.beams.angle_min, s.beams.angle_increment, {}});
+      ppp::scanLaser(world, pose, s.beams, nullptr, &made.back().ranges);
+    }
+    return made;
+  }();
+  return scans;
+}
+
+void pointSectors(benchmark::State& state) {
+  std::size_t i = 0;
+  int invalid = 0;
+  for (auto _ : state) {
+    const auto sectors = ppp::planners::sectorObstacles(sceneScans()[i++ % sceneScans().size()], 3.5, &invalid);
+    benchmark::DoNotOptimize(sectors.data());
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void discSectors(benchmark::State& state) {
+  std::size_t i = 0;
+  int invalid = 0;
+  for (auto _ : state) {
+    const auto sectors =
+        ppp::planners::sectorObstaclesForDisc(sceneScans()[i++ % sceneScans().size()], 3.5, 0.2, &invalid);
+    benchmark::DoNotOptimize(sectors.data());
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void mrptHoloBlendSectors(benchmark::State& state) {
+  mrpt::config::CConfigFileMemory config;
+  config.write("ptg", "num_paths", ppp::planners::kReactiveSectors);
+  config.write("ptg", "refDistance", 3.5);
+  config.write("ptg", "T_ramp_max", 0.9);
+  config.write("ptg", "v_max_mps", 0.5);
+  config.write("ptg", "w_max_dps", 90.0);
+  config.write("ptg", "robot_radius", 0.2);
+  mrpt::nav::CPTG_Holo_Blend ptg(config, "ptg");
+  ptg.initialize();
+  std::vector<double> tp_obstacles;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const ppp::planners::LaserRays& scan = sceneScans()[i++ % sceneScans().size()];
+    ptg.initTPObstacles(tp_obstacles);
+    for (std::size_t r = 0; r < scan.ranges.size(); ++r) {
+      if (!std::isfinite(scan.ranges[r])) continue;
+      const double angle = scan.angle_min + r * scan.angle_increment;
+      ptg.updateTPObstacle(scan.ranges[r] * std::cos(angle), scan.ranges[r] * std::sin(angle), tp_obstacles);
+    }
+    benchmark::DoNotOptimize(tp_obstacles.data());
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
 }  // namespace
 
 BENCHMARK(exactScan);
 BENCHMARK(mrptScan);
+BENCHMARK(pointSectors);
+BENCHMARK(discSectors);
+BENCHMARK(mrptHoloBlendSectors);
