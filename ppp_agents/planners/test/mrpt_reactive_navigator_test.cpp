@@ -280,7 +280,7 @@ TEST(MrptReactiveNavigatorTest, NdRemembersItsLastChoiceAndVffDoesNot) {
 // directions. Heading straight for it is every method's answer (VFF's and FullEval's, checked alike), and ND's
 // for 67 of the 72. For the five within two sectors of the ±π seam ND's "straight path" case is not tried
 // (CHolonomicND.cpp in 2.5.8, lines 308-321: the target sector must lie in (2, 70)), and its gaps do not wrap
-// round (lines 461-463): the open circle is one gap whose two "edges" are the seam, and ND steers to that gap's
+// round (lines 170-184): the open circle is one gap whose two "edges" are the seam, and ND steers to that gap's
 // representative sector, 9 sectors inside the edge nearer the target (sector 9, or 62), 7 to 9 sectors (35° to
 // 45°) off the target. The seam is where sector 0 begins: straight behind a robot given its scan in its own
 // frame, due west on the grid.
