@@ -63,18 +63,5 @@ Heading MrptReactiveNavigator::navigate(const std::vector<double>& obstacles, Ma
   return Heading{output.desiredDirection, std::clamp(output.desiredSpeed, 0.0, 1.0)};
 }
 
-BodyVelocity reactiveVelocity(const Heading& heading, bool diff_drive, double max_speed, double max_turn) {
-  const double speed = heading.speed * max_speed;
-  BodyVelocity velocity;
-  if (diff_drive) {
-    velocity.forward = speed * std::max(0.0, std::cos(heading.direction));
-    velocity.turn = std::clamp(2 * heading.direction, -max_turn, max_turn);
-  } else {
-    velocity.forward = speed * std::cos(heading.direction);
-    velocity.left = speed * std::sin(heading.direction);
-  }
-  return velocity;
-}
-
 }  // namespace planners
 }  // namespace ppp

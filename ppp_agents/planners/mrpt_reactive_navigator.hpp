@@ -4,7 +4,6 @@
 #include <string>
 #include <vector>
 
-#include "ppp_core/kinematics.hpp"
 #include "ppp_core/map_frame.hpp"
 #include "sector_obstacles.hpp"
 
@@ -20,8 +19,8 @@ namespace planners {
 /// full evaluation of every direction.
 const std::vector<std::string>& reactiveMethodNames();
 
-/// What a holonomic method chose: a direction in the map frame (radians in [-π, π], 0 east, counter-clockwise)
-/// and a speed as a fraction of the robot's top speed, in [0, 1].
+/// What a holonomic method chose: a direction in the frame its sectors were given in (radians in [-π, π], 0 along
+/// its x axis, counter-clockwise) and a speed as a fraction of the robot's top speed, in [0, 1].
 struct Heading {
   double direction = 0;
   double speed = 0;
@@ -49,12 +48,6 @@ class MrptReactiveNavigator {
   std::shared_ptr<mrpt::nav::CAbstractHolonomicReactiveMethod> navigator_;
   std::unique_ptr<mrpt::nav::ClearanceDiagram> clearance_;  // FullEval asks for one; none of them reads it
 };
-
-/// The velocity mrpt_reactive_node commands for a method's `heading` (its direction relative to the robot's x axis)
-/// with `max_speed` metres per second at the method's full speed: a diff-drive robot turns towards the direction
-/// at twice its angle (at most `max_turn` rad/s) and drives as much of the speed as lies ahead; any other robot
-/// (holonomic, or on the grid) drives along the direction.
-BodyVelocity reactiveVelocity(const Heading& heading, bool diff_drive, double max_speed, double max_turn);
 
 }  // namespace planners
 }  // namespace ppp

@@ -115,8 +115,8 @@ const std::vector<OptionSpec<ReactiveNodeParameters>>& reactiveNodeOptionSpecs()
                        {{kReactiveFrameRobot, "the robot's, as MRPT's navigator gives them (on the grid the map's: the "
                                               "seam points west)"},
                         {kReactiveFrameGoal, "turned so that the goal lies on the centre of the sector ahead, the "
-                                             "seam straight away from it (ND mishandles goals within two sectors of "
-                                             "its seam)"}}),
+                                             "seam behind, 177.5 degrees from it (ND mishandles goals within two "
+                                             "sectors of its seam)"}}),
       declareOption("range",
                     "metres the obstacle distances and the goal are given to the method as fractions of (0: the "
                     "scan's range_max)",

@@ -23,8 +23,8 @@ target_compile_options(ppp_planners PRIVATE -Wall -Wextra)
 
 # MRPT's wavefront planner and holonomic reactive navigators, in a library of their own so only their nodes and
 # tests link MRPT.
-add_library(ppp_planners_mrpt STATIC planners/mrpt_grid_planner.cpp planners/mrpt_reactive_navigator.cpp planners/reactive_steering.cpp
-            planners/mrpt_laser.cpp planners/mrpt_tpspace_navigator.cpp)
+add_library(ppp_planners_mrpt STATIC planners/mrpt_grid_planner.cpp planners/mrpt_reactive_navigator.cpp
+            planners/reactive_steering.cpp planners/mrpt_laser.cpp planners/mrpt_tpspace_navigator.cpp)
 set_target_properties(ppp_planners_mrpt PROPERTIES POSITION_INDEPENDENT_CODE ON)
 target_link_libraries(ppp_planners_mrpt PUBLIC ppp_planners mrpt::nav)
 target_compile_options(ppp_planners_mrpt PRIVATE -Wall -Wextra)

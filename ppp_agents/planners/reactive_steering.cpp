@@ -1,5 +1,6 @@
 #include "reactive_steering.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -8,6 +9,19 @@
 
 namespace ppp {
 namespace planners {
+
+BodyVelocity reactiveVelocity(const Heading& heading, bool diff_drive, double max_speed, double max_turn) {
+  const double speed = heading.speed * max_speed;
+  BodyVelocity velocity;
+  if (diff_drive) {
+    velocity.forward = speed * std::max(0.0, std::cos(heading.direction));
+    velocity.turn = std::clamp(2 * heading.direction, -max_turn, max_turn);
+  } else {
+    velocity.forward = speed * std::cos(heading.direction);
+    velocity.left = speed * std::sin(heading.direction);
+  }
+  return velocity;
+}
 
 ReactiveSteering::ReactiveSteering(const ReactiveNodeParameters& parameters)
     : parameters_(parameters), navigator_(parameters.method) {
@@ -31,6 +45,7 @@ Heading ReactiveSteering::steer(const ReactiveView& view, int* invalid_rays) {
     if (view.map == nullptr) throw InvalidArgument("map", "no map to cast the obstacle distances on");
     obstacles = sectorObstaclesInMap(*view.map, view.robot, view.heading + turn, view.range, radius);
   } else {
+    if (view.scan == nullptr) throw InvalidArgument("scan", "no scan to take the obstacle distances from");
     const LaserRays& scan = *view.scan;
     if (!(std::isfinite(scan.angle_increment) && scan.angle_increment != 0) || !std::isfinite(scan.angle_min)) {
       throw InvalidArgument("scan", "angle_min " + std::to_string(scan.angle_min) + " and angle_increment " +

@@ -12,6 +12,12 @@
 namespace ppp {
 namespace planners {
 
+/// The velocity mrpt_reactive_node commands for a method's `heading` (its direction relative to the robot's x axis)
+/// with `max_speed` metres per second at the method's full speed: a diff-drive robot turns towards the direction
+/// at twice its angle (at most `max_turn` rad/s) and drives as much of the speed as lies ahead; any other robot
+/// (holonomic, or on the grid) drives along the direction.
+BodyVelocity reactiveVelocity(const Heading& heading, bool diff_drive, double max_speed, double max_turn);
+
 /// What the robot knows at one step.
 struct ReactiveView {
   MapPoint goal;                    ///< Map-frame metres from the robot to the goal (east, north).

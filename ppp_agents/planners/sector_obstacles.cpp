@@ -49,7 +49,7 @@ bool discBlocked(const GridMap& map, MapPoint centre, double radius) {
   const int last_row = static_cast<int>(std::floor((centre.y + radius) / r));
   for (int row = first_row; row <= last_row; ++row) {
     for (int column = first_column; column <= last_column; ++column) {
-      const Cell cell = map.cellOf(MapPoint{(column + 0.5) * r, (row + 0.5) * r});
+      const Cell cell = frame.cellOfMapRowColumn(column, row);
       if (map.passable(cell)) continue;
       const double dx = centre.x - std::clamp(centre.x, column * r, (column + 1) * r);
       const double dy = centre.y - std::clamp(centre.y, row * r, (row + 1) * r);

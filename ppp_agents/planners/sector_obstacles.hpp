@@ -31,15 +31,17 @@ std::vector<double> sectorObstacles(const LaserRays& scan, double range, int* in
 /// Distances to obstacles per sector for a disc of `radius` metres centred on the laser, as fractions of
 /// `range` metres (1: nothing nearer), as MRPT's reactive navigator gives them to a holonomic method (its
 /// straight trajectories for a round robot at rest, CPTG_Holo_Blend): how far the disc travels along each
-/// sector's centre direction before it touches a return. A return already inside the disc stops every direction
-/// that goes deeper into it (0) and none that leaves it (MRPT's default collision behaviour, "back away"). A ray
+/// sector's centre direction before it touches a return. A return already inside the disc stops (0) each direction
+/// along which the disc would leave it only after travelling at least its radius, and no other (MRPT's default
+/// collision behaviour, "back away"). A ray
 /// that is NaN gives 0 in its sector, as for a point, and is counted in `*invalid_rays`.
 std::vector<double> sectorObstaclesForDisc(const LaserRays& scan, double range, double radius, int* invalid_rays);
 
 /// Distances to obstacles per sector as fractions of `range` metres, for a disc of `radius` metres (0: a point)
 /// at `from` on what `map` knows, the sectors in the frame of a robot heading `heading` radians in the map frame:
 /// how far the disc moves along each sector's centre direction, in steps of an eighth of a cell, before it
-/// overlaps a cell that is not passable (an obstacle, or off the map; a point: before it enters one).
+/// overlaps a cell that is not passable (an obstacle, or off the map; a point: before it enters one). A disc that
+/// already overlaps one gets a step's travel in every direction (a robot there has collided).
 std::vector<double> sectorObstaclesInMap(const GridMap& map, MapPoint from, double heading, double range,
                                          double radius);
 

@@ -86,7 +86,8 @@ TEST(MrptTpSpaceSourceTest, FullEvalAsTheExampleConfiguresItCannotRankDirections
 TEST(MrptTpSpaceSourceTest, TheAlphaFamilyDiscardsEveryTargetBeyondItsReferenceDistanceBefore2_11_11) {
   const mrpt::config::CConfigFile config(PPP_TPSPACE_CONFIG);
   const std::string section = "CReactiveNavigationSystem";
-  const std::filesystem::path cache = std::filesystem::temp_directory_path() / ("ppp-tpspace-source-test-" + std::to_string(::getpid()));
+  const std::filesystem::path cache =
+      std::filesystem::temp_directory_path() / ("ppp-tpspace-source-test-" + std::to_string(::getpid()));
   std::filesystem::create_directories(cache);
   for (const int family : {0, 1}) {
     const std::string prefix = "PTG" + std::to_string(family) + "_";

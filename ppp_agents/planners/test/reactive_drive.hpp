@@ -16,6 +16,10 @@ namespace ppp {
 namespace planners {
 namespace test {
 
+/// The traps' robot: a disc of 0.2 m, driven for 300 s.
+constexpr double kTrapRadius = 0.2;
+constexpr long kTrapPeriods = 3000;
+
 /// The default continuous robot (docs/reference/continuous-motion.md): diff drive, 0.5 m/s, a 3.5 m laser.
 inline MotionOptions continuousDiffDrive() {
   MotionOptions options;
@@ -50,16 +54,14 @@ inline Problem pictureProblem(const std::vector<std::string>& picture) {
 
 /// One run of `method` on `problem` for a disc of `radius` metres, at most `periods` control periods, with
 /// mrpt_reactive_node's steering and its defaults (full speed 1 m/s, turns up to 1.5 rad/s, distances as fractions
-/// of the laser's range); `obstacles` and `frame` as its ~obstacles and ~frame. The outcome has every pose.
+/// of the laser's range); `obstacles` as its ~obstacles. The outcome has every pose.
 inline ContinuousOutcome driveReactive(const Problem& problem, const std::string& method, double radius,
-                                       long periods, const std::string& obstacles = kObstaclesFromScan,
-                                       const std::string& frame = kReactiveFrameRobot) {
+                                       long periods, const std::string& obstacles = kObstaclesFromScan) {
   const MotionOptions options = continuousDiffDrive();
   ContinuousEpisode episode(problem, decodeGrid(problem), options, radius / options.resolution, periods, 1, true);
   ReactiveNodeParameters parameters;
   parameters.method = method;
   parameters.obstacles = obstacles;
-  parameters.frame = frame;
   parameters.robot_radius = radius;
   parameters.kinematics = options.kinematics;
   ReactiveSteering steering(parameters);

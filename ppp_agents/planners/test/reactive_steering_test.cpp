@@ -39,8 +39,8 @@ double offGoal(const std::string& frame, int k) {
 }
 
 // In the robot's frame ND turns 35-45 degrees away from an open goal within two sectors of its seam (sectors 0-2 and
-// 70-71, mrpt_reactive_navigator_test); counted from the goal's direction the seam is always straight away from the
-// goal, and ND heads for it in all 72 directions.
+// 70-71, mrpt_reactive_navigator_test); counted from the goal's direction the seam is always behind, 177.5 degrees
+// from the goal, and ND heads for it in all 72 directions.
 TEST(ReactiveSteeringTest, InTheGoalsFrameNdHeadsForAnOpenGoalInEveryDirection) {
   int turned_away_in_robot_frame = 0;
   for (int k = 0; k < kReactiveSectors; ++k) {
@@ -48,6 +48,37 @@ TEST(ReactiveSteeringTest, InTheGoalsFrameNdHeadsForAnOpenGoalInEveryDirection) 
     if (offGoal(kReactiveFrameRobot, k) > 30) ++turned_away_in_robot_frame;
   }
   EXPECT_EQ(turned_away_in_robot_frame, 5);
+}
+
+// In the goal's frame the method's input depends only on the scene as seen from the goal's direction: turning the
+// whole scene (the scan's returns and the goal) by any angle turns ND's choice by that angle and changes nothing
+// else, for a point (nearest rays) and for a disc. A wall of returns 0.8 m away stands across the way to a goal
+// 1.5 m off, so ND has to choose a side.
+TEST(ReactiveSteeringTest, InTheGoalsFrameTurningTheSceneTurnsTheChoice) {
+  for (const double radius : {0.0, 0.2}) {
+    std::vector<float> wall(360, kNoReturn);
+    for (int i = -30; i <= 10; ++i) wall[static_cast<std::size_t>((i + 360) % 360)] = 0.8f / std::cos(i * M_PI / 180);
+    std::vector<Heading> choices;
+    for (const double angle : {0.0, 1.0, -2.5}) {
+      ReactiveNodeParameters parameters = ndIn(kReactiveFrameGoal);
+      parameters.robot_radius = radius;
+      ReactiveSteering steering(parameters);
+      const LaserRays scan{angle, 2 * M_PI / 360, wall};  // ray 0 along `angle`
+      ReactiveView view;
+      view.goal = MapPoint{1.5 * std::cos(angle + 0.1), 1.5 * std::sin(angle + 0.1)};
+      view.range = 2.0;
+      view.scan = &scan;
+      int invalid = 0;
+      Heading choice = steering.steer(view, &invalid);
+      choice.direction = std::remainder(choice.direction - angle, 2 * M_PI);
+      choices.push_back(choice);
+    }
+    EXPECT_GT(std::abs(choices[0].direction - 0.1), 0.3) << "radius " << radius << ": ND went through the wall";
+    for (const Heading& choice : choices) {
+      EXPECT_NEAR(choice.direction, choices[0].direction, 1e-9) << "radius " << radius;
+      EXPECT_NEAR(choice.speed, choices[0].speed, 1e-9) << "radius " << radius;
+    }
+  }
 }
 
 TEST(ReactiveSteeringTest, BadInputIsRefusedNamingIt) {

@@ -3,6 +3,8 @@
 // disc's trajectory for 300 s and the robot at its last pose.
 //   reactive_trap_pictures OUT.png
 #include <algorithm>
+#include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -37,10 +39,12 @@ int main(int argc, char** argv) {
       const planners::test::ReactiveTrap& trap = planners::test::reactiveTraps()[row];
       const Problem problem = planners::test::pictureProblem(trap.picture);
       for (int column = 0; column < columns; ++column) {
-        const ContinuousOutcome outcome = planners::test::driveReactive(problem, methods[column], 0.2, 3000);
+        const ContinuousOutcome outcome = planners::test::driveReactive(
+            problem, methods[column], planners::test::kTrapRadius, planners::test::kTrapPeriods);
         std::printf("%s %s: %s after %d control periods\n", trap.name.c_str(), methods[column].c_str(),
                     outcome.reason, outcome.steps);
-        const std::vector<std::uint8_t> tile = renderTrajectoryRgb(problem, outcome.poses, 1.0, 0.2, options);
+        const std::vector<std::uint8_t> tile =
+            renderTrajectoryRgb(problem, outcome.poses, 1.0, planners::test::kTrapRadius, options);
         const int tw = pictureWidth(problem.width, options), th = pictureHeight(problem.height, options);
         for (int y = 0; y < th; ++y) {
           const int sy = row * (tile_height + kGap) + y;

@@ -158,10 +158,11 @@ TEST(SectorObstaclesTest, AReturnInsideTheDiscStopsOnlyTheDirectionsIntoIt) {
   EXPECT_EQ(std::count(disc.begin(), disc.end(), 1.0), kReactiveSectors - 1);
 }
 
-// The independent check: on 200 random scans of 360 rays (returns from 0.05 to 4 m, a tenth of them none, some
-// inside the disc), the disc's travel per sector is what MRPT's own trajectories for a round robot at rest give,
-// within 1e-5 of the range: MRPT finds each contact as the root of a quartic (solve_poly4), and near a grazing
-// contact its roots are off by up to 6e-6 of the range here (24 of the 43,200 values by more than 1e-6).
+// The independent check: on 200 random scans of 360 rays for each of three radii (returns from 0.05 to 4 m, a
+// tenth of them none, some inside the disc), the disc's travel per sector is what MRPT's own trajectories for a
+// round robot at rest give, within 1e-5 of the range: MRPT finds each contact as the root of a quartic
+// (solve_poly4), and near a grazing contact its roots are off by up to 6e-6 of the range here (24 of the 43,200
+// values by more than 1e-6).
 TEST(SectorObstaclesTest, DiscTravelIsMrptsStraightTrajectoriesForARoundRobot) {
   const double range = 3.5;
   std::mt19937 random(1);
