@@ -162,31 +162,31 @@ MrptTpSpaceNavigator::MrptTpSpaceNavigator(const std::string& config_text, const
     }
     config_->write("CAbstractPTGBasedReactive", "robotMax_V_mps", robot.max_linear_speed);
     config_->write("CAbstractPTGBasedReactive", "robotMax_W_degps", robot.max_angular_speed * 180 / M_PI);
-    renew();
+    navigator_ = build();
   } catch (const std::exception& e) {
     throw InvalidArgument(source, "MRPT refuses the reactive navigation configuration: " + mrptMessage(e));
   }
 }
 
-void MrptTpSpaceNavigator::renew() {
-  navigator_.reset();
-  navigator_ = std::make_unique<mrpt::nav::CReactiveNavigationSystem>(*robot_, false, false);
-  navigator_->setMinLoggingLevel(mrpt::system::LVL_ERROR);
+std::unique_ptr<mrpt::nav::CReactiveNavigationSystem> MrptTpSpaceNavigator::build() const {
+  auto navigator = std::make_unique<mrpt::nav::CReactiveNavigationSystem>(*robot_, false, false);
+  navigator->setMinLoggingLevel(mrpt::system::LVL_ERROR);
   // Its delay statistics would be printed at every episode's end; MRPT lends them out only as const.
-  const_cast<mrpt::system::CTimeLogger&>(navigator_->getDelaysTimeLogger()).disable();
-  navigator_->loadConfigFile(*config_);
-  navigator_->params_abstract_ptg_navigator.ptg_cache_files_directory = cache_->path.string();
-  navigator_->changeRobotShape(discShape(radius_));
-  navigator_->changeRobotCircularShapeRadius(radius_);
-  navigator_->initialize();
-  for (std::size_t i = 0; i < navigator_->getPTG_count(); ++i) {
-    const auto* ptg = navigator_->getPTG(i);
+  const_cast<mrpt::system::CTimeLogger&>(navigator->getDelaysTimeLogger()).disable();
+  navigator->loadConfigFile(*config_);
+  navigator->params_abstract_ptg_navigator.ptg_cache_files_directory = cache_->path.string();
+  navigator->changeRobotShape(discShape(radius_));
+  navigator->changeRobotCircularShapeRadius(radius_);
+  navigator->initialize();
+  for (std::size_t i = 0; i < navigator->getPTG_count(); ++i) {
+    const auto* ptg = navigator->getPTG(i);
     if (!std::dynamic_pointer_cast<mrpt::kinematics::CVehicleVelCmd_DiffDriven>(
             ptg->getSupportedKinematicVelocityCommand())) {
       throw std::invalid_argument("PTG" + std::to_string(i) + " (" + ptg->GetRuntimeClass()->className +
                                   ") is not for a differential-drive robot");
     }
   }
+  return navigator;
 }
 
 MrptTpSpaceNavigator::~MrptTpSpaceNavigator() = default;
@@ -197,7 +197,11 @@ void MrptTpSpaceNavigator::start(MapPoint goal, double tolerance) {
   request.target.target_frame_id = kFrame;
   request.target.targetAllowedDistance = static_cast<float>(tolerance);
   try {
-    renew();  // nothing of the last episode: a run plays alike whichever runs its process played before
+    // A navigator that has never navigated: nothing of the last episode, so a run plays alike whichever runs its
+    // process played before.
+    if (navigated_) navigator_ = next_.get();
+    navigated_ = true;
+    next_ = std::async(std::launch::async, [this] { return build(); });
   } catch (const std::exception& e) {
     throw Error("MRPT CReactiveNavigationSystem: " + mrptMessage(e));
   }

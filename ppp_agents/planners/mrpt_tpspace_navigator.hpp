@@ -1,5 +1,6 @@
 #pragma once
 
+#include <future>
 #include <memory>
 #include <string>
 #include <vector>
@@ -49,7 +50,9 @@ class MrptTpSpaceNavigator {
   MrptTpSpaceNavigator(const std::string& config_text, const std::string& source, const TpSpaceRobot& robot);
   ~MrptTpSpaceNavigator();
 
-  /// Starts navigating to `goal` (map frame), arriving within `tolerance` metres, with a new navigator.
+  /// Starts navigating to `goal` (map frame), arriving within `tolerance` metres, with a navigator that has never
+  /// navigated. Making one takes MRPT a second or two (it simulates its trajectories again), too long for a
+  /// period's answer: the next episode's is made in the background while this one plays.
   /// @throws Error with MRPT's message when MRPT fails to make it.
   void start(MapPoint goal, double tolerance);
   /// One navigation step for the period `sensing`: the command (linear x, angular z).
@@ -59,8 +62,9 @@ class MrptTpSpaceNavigator {
   std::string error() const;
 
  private:
-  /// A new navigator from the configuration.
-  void renew();
+  /// A new navigator from the configuration. Touches nothing but the configuration, the robot interface's address
+  /// and the cache directory, so it may run beside a navigator's steps.
+  std::unique_ptr<mrpt::nav::CReactiveNavigationSystem> build() const;
 
   class Robot;
   struct CacheDirectory;
@@ -69,6 +73,8 @@ class MrptTpSpaceNavigator {
   std::unique_ptr<CacheDirectory> cache_;  // the PTGs' collision grids, built by the first navigator
   std::unique_ptr<mrpt::config::CConfigFileMemory> config_;
   std::unique_ptr<mrpt::nav::CReactiveNavigationSystem> navigator_;
+  bool navigated_ = false;  // navigator_ has had a target
+  std::future<std::unique_ptr<mrpt::nav::CReactiveNavigationSystem>> next_;  // last: waited for first on destruction
 };
 
 }  // namespace planners
