@@ -9,13 +9,9 @@
 
 #include <vector>
 
-#include <mrpt/config/CConfigFileMemory.h>
-#include <mrpt/nav/tpspace/CPTG_Holo_Blend.h>
-
-#include <cmath>
-
 #include "../mrpt_laser.hpp"
 #include "../sector_obstacles.hpp"
+#include "../test/holo_blend.hpp"
 #include "ppp_core/random_problem.hpp"
 #include "ppp_core/square_world.hpp"
 
@@ -103,26 +99,11 @@ void discSectors(benchmark::State& state) {
 }
 
 void mrptHoloBlendSectors(benchmark::State& state) {
-  mrpt::config::CConfigFileMemory config;
-  config.write("ptg", "num_paths", ppp::planners::kReactiveSectors);
-  config.write("ptg", "refDistance", 3.5);
-  config.write("ptg", "T_ramp_max", 0.9);
-  config.write("ptg", "v_max_mps", 0.5);
-  config.write("ptg", "w_max_dps", 90.0);
-  config.write("ptg", "robot_radius", 0.2);
-  mrpt::nav::CPTG_Holo_Blend ptg(config, "ptg");
-  ptg.initialize();
-  std::vector<double> tp_obstacles;
+  const mrpt::nav::CPTG_Holo_Blend ptg = ppp::planners::test::holoBlend(0.2, 3.5);
   std::size_t i = 0;
   for (auto _ : state) {
-    const ppp::planners::LaserRays& scan = sceneScans()[i++ % sceneScans().size()];
-    ptg.initTPObstacles(tp_obstacles);
-    for (std::size_t r = 0; r < scan.ranges.size(); ++r) {
-      if (!std::isfinite(scan.ranges[r])) continue;
-      const double angle = scan.angle_min + r * scan.angle_increment;
-      ptg.updateTPObstacle(scan.ranges[r] * std::cos(angle), scan.ranges[r] * std::sin(angle), tp_obstacles);
-    }
-    benchmark::DoNotOptimize(tp_obstacles.data());
+    const auto sectors = ppp::planners::test::holoBlendObstacles(ptg, sceneScans()[i++ % sceneScans().size()], 3.5);
+    benchmark::DoNotOptimize(sectors.data());
   }
   state.SetItemsProcessed(state.iterations());
 }

@@ -19,19 +19,12 @@ namespace {
 
 using test::driveReactive;
 using test::pictureProblem;
-using test::reactiveTraps;
 
 constexpr double kRadius = test::kTrapRadius;  // metres
 constexpr long kPeriods = test::kTrapPeriods;   // 300 s
 constexpr std::size_t kLastPeriods = 1000;  // the last 100 s
 
-Problem trapProblem(const std::string& name) {
-  for (const test::ReactiveTrap& trap : reactiveTraps()) {
-    if (trap.name == name) return pictureProblem(trap.picture);
-  }
-  ADD_FAILURE() << "no trap " << name;
-  return Problem{};
-}
+Problem trapProblem(const std::string& name) { return pictureProblem(test::trapPicture(name)); }
 
 /// The box the robot's centre stayed in over the run's last kLastPeriods periods.
 struct Box {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "map_picture.hpp"
+#include "reactive_traps.hpp"
 #include "ppp_agents/velocity_command.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/scan_rays.hpp"
@@ -114,8 +115,7 @@ TEST(MrptReactiveNavigatorTest, EveryMethodCrossesAnOpenMapToAGoalAwayFromItsEdg
 // the edges outweighs the goal's attraction (the potential field's "goal near obstacles" problem) and FullEval
 // scores the way west higher: both go back west to (6, 6), and from there east again, for ever.
 TEST(MrptReactiveNavigatorTest, VffAndFullEvalNeverEnterAGoalInTheMapsCorner) {
-  const Picture corner = {"S.......", "........", "........", "........",
-                          "........", "........", "........", ".......G"};
+  const Picture& corner = test::trapPicture("corner");
   const std::vector<Choice> nd = walk(corner, "ND", 100);
   EXPECT_EQ(nd.back().robot, test::markedCell(corner, 'G'));
   EXPECT_EQ(nd.size(), 15u);  // 14 moves, then the goal
@@ -136,15 +136,7 @@ TEST(MrptReactiveNavigatorTest, VffAndFullEvalNeverEnterAGoalInTheMapsCorner) {
 // south, for ever. The trap is symmetric about the robot's column and the goal lies on it, so VFF's force has no
 // east-west part: its directions are exactly ±90°. ND swings between the same two kinds of choice.
 TEST(MrptReactiveNavigatorTest, VffAndNdOscillateForEverInAUFacingAwayFromTheGoal) {
-  const Picture trap = {
-      "....G....",
-      ".........",
-      "..#####..",
-      "..#...#..",
-      "..#.S.#..",
-      "..#...#..",
-      ".........",
-  };
+  const Picture& trap = test::trapPicture("u");
   for (const std::string& method : {std::string("VFF"), std::string("ND")}) {
     const std::vector<Choice> choices = walk(trap, method, 300);
     ASSERT_EQ(choices.size(), 301u) << method << " reached the goal";
@@ -171,8 +163,7 @@ TEST(MrptReactiveNavigatorTest, VffAndNdOscillateForEverInAUFacingAwayFromTheGoa
 // exactly away from the goal (135°), a tie that the robot breaks along x (west). One cell west, the goal pulls
 // it back (-32.5°, east), for ever.
 TEST(MrptReactiveNavigatorTest, VffTurnsBackForEverInThePocketOfTwoDiagonalCellsBeforeTheGoal) {
-  const Picture trap = {"S.......", "........", "........", "........",
-                        ".....#..", "....#...", "......G.", "........"};
+  const Picture& trap = test::trapPicture("pocket");
   const std::vector<Choice> choices = walk(trap, "VFF", 300);
   ASSERT_EQ(choices.size(), 301u) << "VFF reached the goal";
   for (std::size_t i = 0; i < 8; ++i) {  // down the diagonal, alternating east and south
@@ -199,7 +190,7 @@ TEST(MrptReactiveNavigatorTest, VffTurnsBackForEverInThePocketOfTwoDiagonalCells
 // the cell north of it, the gap round the west side scores a little higher than the one round the east side
 // (0.437 against 0.423) and its direction leads back south-west.
 TEST(MrptReactiveNavigatorTest, NdSwingsForEverBesideOneObstacleBeforeAGoalInTheCorner) {
-  const Picture trap = {"S.....", "......", "......", "......", "....#.", ".....G"};
+  const Picture& trap = test::trapPicture("one_cell");
   const std::vector<Choice> choices = walk(trap, "ND", 300);
   ASSERT_EQ(choices.size(), 301u) << "ND reached the goal";
   const std::vector<Cell> approach = {{0, 0}, {0, 1}, {1, 1}, {1, 2}, {2, 2}, {2, 3}, {2, 4}};

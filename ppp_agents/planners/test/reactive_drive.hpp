@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "map_picture.hpp"
+#include "reactive_traps.hpp"
 #include "ppp_core/continuous_episode.hpp"
 #include "ppp_core/problem.hpp"
 #include "reactive_steering.hpp"
@@ -26,25 +27,6 @@ inline MotionOptions continuousDiffDrive() {
   options.motion = kMotionContinuous;
   options.kinematics = kKinematicsDiffDrive;
   return options;
-}
-
-/// A trap of MRPT's holonomic methods found on the grid, drawn ('#' obstacles, S start, G goal, 1 m cells).
-struct ReactiveTrap {
-  std::string name;
-  std::vector<std::string> picture;
-};
-
-/// The traps mrpt_reactive_navigator_test replays with one-cell steps, in its order: a goal in the map's corner
-/// (VFF, FullEval), a U facing away from the goal (VFF, ND), the pocket of two diagonal cells before the goal
-/// (VFF), one obstacle cell diagonal to a goal in the corner (ND).
-inline const std::vector<ReactiveTrap>& reactiveTraps() {
-  static const std::vector<ReactiveTrap> traps = {
-      {"corner", {"S.......", "........", "........", "........", "........", "........", "........", ".......G"}},
-      {"u", {"....G....", ".........", "..#####..", "..#...#..", "..#.S.#..", "..#...#..", "........."}},
-      {"pocket", {"S.......", "........", "........", "........", ".....#..", "....#...", "......G.", "........"}},
-      {"one_cell", {"S.....", "......", "......", "......", "....#.", ".....G"}},
-  };
-  return traps;
 }
 
 /// A drawn map ('#' obstacles, S start, G goal, 1 m cells) as a problem.

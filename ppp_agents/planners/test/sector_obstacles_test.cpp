@@ -4,8 +4,6 @@
 #include "sector_obstacles.hpp"
 
 #include <gtest/gtest.h>
-#include <mrpt/config/CConfigFileMemory.h>
-#include <mrpt/nav/tpspace/CPTG_Holo_Blend.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "holo_blend.hpp"
 #include "map_picture.hpp"
 
 namespace ppp {
@@ -89,35 +88,6 @@ TEST(SectorObstaclesTest, MapCastsEndAtKnownObstaclesAndTheMapsEdge) {
   EXPECT_NEAR(sectors[54], along, step);
 }
 
-/// MRPT's straight trajectories for a round holonomic robot of `radius` metres at rest, 72 of them as the
-/// holonomic methods' sectors, `range` metres long.
-mrpt::nav::CPTG_Holo_Blend holoBlend(double radius, double range) {
-  mrpt::config::CConfigFileMemory config;
-  const std::string s = "ptg";
-  config.write(s, "num_paths", kReactiveSectors);
-  config.write(s, "refDistance", range);
-  config.write(s, "T_ramp_max", 0.9);
-  config.write(s, "v_max_mps", 0.5);
-  config.write(s, "w_max_dps", 90.0);
-  config.write(s, "robot_radius", radius);
-  mrpt::nav::CPTG_Holo_Blend ptg(config, s);
-  ptg.initialize();
-  return ptg;
-}
-
-/// The fractions of `range` MRPT's trajectories travel before the disc touches a return of `scan`.
-std::vector<double> holoBlendObstacles(const mrpt::nav::CPTG_Holo_Blend& ptg, const LaserRays& scan, double range) {
-  std::vector<double> tp_obstacles;
-  ptg.initTPObstacles(tp_obstacles);
-  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
-    if (!std::isfinite(scan.ranges[i])) continue;
-    const double angle = scan.angle_min + i * scan.angle_increment;
-    ptg.updateTPObstacle(scan.ranges[i] * std::cos(angle), scan.ranges[i] * std::sin(angle), tp_obstacles);
-  }
-  for (double& d : tp_obstacles) d = std::clamp(d / range, 0.0, 1.0);
-  return tp_obstacles;
-}
-
 // By hand: a disc of 0.2 m and one return 1 m away along sector 36's centre (2.5°). Sector 36 travels 1 - 0.2 m;
 // sector 35, 5° off, meets it 0.0872 m to its side: cos 5° - sqrt(0.2² - sin² 5°) m. The disc touches it from
 // every direction within asin(0.2) = 11.5° of it, sectors 34 to 38; a point only from sector 36.
@@ -169,13 +139,13 @@ TEST(SectorObstaclesTest, DiscTravelIsMrptsStraightTrajectoriesForARoundRobot) {
   std::uniform_real_distribution<double> distance(0.05, 4.0);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (const double radius : {0.05, 0.2, 0.45}) {
-    const mrpt::nav::CPTG_Holo_Blend ptg = holoBlend(radius, range);
+    const mrpt::nav::CPTG_Holo_Blend ptg = test::holoBlend(radius, range);
     for (int trial = 0; trial < 200; ++trial) {
       LaserRays scan{-M_PI + unit(random), 2 * M_PI / 360, std::vector<float>(360)};
       for (float& r : scan.ranges) r = unit(random) < 0.1 ? kNoReturn : static_cast<float>(distance(random));
       int invalid = 0;
       const std::vector<double> ours = sectorObstaclesForDisc(scan, range, radius, &invalid);
-      const std::vector<double> mrpts = holoBlendObstacles(ptg, scan, range);
+      const std::vector<double> mrpts = test::holoBlendObstacles(ptg, scan, range);
       for (int k = 0; k < kReactiveSectors; ++k) {
         ASSERT_NEAR(ours[k], mrpts[k], 1e-5) << "radius " << radius << ", scan " << trial << ", sector " << k;
       }
