@@ -105,6 +105,11 @@ if(CATKIN_ENABLE_TESTING)
   target_link_libraries(reactive_trap_pictures ppp_planners_mrpt)
   target_compile_options(reactive_trap_pictures PRIVATE -Wall -Wextra)
   add_dependencies(tests reactive_trap_pictures)
+  # The committed picture is what the command findings.md shows writes.
+  add_test(NAME reactive_trap_pictures_test
+           COMMAND /bin/bash -c "out=$(mktemp --suffix=.png) && trap 'rm -f $out' EXIT && \
+$<TARGET_FILE:reactive_trap_pictures> $out > /dev/null && \
+cmp $out ${CMAKE_CURRENT_SOURCE_DIR}/../docs/images/reactive-traps-continuous.png")
   catkin_add_gtest(mrpt_reactive_navigator_test planners/test/mrpt_reactive_navigator_test.cpp)
   target_link_libraries(mrpt_reactive_navigator_test ppp_planners_mrpt ppp_agents GTest::gtest_main)
   target_compile_options(mrpt_reactive_navigator_test PRIVATE -Wall -Wextra)
