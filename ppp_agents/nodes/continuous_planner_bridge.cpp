@@ -89,14 +89,17 @@ agents::ContinuousReply ContinuousPlannerBridge::step(const ppp_msgs::SensingBat
     }
     episode_id_ = start.episode;
     origin_ = last_stamp_ + kEpisodeGap;
+    episode_start_ = origin_;
     link_.newEpisode();
     const MapFrame& frame = episode_->start.frame;
     const Grid* prior = episode_->start.prior_map;
-    link_.publishContinuousMap(origin_, origin_, frame,
-                               prior != nullptr ? protocol::priorMapCells(*prior)
-                                                : std::vector<std::int8_t>(static_cast<std::size_t>(frame.width) *
-                                                                               frame.height, kScanUnknown));
-    if (!commandsVelocity(parameters_)) plans_.start(episode_->start, parameters_.plan_requests);
+    start_map_ = prior != nullptr ? protocol::priorMapCells(*prior)
+                                  : std::vector<std::int8_t>(static_cast<std::size_t>(frame.width) * frame.height,
+                                                             kScanUnknown);
+    if (!commandsVelocity(parameters_)) {
+      link_.publishContinuousMap(origin_, episode_start_, frame, start_map_);
+      plans_.start(episode_->start, parameters_.plan_requests);
+    }
   }
   if (!episode_ || episode_id_ != reply.episode) {
     warnOnce("episode", "sensing for episode " + std::to_string(reply.episode) + " that never started");
@@ -118,6 +121,10 @@ agents::ContinuousReply ContinuousPlannerBridge::step(const ppp_msgs::SensingBat
 
 void ContinuousPlannerBridge::publish(const ros::Time& stamp, const ContinuousSensing& sensing, bool request) {
   const ContinuousStart& start = episode_->start;
+  // Every period of a local planner's carries the episode's map stamped with it: a planner in a process of its own
+  // reads each topic on a connection of its own, in no set order, and can tell the period's map (and so whether it
+  // begins a new episode) from the previous episode's only by its stamp.
+  if (commandsVelocity(parameters_)) link_.publishContinuousMap(stamp, episode_start_, start.frame, start_map_);
   link_.publishContinuous(stamp, sensing.pose, sensing.velocity, *sensing.ranges, start.beams,
                           request ? std::optional<MapPoint>(start.goal) : std::nullopt);
 }
@@ -125,18 +132,19 @@ void ContinuousPlannerBridge::publish(const ros::Time& stamp, const ContinuousSe
 void ContinuousPlannerBridge::command(const ros::Time& stamp, const ContinuousSensing& sensing,
                                       ContinuousReply* reply) {
   publish(stamp, sensing, true);
-  // A timer on the robot's clock can sleep past the period it is asked: a planner that started its timer at the
-  // period's time (it started late), or rospy's Rate, which reads the clock once to reckon its sleep and again to
-  // start it, and oversleeps by a period when the clock moved between the two. The clock moves only when the
-  // planner answers, so such a planner would never wake: each resend (a planner silent for a wall second, or one
-  // that restarted) asks the period again one control period later, the rest of the episode moved with it. The
-  // period's sensing is the same, so a planner whose answer depends on what it senses answers as it would have.
-  ros::Time asked = stamp;
-  const auto resend = [&](const ros::Time&) {
+  // A period left unanswered for a wall second is asked again (a planner that restarted missed it). A timer on the
+  // robot's clock can sleep past the period it is asked: a planner that started its timer at the period's time (it
+  // started late), or rospy's Rate, which reads the clock once to reckon its sleep and again to start it, and
+  // oversleeps by a period when the clock moved between the two. The clock moves only when the planner answers, so
+  // such a planner would never wake: it is asked the period again one control period later, the rest of the episode
+  // moved with it (the period's sensing is the same, so a planner whose answer depends on what it senses answers as
+  // it would have). A planner that answers each period's messages gets them again as they were: one that is only
+  // slow answers the period once, and its time runs as it would have.
+  const auto resend = [&] {
+    if (!wakesOnTimer(parameters_)) return publish(stamp, sensing, true);
     origin_ += ros::Duration(episode_->start.control_period);
-    asked = origin_ + ros::Duration(sensing.time);
-    last_stamp_ = asked;
-    publish(asked, sensing, true);
+    last_stamp_ = origin_ + ros::Duration(sensing.time);
+    publish(last_stamp_, sensing, true);
   };
   const std::optional<VelocityAnswer> answer = link_.waitForCommand(stamp, resend);
   if (!answer) {
@@ -162,11 +170,11 @@ void ContinuousPlannerBridge::command(const ros::Time& stamp, const ContinuousSe
 void ContinuousPlannerBridge::followPlans(const ros::Time& stamp, const ContinuousSensing& sensing,
                                           ContinuousReply* reply) {
   const bool ask = plans_.observe(sensing);
-  if (ask) link_.publishContinuousMap(stamp, origin_, episode_->start.frame, plans_.map());
+  if (ask) link_.publishContinuousMap(stamp, episode_start_, episode_->start.frame, plans_.map());
   publish(stamp, sensing, ask);
   if (ask) {
-    const auto resend = [&](const ros::Time&) {
-      link_.publishContinuousMap(stamp, origin_, episode_->start.frame, plans_.map());
+    const auto resend = [&] {
+      link_.publishContinuousMap(stamp, episode_start_, episode_->start.frame, plans_.map());
       publish(stamp, sensing, true);
     };
     const std::optional<nav_msgs::Path> path =

@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "planner_bridge_parameters.hpp"
 #include "planner_link.hpp"
@@ -22,8 +23,8 @@ namespace agents {
 /// base_link, odom with pose and twist, the laser, and robot/clock, which the planner reads as /clock with
 /// /use_sim_time set) and answers the simulator with a velocity command (the simulator's base controller clamps
 /// it), or with a failure (planner_timeout, planner_lost, ...):
-/// - interface cmd_vel: every period is a request (the goal); the command is the planner's, stamped at that time
-///   or later;
+/// - interface cmd_vel: every period is a request (the goal, and the episode's map); the command is the planner's,
+///   stamped at that time or later;
 /// - interface path: a PlanFollower says which periods are requests (plan_requests); a request publishes the
 ///   robot's map (the true one, or the one its laser built) and the goal and waits for the planner's path; the
 ///   command follows the path taken by pure pursuit.
@@ -43,8 +44,9 @@ class ContinuousPlannerBridge {
   agents::ContinuousReply step(const ppp_msgs::SensingBatch& batch);
   /// Publishes the period `sensing` at `stamp`, with the goal when it is a `request`.
   void publish(const ros::Time& stamp, const ContinuousSensing& sensing, bool request);
-  /// interface cmd_vel: the planner's command for the period into `reply`, or its failure; the period is asked
-  /// again a control period later each time the planner leaves it unanswered for a wall second.
+  /// interface cmd_vel: the planner's command for the period into `reply`, or its failure; each time the planner
+  /// leaves the period unanswered for a wall second it is asked again: a control period later when a timer wakes the
+  /// planner (wakes_on), as it was when its messages do.
   void command(const ros::Time& stamp, const ContinuousSensing& sensing, ContinuousReply* reply);
   /// interface path: the command along the planner's path into `reply`, asking for one when the period is a
   /// request, or the failure.
@@ -61,7 +63,9 @@ class ContinuousPlannerBridge {
   std::optional<protocol::DecodedStart> episode_;  // the episode being played
   PlanFollower plans_;                             // interface path: the robot's map, requests and path
   std::uint32_t episode_id_ = 0;
-  ros::Time origin_;      // the simulated time of the episode's start
+  ros::Time origin_;         // the simulated time of the episode's start, moved on by each period asked again
+  ros::Time episode_start_;  // the simulated time of the episode's start: its map's map_load_time
+  std::vector<std::int8_t> start_map_;  // what the robot knows at the start (kScan... values, the frame's cells)
   ros::Time last_stamp_;  // the latest time published
   std::map<std::string, long> warnings_;
 };

@@ -191,9 +191,11 @@ PlannerBridge::StepOutcome PlannerBridge::request() {
   // this step's map that arrived already is that answer).
   const Request& r = request_;
   link_.publishGoal(r.stamp, episode_);
-  const auto resend = [&](const ros::Time& again) {
-    link_.publishState(again, episode_stamp_, episode_, r.robot, r.cells.data(), r.range);
-    link_.publishGoal(again, episode_);
+  // Asked again as it was, with its own stamp: a planner that restarted gets it, and one that is only slow answers
+  // it once (a second request for one state would change a planner with a memory of its own).
+  const auto resend = [&] {
+    link_.publishState(r.stamp, episode_stamp_, episode_, r.robot, r.cells.data(), r.range);
+    link_.publishGoal(r.stamp, episode_);
   };
   const auto silent = [&](const char* what) {
     if (!link_.alive()) return fail(reason::kPlannerLost, "the planner's process is gone");

@@ -139,7 +139,7 @@ bool PlannerLink::alive() const { return connected() && ppp_msgs::publisherAlive
 template <class Message>
 std::optional<Message> PlannerLink::waitFor(AnswerInbox<Message>* inbox, const ros::Time& request,
                                             const std::function<bool(const Message&)>& fits,
-                                            const std::function<void(const ros::Time&)>& resend) {
+                                            const std::function<void()>& resend) {
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(parameters_.plan_timeout);
   ros::WallTime resend_at = ros::WallTime::now() + ros::WallDuration(1.0);
   std::optional<Message> unusable;  // the last answer that does not fit the request
@@ -168,9 +168,9 @@ std::optional<Message> PlannerLink::waitFor(AnswerInbox<Message>* inbox, const r
     const ros::WallTime now = ros::WallTime::now();
     if (now >= deadline) break;
     if (now >= resend_at) {
-      // A planner that (re)started since the request missed it: send the state and the goal again.
+      // A planner that (re)started since the request missed it, or one waiting for its timer: ask again.
       lock.unlock();
-      resend(ros::Time::now());
+      resend();
       lock.lock();
       resend_at = now + ros::WallDuration(1.0);
       continue;
@@ -185,12 +185,12 @@ std::optional<Message> PlannerLink::waitFor(AnswerInbox<Message>* inbox, const r
 
 std::optional<nav_msgs::Path> PlannerLink::waitForPath(const ros::Time& request,
                                                        const std::function<bool(const nav_msgs::Path&)>& fits,
-                                                       const std::function<void(const ros::Time&)>& resend) {
+                                                       const std::function<void()>& resend) {
   return waitFor(&paths_, request, fits, resend);
 }
 
 std::optional<VelocityAnswer> PlannerLink::waitForCommand(const ros::Time& request,
-                                                         const std::function<void(const ros::Time&)>& resend) {
+                                                         const std::function<void()>& resend) {
   return waitFor<VelocityAnswer>(
       &commands_, request, [](const VelocityAnswer&) { return true; }, resend);
 }

@@ -100,16 +100,16 @@ class PlannerLink {
   /// The newest path the planner published on its own since the last look, if any.
   std::optional<nav_msgs::Path> takeUnasked();
   /// Waits up to plan_timeout for a path stamped at or after `request` (or unstamped, unless lockstep) that
-  /// `fits`; a path that does not fit is kept and returned when no better one comes. `resend(stamp)` sends the
+  /// `fits`; a path that does not fit is kept and returned when no better one comes. `resend()` sends the
   /// request again every second (a restarted planner missed it). Marks the planner as having answered when a path
   /// is returned.
   std::optional<nav_msgs::Path> waitForPath(const ros::Time& request,
                                             const std::function<bool(const nav_msgs::Path&)>& fits,
-                                            const std::function<void(const ros::Time&)>& resend);
+                                            const std::function<void()>& resend);
   /// Waits up to plan_timeout for a velocity command stamped at or after `request`, or a status ABORTED on
   /// planner_status for such a goal stamp, as waitForPath waits for a path (every command fits).
   std::optional<VelocityAnswer> waitForCommand(const ros::Time& request,
-                                               const std::function<void(const ros::Time&)>& resend);
+                                               const std::function<void()>& resend);
   /// True when the planner that answered in this episode is gone: disconnected, or its process dead
   /// (asked over XML-RPC at most every 0.2 s).
   bool gone();
@@ -122,7 +122,7 @@ class PlannerLink {
   template <class Message>
   std::optional<Message> waitFor(AnswerInbox<Message>* inbox, const ros::Time& request,
                                  const std::function<bool(const Message&)>& fits,
-                                 const std::function<void(const ros::Time&)>& resend);
+                                 const std::function<void()>& resend);
   bool connected() const { return answers_.getNumPublishers() > 0; }
   /// The answer topic's type, as the master names it.
   const char* answerType() const;

@@ -144,6 +144,11 @@ cmp $out ${CMAKE_CURRENT_SOURCE_DIR}/../docs/images/reactive-traps-continuous.pn
   upstream_report_test(mrpt_nd_seam mrpt_seam_test mrpt-nd-seam.md)
   catkin_add_gtest(planner_node_parameters_test planners/test/planner_node_parameters_test.cpp)
   target_link_libraries(planner_node_parameters_test ppp_planners_ros GTest::gtest_main)
+  # The local planners' link answers a control period with its own goal and map, whatever order its topics come in.
+  add_rostest_gtest(velocity_planner_link_rostest planners/test/velocity_planner_link.test
+                    planners/test/velocity_planner_link_rostest.cpp)
+  target_link_libraries(velocity_planner_link_rostest ppp_planners_ros)
+  target_compile_options(velocity_planner_link_rostest PRIVATE -Wall -Wextra)
 endif()
 
 # Plan times on a 20x20 map, and laser scans against MRPT's (Google Benchmark): separate executables, never tests.

@@ -94,6 +94,10 @@ void VelocityPlannerLink::onGoal(const geometry_msgs::PoseStamped::ConstPtr& goa
 void VelocityPlannerLink::serve() {
   if (!pending_ || !map_message_ || map_message_->header.stamp < pending_->header.stamp) return;
   const ros::Time stamp = pending_->header.stamp;
+  if (stamp <= answered_) {  // a request asked again (the bridge thought this node restarted): answered already
+    pending_ = nullptr;
+    return;
+  }
   const sensor_msgs::LaserScan::ConstPtr scan = stampedAt<sensor_msgs::LaserScan>(scans_, stamp);
   const nav_msgs::Odometry::ConstPtr pose = stampedAt<nav_msgs::Odometry>(poses_, stamp);
   if (!scan || !pose) return;
@@ -104,6 +108,7 @@ void VelocityPlannerLink::serve() {
              pose->header.frame_id.c_str(), frames_.base_frame.c_str(), frames_.map_frame.c_str());
     return;
   }
+  answered_ = stamp;
   respond(stamp, *scan, *pose, goal);
 }
 
@@ -111,6 +116,9 @@ void VelocityPlannerLink::drive() {
   if (!goal_pose_ || !map_message_ || scans_.empty()) return;
   const ros::Time stamp = scans_.back()->header.stamp;
   if (stamp <= answered_) return;
+  // Each topic has a connection of its own, read in no set order: the period's goal and map (which says whether it
+  // begins an episode) are the ones stamped with it, not whichever came last.
+  if (goal_pose_->header.stamp != stamp || map_message_->header.stamp != stamp) return;
   const nav_msgs::Odometry::ConstPtr pose = stampedAt<nav_msgs::Odometry>(poses_, stamp);
   if (!pose) return;
   answered_ = stamp;

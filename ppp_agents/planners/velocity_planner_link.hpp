@@ -9,10 +9,11 @@
 //                                                          episode
 //               move_base_simple/goal (geometry_msgs/PoseStamped)  on the grid a request, answered once the scan,
 //                                                          pose and map of its stamp are in; in continuous motion
-//                                                          the episode's goal
+//                                                          the episode's goal, sent with every period
 //   publishes   cmd_vel (geometry_msgs/TwistStamped)       on the grid stamped with the goal's stamp; in continuous
 //                                                          motion one command per control period, stamped with its
-//                                                          scan's, as soon as its scan and odometry are in
+//                                                          scan's, as soon as the scan, odometry, goal and map of
+//                                                          its stamp are in
 //               planner_status (actionlib_msgs/GoalStatus) instead of the command when the node gives up on its
 //                                                          goal: ABORTED, its goal_id stamped as the command would
 //                                                          be, the reason as text
@@ -88,8 +89,8 @@ class VelocityPlannerLink {
   std::deque<nav_msgs::Odometry::ConstPtr> poses_;
   nav_msgs::OccupancyGrid::ConstPtr map_message_;
   geometry_msgs::PoseStamped::ConstPtr pending_;    // grid: the goal not answered yet
-  geometry_msgs::PoseStamped::ConstPtr goal_pose_;  // continuous motion: the episode's goal
-  ros::Time answered_;                              // continuous motion: the last period answered
+  geometry_msgs::PoseStamped::ConstPtr goal_pose_;  // continuous motion: the newest goal (the episode's)
+  ros::Time answered_;                              // the last request or period answered
   ros::Time episode_;                               // the map_load_time of the episode being played
   ros::Publisher command_;
   ros::Publisher status_;

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <map>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -333,7 +334,8 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
                                           {kMotionContinuous, "velocity, heading and a 2D laser (astar, planners)"}}),
     };
     const std::vector<OptionSpec<BridgeOptions>> per_agent =
-        selectOptions(bridgeOptionSpecs(), {"plan_timeout", "lockstep", "plan_requests", "interface", "endless_proof", "cells_per_ppp_cell"});
+        selectOptions(bridgeOptionSpecs(), {"plan_timeout", "lockstep", "plan_requests", "interface", "endless_proof",
+                                            "wakes_on", "cells_per_ppp_cell"});
     for (OptionSpec<A>& spec : nestedOptions(per_agent, +[](A& a) -> BridgeOptions& { return a.bridge; })) {
       spec.doc = "planner agents: " + spec.doc;
       list.insert(list.end() - 2, spec);  // before host and process
@@ -375,6 +377,13 @@ bool isPlanner(const AgentConfig& config) { return config.type == kPlannerType; 
 
 bool playsContinuously(const AgentConfig& config, const EpisodeOptions& options) {
   return (config.motion == kMotionOfExperiment ? options.motion.motion : config.motion) == kMotionContinuous;
+}
+
+std::string plannerWakesOn(const AgentConfig& config) {
+  if (config.bridge.wakes_on != kWakesOnAuto) return config.bridge.wakes_on;
+  static const std::set<std::string> answering_messages = {
+      "ppp_agents/dwa_planner_node", "ppp_agents/mrpt_reactive_node", "ppp_agents/mrpt_tpspace_node"};
+  return answering_messages.count(config.planner_node) > 0 ? kWakesOnMessages : kWakesOnTimer;
 }
 
 int instanceCount(const AgentConfig& config, const EpisodeOptions& options) {

@@ -74,6 +74,22 @@ const std::vector<OptionSpec<BridgeOptions>>& bridgeOptionSpecs() {
                     "when the planner's answer is a function of its input (false for a planner with a memory of "
                     "its own, such as MRPT's ND)",
                     +[](B& b) -> bool& { return b.endless_proof; }),
+      declareOption("wakes_on",
+                    "interface cmd_vel in continuous motion: what makes the planner answer a control period, which "
+                    "says how a period left unanswered for a wall second is asked again",
+                    +[](B& b) -> std::string& { return b.wakes_on; })
+          .withChoices("planner wake-up",
+                       {{kWakesOnAuto,
+                         "messages for this repository's local planners (planner_node ppp_agents/dwa_planner_node, "
+                         "mrpt_reactive_node, mrpt_tpspace_node), a timer for any other planner"},
+                        {kWakesOnTimer,
+                         "a timer on the robot's clock, as move_base's controller runs: the period is asked again "
+                         "a control period later (a timer that overslept wakes), the rest of the episode moved with "
+                         "it"},
+                        {kWakesOnMessages,
+                         "the period's messages, answered as they come, as this repository's local planners do: the "
+                         "period's messages are sent again as they were (a planner that restarted gets them, one "
+                         "that is only slow answers once) and the clock stays"}}),
       declareOption("connect_timeout",
                     "seconds to wait at start-up for the planner's topics (an experiment's graph sets 300 for a "
                     "planner the user starts, 20 for one it starts)",

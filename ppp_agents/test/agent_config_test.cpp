@@ -149,7 +149,7 @@ TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
             "endless_proof, explorer_idle, explorer_ties, frontier, goal_range, goal_seeking, goal_ties, host, "
             "instances, interface, lockstep, memory, memory_model, motion, name, plan_requests, plan_timeout, planner_args, "
             "planner_node, prior_map, process, runs, "
-            "sensor_noise, type, wall_leave, wall_sense, wall_start");
+            "sensor_noise, type, wakes_on, wall_leave, wall_sense, wall_start");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),
             std::string("agents.yaml:3: agents[1].type: missing; valid: ") + kTypes);
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - name: x\n    type: robot\n"),

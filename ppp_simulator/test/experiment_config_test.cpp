@@ -378,7 +378,8 @@ TEST_F(ExperimentYaml, PlannerAgentsKeepTheirOwnRunsAndMapChoiceInTheFingerprint
                              "explorer_idle: random, explorer_ties: random, frontier: nearest, runs: 3, "
                              "prior_map: true, "
                              "planner_node: '', planner_args: '', plan_timeout: 5, lockstep: true, "
-                             "plan_requests: every_step, interface: path, endless_proof: true, cells_per_ppp_cell: 1, motion: experiment}"),
+                             "plan_requests: every_step, interface: path, endless_proof: true, wakes_on: auto, "
+                             "cells_per_ppp_cell: 1, motion: experiment}"),
             std::string::npos)
       << fingerprint;
   c.agents[1].runs = 4;  // a change of the planner's runs is a different experiment

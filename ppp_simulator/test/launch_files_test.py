@@ -483,6 +483,25 @@ class ContinuousGraphTest(unittest.TestCase):
             else:
                 self.assertIn(['/use_sim_time', '/ppp/use_system_time'], remaps, node.namespace + node.name)
 
+    def test_each_bridge_is_told_what_wakes_its_planner(self):
+        # auto: this repository's local planners answer their messages, any other planner a timer; a value given
+        # in the config stands.
+        path = write_config(tempfile.mkdtemp(), "motion: continuous\nagents:\n"
+                            "  - {name: dwa, type: planner, interface: cmd_vel, instances: 1, "
+                            "planner_node: ppp_agents/dwa_planner_node}\n"
+                            "  - {name: tp, type: planner, interface: cmd_vel, instances: 1, "
+                            "planner_node: ppp_agents/mrpt_tpspace_node}\n"
+                            "  - {name: steer, type: planner, interface: cmd_vel, instances: 1, "
+                            "planner_node: ppp_agents/steering_planner.py}\n"
+                            "  - {name: mine, type: planner, interface: cmd_vel}\n"
+                            "  - {name: told, type: planner, interface: cmd_vel, instances: 1, wakes_on: timer, "
+                            "planner_node: ppp_agents/mrpt_reactive_node}\n" + self.SETS)
+        graph, _ = load_graph(path)
+        woken = {name: graph.params['/%s/bridge/wakes_on' % name].value
+                 for name in ('dwa', 'tp', 'steer', 'mine', 'told')}
+        self.assertEqual(woken, {'dwa': 'messages', 'tp': 'messages', 'steer': 'timer', 'mine': 'timer',
+                                 'told': 'timer'})
+
     def test_a_free_running_planner_in_continuous_motion_is_refused_naming_lockstep(self):
         path = write_config(tempfile.mkdtemp(), "motion: continuous\nagents:\n  - {name: ompl, type: planner, "
                             "lockstep: false, planner_node: ppp_agents/ompl_planner_node}\n" + self.SETS)

@@ -131,6 +131,10 @@ bool isPlanner(const AgentConfig& config);
 /// True when `config` plays in continuous motion under `options`: its own `motion`, else the experiment's.
 bool playsContinuously(const AgentConfig& config, const EpisodeOptions& options);
 
+/// What makes a planner agent's planner answer a control period (kWakesOnTimer or kWakesOnMessages): its
+/// `wakes_on`, with auto resolved by its planner_node (this repository's local planners answer their messages).
+std::string plannerWakesOn(const AgentConfig& config);
+
 /// How many instances play an agent's runs in parallel through ROS, each its share (every n-th run): for a planner
 /// agent, bridge and planner pairs: `instances` when given, else as many as this machine has cores for a planner
 /// the experiment starts (planner_node), and 1 for one the user starts. For a built-in agent in continuous motion

@@ -24,6 +24,14 @@ inline constexpr const char* kInterfacePath = "path";
 /// `interface`: the planner answers a request with a velocity command (geometry_msgs/TwistStamped on `cmd_vel`).
 inline constexpr const char* kInterfaceCmdVel = "cmd_vel";
 
+/// `wakes_on`: messages for this repository's local planners, a timer for any other (plannerWakesOn in
+/// agent_config.hpp); a bridge started by hand takes it as a timer.
+inline constexpr const char* kWakesOnAuto = "auto";
+/// `wakes_on`: a local planner in continuous motion answers on a timer on the robot's clock.
+inline constexpr const char* kWakesOnTimer = "timer";
+/// `wakes_on`: a local planner in continuous motion answers each control period's messages as they come.
+inline constexpr const char* kWakesOnMessages = "messages";
+
 /// The planner bridge's own `~` parameters (besides its agent's name and memory): what it publishes to the
 /// planner and how long it waits for it.
 struct BridgeOptions {
@@ -35,6 +43,7 @@ struct BridgeOptions {
   std::string plan_requests = kPlanRequestsEveryStep;  ///< When a lockstep bridge asks (kPlanRequests...).
   std::string interface = kInterfacePath;          ///< What the planner answers with (kInterface...).
   bool endless_proof = true;  ///< Report the decision state that proves loops endless (a planner without memory).
+  std::string wakes_on = kWakesOnAuto;  ///< Continuous motion, cmd_vel: what makes the planner answer (kWakesOn...).
   double connect_timeout = 20.0;                   ///< Seconds to wait at start-up for the planner's topics.
   std::string map_frame = ppp_msgs::frames::kMap;  ///< Frame of the map, poses and goal.
   std::string base_frame;  ///< The robot's frame (tf child, odom child, scan frame); "": defaultBridgeBaseFrame.
@@ -50,6 +59,9 @@ std::string interfaceProblem(const BridgeOptions& options);
 
 /// True when the planner answers with velocity commands rather than paths.
 inline bool commandsVelocity(const BridgeOptions& options) { return options.interface == kInterfaceCmdVel; }
+
+/// True when a local planner in continuous motion answers on a timer (so a period asked again moves its clock on).
+inline bool wakesOnTimer(const BridgeOptions& options) { return options.wakes_on != kWakesOnMessages; }
 
 /// True when a lockstep bridge with `options` asks the planner at every step.
 inline bool asksEveryStep(const BridgeOptions& options) { return options.plan_requests == kPlanRequestsEveryStep; }
