@@ -100,16 +100,25 @@ if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(mrpt_reactive_continuous_test planners/test/mrpt_reactive_continuous_test.cpp)
   target_link_libraries(mrpt_reactive_continuous_test ppp_planners_mrpt GTest::gtest_main)
   target_compile_options(mrpt_reactive_continuous_test PRIVATE -Wall -Wextra)
+  catkin_add_gtest(mrpt_hunted_traps_test planners/test/mrpt_hunted_traps_test.cpp)
+  target_link_libraries(mrpt_hunted_traps_test ppp_planners_mrpt GTest::gtest_main)
+  target_compile_options(mrpt_hunted_traps_test PRIVATE -Wall -Wextra)
   # Their pictures for docs/images/reactive-traps-continuous.png.
   add_executable(reactive_trap_pictures planners/test/reactive_trap_pictures.cpp)
   target_link_libraries(reactive_trap_pictures ppp_planners_mrpt)
   target_compile_options(reactive_trap_pictures PRIVATE -Wall -Wextra)
   add_dependencies(tests reactive_trap_pictures)
-  # The committed picture is what the command findings.md shows writes.
-  add_test(NAME reactive_trap_pictures_test
-           COMMAND /bin/bash -c "out=$(mktemp --suffix=.png) && trap 'rm -f $out' EXIT && \
-$<TARGET_FILE:reactive_trap_pictures> $out > /dev/null && \
-cmp $out ${CMAKE_CURRENT_SOURCE_DIR}/../docs/images/reactive-traps-continuous.png")
+  # Each committed picture is what the command findings.md shows writes.
+  function(trap_picture_test test picture)
+    string(REPLACE ";" " " flags "${ARGN}")
+    add_test(NAME ${test}
+             COMMAND /bin/bash -c "out=$(mktemp --suffix=.png) && trap 'rm -f $out' EXIT && \
+$<TARGET_FILE:reactive_trap_pictures> ${flags} $out > /dev/null && \
+cmp $out ${CMAKE_CURRENT_SOURCE_DIR}/../docs/images/${picture}")
+  endfunction()
+  trap_picture_test(reactive_trap_pictures_test reactive-traps-continuous.png)
+  trap_picture_test(hunted_nd_trap_pictures_test hunted-nd-traps-continuous.png --hunted ND)
+  trap_picture_test(hunted_vff_trap_pictures_test hunted-vff-traps-continuous.png --hunted VFF)
   catkin_add_gtest(mrpt_reactive_navigator_test planners/test/mrpt_reactive_navigator_test.cpp)
   target_link_libraries(mrpt_reactive_navigator_test ppp_planners_mrpt ppp_agents GTest::gtest_main)
   target_compile_options(mrpt_reactive_navigator_test PRIVATE -Wall -Wextra)

@@ -17,31 +17,15 @@ namespace ppp {
 namespace planners {
 namespace {
 
+using test::Box;
 using test::driveReactive;
+using test::lastBox;
 using test::pictureProblem;
 
 constexpr double kRadius = test::kTrapRadius;  // metres
 constexpr long kPeriods = test::kTrapPeriods;   // 300 s
-constexpr std::size_t kLastPeriods = 1000;  // the last 100 s
 
 Problem trapProblem(const std::string& name) { return pictureProblem(test::trapPicture(name)); }
-
-/// The box the robot's centre stayed in over the run's last kLastPeriods periods.
-struct Box {
-  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-  double extent() const { return std::max(x1 - x0, y1 - y0); }
-};
-
-Box lastBox(const ContinuousOutcome& outcome) {
-  Box box;
-  for (std::size_t i = outcome.poses.size() - kLastPeriods; i < outcome.poses.size(); ++i) {
-    box.x0 = std::min(box.x0, outcome.poses[i].x);
-    box.x1 = std::max(box.x1, outcome.poses[i].x);
-    box.y0 = std::min(box.y0, outcome.poses[i].y);
-    box.y1 = std::max(box.y1, outcome.poses[i].y);
-  }
-  return box;
-}
 
 double distance(const Pose2D& pose, double x, double y) { return std::hypot(pose.x - x, pose.y - y); }
 

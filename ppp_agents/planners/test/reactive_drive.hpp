@@ -4,6 +4,8 @@
 // sector for the robot's body, the goal is put in the robot's frame, the method chooses and its choice becomes a
 // command (ReactiveSteering, the node's own steering). Shared by the continuous trap tests and the program drawing
 // their pictures.
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -61,6 +63,26 @@ inline ContinuousOutcome driveReactive(const Problem& problem, const std::string
     episode.apply(steering.command(view, &invalid));
   }
   return episode.outcome();
+}
+
+/// The box a run's robot centre stayed in.
+struct Box {
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  double extent() const { return std::max(x1 - x0, y1 - y0); }
+};
+
+/// The box the robot's centre stayed in over the run's last 1,000 periods (100 s; `outcome` has its poses).
+inline Box lastBox(const ContinuousOutcome& outcome) {
+  constexpr std::size_t kLastPeriods = 1000;
+  Box box;
+  for (std::size_t i = outcome.poses.size() - std::min(kLastPeriods, outcome.poses.size()); i < outcome.poses.size();
+       ++i) {
+    box.x0 = std::min(box.x0, outcome.poses[i].x);
+    box.x1 = std::max(box.x1, outcome.poses[i].x);
+    box.y0 = std::min(box.y0, outcome.poses[i].y);
+    box.y1 = std::max(box.y1, outcome.poses[i].y);
+  }
+  return box;
 }
 
 }  // namespace test
