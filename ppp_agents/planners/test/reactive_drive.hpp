@@ -38,10 +38,12 @@ inline Problem pictureProblem(const std::vector<std::string>& picture) {
 
 /// One run of `method` on `problem` for a disc of `radius` metres, at most `periods` control periods, with
 /// mrpt_reactive_node's steering and its defaults (full speed 1 m/s, turns up to 1.5 rad/s, distances as fractions
-/// of the laser's range); `obstacles` as its ~obstacles. The outcome has every pose.
+/// of the laser's range); `obstacles` as its ~obstacles, `kinematics` as the robot's. The outcome has every pose.
 inline ContinuousOutcome driveReactive(const Problem& problem, const std::string& method, double radius,
-                                       long periods, const std::string& obstacles = kObstaclesFromScan) {
-  const MotionOptions options = continuousDiffDrive();
+                                       long periods, const std::string& obstacles = kObstaclesFromScan,
+                                       const std::string& kinematics = kKinematicsDiffDrive) {
+  MotionOptions options = continuousDiffDrive();
+  options.kinematics = kinematics;
   ContinuousEpisode episode(problem, decodeGrid(problem), options, radius / options.resolution, periods, 1, true);
   ReactiveNodeParameters parameters;
   parameters.method = method;
