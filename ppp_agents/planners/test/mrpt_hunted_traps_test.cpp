@@ -108,6 +108,35 @@ TEST(MrptHuntedTrapsTest, NdHoversBeforeAGoalItCanEnterOnlyAlongAnEdge) {
   }
 }
 
+// VFF's own hunt in continuous motion (goal at (14, 12)) shrinks mostly to short walls and diagonals before which
+// it comes to rest more than 3 m from the goal, on either base. Its smallest trap, one cell west of the goal, is
+// not one: VFF stops 0.26 m from the goal's centre on a differential drive, 1 cm outside the run's tolerance of
+// 0.25 m, and within it (passing) on a holonomic base.
+TEST(MrptHuntedTrapsTest, VffComesToRestBeforeShortWallsOnEitherBase) {
+  const std::vector<HuntedTrap> walls = {{"VFF", {14, 12}, {{12, 10}, {12, 11}, {12, 12}, {12, 13}}},
+                                         {"VFF", {14, 12}, {{9, 10}, {10, 9}, {11, 8}, {12, 7}}}};
+  for (const HuntedTrap& wall : walls) {
+    const Problem problem = test::pictureProblem(test::huntedTrapPicture(wall));
+    for (const std::string kinematics : {kKinematicsDiffDrive, kKinematicsHolonomic}) {
+      const ContinuousOutcome outcome = test::driveReactive(problem, "VFF", test::kTrapRadius, test::kTrapPeriods,
+                                                            kObstaclesFromScan, kinematics);
+      EXPECT_STREQ(outcome.reason, reason::kBudgetExhausted) << kinematics;
+      EXPECT_GT(std::hypot(outcome.poses.back().x - 14.5, outcome.poses.back().y - 7.5), 3.0) << kinematics;
+      EXPECT_LT(test::lastBox(outcome).extent(), 0.2) << kinematics << ": still moves";
+    }
+  }
+  const Problem beside = test::pictureProblem(test::huntedTrapPicture({"VFF", {14, 12}, {{13, 12}}}));
+  const ContinuousOutcome diff_drive = test::driveReactive(beside, "VFF", test::kTrapRadius, test::kTrapPeriods);
+  EXPECT_STREQ(diff_drive.reason, reason::kBudgetExhausted);
+  const double short_by = std::hypot(diff_drive.poses.back().x - 14.5, diff_drive.poses.back().y - 7.5);
+  EXPECT_GT(short_by, 0.25);
+  EXPECT_LT(short_by, 0.3);
+  EXPECT_STREQ(test::driveReactive(beside, "VFF", test::kTrapRadius, test::kTrapPeriods, kObstaclesFromScan,
+                                   kKinematicsHolonomic)
+                   .reason,
+               reason::kGoalReached);
+}
+
 // The default experiment's report shrank ND's worst `turns` PPP on the grid to a diagonal wall of 12 cells touching
 // at their corners, along which it cycled (docs/images/shrunk-nd-diagonal.png). Driven, ND goes round the wall's
 // lower end to the goal: an artefact of the one-cell step too.
