@@ -148,7 +148,7 @@ void ContinuousPlannerBridge::command(const ros::Time& stamp, const ContinuousSe
   };
   const std::optional<VelocityAnswer> answer = link_.waitForCommand(stamp, resend);
   if (!answer) {
-    reply->failure = link_.gone() ? reason::kPlannerLost : reason::kPlannerTimeout;
+    reply->failure = link_.lostWhileWaiting() || link_.gone() ? reason::kPlannerLost : reason::kPlannerTimeout;
     return;
   }
   if (answer->aborted) {
@@ -180,7 +180,7 @@ void ContinuousPlannerBridge::followPlans(const ros::Time& stamp, const Continuo
     const std::optional<nav_msgs::Path> path =
         link_.waitForPath(stamp, [](const nav_msgs::Path&) { return true; }, resend);
     if (!path) {
-      reply->failure = link_.gone() ? reason::kPlannerLost : reason::kPlannerTimeout;
+      reply->failure = link_.lostWhileWaiting() || link_.gone() ? reason::kPlannerLost : reason::kPlannerTimeout;
       return;
     }
     std::vector<MapPoint> points;

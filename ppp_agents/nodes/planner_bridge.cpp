@@ -198,7 +198,7 @@ PlannerBridge::StepOutcome PlannerBridge::request() {
     link_.publishGoal(r.stamp, episode_);
   };
   const auto silent = [&](const char* what) {
-    if (!link_.alive()) return fail(reason::kPlannerLost, "the planner's process is gone");
+    if (link_.lostWhileWaiting() || !link_.alive()) return fail(reason::kPlannerLost, "the planner's process is gone");
     return fail(reason::kPlannerTimeout,
                 std::string("no ") + what + " within " + std::to_string(parameters_.plan_timeout) + " s");
   };

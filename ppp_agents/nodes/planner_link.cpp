@@ -143,6 +143,7 @@ std::optional<Message> PlannerLink::waitFor(AnswerInbox<Message>* inbox, const r
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(parameters_.plan_timeout);
   ros::WallTime resend_at = ros::WallTime::now() + ros::WallDuration(1.0);
   std::optional<Message> unusable;  // the last answer that does not fit the request
+  lost_ = false;
   std::unique_lock<std::mutex> lock(inbox->mutex);
   while (running()) {
     if (inbox->received > inbox->used) {
@@ -164,7 +165,10 @@ std::optional<Message> PlannerLink::waitFor(AnswerInbox<Message>* inbox, const r
       }
     }
     // A planner that answered in this episode and is gone now died mid-episode: no point waiting.
-    if (gone()) break;
+    if (gone()) {
+      lost_ = true;  // a planner restarted since is another process: this request's died with the first
+      break;
+    }
     const ros::WallTime now = ros::WallTime::now();
     if (now >= deadline) break;
     if (now >= resend_at) {

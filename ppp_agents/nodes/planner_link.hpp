@@ -115,6 +115,9 @@ class PlannerLink {
   bool gone();
   /// True when a planner is connected and its process answers.
   bool alive() const;
+  /// True when the last wait for an answer ended because the planner that answered in this episode was gone (even
+  /// if a restarted one is connected by now).
+  bool lostWhileWaiting() const { return lost_; }
 
  private:
   /// interface cmd_vel: subscribes to the planner's commands and its statuses (planner_link_velocity.cpp).
@@ -140,6 +143,7 @@ class PlannerLink {
   ros::Subscriber answers_;  // plan or cmd_vel
   ros::Subscriber statuses_;  // planner_status, with cmd_vel
   bool answered_ = false;     // the planner sent a path during this episode
+  bool lost_ = false;         // the last wait ended with the planner gone
   ros::WallTime next_probe_;  // when gone() may ask the planner's process again
 
   // Answers from the planner (written on the queue's thread): one inbox is used, as `interface` says.
