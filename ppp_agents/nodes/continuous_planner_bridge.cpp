@@ -129,6 +129,10 @@ void ContinuousPlannerBridge::publish(const ros::Time& stamp, const ContinuousSe
                           request ? std::optional<MapPoint>(start.goal) : std::nullopt);
 }
 
+const char* ContinuousPlannerBridge::silentPlannerFailure() {
+  return link_.lostWhileWaiting() || link_.gone() ? reason::kPlannerLost : reason::kPlannerTimeout;
+}
+
 void ContinuousPlannerBridge::command(const ros::Time& stamp, const ContinuousSensing& sensing,
                                       ContinuousReply* reply) {
   publish(stamp, sensing, true);
@@ -148,7 +152,7 @@ void ContinuousPlannerBridge::command(const ros::Time& stamp, const ContinuousSe
   };
   const std::optional<VelocityAnswer> answer = link_.waitForCommand(stamp, resend);
   if (!answer) {
-    reply->failure = link_.lostWhileWaiting() || link_.gone() ? reason::kPlannerLost : reason::kPlannerTimeout;
+    reply->failure = silentPlannerFailure();
     return;
   }
   if (answer->aborted) {
@@ -180,7 +184,7 @@ void ContinuousPlannerBridge::followPlans(const ros::Time& stamp, const Continuo
     const std::optional<nav_msgs::Path> path =
         link_.waitForPath(stamp, [](const nav_msgs::Path&) { return true; }, resend);
     if (!path) {
-      reply->failure = link_.lostWhileWaiting() || link_.gone() ? reason::kPlannerLost : reason::kPlannerTimeout;
+      reply->failure = silentPlannerFailure();
       return;
     }
     std::vector<MapPoint> points;

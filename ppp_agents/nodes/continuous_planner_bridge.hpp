@@ -51,6 +51,9 @@ class ContinuousPlannerBridge {
   /// interface path: the command along the planner's path into `reply`, asking for one when the period is a
   /// request, or the failure.
   void followPlans(const ros::Time& stamp, const ContinuousSensing& sensing, ContinuousReply* reply);
+  /// Why a wait for the planner's answer ended without one: planner_lost when the planner was gone, else
+  /// planner_timeout.
+  const char* silentPlannerFailure();
   void warnOnce(const std::string& kind, const std::string& text);
 
   PlannerLink& link_;

@@ -4,7 +4,6 @@
 #include <cctype>
 #include <charconv>
 #include <map>
-#include <set>
 #include <sstream>
 #include <thread>
 
@@ -379,11 +378,22 @@ bool playsContinuously(const AgentConfig& config, const EpisodeOptions& options)
   return (config.motion == kMotionOfExperiment ? options.motion.motion : config.motion) == kMotionContinuous;
 }
 
+const ExamplePlanner* examplePlanner(const std::string& planner_node) {
+  static const std::map<std::string, ExamplePlanner> planners = {
+      {"ppp_agents/optimistic_planner_node", {"ppp_agents/OptimisticPlanner", false}},
+      {"ppp_agents/ompl_planner_node", {"ppp_agents/OmplPlanner", false}},
+      {"ppp_agents/mrpt_planner_node", {"ppp_agents/MrptPlanner", false}},
+      {"ppp_agents/mrpt_reactive_node", {"ppp_agents/MrptReactive", true}},
+      {"ppp_agents/dwa_planner_node", {"ppp_agents/DwaPlanner", true}},
+      {"ppp_agents/mrpt_tpspace_node", {nullptr, true}}};
+  const auto found = planners.find(planner_node);
+  return found != planners.end() ? &found->second : nullptr;
+}
+
 std::string plannerWakesOn(const AgentConfig& config) {
   if (config.bridge.wakes_on != kWakesOnAuto) return config.bridge.wakes_on;
-  static const std::set<std::string> answering_messages = {
-      "ppp_agents/dwa_planner_node", "ppp_agents/mrpt_reactive_node", "ppp_agents/mrpt_tpspace_node"};
-  return answering_messages.count(config.planner_node) > 0 ? kWakesOnMessages : kWakesOnTimer;
+  const ExamplePlanner* planner = examplePlanner(config.planner_node);
+  return planner != nullptr && planner->answers_messages ? kWakesOnMessages : kWakesOnTimer;
 }
 
 int instanceCount(const AgentConfig& config, const EpisodeOptions& options) {

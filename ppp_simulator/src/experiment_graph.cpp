@@ -1,7 +1,6 @@
 #include "ppp_simulator/experiment_graph.hpp"
 
 #include <algorithm>
-#include <map>
 #include <set>
 
 #include "ppp_agents/continuous/continuous_agent.hpp"
@@ -106,18 +105,6 @@ bool inManager(const agents::AgentConfig& agent) {
   return agent.process == agents::kProcessManager && agent.host.empty();
 }
 
-/// The nodelet of a planner executable of this repository's, or "" (a planner of the user's runs as its process).
-std::string plannerNodelet(const std::string& package, const std::string& type) {
-  static const std::map<std::string, std::string> nodelets = {
-      {"optimistic_planner_node", "ppp_agents/OptimisticPlanner"},
-      {"ompl_planner_node", "ppp_agents/OmplPlanner"},
-      {"mrpt_planner_node", "ppp_agents/MrptPlanner"},
-      {"mrpt_reactive_node", "ppp_agents/MrptReactive"},
-      {"dwa_planner_node", "ppp_agents/DwaPlanner"}};
-  const auto found = nodelets.find(type);
-  return package == "ppp_agents" && found != nodelets.end() ? found->second : "";
-}
-
 /// The agent node of each instance of `agent` (agents::instanceCount: one, but for astar in continuous motion), as
 /// /NAME or /NAME/instance_K; nodelets in `manager` ("" for none) unless the agent asks for processes of their own
 /// or runs on another host.
@@ -220,8 +207,8 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, 
       nodes.push_back(planner);
       continue;
     }
-    const std::string nodelet = plannerNodelet(package, type);
-    if (!nodelet.empty()) loadInto(in_manager, nodelet, &planner);
+    const agents::ExamplePlanner* example = agents::examplePlanner(agent.planner_node);
+    if (example != nullptr && example->nodelet != nullptr) loadInto(in_manager, example->nodelet, &planner);
     nodes.push_back(planner);
   }
   return nodes;

@@ -131,6 +131,15 @@ bool isPlanner(const AgentConfig& config);
 /// True when `config` plays in continuous motion under `options`: its own `motion`, else the experiment's.
 bool playsContinuously(const AgentConfig& config, const EpisodeOptions& options);
 
+/// A planner executable of this repository's, as the experiment's graph starts it.
+struct ExamplePlanner {
+  const char* nodelet;    ///< The nodelet it also builds as, or nullptr when it runs only as a process of its own.
+  bool answers_messages;  ///< It answers each control period's messages (a local planner), with no timer of its own.
+};
+
+/// The planner executable `planner_node` ("package/executable") names, when it is this repository's, else nullptr.
+const ExamplePlanner* examplePlanner(const std::string& planner_node);
+
 /// What makes a planner agent's planner answer a control period (kWakesOnTimer or kWakesOnMessages): its
 /// `wakes_on`, with auto resolved by its planner_node (this repository's local planners answer their messages).
 std::string plannerWakesOn(const AgentConfig& config);

@@ -212,12 +212,14 @@ TEST(MrptReactiveNavigatorTest, NdSwingsForEverBesideOneObstacleBeforeAGoalInThe
     Cell robot;
     std::vector<std::pair<int, int>> gaps;  // first and last sector of each gap
     unsigned selected;
+    std::vector<double> evaluations;  // evaluateGaps' score of each gap, printed to 3 places; none: not asserted
   };
   // Sector k points at -180° + 5k + 2.5°. West of the obstacle the target is in sector 30 and the gaps are
   // [0, 5] (west) and [45, 71] (north): the nearer edge is 45, so 45 + 9 = 54, 92.5°. North of it the target
   // is in sector 27 and the gaps are [0, 20] (round the west side) and [33, 71] (round the east): 20 - 9 = 11,
   // -122.5°.
-  const std::vector<Expected> cells = {{{3, 4}, {{0, 5}, {45, 71}}, 54}, {{3, 3}, {{0, 20}, {33, 71}}, 11}};
+  const std::vector<Expected> cells = {{{3, 4}, {{0, 5}, {45, 71}}, 54, {}},
+                                       {{3, 3}, {{0, 20}, {33, 71}}, 11, {0.437, 0.423}}};
   for (const Expected& expected : cells) {
     const MethodInput input = inputAt(grid, expected.robot, test::markedCell(trap, 'G'));
     mrpt::nav::CAbstractHolonomicReactiveMethod::NavInput in;
@@ -237,6 +239,11 @@ TEST(MrptReactiveNavigatorTest, NdSwingsForEverBesideOneObstacleBeforeAGoalInThe
       EXPECT_EQ(static_cast<int>(log->gaps_end[g]), expected.gaps[g].second);
     }
     EXPECT_EQ(log->selectedSector, expected.selected);
+    if (!expected.evaluations.empty()) {
+      ASSERT_EQ(log->gaps_eval.size(), expected.evaluations.size());
+      for (std::size_t g = 0; g < expected.evaluations.size(); ++g)
+        EXPECT_NEAR(log->gaps_eval[g], expected.evaluations[g], 0.0005) << "gap " << g;
+    }
   }
 }
 
