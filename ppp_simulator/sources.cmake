@@ -24,4 +24,6 @@ set(PPP_SIMULATOR_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/simulator_options.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/failure_shrink.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/shrink_job.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/corpus.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/corpus_check.cpp
 )

@@ -372,6 +372,12 @@ const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs() {
   return specs;
 }
 
+std::string replayFlags(const AgentConfig& config, const EpisodeOptions& episode) {
+  std::string flags = optionFlags(agentPlayOptionSpecs(), config, AgentConfig{});
+  const std::string episode_flags = optionFlags(episodeOptionSpecs(), episode, EpisodeOptions{});
+  return episode_flags.empty() ? flags : flags + " " + episode_flags;
+}
+
 bool isPlanner(const AgentConfig& config) { return config.type == kPlannerType; }
 
 bool playsContinuously(const AgentConfig& config, const EpisodeOptions& options) {

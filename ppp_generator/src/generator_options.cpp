@@ -169,9 +169,10 @@ const std::vector<OptionSpec<GeneratorOptions>>& generatorOptionSpecs() {
                     +[](O& o) -> std::vector<std::string>& { return o.features; }),
       declareOption("bins", "map_elites: bins per feature", +[](O& o) -> int& { return o.bins; }, Bounds{2, kMaxBins}),
       declareOption("initial_pool",
-                    "directory of .ppp files the search starts from (a set ppp generate wrote, or your own suite; "
-                    "in an experiment also the name of a set listed before): up to population of them in file-name "
-                    "order, the rest random ('': all random)",
+                    "directory of PPPs the search starts from (a set ppp generate wrote, a corpus, or your own "
+                    "suite of .ppp, map_server .yaml and MovingAI .map files; in an experiment also the name of a "
+                    "set listed before): up to population of them in file-name order, the rest random ('': all "
+                    "random)",
                     +[](O& o) -> std::string& { return o.initial_pool; }),
       declareOption("weights.start", "difficulty: weight of the visibility from the start",
                     +[](O& o) -> double& { return o.weights.start; }),

@@ -1,17 +1,12 @@
 #include "ppp_generator/initial_pool.hpp"
 
-#include <algorithm>
-#include <filesystem>
-#include <system_error>
-
 #include "ppp_core/error.hpp"
-#include "ppp_core/ppp_file.hpp"
+#include "ppp_core/problem_io.hpp"
 #include "ppp_core/text_format.hpp"
+#include "ppp_generator/problem_set.hpp"
 
 namespace ppp {
 namespace generator {
-
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -34,35 +29,21 @@ std::string mismatch(const Problem& problem, const GeneratorOptions& options) {
   return "";
 }
 
-/// The `.ppp` files of a directory, in file-name order. @throws IoError when it is not a readable directory.
-std::vector<std::string> pppFilesIn(const std::string& dir) {
-  std::error_code error;
-  if (!fs::is_directory(dir, error)) throw IoError(dir, "is not a directory of .ppp files");
-  std::vector<std::string> files;
-  for (fs::directory_iterator it(dir, error), end; !error && it != end; it.increment(error)) {
-    if (it->path().extension() == ".ppp" && it->is_regular_file(error)) files.push_back(it->path().string());
-  }
-  if (error) throw IoError(dir, "cannot list it: " + error.message());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 }  // namespace
 
 std::vector<Individual> initialPoolIndividuals(const GeneratorOptions& options, Breeder* breeder) {
   if (options.initial_pool.empty()) return {};
   std::vector<std::string> files;
   try {
-    files = pppFilesIn(options.initial_pool);
-  } catch (const IoError& e) {
+    files = problemSetFiles(options.initial_pool);
+  } catch (const Error& e) {
     throw InvalidArgument("initial_pool", e.what());
   }
-  if (files.empty()) throw InvalidArgument("initial_pool", options.initial_pool + " holds no .ppp file");
   std::vector<Individual> pool;
   for (const std::string& file : files) {
     if (static_cast<int>(pool.size()) == options.population) break;
     Individual individual;
-    individual.problem = readPppFile(file);
+    individual.problem = readProblemFile(file);
     const std::string why = mismatch(individual.problem, options);
     if (!why.empty()) throw InvalidArgument("initial_pool", file + ": " + why);
     individual.problem.max_obstacles = options.max_obstacles;

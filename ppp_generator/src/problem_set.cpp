@@ -5,11 +5,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <numeric>
+#include <set>
 
 #include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/picture.hpp"
 #include "ppp_core/ppp_file.hpp"
+#include "ppp_core/problem_io.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_generator/diversity.hpp"
 #include "ppp_generator/newick.hpp"
@@ -77,6 +79,67 @@ ProblemSet buildSet(std::vector<Problem> problems, const std::vector<std::string
   }
   set.maximise = fitnessMaximises(set.fitness);
   return set;
+}
+
+/// The set of a directory without set.csv, problem i read from files[i]: each PPP named by its file's stem, with
+/// the fitness its metadata gives when every PPP has the same known one (else none, every value 0).
+ProblemSet buildPlainSet(std::vector<Problem> problems, const std::vector<std::string>& files,
+                         const DifficultyWeights& weights, const std::string& dir) {
+  const std::string* fitness = findMetadata(problems.front().metadata, "fitness");
+  std::vector<double> values;
+  for (const Problem& problem : problems) {
+    const std::string* own = findMetadata(problem.metadata, "fitness");
+    const std::string* value = findMetadata(problem.metadata, "fitness_value");
+    char* end = nullptr;
+    const double number = value != nullptr ? std::strtod(value->c_str(), &end) : 0;
+    if (fitness == nullptr || own == nullptr || *own != *fitness || value == nullptr || end == value->c_str() ||
+        *end != '\0') {
+      fitness = nullptr;
+      break;
+    }
+    values.push_back(number);
+  }
+  ProblemSet set;
+  if (fitness != nullptr) {
+    try {
+      set.maximise = fitnessMaximises(*fitness);
+      set.fitness = *fitness;
+      set.fitness_values = values;
+    } catch (const InvalidArgument&) {
+      fitness = nullptr;  // a fitness this version does not know: none
+    }
+  }
+  if (fitness == nullptr) set.fitness_values.assign(problems.size(), 0.0);
+  set.ids = problemNames(files, dir);
+  Evaluator evaluator(weights);
+  for (std::size_t i = 0; i < problems.size(); ++i) {
+    set.evaluations.push_back(evaluator.evaluate(problems[i]));
+    set.problems.push_back(std::move(problems[i]));
+  }
+  try {
+    fillDiversity(&set);
+  } catch (const InvalidArgument& e) {
+    throw ParseError(dir, 0, "set", std::string("PPPs of different sizes: ") + e.what());
+  }
+  return set;
+}
+
+/// Every .ppp, .yaml and .map file of `dir`, in file-name order. @throws IoError when it is not a readable
+/// directory or holds none.
+std::vector<std::string> mapFilesIn(const std::string& dir) {
+  std::error_code error;
+  if (!fs::is_directory(dir, error)) throw IoError(dir, "is not a directory of PPP files");
+  std::vector<std::string> files;
+  for (fs::directory_iterator it(dir, error), end; !error && it != end; it.increment(error)) {
+    const std::string extension = fileExtension(it->path().string());
+    if ((extension == ".ppp" || extension == ".yaml" || extension == ".map") && it->is_regular_file(error)) {
+      files.push_back(it->path().string());
+    }
+  }
+  if (error) throw IoError(dir, "cannot list it: " + error.message());
+  if (files.empty()) throw IoError(dir, "holds no PPP: no .ppp, map_server .yaml or MovingAI .map file");
+  std::sort(files.begin(), files.end());
+  return files;
 }
 
 }  // namespace
@@ -203,7 +266,22 @@ void writeProblemSetDirectory(const std::string& dir, const ProblemSet& set, con
 
 void writeDerivedSetDirectory(const std::string& dir, const ProblemSet& set) { writeSetDirectory(dir, set, nullptr, {}); }
 
+std::vector<std::string> problemNames(const std::vector<std::string>& files, const std::string& dir) {
+  std::vector<std::string> names;
+  std::set<std::string> seen;
+  for (const std::string& file : files) {
+    names.push_back(fs::path(file).stem().string());
+    if (!seen.insert(names.back()).second) {
+      throw ParseError(file, 0, "file",
+                       "a second PPP named '" + names.back() + "' in " + dir + " (a directory's PPPs are named by "
+                       "their file names without the extension)");
+    }
+  }
+  return names;
+}
+
 std::vector<std::string> problemSetFiles(const std::string& dir) {
+  if (!hasProblemSet(dir)) return mapFilesIn(dir);
   const fs::path root(dir);
   const std::string csv_path = (root / kSetFile).string();
   std::vector<std::string> files = parseSetCsv(readTextFile(csv_path, kMaxSetCsvBytes), csv_path);
@@ -217,6 +295,10 @@ ProblemSet readProblemSetDirectory(const std::string& dir) {
   GeneratorOptions options;
   if (fs::exists(root / kOptionsFile)) options = loadGeneratorOptions((root / kOptionsFile).string());
   std::vector<Problem> problems;
+  if (!hasProblemSet(dir)) {
+    for (const std::string& file : files) problems.push_back(readProblemFile(file));
+    return buildPlainSet(std::move(problems), files, options.weights, dir);
+  }
   for (const std::string& file : files) problems.push_back(readPppFile(file));
   return buildSet(std::move(problems), files, options.weights, (root / kSetFile).string());
 }

@@ -110,7 +110,7 @@ std::string poolError(const GeneratorOptions& options) {
 TEST(InitialPoolTest, PppsThatDoNotFitTheGeneratorAreRefusedNamingTheFile) {
   const std::string dir = emptyDirectory("bad");
   const GeneratorOptions o = poolOptions(dir, 4);
-  EXPECT_NE(poolError(o).find("holds no .ppp file"), std::string::npos) << poolError(o);
+  EXPECT_NE(poolError(o).find("holds no PPP: no .ppp, map_server .yaml or MovingAI .map file"), std::string::npos) << poolError(o);
 
   Problem wide = Problem::empty(12, 10, 4);
   writePppFile(wide, dir + "/wide.ppp");
@@ -154,7 +154,7 @@ TEST(InitialPoolTest, PppsThatDoNotFitTheGeneratorAreRefusedNamingTheFile) {
   EXPECT_NE(message.find("broken.ppp:2"), std::string::npos) << message;
 
   message = poolError(poolOptions(dir + "/missing", 4));
-  EXPECT_NE(message.find("initial_pool: " + dir + "/missing: is not a directory of .ppp files"), std::string::npos)
+  EXPECT_NE(message.find("initial_pool: " + dir + "/missing: is not a directory of PPP files"), std::string::npos)
       << message;
 }
 

@@ -13,6 +13,8 @@ void addSimulateCommand(CLI::App& app);
 void addReplayCommand(CLI::App& app);
 /// Adds `ppp shrink`: the smallest PPP on which an agent still fails the same way.
 void addShrinkCommand(CLI::App& app);
+/// Adds `ppp check`: an agent on every PPP of a corpus, for CI.
+void addCheckCommand(CLI::App& app);
 /// Adds `ppp scenarios`: one agent on every scenario of a MovingAI .scen file.
 void addScenariosCommand(CLI::App& app);
 /// Adds `ppp experiment`: the full experiment with resume and report.

@@ -24,6 +24,7 @@ struct LaunchFileFlags {
   simulator::GraphOptions graph;
   std::map<std::string, std::string> simulator_flags;
   std::map<std::string, std::string> shrink_flags;
+  std::map<std::string, std::string> check_flags;
   bool large = false;
   bool json = false;
 };
@@ -33,7 +34,7 @@ struct LaunchFileFlags {
 const std::vector<OptionSpec<simulator::ShrinkTask>>& shrinkFlagSpecs() {
   static const std::vector<OptionSpec<simulator::ShrinkTask>> specs = [] {
     std::vector<OptionSpec<simulator::ShrinkTask>> list = selectOptions(
-        simulator::shrinkTaskSpecs(), {"input", "agent", "seed", "runs", "results", "min_rate", "any_kind", "by"});
+        simulator::shrinkTaskSpecs(), {"input", "agent", "seed", "runs", "results", "min_rate", "any_kind", "by", "corpus"});
     list[0].flag = "shrink";
     list[0].doc = "INPUT: the graph of the shrink of this PPP file or set directory (absolute) into OUTPUT instead, "
                   "judged on --agent's nodes through the simulator (the other shrink flags: ppp shrink's)";
@@ -42,9 +43,56 @@ const std::vector<OptionSpec<simulator::ShrinkTask>>& shrinkFlagSpecs() {
   return specs;
 }
 
+/// The check's options `ppp launch-file` takes as flags of its own (--check CORPUS, --junit FILE); --agent, --seed
+/// and --runs are the shrink's.
+const std::vector<OptionSpec<simulator::CheckTask>>& checkFlagSpecs() {
+  static const std::vector<OptionSpec<simulator::CheckTask>> specs = [] {
+    std::vector<OptionSpec<simulator::CheckTask>> list = selectOptions(simulator::checkTaskSpecs(), {"corpus", "junit"});
+    list[0].flag = "check";
+    list[0].doc = "CORPUS: the graph of the check of --agent on every PPP of this directory or file (absolute) "
+                  "instead, played through the simulator (--seed, --runs: for PPPs without recorded seeds; exit "
+                  "status: ppp check's)";
+    return list;
+  }();
+  return specs;
+}
+
+/// The check the flags ask for, if any: --check with --junit, and --agent, --seed and --runs of the shrink's flags.
+/// @throws InvalidArgument naming the flag.
+void applyCheckFlags(const LaunchFileFlags& flags, simulator::GraphOptions* graph) {
+  applyOptionFlags(*flags.command, checkFlagSpecs(), flags.check_flags, &graph->check);
+  if (graph->check.corpus.empty()) {
+    if (flags.command->count(flagFor("junit")) > 0) {
+      throw InvalidArgument(flagFor("junit"), "only a check takes it: give --check");
+    }
+    return;
+  }
+  if (flags.command->count("--shrink") > 0) throw InvalidArgument("--check", "a graph checks or shrinks, not both");
+  for (const auto& spec : shrinkFlagSpecs()) {
+    const std::string flag = flagName(spec);
+    if (flags.command->count(flag) == 0) continue;
+    if (spec.name == "agent") {
+      graph->check.agent = graph->shrink.agent;
+    } else if (spec.name == "seed") {
+      graph->check.seed = graph->shrink.seed;
+    } else if (spec.name == "runs") {
+      graph->check.runs = graph->shrink.runs;
+    } else {
+      throw InvalidArgument(flag, "only a shrink takes it, not a check");
+    }
+  }
+  graph->shrink = simulator::ShrinkTask{};
+  graph->check.config = graph->config_path;
+  if (graph->check.agent.empty()) throw InvalidArgument(flagFor("agent"), "required: the agent to check");
+}
+
 /// The shrink the flags ask for, if any. @throws InvalidArgument naming the flag.
 void applyShrinkFlags(const LaunchFileFlags& flags, simulator::GraphOptions* graph) {
   applyOptionFlags(*flags.command, shrinkFlagSpecs(), flags.shrink_flags, &graph->shrink);
+  if (flags.command->count("--check") > 0) return applyCheckFlags(flags, graph);
+  if (flags.command->count(flagFor("junit")) > 0) {
+    throw InvalidArgument(flagFor("junit"), "only a check takes it: give --check");
+  }
   if (graph->shrink.input.empty()) {
     for (const auto& spec : shrinkFlagSpecs()) {
       if (flags.command->count(flagName(spec)) > 0) {
@@ -70,7 +118,7 @@ void runLaunchFile(LaunchFileFlags flags) {
   flags.graph.config_path = fs::absolute(flags.config).lexically_normal().string();
   flags.graph.output_dir = fs::absolute(flags.output).lexically_normal().string();
   applyShrinkFlags(flags, &flags.graph);
-  const bool experiment = flags.graph.hunt.empty() && flags.graph.shrink.input.empty();
+  const bool experiment = flags.graph.hunt.empty() && flags.graph.shrink.input.empty() && flags.graph.check.corpus.empty();
   if (experiment) {
     simulator::checkWork(simulator::estimateWork(config), flags.large);
     simulator::checkExperimentDirectory(config, flags.graph.output_dir);
@@ -104,6 +152,7 @@ void addLaunchFileCommand(CLI::App& app) {
                       "SET: the graph of the hunt of this set of the config (fitness failure or regret) into OUTPUT "
                       "instead (panel agents only)");
   addOptionFlags(command, shrinkFlagSpecs(), &flags->graph.shrink, &flags->shrink_flags);
+  addOptionFlags(command, checkFlagSpecs(), &flags->graph.check, &flags->check_flags);
   command->add_option("--env-loader", flags->graph.env_loader,
                       "Script remote machines run nodes through (the workspace's devel/env.sh, same path there)");
   command->add_option("--processes", flags->graph.processes,

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   ppp::cli::addSimulateCommand(app);
   ppp::cli::addReplayCommand(app);
   ppp::cli::addShrinkCommand(app);
+  ppp::cli::addCheckCommand(app);
   ppp::cli::addScenariosCommand(app);
   ppp::cli::addExperimentCommand(app);
   ppp::cli::addCompareCommand(app);

@@ -9,6 +9,7 @@
 #include "ppp_generator/generator_node_options.hpp"
 #include "ppp_generator/generator_options.hpp"
 #include "ppp_simulator/experiment_config.hpp"
+#include "ppp_simulator/corpus_check.hpp"
 #include "ppp_simulator/shrink_job.hpp"
 #include "ppp_simulator/simulator_options.hpp"
 
@@ -86,8 +87,14 @@ std::string optionsReference() {
       << "`shrink_node` `~` parameters ([shrink a failure](../how-to/shrink-a-failure.md)): `ppp shrink` for any\n"
       << "agent of an experiment, judged through the simulator serving hunts. `launch/shrink.launch` sets them\n"
       << "from `ppp launch-file --shrink INPUT --agent NAME` and that command's flags of the same names;\n"
-      << "`ppp shrink` takes `--results`, `--min-rate` and `--by`.\n\n"
+      << "`ppp shrink` takes `--results`, `--min-rate`, `--by` and `--corpus`.\n\n"
       << optionsMarkdownTable(simulator::shrinkTaskSpecs(), simulator::ShrinkTask{}, &parameter)
+      << "\n## Check node\n\n"
+      << "`check_node` `~` parameters ([keep failures as regression tests](../how-to/regression-corpus.md)):\n"
+      << "`ppp check` for any agent of an experiment, its runs played through the simulator serving hunts.\n"
+      << "`launch/check.launch` and `scripts/ppp-check-ros` set them from `ppp launch-file --check CORPUS\n"
+      << "--agent NAME` and that command's `--seed`, `--runs` and `--junit`; `ppp check` takes the same as flags.\n\n"
+      << optionsMarkdownTable(simulator::checkTaskSpecs(), simulator::CheckTask{}, &parameter)
       << "\n## Planner bridge node\n\n"
       << "`planner_bridge_node` `~` parameters besides its agent's `~name`, `~memory` and `~sensor_noise`\n"
       << "([the planner interface](planner-interface.md)).\n\n"

@@ -21,7 +21,7 @@ namespace {
 /// The shrink options `ppp shrink` takes from their declaration (its input, agent, seeds and runs are its own).
 const std::vector<OptionSpec<simulator::ShrinkTask>>& shrinkFlagSpecs() {
   static const std::vector<OptionSpec<simulator::ShrinkTask>> specs =
-      selectOptions(simulator::shrinkTaskSpecs(), {"results", "min_rate", "by"});
+      selectOptions(simulator::shrinkTaskSpecs(), {"results", "min_rate", "by", "corpus"});
   return specs;
 }
 
@@ -74,6 +74,7 @@ int runShrink(const ShrinkFlags& f) {
   simulator::ShrinkJob job;
   job.input = f.input;
   job.output = f.output;
+  job.corpus = task.corpus;
   job.judging.agent = agentToShrinkFor(f);
   job.judging.episode = f.agent.episode();
   job.judging.seeds = judgedSeeds(f);
@@ -101,7 +102,8 @@ void addShrinkCommand(CLI::App& app) {
                       "A .ppp, map_server .yaml or MovingAI .map file, or a set directory (each failing PPP shrunk)")
       ->required();
   flags->agent.add(command);
-  command->add_option("-o,--output", flags->output, "The shrunk .ppp file (a new directory for a set)")->required();
+  command->add_option("-o,--output", flags->output,
+                      "The shrunk .ppp file (a new directory for a set); required unless --corpus is given");
   command->add_option("--agents-file", flags->agents_file,
                       "Agents YAML (an experiment's agents list): --agent names one of its entries, handicaps "
                       "included");

@@ -258,6 +258,33 @@ void checkShrink(const ExperimentConfig& config, const GraphOptions& options) {
   if (!agents::isPlanner(agent)) agents::refuseContinuous(agent, config.episode);  // planners shrink in both models
 }
 
+/// The check node of `task` (required: the graph ends with it).
+ppp_msgs::GraphNode checkNode(const CheckTask& task) {
+  ppp_msgs::GraphNode node{"ppp_simulator", "check_node", ppp_msgs::nodes::kCheck};
+  node.required = true;
+  addParams(checkTaskSpecs(), task, &node);
+  return node;
+}
+
+/// Checks the check of `options` against `config`. @throws InvalidArgument naming "check" (a hunt or shrink asked
+/// for too), "agent" (not the config's) or the option.
+void checkCheck(const ExperimentConfig& config, const GraphOptions& options) {
+  if (!options.hunt.empty() || !options.shrink.input.empty()) {
+    throw InvalidArgument("check", "a graph checks a corpus, or hunts, or shrinks: one of them");
+  }
+  options.check.validate();
+  std::vector<std::string> names;
+  for (const agents::AgentConfig& agent : config.agents) {
+    if (agent.name != options.check.agent) {
+      names.push_back(agent.name);
+      continue;
+    }
+    if (!agents::isPlanner(agent)) agents::refuseContinuous(agent, config.episode);  // planners check in both models
+    return;
+  }
+  throw InvalidArgument("agent", "the config has no agent '" + options.check.agent + "'; it has: " + joinNames(names));
+}
+
 }  // namespace
 
 void GraphOptions::validate(const ExperimentConfig& config) const {
@@ -323,18 +350,22 @@ ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const Grap
   }
   const bool shrink = !options.shrink.input.empty();
   if (shrink) checkShrink(config, options);
+  const bool check = !options.check.corpus.empty();
+  if (check) checkCheck(config, options);
   const SetSpec* hunted = options.hunt.empty() ? nullptr : &huntedSet(config, options.hunt);
   ppp_msgs::LaunchGraph graph;
   graph.comment = "The ROS graph of " +
                   (hunted   ? "the hunt of set " + hunted->name + " of "
                    : shrink ? "the shrink of " + options.shrink.input + " for agent " + options.shrink.agent + " of "
+                   : check  ? "the check of " + options.check.corpus + " for agent " + options.check.agent + " of "
                             : std::string()) +
                   "the experiment " + options.config_path + ", written by `ppp launch-file`.";
   std::vector<agents::AgentConfig> agents;
   for (const agents::AgentConfig& agent : config.agents) {
     const std::vector<std::string>* panel = hunted ? &hunted->generator->agents : nullptr;
-    const bool played = shrink ? agent.name == options.shrink.agent
-                               : !panel || std::find(panel->begin(), panel->end(), agent.name) != panel->end();
+    const bool played = shrink  ? agent.name == options.shrink.agent
+                        : check ? agent.name == options.check.agent
+                                : !panel || std::find(panel->begin(), panel->end(), agent.name) != panel->end();
     if (played) agents.push_back(agent);
   }
   std::set<std::string> hosts;
@@ -345,6 +376,8 @@ ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const Grap
   const std::string manager = options.processes == agents::kProcessManager ? ppp_msgs::nodes::kManager : "";
   if (shrink) {
     graph.nodes.push_back(shrinkNode(options.shrink));
+  } else if (check) {
+    graph.nodes.push_back(checkNode(options.check));
   } else if (hunted) {
     graph.nodes.push_back(generatorNode(config, *hunted, options.output_dir, options.output_dir, true));
     loadInto(manager, "ppp_generator/Generator", &graph.nodes.back());
@@ -359,7 +392,7 @@ ppp_msgs::LaunchGraph experimentGraph(const ExperimentConfig& config, const Grap
   }
   ppp_msgs::GraphNode simulator{"ppp_simulator", "simulator_node", ppp_msgs::nodes::kSimulator};
   loadInto(manager, "ppp_simulator/Simulator", &simulator);
-  const bool serving = hunted || shrink;  // the simulator serves ~evaluate, and the graph ends with its client
+  const bool serving = hunted || shrink || check;  // the simulator serves ~evaluate; the graph ends with its client
   simulator.required = !serving;
   SimulatorTask task;
   task.mode = serving ? kHuntMode : kExperimentMode;

@@ -94,9 +94,7 @@ FailureExample replayedRun(const ExperimentConfig& config, const agents::Prepare
   example.seed = row.seed;
   example.ppp = ppp;
   example.recorded = agents::isPlanner(agent_config);
-  example.replay_flags = optionFlags(agents::agentPlayOptionSpecs(), agent_config, agents::AgentConfig{});
-  const std::string episode_flags = optionFlags(episodeOptionSpecs(), config.episode, EpisodeOptions{});
-  if (!episode_flags.empty()) example.replay_flags += " " + episode_flags;
+  example.replay_flags = agents::replayFlags(agent_config, config.episode);
   return example;
 }
 

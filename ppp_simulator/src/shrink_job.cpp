@@ -15,6 +15,7 @@
 #include "ppp_core/text_file.hpp"
 #include "ppp_core/text_format.hpp"
 #include "ppp_generator/problem_set.hpp"
+#include "ppp_simulator/corpus.hpp"
 #include "ppp_simulator/results_file.hpp"
 
 namespace ppp {
@@ -58,6 +59,13 @@ std::string summary(const ShrunkFailure& s, double seconds) {
          std::to_string(s.evaluations) + " candidates, " + formatFixed(seconds * 1000, 1) + " ms)";
 }
 
+/// Adds `shrunk` to the job's corpus, if any, and says where it went.
+void addToJobCorpus(const ShrinkJob& job, const Problem& shrunk, std::ostream& out) {
+  if (job.corpus.empty()) return;
+  const CorpusAddition addition = addToCorpus(job.corpus, shrunk);
+  out << (addition.added ? "  added to the corpus as " : "  in the corpus already, as ") << addition.file << "\n";
+}
+
 /// The name of the directory `path` is (a set's name, as results.csv has it).
 std::string directoryName(const fs::path& path) {
   return path.filename().empty() ? path.parent_path().filename().string() : path.filename().string();
@@ -79,9 +87,10 @@ int shrinkOne(const ShrinkJob& job, FailureJudging judging, const FailingSeeds* 
   const double start = steadySeconds();
   const ShrunkFailure shrunk =
       shrinkFailure(problem, fs::path(job.input).filename().string(), judging, unitsFor(job, job.input), stop);
-  writePppFile(shrunk.problem, job.output);
+  if (!job.output.empty()) writePppFile(shrunk.problem, job.output);
   out << judging.agent.name << " on " << job.input << ": " << summary(shrunk, steadySeconds() - start)
-      << "; written to " << job.output << "\n";
+      << (job.output.empty() ? "" : "; written to " + job.output) << "\n";
+  addToJobCorpus(job, shrunk.problem, out);
   return 0;
 }
 
@@ -117,7 +126,12 @@ int shrinkSet(const ShrinkJob& job, FailureJudging judging, const FailingSeeds* 
         << ": nothing to shrink, nothing written\n";
     return 1;
   }
+  for (const Problem& problem : shrunk) addToJobCorpus(job, problem, out);
   const std::size_t count = shrunk.size();
+  if (job.output.empty()) {
+    out << count << " of " << set.problems.size() << " PPPs shrunk\n";
+    return 0;
+  }
   generator::writeDerivedSetDirectory(job.output, generator::problemSetFromProblems(std::move(shrunk), {}, job.input));
   out << count << " of " << set.problems.size() << " PPPs shrunk into " << job.output << "\n";
   return 0;
@@ -129,6 +143,11 @@ void ShrinkJob::validate() const {
   judging.validate();
   unitsFor(*this, input);  // a bad --by is refused before any run
   if (!fs::exists(input)) throw InvalidArgument("input", "'" + input + "' does not exist");
+  if (output.empty() && corpus.empty()) throw InvalidArgument("output", "required, unless a corpus is given");
+  if (!corpus.empty() && generator::hasProblemSet(corpus)) {
+    throw InvalidArgument("corpus", "'" + corpus + "' is a set (it has a set.csv); give a directory of PPP files "
+                                    "without one");
+  }
   if (fs::is_directory(input) && fs::exists(output) && !(fs::is_directory(output) && fs::is_empty(output))) {
     throw InvalidArgument("output", "'" + output + "' exists and is not an empty directory");
   }
@@ -165,9 +184,10 @@ std::vector<std::uint64_t> derivedRunSeeds(std::uint64_t seed, int runs) {
 void ShrinkTask::validate() const {
   checkOptionRanges(shrinkTaskSpecs(), *this);
   for (const auto& [name, value] : {std::pair<const char*, const std::string*>{"config", &config},
-                                    {"input", &input}, {"output", &output}, {"agent", &agent}}) {
+                                    {"input", &input}, {"agent", &agent}}) {
     if (value->empty()) throw InvalidArgument(name, "required");
   }
+  if (output.empty() && corpus.empty()) throw InvalidArgument("output", "required, unless a corpus is given");
 }
 
 const std::vector<OptionSpec<ShrinkTask>>& shrinkTaskSpecs() {
@@ -177,8 +197,11 @@ const std::vector<OptionSpec<ShrinkTask>>& shrinkTaskSpecs() {
                     +[](T& t) -> std::string& { return t.config; }),
       declareOption("input", "the .ppp, map_server .yaml or MovingAI .map file, or the set directory, to shrink",
                     +[](T& t) -> std::string& { return t.input; }),
-      declareOption("output", "the shrunk .ppp file (a new directory for a set)",
+      declareOption("output", "the shrunk .ppp file (a new directory for a set); '' with corpus: none",
                     +[](T& t) -> std::string& { return t.output; }),
+      declareOption("corpus", "a corpus directory each shrunk PPP is added to, unless a PPP of the same obstacle shape "
+                    "(moved, mirrored or rotated) is there ('': none)",
+                    +[](T& t) -> std::string& { return t.corpus; }),
       declareOption("agent", "the config's agent whose failure is shrunk (planner agents included)",
                     +[](T& t) -> std::string& { return t.agent; }),
       declareOption("seed", "the failing run's seed (results.csv's seed column); with runs, the seed theirs derive from",
@@ -212,6 +235,7 @@ ShrinkJob shrinkJobOf(const ShrinkTask& task, const agents::AgentConfig& agent, 
   ShrinkJob job;
   job.input = task.input;
   job.output = task.output;
+  job.corpus = task.corpus;
   job.judging.agent = agent;
   job.judging.episode = episode;
   job.judging.play = std::move(play);

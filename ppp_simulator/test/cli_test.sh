@@ -114,7 +114,7 @@ cmp -s "$work/back.map" "$work/orig.map" && pass || fail "exported ppp_000.map i
 expect_ok "export yaml" "$ppp" export "$work/set_a" "$work/exported_yaml" --format yaml
 [ "$(ls "$work/exported_yaml"/*.pgm | wc -l)" -eq 12 ] && pass || fail "export --format yaml did not write 12 maps"
 expect_error "export unknown format" "--format: cannot export to '.gif'" "$ppp" export "$work/set_a" "$work/x" --format gif
-expect_error "export no set" "set.csv" "$ppp" export "$work/nothing" "$work/x"
+expect_error "export no set" "nothing: is not a directory of PPP files" "$ppp" export "$work/nothing" "$work/x"
 
 # --- scenarios: the exported set's own .scen, then MovingAI's arena map
 expect_ok "scenarios on an export" "$ppp" scenarios "$work/exported/set_a.scen" --agent astar
@@ -198,7 +198,7 @@ expect_error "unwritable output" "/proc/ppp_set" "$ppp" "${gen[@]}" -o /proc/ppp
 expect_error "k too large" "k: " "$ppp" select "$work/set_a" -k 13
 expect_error "k zero" "k: " "$ppp" select "$work/set_a" -k 0
 expect_error "select bad characters" "characters: unknown character set" "$ppp" select "$work/set_a" -k 2 --characters x
-expect_error "tree of a non-set" "set.csv" "$ppp" tree "$work/not_a_set"
+expect_error "tree of a non-set" "not_a_set: holds no PPP" "$ppp" tree "$work/not_a_set"
 
 # --- hunting: the failure fitness and the MAP-Elites archive
 hunt=(generate --population 12 --matings 200 --quiet --fitness failure --runs-per-eval 3)
@@ -285,5 +285,36 @@ kill -INT $!
 wait $! && status=0 || status=$?
 [ "$status" -eq 130 ] && pass || fail "an interrupted shrink exited $status: $(cat "$work/err")"
 [ ! -e "$work/stopped" ] && pass || fail "an interrupted shrink left output"
+
+# --- shrink into a corpus, then check: exit 0 all pass, 1 any fails, 2 bad input
+expect_ok "shrink a set into a corpus" "$ppp" shrink "$work/hunt_a" --agent bumper --runs 2 --corpus "$work/corpus"
+shrunk=$(grep -c "^  added to the corpus as \|^  in the corpus already, as " "$work/out")
+added=$(grep -c "^  added to the corpus as " "$work/out")
+[ "$shrunk" -ge 1 ] && [ "$added" -ge 1 ] && [ "$(ls "$work/corpus" | wc -l)" -eq "$added" ] && pass || \
+  fail "the corpus holds $(ls "$work/corpus" | wc -l) files for $added added: $(cat "$work/out")"
+check_status() {  # NAME EXPECTED_STATUS ARGS...: `ppp check ARGS` exits EXPECTED_STATUS
+  local name="$1" expected="$2"; shift 2
+  "$ppp" check "$@" > "$work/out" 2> "$work/err" && status=0 || status=$?
+  [ "$status" -eq "$expected" ] && pass || fail "$name: exit $status, expected $expected: $(cat "$work/out" "$work/err")"
+}
+check_status "check the corpus's own agent" 1 "$work/corpus" --agent bumper --junit "$work/check.xml"
+grep -q "<testsuite name=\"corpus\" tests=\"$added\" failures=\"$added\"" "$work/check.xml" && pass || \
+  fail "the JUnit XML does not count $added failing PPPs: $(head -3 "$work/check.xml")"
+check_status "check the corpus against astar" 0 "$work/corpus" --agent astar
+grep -q "astar passes all $added PPPs of $work/corpus" "$work/out" && pass || fail "check summary: $(cat "$work/out")"
+check_status "check with no agent" 2 "$work/corpus"
+check_status "check with a flag and no value" 2 "$work/corpus" --agent
+check_status "check an unknown agent" 2 "$work/corpus" --agent nobody
+grep -q "no built-in agent 'nobody'" "$work/err" && pass || fail "unknown agent: $(cat "$work/err")"
+check_status "check an agent not in the config" 2 "$work/corpus" --agent nobody --config "$config_dir/experiment.yaml"
+check_status "check a planner in process" 2 "$work/corpus" --agent mrpt --config "$config_dir/experiment.yaml"
+grep -q "check it with launch/check.launch" "$work/err" && pass || fail "planner in process: $(cat "$work/err")"
+mkdir -p "$work/no_ppp"
+check_status "check an empty corpus" 2 "$work/no_ppp" --agent astar
+grep -q "holds no PPP" "$work/err" && pass || fail "empty corpus: $(cat "$work/err")"
+touch "$work/a_file"
+check_status "check into a JUnit file that cannot be written" 2 "$work/corpus" --agent astar \
+  --junit "$work/a_file/check.xml"
+grep -q "a_file/check.xml: cannot be written" "$work/err" && pass || fail "unwritable JUnit: $(cat "$work/err")"
 
 finish

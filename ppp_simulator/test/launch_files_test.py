@@ -624,5 +624,55 @@ class ShrinkLaunchTest(unittest.TestCase):
             self.assertIn(error, errors, flags)
 
 
+class CheckLaunchTest(unittest.TestCase):
+    def test_the_entry_runs_the_launcher_with_the_check_flags_and_absolute_paths(self):
+        config = load('check.launch', 'corpus:=relative/corpus', 'agent:=mrpt', 'junit:=out/check.xml',
+                      'args:=--runs 2')
+        self.assertEqual([(n.type, n.name, n.required) for n in config.nodes],
+                         [('experiment_launcher', 'check_launch', True)])
+        args = shlex.split(config.nodes[0].args)
+        flags = shlex.split(next(a for a in args if a.startswith('--args='))[len('--args='):])
+        value = lambda flag: flags[flags.index(flag) + 1]
+        self.assertEqual(value('--check'), os.path.join(os.getcwd(), 'relative', 'corpus'))
+        self.assertEqual(value('--agent'), 'mrpt')
+        self.assertEqual(value('--junit'), os.path.join(os.getcwd(), 'out', 'check.xml'))
+        self.assertEqual(value('--runs'), '2')
+
+    def test_the_check_graph_starts_the_check_node_the_simulator_and_the_agent_only(self):
+        corpus = os.path.join(ROOT, 'ppp_simulator', 'test', 'ros', 'planner_maps')
+        config, _ = load_graph(os.path.join(ROOT, 'config', 'experiment.yaml'), '--check', corpus, '--agent', 'mrpt',
+                               '--seed', '16126441926964728741', '--runs', '2', '--junit', '/tmp/check.xml')
+        params = {k: p.value for k, p in config.params.items()}
+        self.assertEqual(sorted((n.namespace, n.name, role(n)) for n in config.nodes),
+                         sorted([('/', 'check', 'check_node'), ('/', 'simulator', 'simulator_node'),
+                                 ('/', 'nodelet_manager', 'nodelet')] +
+                                [(ns, 'bridge', 'planner_bridge_node') for ns in instance_namespaces('mrpt', CORES)] +
+                                [(ns + 'robot/', 'planner', 'mrpt_planner_node')
+                                 for ns in instance_namespaces('mrpt', CORES)]))
+        self.assertTrue([n for n in config.nodes if n.name == 'check'][0].required)
+        self.assertFalse([n for n in config.nodes if n.name == 'simulator'][0].required)
+        self.assertEqual(params['/simulator/mode'], 'hunt')
+        self.assertEqual((params['/check/corpus'], params['/check/agent'], params['/check/junit']),
+                         (corpus, 'mrpt', '/tmp/check.xml'))
+        self.assertEqual(params['/check/seed'], '16126441926964728741')
+        self.assertEqual(params['/check/runs'], 2)
+
+    def test_bad_checks_are_refused_naming_the_flag(self):
+        corpus = os.path.join(ROOT, 'ppp_simulator', 'test', 'ros', 'planner_maps')
+        config = os.path.join(ROOT, 'config', 'experiment.yaml')
+        for flags, error in ((['--check', corpus, '--agent', 'nobody'], "--agent: the config has no agent 'nobody'"),
+                             (['--check', corpus], '--agent: required'),
+                             (['--check', corpus, '--agent', 'mrpt', '--runs', '0'],
+                              '--runs: expected an integer in [1, 100000], got 0'),
+                             (['--check', corpus, '--agent', 'mrpt', '--by', 'cells'],
+                              '--by: only a shrink takes it, not a check'),
+                             (['--check', corpus, '--shrink', corpus, '--agent', 'mrpt'],
+                              '--check: a graph checks or shrinks, not both'),
+                             (['--junit', '/tmp/check.xml'], '--junit: only a check takes it: give --check')):
+            _, status, errors, _ = launch_file(config, *flags)
+            self.assertNotEqual(status, 0, flags)
+            self.assertIn(error, errors, flags)
+
+
 if __name__ == '__main__':
     unittest.main()

@@ -21,6 +21,10 @@ inline void addCoreCommands(CLI::App& app) {
   addConvertCommand(app);
 }
 
+/// Makes `status` the exit status of a command line that `command` cannot parse (a missing flag value, say), in
+/// place of CLI11's own, for a command whose statuses a CI system reads.
+void setUsageErrorStatus(const CLI::App* command, int status);
+
 /// Parses `argv` into `app` and runs the chosen subcommand; returns the exit status (errors printed as
 /// "<program>: error: ..." on stderr).
 int runCommandLine(CLI::App& app, int argc, char** argv, const char* program);

@@ -122,6 +122,10 @@ const std::vector<OptionSpec<AgentConfig>>& agentNodeOptionSpecs();
 /// frontier): the flags of `ppp simulate` and `ppp replay`, and of the replay commands a report gives.
 const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs();
 
+/// The flags that make `ppp simulate` and `ppp replay` play `config` under `episode` ("--agent explorer --memory 5
+/// --budget 100"): its type and every play option and episode rule that is not the default.
+std::string replayFlags(const AgentConfig& config, const EpisodeOptions& episode);
+
 /// The type of agents played by an external ROS planner through planner_bridge_node, one episode at a time.
 constexpr const char* kPlannerType = "planner";
 

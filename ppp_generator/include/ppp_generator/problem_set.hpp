@@ -50,12 +50,22 @@ void checkOutputDirectory(const std::string& dir);
 /// Writes tree.nwk, tree.json and tree.html (with thumbnails) for a set into `dir`. @throws IoError.
 void writeTreeFiles(const std::string& dir, const ProblemSet& set, const Taxonomy& taxonomy);
 
-/// The `.ppp` files a set directory's `set.csv` lists, in its order (without reading them).
-/// @throws IoError, ParseError naming set.csv, its line and field.
+/// The PPP files of a directory (without reading them): those its `set.csv` lists, in its order, when it has one
+/// (a set ppp generate or ppp shrink wrote); otherwise every `.ppp`, map_server `.yaml` and MovingAI `.map` file
+/// in it, in file-name order (a corpus, or any user's suite).
+/// @throws IoError when it is not a readable directory or holds no such file; ParseError naming set.csv, its
+/// line and field.
 std::vector<std::string> problemSetFiles(const std::string& dir);
 
-/// Reads a set directory written by writeProblemSetDirectory (its `set.csv` and `.ppp` files) and
-/// re-evaluates every PPP. @throws IoError, ParseError.
+/// The names of the PPPs in `files` (of the directory `dir`): each file's name without its extension.
+/// @throws ParseError naming the second of two files of one name.
+std::vector<std::string> problemNames(const std::vector<std::string>& files, const std::string& dir);
+
+/// Reads the PPPs of a directory (problemSetFiles()) as a set and re-evaluates every PPP. A set's PPPs carry their
+/// id, fitness and fitness value; a plain directory's are named by their file names without the extension (two
+/// files of one name are refused), keep the fitness their metadata gives when every PPP has the same one, and
+/// otherwise belong to no fitness (ProblemSet::fitness "", every value 0). A map_server or MovingAI map gets the
+/// start and goal `ppp convert` gives it by default. @throws IoError, ParseError naming the file.
 ProblemSet readProblemSetDirectory(const std::string& dir);
 
 /// Whether `dir` holds a set written by writeProblemSetDirectory (its set.csv).

@@ -10,6 +10,7 @@ namespace nodes {
 constexpr const char* kSimulator = "simulator";        ///< The simulator node (/simulator).
 constexpr const char* kManager = "nodelet_manager";    ///< The experiment's nodelet manager (/nodelet_manager).
 constexpr const char* kShrink = "shrink";              ///< The shrink node of launch/shrink.launch (/shrink).
+constexpr const char* kCheck = "check";                ///< The check node of launch/check.launch (/check).
 constexpr const char* kGeneratorPrefix = "gen_";       ///< + set name: the generator node of an experiment's set.
 constexpr const char* kGenerator = "generator";        ///< A generator node started on its own (generate.launch).
 constexpr const char* kBridge = "bridge";              ///< A planner agent's bridge, in the agent's namespace.

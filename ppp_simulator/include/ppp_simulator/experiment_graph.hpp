@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "ppp_msgs/launch_graph.h"
+#include "ppp_simulator/corpus_check.hpp"
 #include "ppp_simulator/experiment_config.hpp"
 #include "ppp_simulator/shrink_job.hpp"
 #include "ppp_simulator/simulator_options.hpp"
@@ -22,6 +23,9 @@ struct GraphOptions {
   /// When its input is set, the graph of a shrink instead: the shrink node (required) judging its candidates
   /// through the simulator serving hunts, which plays them on the nodes of `shrink.agent` only.
   ShrinkTask shrink;
+  /// When its corpus is set, the graph of a check instead: the check node (required) playing every PPP of the
+  /// corpus through the simulator serving hunts, on the nodes of `check.agent` only.
+  CheckTask check;
   /// The env-loader script remote machines run nodes through (the workspace's devel/env.sh at the same path).
   std::string env_loader;
   /// The planner nodes assigned over the config file's (assignPlanners), which the config given to experimentGraph

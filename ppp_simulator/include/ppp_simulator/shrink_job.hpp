@@ -20,7 +20,9 @@ constexpr int kMaxJudgedRuns = 100000;
 /// goes and how candidates are judged.
 struct ShrinkJob {
   std::string input;   ///< A .ppp, map_server .yaml or MovingAI .map file, or a set directory.
-  std::string output;  ///< The shrunk .ppp file, or a new directory for a set.
+  std::string output;  ///< The shrunk .ppp file, or a new directory for a set ("": none, with `corpus`).
+  /// A corpus directory each shrunk PPP is added to (addToCorpus(): once per obstacle shape); "": none.
+  std::string corpus;
   /// The agent, its episode rules, how its runs are played and on which seeds (replaced per PPP by `results`').
   FailureJudging judging;
   /// An experiment's results.csv: judge each PPP on the seeds of the agent's failed runs there (its set is the
@@ -28,8 +30,8 @@ struct ShrinkJob {
   std::string results;
   int results_runs = 3;  ///< At most this many of each PPP's failed runs in `results`.
   std::string units;     ///< "descriptors", "cells", or "" (descriptors for .ppp files, cells for imported maps).
-  /// @throws InvalidArgument naming "by" (units), "input" (missing), "output" (a set's output directory exists and
-  /// is not empty), as FailureJudging::validate().
+  /// @throws InvalidArgument naming "by" (units), "input" (missing), "output" (neither it nor a corpus given; a set's
+  /// output directory exists and is not empty), "corpus" (a set), as FailureJudging::validate().
   void validate() const;
 };
 
@@ -50,7 +52,8 @@ std::vector<std::uint64_t> derivedRunSeeds(std::uint64_t seed, int runs);
 struct ShrinkTask {
   std::string config;       ///< The experiment YAML: its agents and episode rules (required).
   std::string input;        ///< The PPP file or set directory to shrink (required).
-  std::string output;       ///< The shrunk .ppp file, or a new directory for a set (required).
+  std::string output;       ///< The shrunk .ppp file, or a new directory for a set (required unless `corpus`).
+  std::string corpus;       ///< A corpus directory each shrunk PPP is added to, once per obstacle shape.
   std::string agent;        ///< The config's agent whose failure is shrunk (required; planners included).
   std::uint64_t seed = 1;   ///< The failing run's seed, or with `runs` the seed theirs derive from.
   int runs = 0;             ///< Judge this many runs seeded from `seed` (0: `seed` alone; with `results`: 3).

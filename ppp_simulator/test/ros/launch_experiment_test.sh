@@ -5,7 +5,8 @@
 # modes, a rerun resumes from the generator's stored set, the manager killed mid-run is started again and loses and
 # changes no row, and configs naming an unknown agent type or an unreachable host stop before any node starts;
 # astar in continuous motion gives `ppp experiment`'s rows in both modes too;
-# launch/hunt.launch hunts a small set with only its panel's nodes, and launch/shrink.launch shrinks its failures as ppp shrink does.
+# launch/hunt.launch hunts a small set with only its panel's nodes, and launch/shrink.launch shrinks its failures as ppp shrink does;
+# a planner checked against a corpus through ROS exits 1 naming the PPP it fails, 0 once fixed, 2 on bad input.
 # Then the default config with 2 runs (three sets of 60 PPPs from three generator nodes, one of them hunting
 # through the simulator; the ten agents with 2 runs each and the four example planners with their own 3):
 # exactly sets x PPPs x agents x runs rows, the report and bag exist, MRPT's endless loop shrinks through ROS, the
@@ -286,6 +287,31 @@ timeout 120 roslaunch -p "$port" "$root/launch/shrink.launch" input:="$work/smal
 grep -qF -- "--agent: the config has no agent 'nobody'; it has: wall_follower_left, bumper, astar" \
   "$work/small/nobody.log" && [ "$(started "$work/small/nobody.log")" = "rosout shrink_launch " ] && \
   [ ! -e "$work/small/nobody" ] && pass || fail "an unknown agent's shrink: $(tail "$work/small/nobody.log")"
+
+# A planner checked against a corpus through ROS (scripts/ppp-check-ros, launch/check.launch's graph): the
+# tutorial's horizon planner fails the one PPP of three it was shrunk on (a pocket whose way out is longer than its
+# 45-cell horizon; recorded seed 1), so the check exits 1 and the JUnit XML names that one; without the horizon
+# (simple_planner.py) it exits 0; an agent the config lacks exits 2 before any node starts.
+mkdir -p "$work/corpus"
+cp "$root/ppp_simulator/test/ros/planner_maps/open.ppp" "$root/ppp_simulator/test/ros/planner_maps/wall.ppp" \
+  "$root/ppp_simulator/test/ros/horizon_pocket.ppp" "$work/corpus/"
+check_ros() {  # PLANNER JUNIT [AGENT]: scripts/ppp-check-ros on the corpus; sets $status
+  PPP_BUILD_DIR="$(dirname "$devel")" timeout 300 "$root/scripts/ppp-check-ros" "$work/corpus" --agent "${3:-mine}" \
+    --config "$root/config/planner_hunt.yaml" --planner "mine=ppp_agents/$1" --junit "$2" > "$2.log" 2>&1
+  status=$?
+}
+check_ros horizon_planner.py "$work/horizon.xml"
+[ "$status" -eq 1 ] && grep -q "^mine fails 1 of 3 PPPs of $work/corpus: horizon_pocket" "$work/horizon.xml.log" && \
+  pass || fail "the horizon planner's check exited $status: $(grep -v '^\s*$' "$work/horizon.xml.log" | tail -20)"
+grep -q '<testsuite name="corpus" tests="3" failures="1"' "$work/horizon.xml" && \
+  [ "$(grep -c '<failure type="missed_route" message="mine fails horizon_pocket: 1 of 1 runs failed' "$work/horizon.xml")" -eq 1 ] && \
+  pass || fail "the JUnit XML does not name horizon_pocket alone: $(cat "$work/horizon.xml")"
+check_ros simple_planner.py "$work/simple.xml"
+[ "$status" -eq 0 ] && grep -q '<testsuite name="corpus" tests="3" failures="0"' "$work/simple.xml" && pass || \
+  fail "the fixed planner's check exited $status: $(grep -v '^\s*$' "$work/simple.xml.log" | tail -20)"
+check_ros simple_planner.py "$work/nobody.xml" nobody
+[ "$status" -eq 2 ] && grep -qF -- "--agent: the config has no agent 'nobody'" "$work/nobody.xml.log" && \
+  [ ! -e "$work/nobody.xml" ] && pass || fail "an unknown agent's check exited $status: $(tail -5 "$work/nobody.xml.log")"
 
 sed 's/^runs: 1000 .*/runs: 2/' "$root/config/experiment.yaml" > "$work/experiment.yaml"
 cp "$root/config/agents.yaml" "$root/config/generator.yaml" "$work/"
