@@ -171,8 +171,8 @@ const std::vector<OptionSpec<GeneratorOptions>>& generatorOptionSpecs() {
       declareOption("initial_pool",
                     "directory of PPPs the search starts from (a set ppp generate wrote, a corpus, or your own "
                     "suite of .ppp, map_server .yaml and MovingAI .map files; in an experiment also the name of a "
-                    "set listed before): up to population of them in file-name order, the rest random ('': all "
-                    "random)",
+                    "set listed before): up to population of them, in a set's set.csv order, else in file-name order; "
+                    "the rest random ('': all random)",
                     +[](O& o) -> std::string& { return o.initial_pool; }),
       declareOption("weights.start", "difficulty: weight of the visibility from the start",
                     +[](O& o) -> double& { return o.weights.start; }),

@@ -124,9 +124,9 @@ ProblemSet buildPlainSet(std::vector<Problem> problems, const std::vector<std::s
   return set;
 }
 
-/// Every .ppp, .yaml and .map file of `dir`, in file-name order. @throws IoError when it is not a readable
-/// directory or holds none.
-std::vector<std::string> mapFilesIn(const std::string& dir) {
+}  // namespace
+
+std::vector<std::string> problemFilesIn(const std::string& dir) {
   std::error_code error;
   if (!fs::is_directory(dir, error)) throw IoError(dir, "is not a directory of PPP files");
   std::vector<std::string> files;
@@ -137,8 +137,16 @@ std::vector<std::string> mapFilesIn(const std::string& dir) {
     }
   }
   if (error) throw IoError(dir, "cannot list it: " + error.message());
-  if (files.empty()) throw IoError(dir, "holds no PPP: no .ppp, map_server .yaml or MovingAI .map file");
   std::sort(files.begin(), files.end());
+  return files;
+}
+
+namespace {
+
+/// problemFilesIn(), refusing a directory without a PPP file. @throws IoError.
+std::vector<std::string> mapFilesIn(const std::string& dir) {
+  std::vector<std::string> files = problemFilesIn(dir);
+  if (files.empty()) throw IoError(dir, "holds no PPP: no .ppp, map_server .yaml or MovingAI .map file");
   return files;
 }
 

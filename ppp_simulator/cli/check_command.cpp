@@ -48,13 +48,11 @@ struct CheckFlags {
 std::pair<agents::AgentConfig, EpisodeOptions> checkedAgent(const simulator::CheckTask& task) {
   if (!task.config.empty()) {
     const simulator::ExperimentConfig config = simulator::loadExperimentConfig(task.config);
-    std::vector<std::string> names;
-    for (const agents::AgentConfig& agent : config.agents) {
-      if (agent.name == task.agent) return {agent, config.episode};
-      names.push_back(agent.name);
+    try {
+      return {simulator::configAgent(config, task.agent), config.episode};
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(flagFor("agent"), e.problem() + " (" + task.config + ")");
     }
-    throw InvalidArgument(flagFor("agent"),
-                          "no agent '" + task.agent + "' in " + task.config + "; it has: " + joinNames(names));
   }
   agents::AgentConfig agent;
   agent.type = task.agent;
@@ -125,7 +123,7 @@ void addCheckCommand(CLI::App& app) {
     int status = 0;
     try {
       status = runCheck(*flags);
-    } catch (const Error& e) {
+    } catch (const std::exception& e) {  // ppp::Error, or a filesystem error: bad input either way
       std::cerr << "ppp: error: " << e.what() << "\n";
       throw CLI::RuntimeError(kBadInput);
     }

@@ -49,8 +49,7 @@ const std::vector<OptionSpec<simulator::CheckTask>>& checkFlagSpecs() {
   static const std::vector<OptionSpec<simulator::CheckTask>> specs = [] {
     std::vector<OptionSpec<simulator::CheckTask>> list = selectOptions(simulator::checkTaskSpecs(), {"corpus", "junit"});
     list[0].flag = "check";
-    list[0].doc = "CORPUS: the graph of the check of --agent on every PPP of this directory or file (absolute) "
-                  "instead, played through the simulator (--seed, --runs: for PPPs without recorded seeds; exit "
+    list[0].doc = "CORPUS: the graph of the check of --agent on every PPP of this directory or file instead, played through the simulator (--seed, --runs: for PPPs without recorded seeds; exit "
                   "status: ppp check's)";
     return list;
   }();
@@ -83,6 +82,10 @@ void applyCheckFlags(const LaunchFileFlags& flags, simulator::GraphOptions* grap
   }
   graph->shrink = simulator::ShrinkTask{};
   graph->check.config = graph->config_path;
+  graph->check.corpus = std::filesystem::absolute(graph->check.corpus).lexically_normal().string();
+  if (!graph->check.junit.empty()) {
+    graph->check.junit = std::filesystem::absolute(graph->check.junit).lexically_normal().string();
+  }
   if (graph->check.agent.empty()) throw InvalidArgument(flagFor("agent"), "required: the agent to check");
 }
 

@@ -36,9 +36,12 @@ int runCheckNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh) {
   job.seed = task.seed;
   job.runs = task.runs;
   job.junit = task.junit;
+  // The check of the one PPP again, on the same seeds (its own, or those derived as here).
   job.replay = [task](const CorpusCase& c, std::uint64_t) {
     return "roslaunch launch/check.launch corpus:=" + shellWord(c.file) + " agent:=" + shellWord(task.agent) +
-           " config:=" + shellWord(task.config);
+           " config:=" + shellWord(task.config) +
+           (c.recorded ? "" : " args:=\"--seed " + std::to_string(task.seed) + " --runs " + std::to_string(task.runs) +
+                                  "\"");
   };
   job.play = remoteRunsPlayer(nh, ppp_msgs::topics::kEvaluator, task.agent, config.episode, kServiceWaitSeconds);
   return runCheck(job, [] { return !ros::ok(); }, std::cout);

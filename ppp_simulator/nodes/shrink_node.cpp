@@ -31,7 +31,7 @@ int runShrinkNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh) {
   const ExperimentConfig config = loadExperimentConfig(task.config);
   agents::AgentConfig agent;
   try {
-    agent = shrinkAgent(task, config);
+    agent = configAgent(config, task.agent);
   } catch (const InvalidArgument& e) {
     throw ppp_msgs::parameterError(e);  // "~agent: ..."
   }

@@ -15,29 +15,34 @@ namespace simulator {
 
 namespace fs = std::filesystem;
 
-CorpusAddition addToCorpus(const std::string& dir, const Problem& problem) {
+Corpus::Corpus(std::string dir) : dir_(std::move(dir)) {
   std::error_code error;
-  if (generator::hasProblemSet(dir)) {
-    throw IoError(dir, "is a set (it has a set.csv, which would not list a PPP added to it); give a corpus: a "
-                       "directory of PPP files without one");
+  if (!fs::exists(dir_, error)) return;
+  if (!fs::is_directory(dir_, error)) throw IoError(dir_, "is not a directory; expected a corpus of PPP files");
+  if (generator::hasProblemSet(dir_)) {
+    throw IoError(dir_, "is a set (it has a set.csv, which would not list a PPP added to it); give a corpus: a "
+                        "directory of PPP files without one");
   }
-  if (!fs::create_directories(dir, error) && error) throw IoError(dir, "cannot create it: " + error.message());
+  for (const std::string& file : generator::problemFilesIn(dir_)) {
+    files_.emplace(obstacleShape(decodeGrid(readProblemFile(file))), file);
+    names_.insert(fs::path(file).stem().string());
+  }
+}
+
+CorpusAddition Corpus::add(const Problem& problem) {
   const std::string shape = obstacleShape(decodeGrid(problem));
-  if (!fs::is_empty(dir, error)) {
-    std::vector<std::string> files;
-    try {
-      files = generator::problemSetFiles(dir);
-    } catch (const IoError&) {
-      files.clear();  // a directory of other files only: no PPP yet
-    }
-    for (const std::string& file : files) {
-      if (obstacleShape(decodeGrid(readProblemFile(file))) == shape) return CorpusAddition{file, false};
-    }
-  }
-  char name[32];
-  std::snprintf(name, sizeof name, "trap_%016llx.ppp", static_cast<unsigned long long>(nameHash(shape)));
-  const std::string file = (fs::path(dir) / name).string();
+  const auto found = files_.find(shape);
+  if (found != files_.end()) return CorpusAddition{found->second, false};
+  char hash[17];
+  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(nameHash(shape)));
+  std::string name = std::string("trap_") + hash;
+  for (int k = 2; names_.count(name) > 0; ++k) name = std::string("trap_") + hash + "_" + std::to_string(k);
+  std::error_code error;
+  if (!fs::create_directories(dir_, error) && error) throw IoError(dir_, "cannot create it: " + error.message());
+  const std::string file = (fs::path(dir_) / (name + ".ppp")).string();
   writePppFile(problem, file);
+  files_.emplace(shape, file);
+  names_.insert(name);
   return CorpusAddition{file, true};
 }
 

@@ -50,9 +50,9 @@ std::vector<std::uint64_t> recordedSeeds(const Problem& problem, const std::stri
 
 /// Makes the directory of `path` if need be. @throws IoError naming `path` when a file cannot be written there.
 void checkWritable(const std::string& path) {
-  if (fs::is_directory(path)) throw IoError(path, "is a directory; expected the JUnit XML file to write");
-  const fs::path parent = fs::path(path).parent_path();
   std::error_code error;
+  if (fs::is_directory(path, error)) throw IoError(path, "is a directory; expected the JUnit XML file to write");
+  const fs::path parent = fs::path(path).parent_path();
   if (!parent.empty() && !fs::create_directories(parent, error) && error) {
     throw IoError(path, "cannot be written: its directory cannot be made: " + error.message());
   }

@@ -165,6 +165,15 @@ generator::GeneratorOptions generatorOptionsIn(const ExperimentConfig& config, c
   return options;
 }
 
+const agents::AgentConfig& configAgent(const ExperimentConfig& config, const std::string& name) {
+  std::vector<std::string> names;
+  for (const agents::AgentConfig& agent : config.agents) {
+    if (agent.name == name) return agent;
+    names.push_back(agent.name);
+  }
+  throw InvalidArgument("agent", "the config has no agent '" + name + "'; it has: " + joinNames(names));
+}
+
 ExperimentConfig loadExperimentConfig(const std::string& path) {
   return parseExperimentConfig(readTextFile(path, kMaxYamlBytes), path);
 }

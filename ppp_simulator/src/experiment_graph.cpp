@@ -254,7 +254,7 @@ ppp_msgs::GraphNode shrinkNode(const ShrinkTask& task) {
 void checkShrink(const ExperimentConfig& config, const GraphOptions& options) {
   if (!options.hunt.empty()) throw InvalidArgument("hunt", "a graph hunts or shrinks, not both");
   options.shrink.validate();
-  const agents::AgentConfig& agent = shrinkAgent(options.shrink, config);
+  const agents::AgentConfig& agent = configAgent(config, options.shrink.agent);
   if (!agents::isPlanner(agent)) agents::refuseContinuous(agent, config.episode);  // planners shrink in both models
 }
 
@@ -273,16 +273,8 @@ void checkCheck(const ExperimentConfig& config, const GraphOptions& options) {
     throw InvalidArgument("check", "a graph checks a corpus, or hunts, or shrinks: one of them");
   }
   options.check.validate();
-  std::vector<std::string> names;
-  for (const agents::AgentConfig& agent : config.agents) {
-    if (agent.name != options.check.agent) {
-      names.push_back(agent.name);
-      continue;
-    }
-    if (!agents::isPlanner(agent)) agents::refuseContinuous(agent, config.episode);  // planners check in both models
-    return;
-  }
-  throw InvalidArgument("agent", "the config has no agent '" + options.check.agent + "'; it has: " + joinNames(names));
+  const agents::AgentConfig& agent = configAgent(config, options.check.agent);
+  if (!agents::isPlanner(agent)) agents::refuseContinuous(agent, config.episode);  // planners check in both models
 }
 
 }  // namespace

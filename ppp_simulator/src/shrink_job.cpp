@@ -59,10 +59,10 @@ std::string summary(const ShrunkFailure& s, double seconds) {
          std::to_string(s.evaluations) + " candidates, " + formatFixed(seconds * 1000, 1) + " ms)";
 }
 
-/// Adds `shrunk` to the job's corpus, if any, and says where it went.
-void addToJobCorpus(const ShrinkJob& job, const Problem& shrunk, std::ostream& out) {
-  if (job.corpus.empty()) return;
-  const CorpusAddition addition = addToCorpus(job.corpus, shrunk);
+/// Adds `shrunk` to `corpus`, if any, and says where it went.
+void addToCorpus(Corpus* corpus, const Problem& shrunk, std::ostream& out) {
+  if (corpus == nullptr) return;
+  const CorpusAddition addition = corpus->add(shrunk);
   out << (addition.added ? "  added to the corpus as " : "  in the corpus already, as ") << addition.file << "\n";
 }
 
@@ -71,8 +71,8 @@ std::string directoryName(const fs::path& path) {
   return path.filename().empty() ? path.parent_path().filename().string() : path.filename().string();
 }
 
-int shrinkOne(const ShrinkJob& job, FailureJudging judging, const FailingSeeds* failing, const StopCheck& stop,
-              std::ostream& out) {
+int shrinkOne(const ShrinkJob& job, FailureJudging judging, const FailingSeeds* failing, Corpus* corpus,
+              const StopCheck& stop, std::ostream& out) {
   if (failing != nullptr) {
     const std::string set = directoryName(fs::absolute(job.input).parent_path());
     const std::string id = fs::path(job.input).stem().string();
@@ -90,17 +90,18 @@ int shrinkOne(const ShrinkJob& job, FailureJudging judging, const FailingSeeds* 
   if (!job.output.empty()) writePppFile(shrunk.problem, job.output);
   out << judging.agent.name << " on " << job.input << ": " << summary(shrunk, steadySeconds() - start)
       << (job.output.empty() ? "" : "; written to " + job.output) << "\n";
-  addToJobCorpus(job, shrunk.problem, out);
+  addToCorpus(corpus, shrunk.problem, out);
   return 0;
 }
 
-int shrinkSet(const ShrinkJob& job, FailureJudging judging, const FailingSeeds* failing, const StopCheck& stop,
-              std::ostream& out, std::ostream& err) {
+int shrinkSet(const ShrinkJob& job, FailureJudging judging, const FailingSeeds* failing, Corpus* corpus,
+              const StopCheck& stop, std::ostream& out, std::ostream& err) {
   const std::size_t runs = judging.seeds.size();
   const ProblemSet set = generator::readProblemSetDirectory(job.input);
+  const std::vector<std::string> files = generator::problemSetFiles(job.input);
   std::vector<Problem> shrunk;  // written only once every PPP is done, as a set
   for (std::size_t i = 0; i < set.problems.size(); ++i) {
-    const std::string name = set.ids[i] + ".ppp";
+    const std::string name = fs::path(files[i]).filename().string();
     const double start = steadySeconds();
     if (failing != nullptr) {
       const auto found = failing->find({directoryName(job.input), set.ids[i]});
@@ -111,8 +112,9 @@ int shrinkSet(const ShrinkJob& job, FailureJudging judging, const FailingSeeds* 
       judging.seeds = found->second;
     }
     try {
-      const ShrunkFailure s = shrinkFailure(set.problems[i], name, judging, unitsFor(job, name), stop);
+      ShrunkFailure s = shrinkFailure(set.problems[i], name, judging, unitsFor(job, name), stop);
       out << name << ": " << summary(s, steadySeconds() - start) << "\n" << std::flush;
+      setMetadata(&s.problem.metadata, "id", set.ids[i]);  // a corpus's or an imported map's name, as the set's
       shrunk.push_back(s.problem);
     } catch (const InvalidArgument& e) {
       if (e.name() != "problem") throw;
@@ -126,14 +128,13 @@ int shrinkSet(const ShrinkJob& job, FailureJudging judging, const FailingSeeds* 
         << ": nothing to shrink, nothing written\n";
     return 1;
   }
-  for (const Problem& problem : shrunk) addToJobCorpus(job, problem, out);
   const std::size_t count = shrunk.size();
-  if (job.output.empty()) {
-    out << count << " of " << set.problems.size() << " PPPs shrunk\n";
-    return 0;
+  if (!job.output.empty()) {
+    generator::writeDerivedSetDirectory(job.output, generator::problemSetFromProblems(shrunk, {}, job.input));
   }
-  generator::writeDerivedSetDirectory(job.output, generator::problemSetFromProblems(std::move(shrunk), {}, job.input));
-  out << count << " of " << set.problems.size() << " PPPs shrunk into " << job.output << "\n";
+  for (const Problem& problem : shrunk) addToCorpus(corpus, problem, out);
+  out << count << " of " << set.problems.size() << " PPPs shrunk"
+      << (job.output.empty() ? "" : " into " + job.output) << "\n";
   return 0;
 }
 
@@ -144,10 +145,7 @@ void ShrinkJob::validate() const {
   unitsFor(*this, input);  // a bad --by is refused before any run
   if (!fs::exists(input)) throw InvalidArgument("input", "'" + input + "' does not exist");
   if (output.empty() && corpus.empty()) throw InvalidArgument("output", "required, unless a corpus is given");
-  if (!corpus.empty() && generator::hasProblemSet(corpus)) {
-    throw InvalidArgument("corpus", "'" + corpus + "' is a set (it has a set.csv); give a directory of PPP files "
-                                    "without one");
-  }
+
   if (fs::is_directory(input) && fs::exists(output) && !(fs::is_directory(output) && fs::is_empty(output))) {
     throw InvalidArgument("output", "'" + output + "' exists and is not an empty directory");
   }
@@ -157,10 +155,13 @@ int runShrinkJob(const ShrinkJob& job, const StopCheck& stop, std::ostream& out,
   job.validate();
   std::optional<FailingSeeds> failing;
   if (!job.results.empty()) failing = failingSeeds(job.results, job.judging.agent.name, job.results_runs);
+  std::optional<Corpus> corpus;
+  if (!job.corpus.empty()) corpus.emplace(job.corpus);  // read before any shrink: a bad corpus costs none
   try {
     const FailingSeeds* seeds = failing ? &*failing : nullptr;
-    return fs::is_directory(job.input) ? shrinkSet(job, job.judging, seeds, stop, out, err)
-                                       : shrinkOne(job, job.judging, seeds, stop, out);
+    Corpus* adding = corpus ? &*corpus : nullptr;
+    return fs::is_directory(job.input) ? shrinkSet(job, job.judging, seeds, adding, stop, out, err)
+                                       : shrinkOne(job, job.judging, seeds, adding, stop, out);
   } catch (const Interrupted&) {
     err << "ppp: interrupted; nothing written\n";
     return 130;
@@ -219,15 +220,6 @@ const std::vector<OptionSpec<ShrinkTask>>& shrinkTaskSpecs() {
                     "imported maps)", +[](T& t) -> std::string& { return t.by; }),
   };
   return specs;
-}
-
-agents::AgentConfig shrinkAgent(const ShrinkTask& task, const ExperimentConfig& config) {
-  std::vector<std::string> names;
-  for (const agents::AgentConfig& agent : config.agents) {
-    if (agent.name == task.agent) return agent;
-    names.push_back(agent.name);
-  }
-  throw InvalidArgument("agent", "the config has no agent '" + task.agent + "'; it has: " + joinNames(names));
 }
 
 ShrinkJob shrinkJobOf(const ShrinkTask& task, const agents::AgentConfig& agent, const EpisodeOptions& episode,

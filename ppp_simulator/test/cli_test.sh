@@ -292,6 +292,11 @@ shrunk=$(grep -c "^  added to the corpus as \|^  in the corpus already, as " "$w
 added=$(grep -c "^  added to the corpus as " "$work/out")
 [ "$shrunk" -ge 1 ] && [ "$added" -ge 1 ] && [ "$(ls "$work/corpus" | wc -l)" -eq "$added" ] && pass || \
   fail "the corpus holds $(ls "$work/corpus" | wc -l) files for $added added: $(cat "$work/out")"
+# A corpus (no set.csv) shrinks into a set like any directory: its PPPs keep the corpus's names.
+expect_ok "shrink a corpus into a set" "$ppp" shrink "$work/corpus" --agent bumper --runs 2 -o "$work/corpus_set"
+[ "$(cut -d, -f1 "$work/corpus_set/set.csv" | tail -n +2 | sort | tr '\n' ' ')" = \
+  "$(ls "$work/corpus" | sed 's/\.ppp$//' | sort | tr '\n' ' ')" ] && pass || \
+  fail "the corpus's set is not named as its files: $(cat "$work/corpus_set/set.csv")"
 check_status() {  # NAME EXPECTED_STATUS ARGS...: `ppp check ARGS` exits EXPECTED_STATUS
   local name="$1" expected="$2"; shift 2
   "$ppp" check "$@" > "$work/out" 2> "$work/err" && status=0 || status=$?

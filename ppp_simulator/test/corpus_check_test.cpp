@@ -4,12 +4,15 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/obstacle_shape.hpp"
+#include "ppp_core/problem_io.hpp"
 #include "ppp_core/ppp_file.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_core/text_file.hpp"
@@ -196,34 +199,58 @@ TEST(CorpusCheckTest, AStopLeavesNoJunitXml) {
 }
 
 TEST(CorpusTest, KeepsOnePppPerObstacleShape) {
-  const std::string dir = tempDir() + "/corpus";  // created by the first addition
+  const std::string dir = tempDir() + "/corpus";  // made by the first addition
+  Corpus corpus(dir);
   Problem l_shape = Problem::empty(8, 8, 4);
   l_shape.obstacles = {Obstacle{Shape::VerticalBar, 2, 2, 3, 1}, Obstacle{Shape::HorizontalBar, 3, 4, 1, 1}};
-  const CorpusAddition first = addToCorpus(dir, l_shape);
+  const CorpusAddition first = corpus.add(l_shape);
   EXPECT_TRUE(first.added);
   EXPECT_EQ(fs::path(first.file).parent_path(), fs::path(dir));
   EXPECT_EQ(readPppFile(first.file).obstacles, l_shape.obstacles);
-  // The same L moved and mirrored (its foot to the left), then turned on its side: the same trap.
+  // The same L moved and mirrored (its foot to the left), then turned on its side: the same trap, for this corpus
+  // and for one read from the directory afterwards.
   Problem moved = Problem::empty(8, 8, 4);
   moved.obstacles = {Obstacle{Shape::VerticalBar, 5, 1, 3, 1}, Obstacle{Shape::HorizontalBar, 4, 3, 1, 1}};
   Problem turned = Problem::empty(8, 8, 4);
   turned.obstacles = {Obstacle{Shape::HorizontalBar, 1, 5, 3, 1}, Obstacle{Shape::HorizontalBar, 1, 6, 1, 1}};
-  for (const Problem& same : {moved, turned}) {
-    const CorpusAddition again = addToCorpus(dir, same);
-    EXPECT_FALSE(again.added);
-    EXPECT_EQ(again.file, first.file);
-  }
+  EXPECT_EQ(corpus.add(moved).file, first.file);
+  Corpus reread(dir);
+  const CorpusAddition again = reread.add(turned);
+  EXPECT_FALSE(again.added);
+  EXPECT_EQ(again.file, first.file);
   // A straight bar of three is another shape.
   Problem bar = Problem::empty(8, 8, 4);
   bar.obstacles = {Obstacle{Shape::VerticalBar, 2, 2, 3, 1}};
-  const CorpusAddition other = addToCorpus(dir, bar);
+  const CorpusAddition other = reread.add(bar);
   EXPECT_TRUE(other.added);
   EXPECT_NE(other.file, first.file);
   EXPECT_EQ(readCorpusCases(dir, 1, 1).size(), 2u);
-
-  std::ofstream(dir + "/set.csv") << "id,file\n";  // a set: its set.csv would not list what is added
-  EXPECT_THROW(addToCorpus(dir, barProblem(2)), IoError);
   fs::remove_all(fs::path(dir).parent_path());
+}
+
+TEST(CorpusTest, NeverOverwritesAFileOfTheNameItWouldTake) {
+  const std::string dir = tempDir();
+  Problem l_shape = Problem::empty(8, 8, 4);
+  l_shape.obstacles = {Obstacle{Shape::VerticalBar, 2, 2, 3, 1}, Obstacle{Shape::HorizontalBar, 3, 4, 1, 1}};
+  char hash[17];
+  std::snprintf(hash, sizeof hash, "%016llx",
+                static_cast<unsigned long long>(nameHash(obstacleShape(decodeGrid(l_shape)))));
+  const std::string taken = dir + "/trap_" + hash + ".yaml";  // another map under the L's name
+  writeProblemFile(barProblem(2), taken);
+  const CorpusAddition added = Corpus(dir).add(l_shape);
+  EXPECT_TRUE(added.added);
+  EXPECT_EQ(added.file, dir + "/trap_" + hash + "_2.ppp");
+  EXPECT_EQ(decodeGrid(readProblemFile(taken)), decodeGrid(barProblem(2)));
+  EXPECT_EQ(readCorpusCases(dir, 1, 1).size(), 2u);  // two names, both readable
+  fs::remove_all(dir);
+}
+
+TEST(CorpusTest, RefusesASetOrAFileBeforeAnything) {
+  const std::string dir = tempDir();
+  std::ofstream(dir + "/set.csv") << "id,file\n";  // a set: its set.csv would not list what is added
+  EXPECT_THROW(Corpus{dir}, IoError);
+  EXPECT_THROW(Corpus{dir + "/set.csv"}, IoError);
+  fs::remove_all(dir);
 }
 
 }  // namespace

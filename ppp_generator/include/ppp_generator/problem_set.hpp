@@ -57,6 +57,10 @@ void writeTreeFiles(const std::string& dir, const ProblemSet& set, const Taxonom
 /// line and field.
 std::vector<std::string> problemSetFiles(const std::string& dir);
 
+/// Every .ppp, map_server .yaml and MovingAI .map file of `dir`, in file-name order (none, possibly).
+/// @throws IoError when it is not a readable directory.
+std::vector<std::string> problemFilesIn(const std::string& dir);
+
 /// The names of the PPPs in `files` (of the directory `dir`): each file's name without its extension.
 /// @throws ParseError naming the second of two files of one name.
 std::vector<std::string> problemNames(const std::vector<std::string>& files, const std::string& dir);

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <map>
+#include <set>
 #include <string>
 
 #include "ppp_core/problem.hpp"
@@ -13,12 +15,25 @@ struct CorpusAddition {
   bool added = false;  ///< False when the corpus had a PPP of the same obstacle shape already.
 };
 
-/// Adds `problem` (a shrunk failure, typically) to the corpus directory `dir`, created when missing, as
-/// `trap_HASH.ppp` (HASH: 16 hex digits of its obstacleShape()), unless one of the corpus's PPPs has the same
-/// obstacle shape: moved, mirrored or rotated, it is the same trap, and the corpus keeps the first.
-/// @throws IoError when `dir` is a set (it has a set.csv, which would not list the new file) or cannot be
-/// written; ParseError for a corpus file that cannot be read.
-CorpusAddition addToCorpus(const std::string& dir, const Problem& problem);
+/// A corpus directory that PPPs (shrunk failures, typically) are added to, one per obstacle shape: a PPP whose
+/// obstacles are those of one of the corpus's PPPs moved, mirrored or rotated (obstacleShape()) is the same trap,
+/// and the corpus keeps the first.
+class Corpus {
+ public:
+  /// Reads the shapes of the PPPs in `dir` (none when it does not exist yet: the first addition makes it).
+  /// @throws IoError when `dir` is not a directory or is a set (its set.csv would not list a PPP added to it);
+  /// ParseError for a PPP file of it that cannot be read.
+  explicit Corpus(std::string dir);
+  /// Adds `problem` as `trap_HASH.ppp` (HASH: 16 hex digits of its obstacle shape; `_2`, `_3`, ... after it when a
+  /// file of that name is there already), unless the corpus holds its shape. @throws IoError when it cannot be
+  /// written.
+  CorpusAddition add(const Problem& problem);
+
+ private:
+  std::string dir_;
+  std::map<std::string, std::string> files_;  // obstacle shape -> the corpus's file of it
+  std::set<std::string> names_;               // the file names (without extension) taken
+};
 
 }  // namespace simulator
 }  // namespace ppp

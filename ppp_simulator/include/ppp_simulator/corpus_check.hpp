@@ -27,7 +27,7 @@ struct CorpusCase {
 };
 
 /// The PPPs of `corpus` (a directory, as generator::problemSetFiles() lists it, or one PPP file) in order, each
-/// with the seeds it failed on when it records them (meta shrink_seeds, as ppp shrink writes them), else `runs`
+/// with the seeds it was shrunk on when it records them (meta shrink_seeds, as ppp shrink writes them), else `runs`
 /// seeds derived from `seed` as ppp simulate derives them.
 /// @throws IoError, ParseError naming the file (and "meta shrink_seeds" for a malformed seed list);
 /// InvalidArgument naming "runs" out of range.

@@ -51,6 +51,9 @@ const std::vector<OptionSpec<ExperimentConfig>>& experimentOptionSpecs();
 /// @throws IoError, ParseError (file:line: key: what), InvalidArgument.
 ExperimentConfig loadExperimentConfig(const std::string& path);
 
+/// The agent of `config` named `name`. @throws InvalidArgument naming "agent" when it has none so named.
+const agents::AgentConfig& configAgent(const ExperimentConfig& config, const std::string& name);
+
 /// loadExperimentConfig() on text: `yaml` is the experiment YAML of `path` (named in errors; relative paths are
 /// relative to its directory, where the files it names are read). @throws ParseError, InvalidArgument, IoError
 /// (a file it names).

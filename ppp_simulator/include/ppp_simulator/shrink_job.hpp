@@ -21,7 +21,8 @@ constexpr int kMaxJudgedRuns = 100000;
 struct ShrinkJob {
   std::string input;   ///< A .ppp, map_server .yaml or MovingAI .map file, or a set directory.
   std::string output;  ///< The shrunk .ppp file, or a new directory for a set ("": none, with `corpus`).
-  /// A corpus directory each shrunk PPP is added to (addToCorpus(): once per obstacle shape); "": none.
+  /// A corpus directory each shrunk PPP is added to (Corpus: once per obstacle shape), after the output is
+  /// written; "": none.
   std::string corpus;
   /// The agent, its episode rules, how its runs are played and on which seeds (replaced per PPP by `results`').
   FailureJudging judging;
@@ -31,7 +32,7 @@ struct ShrinkJob {
   int results_runs = 3;  ///< At most this many of each PPP's failed runs in `results`.
   std::string units;     ///< "descriptors", "cells", or "" (descriptors for .ppp files, cells for imported maps).
   /// @throws InvalidArgument naming "by" (units), "input" (missing), "output" (neither it nor a corpus given; a set's
-  /// output directory exists and is not empty), "corpus" (a set), as FailureJudging::validate().
+  /// output directory exists and is not empty), as FailureJudging::validate().
   void validate() const;
 };
 
@@ -64,9 +65,6 @@ struct ShrinkTask {
   /// @throws InvalidArgument naming the option.
   void validate() const;
 };
-
-/// The agent of `config` that `task` shrinks for. @throws InvalidArgument naming "agent" when it has none so named.
-agents::AgentConfig shrinkAgent(const ShrinkTask& task, const ExperimentConfig& config);
 
 /// One declaration per ShrinkTask option.
 const std::vector<OptionSpec<ShrinkTask>>& shrinkTaskSpecs();
