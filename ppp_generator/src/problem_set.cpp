@@ -54,13 +54,28 @@ std::string readRequiredMetadata(const Problem& p, const std::string& key, const
 
 void writeText(const fs::path& path, const std::string& text) { writeFileAtomically(path.string(), text); }
 
+/// Moves `problems` into `set`, each evaluated with `weights`, and measures the set's diversity.
+/// @throws ParseError naming `source` when the PPPs differ in size.
+void fillProblems(ProblemSet* set, std::vector<Problem> problems, const DifficultyWeights& weights,
+                  const std::string& source) {
+  Evaluator evaluator(weights);
+  for (Problem& problem : problems) {
+    set->evaluations.push_back(evaluator.evaluate(problem));
+    set->problems.push_back(std::move(problem));
+  }
+  try {
+    fillDiversity(set);
+  } catch (const InvalidArgument& e) {
+    throw ParseError(source, 0, "set", std::string("PPPs of different sizes: ") + e.what());
+  }
+}
+
 /// The set of `problems` (problem i read from where[i]), re-evaluated with `weights`. @throws ParseError.
 ProblemSet buildSet(std::vector<Problem> problems, const std::vector<std::string>& where,
                     const DifficultyWeights& weights, const std::string& source) {
   ProblemSet set;
-  Evaluator evaluator(weights);
   for (std::size_t i = 0; i < problems.size(); ++i) {
-    Problem& problem = problems[i];
+    const Problem& problem = problems[i];
     set.fitness = readRequiredMetadata(problem, "fitness", where[i]);
     set.ids.push_back(readRequiredMetadata(problem, "id", where[i]));
     const std::string value = readRequiredMetadata(problem, "fitness_value", where[i]);
@@ -69,14 +84,8 @@ ProblemSet buildSet(std::vector<Problem> problems, const std::vector<std::string
     if (end == value.c_str() || *end != '\0') {
       throw ParseError(where[i], 0, "meta fitness_value", "not a number: " + value);
     }
-    set.evaluations.push_back(evaluator.evaluate(problem));
-    set.problems.push_back(std::move(problem));
   }
-  try {
-    fillDiversity(&set);
-  } catch (const InvalidArgument& e) {
-    throw ParseError(source, 0, "set", std::string("PPPs of different sizes: ") + e.what());
-  }
+  fillProblems(&set, std::move(problems), weights, source);
   set.maximise = fitnessMaximises(set.fitness);
   return set;
 }
@@ -111,16 +120,7 @@ ProblemSet buildPlainSet(std::vector<Problem> problems, const std::vector<std::s
   }
   if (fitness == nullptr) set.fitness_values.assign(problems.size(), 0.0);
   set.ids = problemNames(files, dir);
-  Evaluator evaluator(weights);
-  for (std::size_t i = 0; i < problems.size(); ++i) {
-    set.evaluations.push_back(evaluator.evaluate(problems[i]));
-    set.problems.push_back(std::move(problems[i]));
-  }
-  try {
-    fillDiversity(&set);
-  } catch (const InvalidArgument& e) {
-    throw ParseError(dir, 0, "set", std::string("PPPs of different sizes: ") + e.what());
-  }
+  fillProblems(&set, std::move(problems), weights, dir);
   return set;
 }
 

@@ -88,12 +88,8 @@ int runCheck(const CheckFlags& f) {
   }
   agents::refuseContinuous(agent, episode);
   simulator::CheckJob job;
-  job.corpus = task.corpus;
-  job.agent = task.agent;
+  job.task = task;
   job.episode = episode;
-  job.seed = task.seed;
-  job.runs = task.runs;
-  job.junit = task.junit;
   job.play = [agent = agent, episode = episode](const Problem& problem, const std::vector<std::uint64_t>& seeds) {
     return simulator::playRuns(problem, agent, episode, seeds);
   };

@@ -30,12 +30,8 @@ int runCheckNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh) {
   ppp_msgs::validateParameters(task);
   const ExperimentConfig config = loadExperimentConfig(task.config);
   CheckJob job;
-  job.corpus = task.corpus;
-  job.agent = task.agent;
+  job.task = task;
   job.episode = config.episode;
-  job.seed = task.seed;
-  job.runs = task.runs;
-  job.junit = task.junit;
   // The check of the one PPP again, on the same seeds (its own, or those derived as here).
   job.replay = [task](const CorpusCase& c, std::uint64_t) {
     return "roslaunch launch/check.launch corpus:=" + shellWord(c.file) + " agent:=" + shellWord(task.agent) +

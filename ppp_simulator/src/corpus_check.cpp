@@ -108,7 +108,7 @@ std::vector<CorpusCase> readCorpusCases(const std::string& corpus, std::uint64_t
 }
 
 int runCheck(const CheckJob& job, const StopCheck& stop, std::ostream& out) {
-  const std::vector<CorpusCase> cases = readCorpusCases(job.corpus, job.seed, job.runs);
+  const std::vector<CorpusCase> cases = readCorpusCases(job.task.corpus, job.task.seed, job.task.runs);
   for (const CorpusCase& c : cases) {
     if (!solvableForRobot(c.problem, job.episode)) {
       throw InvalidArgument("corpus", c.file + ": the robot cannot play it: its goal is out of reach" +
@@ -117,7 +117,7 @@ int runCheck(const CheckJob& job, const StopCheck& stop, std::ostream& out) {
                                                : std::string()));
     }
   }
-  if (!job.junit.empty()) checkWritable(job.junit);
+  if (!job.task.junit.empty()) checkWritable(job.task.junit);
   std::vector<CaseVerdict> verdicts;
   std::vector<std::string> failing;
   for (const CorpusCase& c : cases) {
@@ -145,14 +145,14 @@ int runCheck(const CheckJob& job, const StopCheck& stop, std::ostream& out) {
     out << std::flush;
     verdicts.push_back(std::move(verdict));
   }
-  if (!job.junit.empty()) {
-    const fs::path corpus(job.corpus);
+  if (!job.task.junit.empty()) {
+    const fs::path corpus(job.task.corpus);
     const std::string suite = (corpus.filename().empty() ? corpus.parent_path() : corpus).filename().string();
-    writeFileAtomically(job.junit, checkJunitXml(suite, job.agent, cases, verdicts, job.replay));
+    writeFileAtomically(job.task.junit, checkJunitXml(suite, job.task.agent, cases, verdicts, job.replay));
   }
-  out << job.agent << (failing.empty() ? " passes all " : " fails " + std::to_string(failing.size()) + " of ")
-      << cases.size() << " PPPs of " << job.corpus << (failing.empty() ? "" : ": " + joinNames(failing))
-      << (job.junit.empty() ? "" : "; JUnit XML in " + job.junit) << "\n";
+  out << job.task.agent << (failing.empty() ? " passes all " : " fails " + std::to_string(failing.size()) + " of ")
+      << cases.size() << " PPPs of " << job.task.corpus << (failing.empty() ? "" : ": " + joinNames(failing))
+      << (job.task.junit.empty() ? "" : "; JUnit XML in " + job.task.junit) << "\n";
   return failing.empty() ? 0 : 1;
 }
 

@@ -145,7 +145,6 @@ void ShrinkJob::validate() const {
   unitsFor(*this, input);  // a bad --by is refused before any run
   if (!fs::exists(input)) throw InvalidArgument("input", "'" + input + "' does not exist");
   if (output.empty() && corpus.empty()) throw InvalidArgument("output", "required, unless a corpus is given");
-
   if (fs::is_directory(input) && fs::exists(output) && !(fs::is_directory(output) && fs::is_empty(output))) {
     throw InvalidArgument("output", "'" + output + "' exists and is not an empty directory");
   }

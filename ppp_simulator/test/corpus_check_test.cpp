@@ -68,11 +68,11 @@ std::string threePppCorpus() {
 
 CheckJob checkJob(const std::string& corpus, std::vector<std::uint64_t>* played) {
   CheckJob job;
-  job.corpus = corpus;
-  job.agent = "mine";
+  job.task.corpus = corpus;
+  job.task.agent = "mine";
   job.play = FakePlayer{played};
-  job.seed = 7;
-  job.runs = 2;
+  job.task.seed = 7;
+  job.task.runs = 2;
   job.replay = [](const CorpusCase& c, std::uint64_t seed) {
     return "replay " + c.name + " " + std::to_string(seed);
   };
@@ -105,7 +105,7 @@ TEST(CorpusCheckTest, OneFailingPppOfThreeExitsOneAndTheJunitXmlNamesIt) {
   const std::string dir = threePppCorpus();
   std::vector<std::uint64_t> played;
   CheckJob job = checkJob(dir, &played);
-  job.junit = dir + "/results/check.xml";  // its directory made
+  job.task.junit = dir + "/results/check.xml";  // its directory made
   std::ostringstream out;
   EXPECT_EQ(runCheck(job, {}, out), 1);
   const std::uint64_t s0 = deriveSeed(7, {0}), s1 = deriveSeed(7, {1});
@@ -117,7 +117,7 @@ TEST(CorpusCheckTest, OneFailingPppOfThreeExitsOneAndTheJunitXmlNamesIt) {
   EXPECT_NE(out.str().find("pass a_two: 2 of 2 runs passed\n"), std::string::npos) << out.str();
   EXPECT_NE(out.str().find("mine fails 1 of 3 PPPs of " + dir + ": b_three"), std::string::npos) << out.str();
 
-  const std::string xml = readTextFile(job.junit, 1 << 20);
+  const std::string xml = readTextFile(job.task.junit, 1 << 20);
   const std::string suite = fs::path(dir).filename().string();
   EXPECT_NE(xml.find("<testsuite name=\"" + suite + "\" tests=\"3\" failures=\"1\" errors=\"0\""), std::string::npos)
       << xml;
@@ -137,7 +137,7 @@ TEST(CorpusCheckTest, OneFailingPppOfThreeExitsOneAndTheJunitXmlNamesIt) {
   std::ostringstream again;
   EXPECT_EQ(runCheck(job, {}, again), 0);
   EXPECT_NE(again.str().find("mine passes all 2 PPPs of"), std::string::npos) << again.str();
-  EXPECT_NE(readTextFile(job.junit, 1 << 20).find("tests=\"2\" failures=\"0\""), std::string::npos);
+  EXPECT_NE(readTextFile(job.task.junit, 1 << 20).find("tests=\"2\" failures=\"0\""), std::string::npos);
   fs::remove_all(dir);
 }
 
@@ -147,12 +147,12 @@ TEST(CorpusCheckTest, BadInputIsRefusedBeforeAnyRunAndNothingIsWritten) {
   std::ostringstream out;
 
   CheckJob unwritable = checkJob(dir, &played);
-  unwritable.junit = dir + "/a_two.ppp/check.xml";  // under a file: no directory can be made there
+  unwritable.task.junit = dir + "/a_two.ppp/check.xml";  // under a file: no directory can be made there
   EXPECT_THROW(runCheck(unwritable, {}, out), IoError);
 
   CheckJob walled = checkJob(dir, &played);
   walled.episode.robot_radius = 2;  // no way past any bar for a robot this wide
-  walled.junit = dir + "/check.xml";
+  walled.task.junit = dir + "/check.xml";
   try {
     runCheck(walled, {}, out);
     ADD_FAILURE() << "a PPP the robot cannot play was played";
@@ -189,12 +189,12 @@ TEST(CorpusCheckTest, AStopLeavesNoJunitXml) {
   const std::string dir = threePppCorpus();
   std::vector<std::uint64_t> played;
   CheckJob job = checkJob(dir, &played);
-  job.junit = dir + "/check.xml";
+  job.task.junit = dir + "/check.xml";
   int asked = 0;
   std::ostringstream out;
   EXPECT_EQ(runCheck(job, [&] { return ++asked > 3; }, out), 130);
   EXPECT_EQ(played.size(), 3u);
-  EXPECT_FALSE(fs::exists(job.junit));
+  EXPECT_FALSE(fs::exists(job.task.junit));
   fs::remove_all(dir);
 }
 

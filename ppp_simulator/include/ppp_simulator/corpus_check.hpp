@@ -42,15 +42,24 @@ struct CaseVerdict {
   bool passed() const { return failed.empty(); }
 };
 
+/// What the check node does (launch/check.launch): `ppp check` of one agent of an experiment config through the
+/// simulator's evaluation service. Its `~` parameters; `ppp launch-file --check` takes the same as flags.
+struct CheckTask {
+  std::string config;      ///< The experiment YAML: its agents and episode rules (required).
+  std::string corpus;      ///< The corpus directory or PPP file (required).
+  std::string agent;       ///< The config's agent checked (required; planners included).
+  std::uint64_t seed = 1;  ///< What a PPP without recorded seeds has its seeds derived from.
+  int runs = kDefaultCheckRuns;  ///< How many runs such a PPP gets.
+  std::string junit;       ///< Where the JUnit XML goes, its directory made if need be ("": nowhere).
+  /// @throws InvalidArgument naming the option.
+  void validate() const;
+};
+
 /// A check: one agent on every PPP of a corpus.
 struct CheckJob {
-  std::string corpus;  ///< A directory of PPP files, or one PPP file.
-  std::string agent;   ///< The agent's name.
+  CheckTask task;          ///< What is checked (its config: where the agent and the rules came from, if anywhere).
   EpisodeOptions episode;  ///< The episodes' rules (for the robot's body, whether a PPP can be played at all).
-  RunsPlayer play;     ///< Plays the agent on a PPP once per seed.
-  std::uint64_t seed = 1;           ///< What a PPP without recorded seeds has its seeds derived from.
-  int runs = kDefaultCheckRuns;     ///< How many runs such a PPP gets.
-  std::string junit;   ///< Where the JUnit XML goes, its directory made if need be ("": nowhere).
+  RunsPlayer play;         ///< Plays the agent on a PPP once per seed.
   /// The command that plays run `seed` of `c` again, for a failure's message.
   std::function<std::string(const CorpusCase& c, std::uint64_t seed)> replay;
 };
@@ -66,19 +75,6 @@ int runCheck(const CheckJob& job, const StopCheck& stop, std::ostream& out);
 std::string checkJunitXml(const std::string& suite, const std::string& agent, const std::vector<CorpusCase>& cases,
                           const std::vector<CaseVerdict>& verdicts,
                           const std::function<std::string(const CorpusCase&, std::uint64_t)>& replay);
-
-/// What the check node does (launch/check.launch): `ppp check` of one agent of an experiment config through the
-/// simulator's evaluation service. Its `~` parameters; `ppp launch-file --check` takes the same as flags.
-struct CheckTask {
-  std::string config;      ///< The experiment YAML: its agents and episode rules (required).
-  std::string corpus;      ///< The corpus directory or PPP file (required).
-  std::string agent;       ///< The config's agent checked (required; planners included).
-  std::uint64_t seed = 1;  ///< What a PPP without recorded seeds has its seeds derived from.
-  int runs = kDefaultCheckRuns;  ///< How many runs such a PPP gets.
-  std::string junit;       ///< Where the JUnit XML goes ("": nowhere).
-  /// @throws InvalidArgument naming the option.
-  void validate() const;
-};
 
 /// One declaration per CheckTask option.
 const std::vector<OptionSpec<CheckTask>>& checkTaskSpecs();
