@@ -2,6 +2,7 @@
 set(PPP_GENERATOR_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/breeder.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/diversity.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/evaluation_log.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/fitness.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/failure_fitness.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/hunt_evaluation.cpp

@@ -10,6 +10,13 @@ namespace ppp {
 namespace planners {
 
 std::vector<Cell> optimisticAStar(const GridMap& map, Cell start, Cell goal) {
+  return gridAStar(map, start, goal, SearchRules{});
+}
+
+std::vector<Cell> gridAStar(const GridMap& map, Cell start, Cell goal, const SearchRules& rules) {
+  const auto can_step = [&](Cell from, Cell to) {
+    return map.contains(to) && (rules.can_step ? rules.can_step(from, to) : map.passable(to));
+  };
   if (!map.contains(start) || !map.passable(goal)) return {};
   const int width = map.frame().width;
   const int cells = width * map.frame().height;
@@ -25,6 +32,7 @@ std::vector<Cell> optimisticAStar(const GridMap& map, Cell start, Cell goal) {
   cost[static_cast<std::size_t>(index(start))] = 0;
   open.emplace(heuristic(start), heuristic(start), index(start));
   constexpr Cell kSteps[] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+  long expansions = 0;
   while (!open.empty()) {
     const auto [f, h, i] = open.top();
     open.pop();
@@ -32,14 +40,16 @@ std::vector<Cell> optimisticAStar(const GridMap& map, Cell start, Cell goal) {
     const int g = cost[static_cast<std::size_t>(i)];
     if (f != g + h) continue;  // a stale entry: the cell was reached more cheaply since
     if (cell == goal) break;
+    if (rules.max_expansions > 0 && ++expansions > rules.max_expansions) return {};
     for (const Cell step : kSteps) {
       const Cell next{cell.x + step.x, cell.y + step.y};
-      if (!map.passable(next)) continue;
+      if (!can_step(cell, next)) continue;
       const std::size_t j = static_cast<std::size_t>(index(next));
       if (cost[j] >= 0 && cost[j] <= g + 1) continue;
       cost[j] = g + 1;
       parent[j] = i;
       open.emplace(g + 1 + heuristic(next), heuristic(next), index(next));
+      if (rules.max_open > 0 && static_cast<long>(open.size()) > rules.max_open) return {};
     }
   }
   if (cost[static_cast<std::size_t>(index(goal))] < 0) return {};

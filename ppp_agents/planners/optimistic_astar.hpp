@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "grid_map.hpp"
@@ -14,6 +15,19 @@ namespace planners {
 /// same map gives the same path. Built with unknown_is_free, the map makes this the optimistic unknown-terrain
 /// planner: plan as if unknown cells were free, and plan again when the map shows otherwise.
 std::vector<Cell> optimisticAStar(const GridMap& map, Cell start, Cell goal);
+
+/// What a search may do differently from optimisticAStar (the planted faults of planted_faults.hpp are made of
+/// these): each left at its default, the search is optimisticAStar.
+struct SearchRules {
+  /// Whether a step from one cell may enter the next (default: GridMap::passable of the next). Cells off the map are
+  /// never entered.
+  std::function<bool(Cell from, Cell to)> can_step;
+  long max_expansions = 0;      ///< Give up (no path) after expanding this many cells; 0: never.
+  long max_open = 0;            ///< Give up (no path) when the open list holds more entries than this; 0: never.
+};
+
+/// A* under `rules`: optimisticAStar when every rule is left at its default.
+std::vector<Cell> gridAStar(const GridMap& map, Cell start, Cell goal, const SearchRules& rules);
 
 }  // namespace planners
 }  // namespace ppp

@@ -184,6 +184,8 @@ void PlannerNode::serve(const Request& request) {
       publish(last_plan_.waypoints, request.pose_stamp);
       return;
     }
+    if (options_.episode_started && request.map->info.map_load_time != planned_episode_) options_.episode_started();
+    planned_episode_ = request.map->info.map_load_time;
     const auto start = std::chrono::steady_clock::now();
     const std::vector<MapPoint> waypoints = plan_(map, robot, target);
     last_plan_ = LastPlan{waypoints, robot, target, request.pose_stamp, request.map};

@@ -33,6 +33,9 @@ struct PlannerNodeOptions {
   bool unknown_is_free = true;  ///< Unknown map cells (-1) are passable.
   bool replan_on_map = false;   ///< Plan again on every new map while there is a goal the robot is not at.
   PlannerBody body;             ///< The robot's body as the planner believes it (its inflation).
+  /// Called before the first plan of each episode (a map whose info.map_load_time differs from the last plan's): a
+  /// planner with a memory of its own starts afresh.
+  std::function<void()> episode_started;
 };
 
 /// The ROS side of the example planners (docs/reference/planner-interface.md): keeps the newest `map`, answers every
@@ -97,6 +100,7 @@ class PlannerNode {
   bool goal_pending_ = false;                      // goal_ has not been planned for yet
   bool goal_reached_ = false;                      // a re-plan found the robot on goal_
   nav_msgs::OccupancyGrid::ConstPtr planned_map_;  // the newest map when the last request was served
+  ros::Time planned_episode_;                      // the info.map_load_time of the map last planned on
   std::deque<nav_msgs::Odometry::ConstPtr> poses_;  // the newest odometry messages, oldest first
   tf2::BufferCore static_frames_;                   // what /tf_static says (thread-safe)
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "planted_faults.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/footprint.hpp"
 #include "ppp_core/motion_options.hpp"
@@ -233,6 +234,30 @@ const std::vector<OptionSpec<TpSpaceNodeParameters>>& tpSpaceNodeOptionSpecs() {
                                                "(below the goal tolerance, or the robot stops short of the goal)",
                     +[](T& t) -> double& { return t.target_allowed_distance; }, Bounds{1e-3, 1e3}),
   };
+  return specs;
+}
+
+void ZooNodeParameters::validate() const {
+  if (fault.empty()) throw InvalidArgument("fault", "the zoo planner needs a fault; expected one of its choices");
+  checkOptionRanges(zooNodeOptionSpecs(), *this);
+}
+
+const std::vector<OptionSpec<ZooNodeParameters>>& zooNodeOptionSpecs() {
+  using Z = ZooNodeParameters;
+  static const std::vector<OptionSpec<Z>> specs = [] {
+    std::vector<OptionChoice> faults;
+    for (const PlantedFault& f : plantedFaults()) {
+      const std::string limit = f.default_limit > 0 ? " (~limit " + std::to_string(f.default_limit) + ")" : "";
+      faults.push_back({f.name, f.kind + ": " + f.description + limit});
+    }
+    return std::vector<OptionSpec<Z>>{
+        declareOption("fault", "the planted fault (required)", +[](Z& z) -> std::string& { return z.fault; })
+            .withChoices("fault", faults),
+        declareOption("limit", "the fault's limit: cells of route, cells expanded, cells remembered or cells of "
+                               "inflation (0: the fault's own default)",
+                      +[](Z& z) -> int& { return z.limit; }, Bounds{0, 1000000}),
+    };
+  }();
   return specs;
 }
 

@@ -129,6 +129,17 @@ struct TpSpaceNodeParameters {
 /// One declaration per `~` parameter of the TP-space example node besides its frames.
 const std::vector<OptionSpec<TpSpaceNodeParameters>>& tpSpaceNodeOptionSpecs();
 
+/// What the zoo planner node reads besides its frames: its planted fault (planted_faults.hpp).
+struct ZooNodeParameters {
+  std::string fault;  ///< ~fault: the planted fault's name (required).
+  int limit = 0;      ///< ~limit: the fault's limit (0: its default).
+  /// @throws InvalidArgument naming the parameter out of its declared range or choices.
+  void validate() const;
+};
+
+/// One declaration per `~` parameter of the zoo planner node besides its frames.
+const std::vector<OptionSpec<ZooNodeParameters>>& zooNodeOptionSpecs();
+
 /// The default ~base_frame of a node in `node_namespace`: the namespace without its leading slash, then
 /// "/base_link" ("/ompl/robot" -> "ompl/robot/base_link", "/" -> "base_link").
 std::string defaultBaseFrame(const std::string& node_namespace);

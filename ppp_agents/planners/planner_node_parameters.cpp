@@ -50,5 +50,9 @@ TpSpaceNodeParameters readTpSpaceNodeParameters(const ros::NodeHandle& private_n
   return readDeclared(private_nh, tpSpaceNodeOptionSpecs());
 }
 
+ZooNodeParameters readZooNodeParameters(const ros::NodeHandle& private_nh) {
+  return readDeclared(private_nh, zooNodeOptionSpecs());
+}
+
 }  // namespace planners
 }  // namespace ppp

@@ -34,5 +34,8 @@ DwaNodeParameters readDwaNodeParameters(const ros::NodeHandle& private_nh);
 /// The TP-space example node's `~` parameters besides its frames. @throws InvalidArgument naming a bad one.
 TpSpaceNodeParameters readTpSpaceNodeParameters(const ros::NodeHandle& private_nh);
 
+/// The zoo planner node's `~` parameters besides its frames. @throws InvalidArgument naming a bad one.
+ZooNodeParameters readZooNodeParameters(const ros::NodeHandle& private_nh);
+
 }  // namespace planners
 }  // namespace ppp

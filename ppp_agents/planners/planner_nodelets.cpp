@@ -8,6 +8,7 @@
 #include "ompl_planner_node.hpp"
 #include "optimistic_planner_node.hpp"
 #include "ppp_msgs/nodelet_of.h"
+#include "zoo_planner_node.hpp"
 
 namespace ppp {
 namespace planners {
@@ -17,6 +18,7 @@ class OmplPlannerNodelet : public ppp_msgs::NodeletOf<OmplPlannerNode> {};
 class MrptPlannerNodelet : public ppp_msgs::NodeletOf<MrptPlannerNode> {};
 class MrptReactiveNodelet : public ppp_msgs::NodeletOf<ReactiveNode> {};
 class DwaPlannerNodelet : public ppp_msgs::NodeletOf<DwaPlannerNode> {};
+class ZooPlannerNodelet : public ppp_msgs::NodeletOf<ZooPlannerNode> {};
 
 }  // namespace planners
 }  // namespace ppp
@@ -26,3 +28,4 @@ PLUGINLIB_EXPORT_CLASS(ppp::planners::OmplPlannerNodelet, nodelet::Nodelet)
 PLUGINLIB_EXPORT_CLASS(ppp::planners::MrptPlannerNodelet, nodelet::Nodelet)
 PLUGINLIB_EXPORT_CLASS(ppp::planners::MrptReactiveNodelet, nodelet::Nodelet)
 PLUGINLIB_EXPORT_CLASS(ppp::planners::DwaPlannerNodelet, nodelet::Nodelet)
+PLUGINLIB_EXPORT_CLASS(ppp::planners::ZooPlannerNodelet, nodelet::Nodelet)

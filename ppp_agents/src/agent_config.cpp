@@ -387,6 +387,7 @@ bool playsContinuously(const AgentConfig& config, const EpisodeOptions& options)
 const ExamplePlanner* examplePlanner(const std::string& planner_node) {
   static const std::map<std::string, ExamplePlanner> planners = {
       {"ppp_agents/optimistic_planner_node", {"ppp_agents/OptimisticPlanner", false}},
+      {"ppp_agents/zoo_planner_node", {"ppp_agents/ZooPlanner", false}},
       {"ppp_agents/ompl_planner_node", {"ppp_agents/OmplPlanner", false}},
       {"ppp_agents/mrpt_planner_node", {"ppp_agents/MrptPlanner", false}},
       {"ppp_agents/mrpt_reactive_node", {"ppp_agents/MrptReactive", true}},

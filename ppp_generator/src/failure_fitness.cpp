@@ -60,8 +60,10 @@ FailureEstimate estimateOf(const PanelTally& tally, int runs, int budget) {
 }
 
 FitnessScore panelScore(const std::string& fitness, const FailureEstimate& estimate) {
-  return fitness == kRegretFitness ? regretScore(estimate.regret, estimate.budget_used)
-                                   : failureScore(estimate.failure_rate, estimate.budget_used);
+  FitnessScore score = fitness == kRegretFitness ? regretScore(estimate.regret, estimate.budget_used)
+                                                 : failureScore(estimate.failure_rate, estimate.budget_used);
+  score.failure_rate = estimate.failure_rate;
+  return score;
 }
 
 std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const std::vector<const Problem*>& problems,

@@ -1,6 +1,7 @@
 #include "ppp_generator/set_evolution.hpp"
 
 #include "ppp_core/csv.hpp"
+#include "ppp_generator/evaluation_log.hpp"
 #include "ppp_generator/map_elites.hpp"
 
 namespace ppp {
@@ -10,6 +11,8 @@ EvolvedSet evolveSet(const GeneratorOptions& options, Fitness fitness, const Pro
                      long progress_interval, const StopCheck& stop) {
   options.validate();
   EvolvedSet evolved;
+  const EvaluationLog log;
+  fitness = log.wrap(std::move(fitness));
   if (options.archive == kMapElitesArchive) {
     MapElites search(options, std::move(fitness));
     evolved.set = makeProblemSet(options, search.run(progress, progress_interval, stop));
@@ -36,6 +39,7 @@ EvolvedSet evolveSet(const GeneratorOptions& options, Fitness fitness, const Pro
                       std::to_string(s.children_duplicate) + " dropped as duplicates, " +
                       std::to_string(s.children_rejected) + " lost to a similar PPP";
   }
+  if (!log.empty()) evolved.extra_files[kEvaluationLogFile] = log.csv();
   evolved.summary += "; diversity " + formatNumber(evolved.set.diversity);
   return evolved;
 }

@@ -16,6 +16,7 @@
 #include "ppp_core/reachability.hpp"
 #include "ppp_core/rng.hpp"
 #include "ppp_core/text_file.hpp"
+#include "ppp_generator/evaluation_log.hpp"
 #include "ppp_generator/set_evolution.hpp"
 
 namespace ppp {
@@ -225,6 +226,8 @@ std::map<std::string, std::string> filesOf(const fs::path& dir) {
   for (const auto& entry : fs::directory_iterator(dir)) {
     files[entry.path().filename().string()] = readTextFile(entry.path().string(), 1u << 24);
   }
+  const auto log = files.find(generator::kEvaluationLogFile);  // its wall times differ from run to run
+  if (log != files.end()) log->second = generator::withoutSeconds(log->second);
   return files;
 }
 

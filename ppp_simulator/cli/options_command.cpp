@@ -118,7 +118,10 @@ std::string optionsReference() {
       << "\n`mrpt_tpspace_node` (MRPT's TP-space navigator, a local planner answering on `cmd_vel` in continuous\n"
       << "motion only) reads the frames above, its configuration and the robot's description, which the experiment's\n"
       << "graph sets from the motion options:\n\n"
-      << optionsMarkdownTable(planners::tpSpaceNodeOptionSpecs(), planners::TpSpaceNodeParameters{}, &parameter);
+      << optionsMarkdownTable(planners::tpSpaceNodeOptionSpecs(), planners::TpSpaceNodeParameters{}, &parameter)
+      << "\n`zoo_planner_node` (the optimistic planner with one planted fault, for measuring hunts:\n"
+      << "`scripts/bench-hunt.sh`) reads the frames above and:\n\n"
+      << optionsMarkdownTable(planners::zooNodeOptionSpecs(), planners::ZooNodeParameters{}, &parameter);
   return out.str();
 }
 

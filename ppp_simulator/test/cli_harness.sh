@@ -6,6 +6,7 @@
 #   finish                     prints "N passed, N failed"; its status is the script's result
 #   small_experiment RUNS      writes $work/experiment.yaml (and its agents.yaml): 2 evolved sets x 6 small PPPs
 #                              x 3 agents x RUNS runs
+#   same_sets DIR DIR          two set directories hold the same files, evaluations.csv's wall times aside
 #   mount_tmpfs SIZE           mounts a tmpfs of SIZE (e.g. 16m) on $mnt=$work/mnt, unmounted on exit; where it
 #                              cannot (no root), says the test is skipped and exits 77
 work="$(mktemp -d)"
@@ -14,6 +15,11 @@ passed=0
 failed=0
 
 pass() { passed=$((passed + 1)); }
+same_sets() {
+  diff -r -x evaluations.csv "$1" "$2" > /dev/null || return 1
+  [ -f "$1/evaluations.csv" ] || [ ! -f "$2/evaluations.csv" ] || return 1
+  [ ! -f "$1/evaluations.csv" ] || cmp -s <(cut -d, -f1,3- "$1/evaluations.csv") <(cut -d, -f1,3- "$2/evaluations.csv")
+}
 fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
 
 expect_ok() {

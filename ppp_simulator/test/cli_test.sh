@@ -204,7 +204,7 @@ expect_error "tree of a non-set" "not_a_set: holds no PPP" "$ppp" tree "$work/no
 hunt=(generate --population 12 --matings 200 --quiet --fitness failure --runs-per-eval 3)
 expect_ok "hunt" "$ppp" "${hunt[@]}" --agents wall_follower_left,bumper --seed 3 -o "$work/hunt_a"
 expect_ok "hunt again" "$ppp" "${hunt[@]}" --agents wall_follower_left,bumper --seed 3 --threads 1 -o "$work/hunt_b"
-diff -r "$work/hunt_a" "$work/hunt_b" > /dev/null && pass || fail "same hunt seed gave different sets"
+same_sets "$work/hunt_a" "$work/hunt_b" && pass || fail "same hunt seed gave different sets"
 grep -q "^meta fitness failure$" "$work/hunt_a/ppp_000.ppp" && pass || fail "hunted PPP lacks its fitness"
 grep -q "diversity" "$work/out" && pass || fail "generate did not print the diversity"
 head -1 "$work/hunt_a/set.csv" | grep -q ",nearest_difference$" && pass || fail "set.csv lacks nearest_difference"
@@ -218,7 +218,7 @@ regret=(generate --population 12 --matings 100 --quiet --fitness regret --runs-p
 expect_ok "regret hunt" "$ppp" "${regret[@]}" --budget-factor 3 --archive map_elites --seed 4 -o "$work/regret_a"
 expect_ok "regret hunt again" "$ppp" "${regret[@]}" --budget-factor 3 --archive map_elites --seed 4 --threads 1 \
   -o "$work/regret_b"
-diff -r "$work/regret_a" "$work/regret_b" > /dev/null && pass || fail "same regret hunt seed gave different sets"
+same_sets "$work/regret_a" "$work/regret_b" && pass || fail "same regret hunt seed gave different sets"
 grep -q "^meta fitness regret$" "$work/regret_a/ppp_000.ppp" && pass || fail "a regret PPP lacks its fitness"
 grep -h "^meta fitness_value " "$work"/regret_a/ppp_*.ppp | awk '$3 < 0 || $3 > 2 { bad = 1 } END { exit bad }' && pass \
   || fail "a regret outside [0, 2] with budgets of 3 x the optimum"

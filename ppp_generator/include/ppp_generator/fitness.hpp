@@ -23,6 +23,7 @@ struct FitnessParameters {
 struct FitnessScore {
   double value = 0;  ///< The raw fitness value (e.g. a failure rate).
   double score = 0;  ///< Larger is fitter: the value oriented, plus any documented tie-break.
+  double failure_rate = 0;  ///< A panel fitness: the share of the panel's runs that failed (as `failure`'s value).
 };
 
 /// Scores many valid PPPs at once, in input order (`grids[i]` is the decoded grid of `problems[i]`): the

@@ -13,6 +13,7 @@
 #include "ppp_agents/agent_config.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_generator/problem_set.hpp"
+#include "ppp_generator/evaluation_log.hpp"
 #include "ppp_generator/set_evolution.hpp"
 #include "ppp_msgs/EvaluateProblems.h"
 #include "ppp_msgs/conversions.h"
@@ -146,6 +147,8 @@ std::map<std::string, std::string> filesOf(const std::string& dir) {
   for (const auto& entry : fs::directory_iterator(dir)) {
     files[entry.path().filename().string()] = readTextFile(entry.path().string(), 1u << 24);
   }
+  const auto log = files.find(generator::kEvaluationLogFile);  // its wall times differ from run to run
+  if (log != files.end()) log->second = generator::withoutSeconds(log->second);
   return files;
 }
 

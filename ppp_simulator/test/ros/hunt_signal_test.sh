@@ -45,6 +45,6 @@ grep -q "600/600 matings" "$work/launch.log" && fail "the hunt went on after the
 timeout 300 "${hunt[@]}" > "$work/rerun.log" 2>&1
 [ -s "$work/out/set.csv" ] && pass || fail "the rerun wrote no set: $(tail -20 "$work/rerun.log")"
 "$devel/lib/ppp_simulator/ppp" generate --config "$work/out/generator.yaml" -o "$work/cli" > /dev/null 2>&1
-diff -r "$work/out" "$work/cli" > /dev/null && pass || fail "the set hunted after the interruption differs from ppp generate's"
+same_sets "$work/out" "$work/cli" && pass || fail "the set hunted after the interruption differs from ppp generate's"
 
 finish

@@ -233,7 +233,7 @@ for run in driven_hunt driven_hunt_again; do
     config:="$work/small/driven_hunt.yaml" > "$work/small/$run.log" 2>&1
 done
 failing=$(awk -F, 'NR > 1 && $4 > 0 { print $2; exit }' "$work/small/driven_hunt/set.csv")
-[ -n "$failing" ] && diff -r "$work/small/driven_hunt" "$work/small/driven_hunt_again" > /dev/null && pass || \
+[ -n "$failing" ] && same_sets "$work/small/driven_hunt" "$work/small/driven_hunt_again" && pass || \
   fail "the hunt in continuous motion: $(cut -d, -f1,4 "$work/small/driven_hunt/set.csv" | tr '\n' ' ') $(tail "$work/small/driven_hunt.log")"
 shrunk=""
 for agent in nd dwa; do
@@ -264,7 +264,7 @@ timeout 300 roslaunch -p "$port" "$root/launch/hunt.launch" output_dir:="$work/s
 [ "$(started "$work/small/hunt.log")" = "bumper gen_h hunt nodelet_manager rosout simulator wall_follower_left " ] && pass || \
   fail "the hunt started other processes: $(started "$work/small/hunt.log")"
 "$devel/lib/ppp_simulator/ppp" generate --config "$work/small/hunt/generator.yaml" -o "$work/small/hunt_cli" > /dev/null 2>&1
-diff -r "$work/small/hunt" "$work/small/hunt_cli" > /dev/null && pass || \
+same_sets "$work/small/hunt" "$work/small/hunt_cli" && pass || \
   fail "the hunt through ROS differs from ppp generate's: $(tail -20 "$work/small/hunt.log")"
 
 # launch/shrink.launch: a built-in agent's failures of that set shrunk through ROS (only the shrink node, the

@@ -1,0 +1,181 @@
+#!/usr/bin/env python3
+"""Hunting power on the fault zoo (scripts/bench-hunt.sh runs this; figures go in BENCHMARKS.md).
+
+For each planner (the zoo planner with each of its planted faults, and MRPT's wavefront planner) and each route:
+  shipped  config/planner_hunt.yaml as it is, with only its agent entry swapped for the planner's;
+  today    the same file as it was at commit TODAY (the hunt before this benchmark changed it);
+  random   random search: the route's reference sets, and in place of its hunts one set of as many random solvable
+           PPPs (same generator options: size, obstacle budget) as the shipped route evaluated, each scored once;
+it runs the experiment through roslaunch, then shrinks the hunted PPPs that failed into a corpus, and reports:
+  broken      the hunted set fails >= 80 % of the planner's runs and >= 0.4 more than the reference `turns` set
+              (random search's hunted set: the 20 PPPs it found failing most, as many as the hunt's set holds);
+  evaluations the PPPs its hunts scored (evaluations.csv), and the evaluation and seconds of the first that failed;
+  failing     distinct failing PPPs per 1,000 evaluations;
+  traps       distinct minimal traps: the hunted set's failing PPPs shrunk, deduplicated up to translation, mirror
+              and rotation (the corpus keeps one PPP per obstacle shape).
+"""
+import argparse
+import csv
+import glob
+import json
+import os
+import shutil
+import socket
+import subprocess
+import sys
+import time
+
+import yaml
+
+ROOT = os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
+ZOO_FAULTS = ["search_horizon", "expansion_budget", "open_list_cap", "west_edge", "goal_clearance",
+              "dead_end_filter", "no_backtrack", "replan_limit"]
+PLANNERS = ZOO_FAULTS + ["mrpt"]
+ROUTES = ["shipped", "today", "random"]
+TODAY = "951753f"  # config/planner_hunt.yaml before this benchmark's hunts changed it
+AGENT = "mine"
+REFERENCE_SET = "turns"
+
+
+def agent_entry(planner):
+    """The agent entry that puts `planner` in the config's place for the user's planner."""
+    if planner == "mrpt":  # as config/planner_hunt.yaml's comments give it
+        return {"name": AGENT, "type": "planner", "planner_node": "ppp_agents/mrpt_planner_node",
+                "cells_per_ppp_cell": 4, "planner_args": "_inflation:=1"}
+    return {"name": AGENT, "type": "planner", "planner_node": "ppp_agents/zoo_planner_node",
+            "planner_args": "_fault:=" + planner}
+
+
+def is_hunt(entry):
+    return entry.get("generator", {}).get("fitness") in ("failure", "regret")
+
+
+def route_config(route, planner, evaluations):
+    """The experiment config of a route for a planner (`evaluations`: the random search's budget)."""
+    if route == "today":
+        text = subprocess.run(["git", "-C", ROOT, "show", TODAY + ":config/planner_hunt.yaml"], check=True,
+                              capture_output=True, text=True).stdout
+    else:
+        with open(os.path.join(ROOT, "config", "planner_hunt.yaml")) as f:
+            text = f.read()
+    config = yaml.safe_load(text)
+    config["agents"] = [agent_entry(planner) if a["name"] == AGENT else a for a in config["agents"]]
+    if route == "random":
+        hunt = next(s for s in config["sets"] if s["generator"].get("fitness") == "failure")["generator"]
+        search = {k: v for k, v in hunt.items() if k not in ("initial_pool", "crowding_window", "matings")}
+        search.update({"runs_per_eval": 1, "population": evaluations, "matings": 0})
+        config["sets"] = [s for s in config["sets"] if not is_hunt(s)] + [{"name": "random_" + AGENT,
+                                                                           "generator": search}]
+    return config
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def roslaunch(launch_file, arguments, log):
+    """Runs a launch file on a fresh loopback master; returns the wall seconds."""
+    port = free_port()
+    env = dict(os.environ, ROS_MASTER_URI="http://127.0.0.1:%d" % port, ROS_IP="127.0.0.1")
+    start = time.monotonic()
+    with open(log, "w") as out:
+        subprocess.run([os.path.join(ROOT, "scripts", "loopback-only"), "roslaunch", "-p", str(port),
+                        os.path.join(ROOT, "launch", launch_file)] + arguments, env=env, stdout=out,
+                       stderr=subprocess.STDOUT, check=True)
+    return time.monotonic() - start
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def evaluation_log(out):
+    """Every evaluation of the route's hunts, in the order of their seconds (hunts run side by side)."""
+    rows = []
+    for path in glob.glob(os.path.join(out, "sets", "*", "evaluations.csv")):
+        rows += read_csv(path)
+    rows.sort(key=lambda r: float(r["seconds"]))
+    return rows
+
+
+def failure_share(results, set_name, problems=None):
+    runs = [r for r in results if r["agent"] == AGENT and r["set"] == set_name
+            and (problems is None or r["problem"] in problems)]
+    return sum(1 for r in runs if r["pass"] == "0") / len(runs) if runs else float("nan")
+
+
+def measure(route, planner, out, seconds, config_path):
+    results = read_csv(os.path.join(out, "results.csv"))
+    log = evaluation_log(out)
+    first = next((i for i, r in enumerate(log) if float(r["failure_rate"]) > 0), None)
+    failing_grids = {r["grid"] for r in log if float(r["failure_rate"]) > 0}
+    hunted_set = "random_" + AGENT if route == "random" else "hunted_" + AGENT
+    hunted_rows = read_csv(os.path.join(out, "sets", hunted_set, "set.csv"))[:20]  # fittest first
+    hunted = [r["id"] for r in hunted_rows]
+    hunted_failure = failure_share(results, hunted_set, set(hunted))
+    reference_failure = failure_share(results, REFERENCE_SET)
+    failing = [r for r in hunted_rows
+               if any(x["set"] == hunted_set and x["problem"] == r["id"] and x["agent"] == AGENT and x["pass"] == "0"
+                      for x in results)]
+    traps = shrink_into_corpus(out, hunted_set, failing, config_path) if failing else 0
+    return {"planner": planner, "route": route, "seconds": round(seconds, 1), "evaluations": len(log),
+            "first_failing_evaluation": first + 1 if first is not None else None,
+            "first_failing_seconds": float(log[first]["seconds"]) if first is not None else None,
+            "failing_per_1000": round(1000.0 * len(failing_grids) / len(log), 2) if log else 0.0,
+            "hunted_failure": round(hunted_failure, 3), "reference_failure": round(reference_failure, 3),
+            "broken": hunted_failure >= 0.8 and hunted_failure - reference_failure >= 0.4,
+            "hunted_failing_ppps": len(failing), "traps": traps}
+
+
+def shrink_into_corpus(out, hunted_set, failing, config_path):
+    """Shrinks the hunted set's failing PPPs through ROS into a corpus; the number of distinct traps."""
+    failing_dir, corpus = os.path.join(out, "hunted_failing"), os.path.join(out, "corpus")
+    os.makedirs(failing_dir, exist_ok=True)
+    for row in failing:
+        shutil.copy(os.path.join(out, "sets", hunted_set, row["file"]), failing_dir)
+    roslaunch("shrink.launch", ["input:=" + failing_dir, "agent:=" + AGENT, "config:=" + config_path,
+                                "output:=" + os.path.join(out, "shrunk"), "corpus:=" + corpus,
+                                "args:=--runs 1"], os.path.join(out, "shrink.log"))
+    return len(glob.glob(os.path.join(corpus, "*.ppp")))
+
+
+def run(route, planner, work, evaluations):
+    out = os.path.join(work, planner, route)
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(os.path.dirname(out), exist_ok=True)
+    config_path = out + ".yaml"
+    with open(config_path, "w") as f:
+        yaml.safe_dump(route_config(route, planner, evaluations), f, sort_keys=False)
+    seconds = roslaunch("experiment.launch", ["output_dir:=" + out, "config:=" + config_path], out + ".log")
+    return measure(route, planner, out, seconds, config_path)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--planners", default=",".join(PLANNERS), help="comma-separated (default: all)")
+    parser.add_argument("--routes", default=",".join(ROUTES), help="comma-separated (default: all)")
+    parser.add_argument("--work", default="/tmp/bench-hunt", help="where the runs are kept")
+    args = parser.parse_args()
+    routes = args.routes.split(",")
+    # Until the shipped file changes, today's hunt is the shipped one: run once, reported for both.
+    unchanged = subprocess.run(["git", "-C", ROOT, "diff", "--quiet", TODAY, "--", "config/planner_hunt.yaml"]).returncode == 0
+    os.makedirs(args.work, exist_ok=True)
+    for planner in args.planners.split(","):
+        shipped = run("shipped", planner, args.work, 0)
+        figures = [shipped] if "shipped" in routes else []
+        if "today" in routes:
+            figures.append(dict(shipped, route="today") if unchanged else run("today", planner, args.work, 0))
+        if "random" in routes:
+            figures.append(run("random", planner, args.work, shipped["evaluations"]))
+        with open(os.path.join(args.work, "hunt_power.jsonl"), "a") as log:
+            for f in figures:
+                print(json.dumps(f), flush=True)
+                log.write(json.dumps(f) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
