@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Hunting power on the fault zoo: the shipped hunt (config/planner_hunt.yaml with only its agent entry swapped), the
-# hunt as it was before (commit 951753f) and random search at the same number of evaluations, against the zoo
-# planner's eight planted faults and MRPT's wavefront planner, through roslaunch (scripts/bench_hunt.py says what
-# is measured). Usage: scripts/bench-hunt.sh [--planners a,b] [--routes shipped,today,random] [--work DIR]
+# hunt as it was before (commit 951753f's file, given as many matings) and random search at the same number of
+# evaluations, against the zoo planner's eight planted faults and MRPT's wavefront planner, through roslaunch
+# (scripts/bench_hunt.py says what is measured).
+# Usage: scripts/bench-hunt.sh [--planners a,b] [--routes shipped,today,random] [--work DIR] [--config FILE]
+#        scripts/bench-hunt.sh --table DIR/hunt_power.jsonl   (the table of a finished run)
 # (run scripts/build.sh first). One JSON line per planner and route; figures go in BENCHMARKS.md.
 set -eo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/env.sh"

@@ -3,7 +3,8 @@
 
 For each planner (the zoo planner with each of its planted faults, and MRPT's wavefront planner) and each route:
   shipped  config/planner_hunt.yaml as it is, with only its agent entry swapped for the planner's;
-  today    the same file as it was at commit TODAY (the hunt before this benchmark changed it);
+  today    the same file as it was at commit TODAY (the hunt before this benchmark changed it), each hunt given
+           as many matings as the shipped hunt of its name, so that both spend as many evaluations;
   random   random search: the route's reference sets, and in place of its hunts one set of as many random solvable
            PPPs (same generator options: size, obstacle budget) as the shipped route evaluated, each scored once;
 it runs the experiment through roslaunch, then shrinks the hunted PPPs that failed into a corpus, and reports:
@@ -50,16 +51,23 @@ def is_hunt(entry):
     return entry.get("generator", {}).get("fitness") in ("failure", "regret")
 
 
-def route_config(route, planner, evaluations):
-    """The experiment config of a route for a planner (`evaluations`: the random search's budget)."""
+def route_config(route, planner, evaluations, shipped):
+    """The experiment config of a route for a planner (`evaluations`: the random search's budget; `shipped`: the
+    hunt config's path)."""
     if route == "today":
         text = subprocess.run(["git", "-C", ROOT, "show", TODAY + ":config/planner_hunt.yaml"], check=True,
                               capture_output=True, text=True).stdout
     else:
-        with open(os.path.join(ROOT, "config", "planner_hunt.yaml")) as f:
+        with open(shipped) as f:
             text = f.read()
     config = yaml.safe_load(text)
     config["agents"] = [agent_entry(planner) if a["name"] == AGENT else a for a in config["agents"]]
+    if route == "today":  # at the shipped hunts' number of matings, so that both spend as many evaluations
+        with open(shipped) as f:
+            matings = {s["name"]: s["generator"]["matings"] for s in yaml.safe_load(f)["sets"] if is_hunt(s)}
+        for s in config["sets"]:
+            if s["name"] in matings:
+                s["generator"]["matings"] = matings[s["name"]]
     if route == "random":
         hunt = next(s for s in config["sets"] if s["generator"].get("fitness") == "failure")["generator"]
         search = {k: v for k, v in hunt.items() if k not in ("initial_pool", "crowding_window", "matings")}
@@ -142,15 +150,39 @@ def shrink_into_corpus(out, hunted_set, failing, config_path):
     return len(glob.glob(os.path.join(corpus, "*.ppp")))
 
 
-def run(route, planner, work, evaluations):
+def run(route, planner, work, evaluations, shipped):
     out = os.path.join(work, planner, route)
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(os.path.dirname(out), exist_ok=True)
     config_path = out + ".yaml"
     with open(config_path, "w") as f:
-        yaml.safe_dump(route_config(route, planner, evaluations), f, sort_keys=False)
+        yaml.safe_dump(route_config(route, planner, evaluations, shipped), f, sort_keys=False)
     seconds = roslaunch("experiment.launch", ["output_dir:=" + out, "config:=" + config_path], out + ".log")
     return measure(route, planner, out, seconds, config_path)
+
+
+def markdown_table(jsonl):
+    """The figures of a hunt_power.jsonl as BENCHMARKS.md's table, then the zoo's totals per route."""
+    rows = [json.loads(line) for line in open(jsonl)]
+    lines = ["| planner | route | broken | hunted set fails | `turns` fails | evaluations | first failing: evaluation, "
+             "seconds | failing PPPs per 1,000 evaluations | distinct traps | wall time |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        first = "none" if r["first_failing_evaluation"] is None else "%d, %.1f s" % (r["first_failing_evaluation"],
+                                                                                    r["first_failing_seconds"])
+        lines.append("| %s | %s | %s | %.0f %% | %.0f %% | %d | %s | %.1f | %d | %.0f s |" % (
+            r["planner"], r["route"], "yes" if r["broken"] else "no", 100 * r["hunted_failure"],
+            100 * r["reference_failure"], r["evaluations"], first, r["failing_per_1000"], r["traps"], r["seconds"]))
+    lines.append("")
+    for route in ROUTES:
+        zoo = [r for r in rows if r["route"] == route and r["planner"] in ZOO_FAULTS]
+        if zoo:
+            found = sum(r["failing_per_1000"] * r["evaluations"] / 1000 for r in zoo)
+            evaluations = sum(r["evaluations"] for r in zoo)
+            lines.append("%s over the zoo: %d of %d faults broken, %.1f failing PPPs per 1,000 evaluations, %d traps" % (
+                route, sum(r["broken"] for r in zoo), len(zoo), 1000 * found / evaluations,
+                sum(r["traps"] for r in zoo)))
+    return "\n".join(lines)
 
 
 def main():
@@ -158,18 +190,27 @@ def main():
     parser.add_argument("--planners", default=",".join(PLANNERS), help="comma-separated (default: all)")
     parser.add_argument("--routes", default=",".join(ROUTES), help="comma-separated (default: all)")
     parser.add_argument("--work", default="/tmp/bench-hunt", help="where the runs are kept")
+    parser.add_argument("--table", metavar="JSONL", help="print the table of a finished run's hunt_power.jsonl and exit")
+    parser.add_argument("--config", default=os.path.join(ROOT, "config", "planner_hunt.yaml"),
+                        help="the hunt config of the shipped route (default: config/planner_hunt.yaml)")
     args = parser.parse_args()
+    if args.table:
+        print(markdown_table(args.table))
+        return 0
     routes = args.routes.split(",")
     # Until the shipped file changes, today's hunt is the shipped one: run once, reported for both.
-    unchanged = subprocess.run(["git", "-C", ROOT, "diff", "--quiet", TODAY, "--", "config/planner_hunt.yaml"]).returncode == 0
+    unchanged = subprocess.run(["git", "-C", ROOT, "diff", "--quiet", TODAY, "--", "config/planner_hunt.yaml"]).returncode == 0 \
+        and os.path.samefile(args.config, os.path.join(ROOT, "config", "planner_hunt.yaml"))
     os.makedirs(args.work, exist_ok=True)
     for planner in args.planners.split(","):
-        shipped = run("shipped", planner, args.work, 0)
+        # Random search spends as many evaluations as the shipped hunt: it needs the shipped route's figures.
+        shipped = run("shipped", planner, args.work, 0, args.config) if {"shipped", "random"} & set(routes) or \
+            unchanged else None
         figures = [shipped] if "shipped" in routes else []
         if "today" in routes:
-            figures.append(dict(shipped, route="today") if unchanged else run("today", planner, args.work, 0))
+            figures.append(dict(shipped, route="today") if unchanged else run("today", planner, args.work, 0, args.config))
         if "random" in routes:
-            figures.append(run("random", planner, args.work, shipped["evaluations"]))
+            figures.append(run("random", planner, args.work, shipped["evaluations"], args.config))
         with open(os.path.join(args.work, "hunt_power.jsonl"), "a") as log:
             for f in figures:
                 print(json.dumps(f), flush=True)
