@@ -48,7 +48,7 @@ def agent_entry(planner):
 
 
 def is_hunt(entry):
-    return entry.get("generator", {}).get("fitness") in ("failure", "regret")
+    return (entry.get("generator") or {}).get("fitness") in ("failure", "regret")
 
 
 def route_config(route, planner, evaluations, shipped):
@@ -64,12 +64,12 @@ def route_config(route, planner, evaluations, shipped):
     config["agents"] = [agent_entry(planner) if a["name"] == AGENT else a for a in config["agents"]]
     if route == "today":  # at the shipped hunts' number of matings, so that both spend as many evaluations
         with open(shipped) as f:
-            matings = {s["name"]: s["generator"]["matings"] for s in yaml.safe_load(f)["sets"] if is_hunt(s)}
+            matings = {s["name"]: s["generator"].get("matings", 10000) for s in yaml.safe_load(f)["sets"] if is_hunt(s)}
         for s in config["sets"]:
-            if s["name"] in matings:
+            if s["name"] in matings and is_hunt(s):
                 s["generator"]["matings"] = matings[s["name"]]
     if route == "random":
-        hunt = next(s for s in config["sets"] if s["generator"].get("fitness") == "failure")["generator"]
+        hunt = next(s for s in config["sets"] if is_hunt(s) and s["generator"]["fitness"] == "failure")["generator"]
         search = {k: v for k, v in hunt.items() if k not in ("initial_pool", "crowding_window", "matings")}
         search.update({"runs_per_eval": 1, "population": evaluations, "matings": 0})
         config["sets"] = [s for s in config["sets"] if not is_hunt(s)] + [{"name": "random_" + AGENT,
@@ -115,13 +115,14 @@ def failure_share(results, set_name, problems=None):
     return sum(1 for r in runs if r["pass"] == "0") / len(runs) if runs else float("nan")
 
 
-def measure(route, planner, out, seconds, config_path):
+def measure(route, planner, out, seconds, config_path, size):
+    """The figures of a finished route; `size`: the PPPs of the hunted set (random search: its `size` fittest)."""
     results = read_csv(os.path.join(out, "results.csv"))
     log = evaluation_log(out)
     first = next((i for i, r in enumerate(log) if float(r["failure_rate"]) > 0), None)
     failing_grids = {r["grid"] for r in log if float(r["failure_rate"]) > 0}
     hunted_set = "random_" + AGENT if route == "random" else "hunted_" + AGENT
-    hunted_rows = read_csv(os.path.join(out, "sets", hunted_set, "set.csv"))[:20]  # fittest first
+    hunted_rows = read_csv(os.path.join(out, "sets", hunted_set, "set.csv"))[:size]  # fittest first
     hunted = [r["id"] for r in hunted_rows]
     hunted_failure = failure_share(results, hunted_set, set(hunted))
     reference_failure = failure_share(results, REFERENCE_SET)
@@ -158,7 +159,10 @@ def run(route, planner, work, evaluations, shipped):
     with open(config_path, "w") as f:
         yaml.safe_dump(route_config(route, planner, evaluations, shipped), f, sort_keys=False)
     seconds = roslaunch("experiment.launch", ["output_dir:=" + out, "config:=" + config_path], out + ".log")
-    return measure(route, planner, out, seconds, config_path)
+    with open(shipped) as f:
+        size = next(s for s in yaml.safe_load(f)["sets"] if s["name"] == "hunted_" + AGENT)["generator"].get(
+            "population", 60)
+    return measure(route, planner, out, seconds, config_path, size)
 
 
 def markdown_table(jsonl):
@@ -202,6 +206,7 @@ def main():
     unchanged = subprocess.run(["git", "-C", ROOT, "diff", "--quiet", TODAY, "--", "config/planner_hunt.yaml"]).returncode == 0 \
         and os.path.samefile(args.config, os.path.join(ROOT, "config", "planner_hunt.yaml"))
     os.makedirs(args.work, exist_ok=True)
+    open(os.path.join(args.work, "hunt_power.jsonl"), "w").close()  # this run's rows only
     for planner in args.planners.split(","):
         # Random search spends as many evaluations as the shipped hunt: it needs the shipped route's figures.
         shipped = run("shipped", planner, args.work, 0, args.config) if {"shipped", "random"} & set(routes) or \

@@ -253,8 +253,8 @@ const std::vector<OptionSpec<ZooNodeParameters>>& zooNodeOptionSpecs() {
     return std::vector<OptionSpec<Z>>{
         declareOption("fault", "the planted fault (required)", +[](Z& z) -> std::string& { return z.fault; })
             .withChoices("fault", faults),
-        declareOption("limit", "the fault's limit: cells of route, cells expanded, cells remembered or cells of "
-                               "inflation (0: the fault's own default)",
+        declareOption("limit", "the fault's limit: cells of route, cells expanded, open-list entries or routes "
+                               "planned (0: the fault's own default; faults without one ignore it)",
                       +[](Z& z) -> int& { return z.limit; }, Bounds{0, 1000000}),
     };
   }();

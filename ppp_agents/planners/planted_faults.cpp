@@ -29,8 +29,8 @@ const std::vector<PlantedFault>& plantedFaults() {
        "open fronts of search are too much for it",
        80},
       {"no_backtrack", "reactive choice",
-       "never plans through the cell the robot has just left (a rule against dithering): from the end of a dead "
-       "end it finds no way out",
+       "never plans through the cell it last planned from, the one the robot has just left while each step shows "
+       "a new map (a rule against dithering): from the end of a dead end it finds no way out",
        0},
       {"replan_limit", "re-planning fault",
        "gives up (no path) once it has planned more than ~limit different routes in an episode (a retry limit set "
