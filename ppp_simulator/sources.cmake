@@ -25,5 +25,6 @@ set(PPP_SIMULATOR_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/failure_shrink.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/shrink_job.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/corpus.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/hunt_corpus.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/corpus_check.cpp
 )

@@ -10,6 +10,7 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
+#include "ppp_simulator/hunt_corpus.hpp"
 #include "progress.hpp"
 
 namespace ppp {
@@ -56,6 +57,11 @@ int runExperimentCommand(const ExperimentFlags& f) {
             << (report.episodes_resumed > 0 ? ", " + std::to_string(report.episodes_resumed) + " resumed" : "")
             << "\n  results:  " << f.output << "/results.csv\n  summary:  " << f.output
             << "/summary.csv\n  report:   " << f.output << "/report.html (and report.md)\n";
+  for (const simulator::SetSpec& set : config.sets) {
+    if (set.corpus.empty()) continue;
+    std::cout << "  corpus:   " << set.corpus << " (" << set.name << "'s failures, shrunk; each in " << f.output
+              << "/" << simulator::kCorpusLogFile << ")\n";
+  }
   return 0;
 }
 

@@ -55,6 +55,11 @@ std::vector<SetSpec> readSets(YamlMapReader& reader, const fs::path& base) {
       }
       spec.generator = options;
     }
+    std::string corpus;
+    if (item.read("corpus", &corpus)) {
+      if (corpus.empty()) item.fail(list[i], "corpus", "expected a directory, got ''");
+      spec.corpus = resolve(base, corpus);
+    }
     item.rejectUnknownKeys();
     sets.push_back(spec);
   }
@@ -103,6 +108,11 @@ void ExperimentConfig::validate() const {
       throw InvalidArgument("sets", "set name '" + s.name + "' must be non-empty without , \" / or newlines");
     }
     if (!names.insert(s.name).second) throw InvalidArgument("sets", "duplicate set name '" + s.name + "'");
+    if (!s.corpus.empty() && !(s.generator && generator::isPanelFitness(s.generator->fitness))) {
+      throw InvalidArgument("sets[" + std::to_string(i) + "].corpus",
+                            "only a hunted set (a generator with a panel fitness: failure or regret) adds its "
+                            "failures to a corpus; '" + s.name + "' is not one");
+    }
     if (!s.generator) continue;
     try {
       s.generator->validate();

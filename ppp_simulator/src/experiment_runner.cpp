@@ -17,6 +17,7 @@
 #include "ppp_simulator/canonical_order.hpp"
 #include "ppp_agents/episode_runner.hpp"
 #include "ppp_simulator/experiment_report.hpp"
+#include "ppp_simulator/hunt_corpus.hpp"
 #include "ppp_simulator/planner_moves.hpp"
 #include "ppp_simulator/results_file.hpp"
 #include "ppp_generator/set_evolution.hpp"
@@ -162,6 +163,7 @@ std::vector<agents::PreparedSet> prepareSets(const ExperimentConfig& config, con
 
 void openExperimentDirectory(const ExperimentConfig& config, const std::string& dir) {
   config.validate();
+  checkCorpora(config);
   checkExperimentDirectory(config, dir);
   fs::create_directories(dir);
   writeFileAtomically((fs::path(dir) / kFingerprintFile).string(), experimentFingerprint(config));
@@ -195,6 +197,11 @@ void finishExperiment(const ExperimentConfig& config, const std::string& config_
   }
   say(log, "writing the report");
   writeExperimentReport(dir, config, config_text, sets, rows, stop, planner_rows);
+  if (hasCorpus(config)) {
+    say(log, "adding the hunted sets' failures to their corpora");
+    const std::vector<CorpusEntry> entries = addHuntFailuresToCorpora(config, sets, rows, planner_rows, stop, log);
+    writeCorpusLog((fs::path(dir) / kCorpusLogFile).string(), entries);
+  }
 }
 
 ExperimentReport runExperiment(const ExperimentConfig& config, const std::string& config_text, const std::string& dir,

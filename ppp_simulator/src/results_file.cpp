@@ -79,6 +79,20 @@ std::vector<agents::EpisodeResult> standingRows(std::vector<agents::EpisodeResul
   return standing;
 }
 
+FailedRunSeeds failedRunSeeds(const std::vector<agents::EpisodeResult>& rows, const std::string& agent, int most) {
+  std::vector<const agents::EpisodeResult*> failed;
+  for (const agents::EpisodeResult& r : rows) {
+    if (r.agent == agent && !r.passed && !leavesAgentUnreachable(r.reason)) failed.push_back(&r);
+  }
+  std::stable_sort(failed.begin(), failed.end(), [](const auto* a, const auto* b) { return a->run < b->run; });
+  FailedRunSeeds seeds;
+  for (const agents::EpisodeResult* r : failed) {
+    std::vector<std::uint64_t>& list = seeds[{r->set, r->problem}];
+    if (static_cast<int>(list.size()) < most) list.push_back(r->seed);
+  }
+  return seeds;
+}
+
 std::vector<agents::EpisodeResult> readResultsFile(const std::string& path, const StopCheck& stop) {
   return parseResultsCsv(readTextFile(path, kMaxResultsBytes, stop), path, stop);
 }

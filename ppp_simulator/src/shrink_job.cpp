@@ -25,24 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The failing runs' seeds of results.csv, per (set, PPP), for the agent shrunk for.
-using FailingSeeds = std::map<std::pair<std::string, std::string>, std::vector<std::uint64_t>>;
-
-/// The seeds of `agent`'s failed runs in the results file `path`, in run order, at most `most` per PPP.
-FailingSeeds failingSeeds(const std::string& path, const std::string& agent, int most) {
-  std::vector<agents::EpisodeResult> failed = readResultsFile(path);
-  failed.erase(std::remove_if(failed.begin(), failed.end(),
-                              [&](const agents::EpisodeResult& r) { return r.agent != agent || r.passed; }),
-               failed.end());
-  std::sort(failed.begin(), failed.end(), [](const auto& a, const auto& b) { return a.run < b.run; });
-  FailingSeeds seeds;
-  for (const agents::EpisodeResult& r : failed) {
-    std::vector<std::uint64_t>& list = seeds[{r.set, r.problem}];
-    if (static_cast<int>(list.size()) < most) list.push_back(r.seed);
-  }
-  return seeds;
-}
-
 /// What a file is shrunk over: the job's units, else descriptors for .ppp files and cells for imported maps.
 ShrinkUnits unitsFor(const ShrinkJob& job, const std::string& path) {
   if (job.units == "descriptors") return ShrinkUnits::Descriptors;
@@ -71,7 +53,7 @@ std::string directoryName(const fs::path& path) {
   return path.filename().empty() ? path.parent_path().filename().string() : path.filename().string();
 }
 
-int shrinkOne(const ShrinkJob& job, FailureJudging judging, const FailingSeeds* failing, Corpus* corpus,
+int shrinkOne(const ShrinkJob& job, FailureJudging judging, const FailedRunSeeds* failing, Corpus* corpus,
               const StopCheck& stop, std::ostream& out) {
   if (failing != nullptr) {
     const std::string set = directoryName(fs::absolute(job.input).parent_path());
@@ -94,7 +76,7 @@ int shrinkOne(const ShrinkJob& job, FailureJudging judging, const FailingSeeds* 
   return 0;
 }
 
-int shrinkSet(const ShrinkJob& job, FailureJudging judging, const FailingSeeds* failing, Corpus* corpus,
+int shrinkSet(const ShrinkJob& job, FailureJudging judging, const FailedRunSeeds* failing, Corpus* corpus,
               const StopCheck& stop, std::ostream& out, std::ostream& err) {
   const std::size_t runs = judging.seeds.size();
   const ProblemSet set = generator::readProblemSetDirectory(job.input);
@@ -152,12 +134,14 @@ void ShrinkJob::validate() const {
 
 int runShrinkJob(const ShrinkJob& job, const StopCheck& stop, std::ostream& out, std::ostream& err) {
   job.validate();
-  std::optional<FailingSeeds> failing;
-  if (!job.results.empty()) failing = failingSeeds(job.results, job.judging.agent.name, job.results_runs);
+  std::optional<FailedRunSeeds> failing;
+  if (!job.results.empty()) {
+    failing = failedRunSeeds(readResultsFile(job.results), job.judging.agent.name, job.results_runs);
+  }
   std::optional<Corpus> corpus;
   if (!job.corpus.empty()) corpus.emplace(job.corpus);  // read before any shrink: a bad corpus costs none
   try {
-    const FailingSeeds* seeds = failing ? &*failing : nullptr;
+    const FailedRunSeeds* seeds = failing ? &*failing : nullptr;
     Corpus* adding = corpus ? &*corpus : nullptr;
     return fs::is_directory(job.input) ? shrinkSet(job, job.judging, seeds, adding, stop, out, err)
                                        : shrinkOne(job, job.judging, seeds, adding, stop, out);

@@ -18,6 +18,9 @@ struct SetSpec {
   std::string name;                                      ///< Set name in results and reports.
   std::optional<generator::GeneratorOptions> generator;  ///< Evolve the set with these options...
   std::string directory;                                 ///< ...or read it from this `ppp generate` directory.
+  /// A hunted set's corpus: each PPP of it that its panel fails in the experiment is shrunk into this directory,
+  /// once per obstacle shape ("": none; not in the fingerprint: it changes no result).
+  std::string corpus;
 };
 
 /// An experiment: every agent runs `runs` times on every PPP of every set.

@@ -1,11 +1,13 @@
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <set>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "ppp_core/append_file.hpp"
@@ -35,6 +37,13 @@ bool leavesAgentUnreachable(const std::string& reason);
 
 /// The rows of `rows` that stand, in their order: of several rows of one run (a lost run played again), the last.
 std::vector<agents::EpisodeResult> standingRows(std::vector<agents::EpisodeResult> rows);
+
+/// The seeds of failed runs, per (set, PPP).
+using FailedRunSeeds = std::map<std::pair<std::string, std::string>, std::vector<std::uint64_t>>;
+
+/// The seeds of `agent`'s failed runs in `rows`, in run order, at most `most` per PPP; runs that left the agent
+/// unreachable (leavesAgentUnreachable()) are left out: they cannot be played again.
+FailedRunSeeds failedRunSeeds(const std::vector<agents::EpisodeResult>& rows, const std::string& agent, int most);
 
 /// results.csv of an experiment, appended to as runs finish (each batch written whole, or not at all when the
 /// disk is full), so that nothing written is lost when the process dies; reopening it resumes: the rows already

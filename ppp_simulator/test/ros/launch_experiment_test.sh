@@ -6,7 +6,8 @@
 # changes no row, and configs naming an unknown agent type or an unreachable host stop before any node starts;
 # astar in continuous motion gives `ppp experiment`'s rows in both modes too;
 # launch/hunt.launch hunts a small set with only its panel's nodes, and launch/shrink.launch shrinks its failures as ppp shrink does;
-# a planner checked against a corpus through ROS exits 1 naming the PPP it fails, 0 once fixed, 2 on bad input.
+# a planner checked against a corpus through ROS exits 1 naming the PPP it fails, 0 once fixed, 2 on bad input;
+# a hunted set with a corpus through ROS has its planner's failures shrunk into it, which the planner then fails.
 # Then the default config with 2 runs (three sets of 60 PPPs from three generator nodes, one of them hunting
 # through the simulator; the ten agents with 2 runs each and the four example planners with their own 3):
 # exactly sets x PPPs x agents x runs rows, the report and bag exist, MRPT's endless loop shrinks through ROS, the
@@ -312,6 +313,47 @@ check_ros simple_planner.py "$work/simple.xml"
 check_ros simple_planner.py "$work/nobody.xml" nobody
 [ "$status" -eq 2 ] && grep -qF -- "--agent: the config has no agent 'nobody'" "$work/nobody.xml.log" && \
   [ ! -e "$work/nobody.xml" ] && pass || fail "an unknown agent's check exited $status: $(tail -5 "$work/nobody.xml.log")"
+
+# A hunted set with a corpus, through ROS: once the runs are played, each PPP of the set a planner of the panel failed
+# (a zoo planner that refuses a goal without clearance) is shrunk through its node and added to the corpus once per
+# trap; corpus.csv lists exactly the PPPs results.csv shows it failing; the corpus fails the planner under
+# scripts/ppp-check-ros (exit 1 naming every trap) and the planner without the fault passes it (exit 0).
+mkdir -p "$work/hunt_corpus"
+cat > "$work/hunt_corpus/experiment.yaml" <<'EOF2'
+seed: 1
+runs: 1
+sensor_range: 2
+agents:
+  - {name: mine, type: planner, planner_node: ppp_agents/zoo_planner_node, planner_args: "_fault:=goal_clearance"}
+sets:
+  - name: hunted
+    generator: {fitness: failure, agents: [mine], runs_per_eval: 1, population: 8, matings: 200, seed: 1}
+    corpus: corpus
+EOF2
+cp "$root/config/generator.yaml" "$work/hunt_corpus/"
+timeout 300 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/hunt_corpus/out" \
+  config:="$work/hunt_corpus/experiment.yaml" > "$work/hunt_corpus/launch.log" 2>&1
+failing_ppps=$(awk -F, '$3 == "mine" && $6 == "0" {print $2}' "$work/hunt_corpus/out/results.csv" | sort -u | tr '\n' ' ')
+listed=$(awk -F, 'NR > 1 && $3 == "mine" && $10 == "" {print $2}' "$work/hunt_corpus/out/corpus.csv" | sort -u | tr '\n' ' ')
+[ -n "$failing_ppps" ] && [ "$listed" = "$failing_ppps" ] && pass || \
+  fail "corpus.csv lists '$listed', results.csv has mine failing '$failing_ppps': $(tail -5 "$work/hunt_corpus/launch.log")"
+traps=$(awk -F, 'NR > 1 && $(NF-1) == "true" {print $(NF-2)}' "$work/hunt_corpus/out/corpus.csv" | sort | tr '\n' ' ')
+[ -n "$traps" ] && [ "$(ls "$work/hunt_corpus/corpus" | sort | tr '\n' ' ')" = "$traps" ] && pass || \
+  fail "the corpus holds $(ls "$work/hunt_corpus/corpus") where corpus.csv added '$traps'"
+check_corpus() {  # PLANNER: scripts/ppp-check-ros on the hunt's corpus; sets $status
+  PPP_BUILD_DIR="$(dirname "$devel")" timeout 300 "$root/scripts/ppp-check-ros" "$work/hunt_corpus/corpus" \
+    --agent mine --config "$work/hunt_corpus/experiment.yaml" --planner "mine=ppp_agents/$1" \
+    > "$work/hunt_corpus/check_$1.log" 2>&1
+  status=$?
+}
+check_corpus zoo_planner_node
+count=$(ls "$work/hunt_corpus/corpus" | wc -l)
+[ "$status" -eq 1 ] && grep -q "^mine fails $count of $count PPPs of $work/hunt_corpus/corpus" \
+  "$work/hunt_corpus/check_zoo_planner_node.log" && pass || \
+  fail "the faulty planner's check of its corpus exited $status: $(tail -5 "$work/hunt_corpus/check_zoo_planner_node.log")"
+check_corpus optimistic_planner_node
+[ "$status" -eq 0 ] && pass || \
+  fail "the planner without the fault exited $status: $(tail -5 "$work/hunt_corpus/check_optimistic_planner_node.log")"
 
 sed 's/^runs: 1000 .*/runs: 2/' "$root/config/experiment.yaml" > "$work/experiment.yaml"
 cp "$root/config/agents.yaml" "$root/config/generator.yaml" "$work/"

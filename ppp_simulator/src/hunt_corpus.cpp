@@ -1,0 +1,133 @@
+#include "ppp_simulator/hunt_corpus.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <memory>
+
+#include "ppp_core/csv.hpp"
+#include "ppp_core/error.hpp"
+#include "ppp_core/problem.hpp"
+#include "ppp_core/text_file.hpp"
+#include "ppp_generator/fitness.hpp"
+#include "ppp_simulator/corpus.hpp"
+#include "ppp_simulator/failure_shrink.hpp"
+#include "ppp_simulator/results_file.hpp"
+
+namespace ppp {
+namespace simulator {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Whether `set` is hunted and adds its failures to a corpus.
+bool addsToCorpus(const SetSpec& set) {
+  return !set.corpus.empty() && set.generator && generator::isPanelFitness(set.generator->fitness);
+}
+
+/// How `agent`'s runs are judged: in process for a built-in agent, through `planner_rows` for a planner.
+FailureJudging judgingOf(const agents::AgentConfig& agent, const EpisodeOptions& episode,
+                         const PlannerRows& planner_rows) {
+  FailureJudging judging;
+  judging.agent = agent;
+  judging.episode = episode;
+  if (agents::isPlanner(agent)) {
+    judging.play = playerOfRows(
+        [&planner_rows, agent](const Problem& p, const std::vector<std::uint64_t>& seeds) {
+          return planner_rows(agent, p, seeds);
+        },
+        episode);
+  }
+  return judging;
+}
+
+/// Shrinks the failure of `judging`'s agent on `problem` (PPP `id` of `set`) into `corpus`.
+CorpusEntry shrinkInto(Corpus* corpus, const agents::PreparedSet& set, std::size_t index,
+                       const FailureJudging& judging, const StopCheck& stop) {
+  CorpusEntry entry;
+  entry.set = set.name;
+  entry.problem = set.set.ids[index];
+  entry.agent = judging.agent.name;
+  for (const std::uint64_t seed : judging.seeds) entry.seeds += (entry.seeds.empty() ? "" : ",") + std::to_string(seed);
+  try {
+    ShrunkFailure shrunk = shrinkFailure(set.set.problems[index], set.name + "/" + entry.problem + ".ppp", judging,
+                                         ShrinkUnits::Descriptors, stop);
+    setMetadata(&shrunk.problem.metadata, "id", entry.problem);
+    const CorpusAddition addition = corpus->add(shrunk.problem);
+    entry.kept = shrunk.kept.text();
+    entry.descriptors_before = shrunk.descriptors_before;
+    entry.descriptors_after = shrunk.descriptors_after;
+    entry.trap = fs::path(addition.file).filename().string();
+    entry.added = addition.added;
+  } catch (const InvalidArgument& e) {
+    if (e.name() != "problem") throw;
+    entry.note = e.problem();
+  } catch (const AgentUnreachable& e) {
+    entry.note = std::string("its planner cannot be reached: ") + e.what();
+  }
+  return entry;
+}
+
+std::string entryLine(const CorpusEntry& e) {
+  if (!e.note.empty()) return e.set + "/" + e.problem + " (" + e.agent + "): not shrunk, " + e.note;
+  return e.set + "/" + e.problem + " (" + e.agent + "): " + std::to_string(e.descriptors_before) + " -> " +
+         std::to_string(e.descriptors_after) + " descriptors, still " + e.kept + "; " +
+         (e.added ? "added as " : "in the corpus already, as ") + e.trap;
+}
+
+}  // namespace
+
+bool hasCorpus(const ExperimentConfig& config) {
+  return std::any_of(config.sets.begin(), config.sets.end(), [](const SetSpec& s) { return !s.corpus.empty(); });
+}
+
+void checkCorpora(const ExperimentConfig& config) {
+  for (const SetSpec& set : config.sets) {
+    if (addsToCorpus(set)) Corpus check(set.corpus);
+  }
+}
+
+std::vector<CorpusEntry> addHuntFailuresToCorpora(const ExperimentConfig& config,
+                                                  const std::vector<agents::PreparedSet>& sets,
+                                                  const std::vector<agents::EpisodeResult>& rows,
+                                                  const PlannerRows& planner_rows, const StopCheck& stop,
+                                                  const std::function<void(const std::string&)>& log) {
+  std::map<std::string, std::unique_ptr<Corpus>> corpora;  // by directory: sets sharing one add to one
+  std::vector<CorpusEntry> entries;
+  for (const agents::PreparedSet& set : sets) {
+    const SetSpec* spec = findSet(config, set.name);
+    if (spec == nullptr || !addsToCorpus(*spec)) continue;
+    std::unique_ptr<Corpus>& corpus = corpora[fs::path(spec->corpus).lexically_normal().string()];
+    if (!corpus) corpus = std::make_unique<Corpus>(spec->corpus);
+    for (const std::string& name : spec->generator->agents) {
+      const agents::AgentConfig& agent = configAgent(config, name);
+      if (agents::isPlanner(agent) && !planner_rows) continue;  // not played here (ppp experiment)
+      const FailedRunSeeds failed = failedRunSeeds(rows, name, kCorpusJudgedRuns);
+      FailureJudging judging = judgingOf(agent, config.episode, planner_rows);
+      for (std::size_t i = 0; i < set.set.problems.size(); ++i) {
+        const auto found = failed.find({set.name, set.set.ids[i]});
+        if (found == failed.end()) continue;
+        judging.seeds = found->second;
+        entries.push_back(shrinkInto(corpus.get(), set, i, judging, stop));
+        if (log) log("corpus " + spec->corpus + ": " + entryLine(entries.back()));
+      }
+    }
+  }
+  return entries;
+}
+
+void writeCorpusLog(const std::string& path, const std::vector<CorpusEntry>& entries) {
+  std::string text = csvLine({"set", "problem", "agent", "seeds", "kept", "descriptors_before", "descriptors_after",
+                              "trap", "added", "note"}) +
+                     "\n";
+  for (const CorpusEntry& e : entries) {
+    text += csvLine({e.set, e.problem, e.agent, e.seeds, e.kept, std::to_string(e.descriptors_before),
+                     std::to_string(e.descriptors_after), e.trap, e.added ? "true" : "false", e.note}) +
+            "\n";
+  }
+  writeFileAtomically(path, text);
+}
+
+}  // namespace simulator
+}  // namespace ppp
