@@ -118,9 +118,10 @@ nav_msgs::Odometry::ConstPtr PlannerNode::poseAt(const ros::Time& stamp) const {
 }
 
 bool PlannerNode::replanDue() const {
-  // The bridge republishes the map every step; only a map that says something new is worth a new plan.
+  // The bridge republishes the map every step; only a map that says something new is worth a new plan. A map of a
+  // new episode (loaded after the goal was asked) waits for that episode's goal.
   return options_.replan_on_map && goal_ && !goal_reached_ && map_ && map_ != planned_map_ &&
-         (!planned_map_ || map_->data != planned_map_->data);
+         goal_->header.stamp >= map_->info.map_load_time && (!planned_map_ || map_->data != planned_map_->data);
 }
 
 void PlannerNode::serveReady() {

@@ -159,6 +159,10 @@ cmp $out ${CMAKE_CURRENT_SOURCE_DIR}/../docs/images/${picture}")
                     planners/test/velocity_planner_link_rostest.cpp)
   target_link_libraries(velocity_planner_link_rostest ppp_planners_ros)
   target_compile_options(velocity_planner_link_rostest PRIVATE -Wall -Wextra)
+  # The planner node plans each episode towards its own goal, and tells a planner with memory when one starts.
+  add_rostest_gtest(planner_node_rostest planners/test/planner_node.test planners/test/planner_node_rostest.cpp)
+  target_link_libraries(planner_node_rostest ppp_planners_ros)
+  target_compile_options(planner_node_rostest PRIVATE -Wall -Wextra)
 endif()
 
 # Plan times on a 20x20 map, and laser scans against MRPT's (Google Benchmark): separate executables, never tests.
