@@ -119,9 +119,10 @@ nav_msgs::Odometry::ConstPtr PlannerNode::poseAt(const ros::Time& stamp) const {
 
 bool PlannerNode::replanDue() const {
   // The bridge republishes the map every step; only a map that says something new is worth a new plan. A map of a
-  // new episode (loaded after the goal was asked) waits for that episode's goal.
-  return options_.replan_on_map && goal_ && !goal_reached_ && map_ && map_ != planned_map_ &&
-         goal_->header.stamp >= map_->info.map_load_time && (!planned_map_ || map_->data != planned_map_->data);
+  // new episode (loaded after the goal was asked) waits for that episode's goal; an unstamped goal is always current.
+  if (!options_.replan_on_map || !goal_ || goal_reached_ || !map_ || map_ == planned_map_) return false;
+  const bool goal_of_this_map = goal_->header.stamp.isZero() || goal_->header.stamp >= map_->info.map_load_time;
+  return goal_of_this_map && (!planned_map_ || map_->data != planned_map_->data);
 }
 
 void PlannerNode::serveReady() {

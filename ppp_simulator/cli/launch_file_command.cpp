@@ -11,6 +11,7 @@
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_simulator/experiment_graph.hpp"
 #include "ppp_simulator/experiment_runner.hpp"
+#include "ppp_simulator/hunt_corpus.hpp"
 
 namespace ppp {
 namespace cli {
@@ -125,6 +126,7 @@ void runLaunchFile(LaunchFileFlags flags) {
   if (experiment) {
     simulator::checkWork(simulator::estimateWork(config), flags.large);
     simulator::checkExperimentDirectory(config, flags.graph.output_dir);
+    simulator::checkCorpora(config);
   }
   if (!flags.graph.hunt.empty()) generator::checkOutputDirectory(flags.graph.output_dir);
   ppp_msgs::LaunchGraph graph;

@@ -179,19 +179,20 @@ int SimulatorNode::runExperiment() {
     ROS_WARN("interrupted: every finished run is in results.csv; restart on the same output_dir to resume");
     return 130;
   }
-  // The report shrinks each planner's worst PPP by playing candidates on the planner's bridges, as a hunt does; a
-  // planner whose link is lost is not asked again (each try would wait for it to connect).
+  // The report shrinks each planner's worst PPP, and a hunted set's corpus its failures, by playing candidates on the
+  // planner's bridges, as a hunt does; a planner whose link is lost is not asked again (each try would wait for it to
+  // connect).
   std::unique_ptr<HuntServer> planner_runs;
   std::set<std::string> unreachable;
   const PlannerRows planner_rows = [&](const agents::AgentConfig& agent, const Problem& problem,
                                        const std::vector<std::uint64_t>& seeds) {
-    if (unreachable.count(agent.name) > 0) throw AgentUnreachable(agent.name, "lost during the report");
+    if (unreachable.count(agent.name) > 0) throw AgentUnreachable(agent.name, "lost after its runs");
     if (!planner_runs) planner_runs = std::make_unique<HuntServer>(nh, parameters, control_);
     std::vector<agents::EpisodeResult> rows = planner_runs->playRows(agent, problem, seeds);
     if (std::any_of(rows.begin(), rows.end(), [](const auto& r) { return leavesAgentUnreachable(r.reason); })) {
       unreachable.insert(agent.name);
-      ROS_WARN("agent '%s' is gone: its worst PPP is not shrunk in the report", agent.name.c_str());
-      throw AgentUnreachable(agent.name, "lost during the report");
+      ROS_WARN("agent '%s' is gone: its failures are not shrunk (for the report, into a corpus)", agent.name.c_str());
+      throw AgentUnreachable(agent.name, "lost after its runs");
     }
     return rows;
   };
@@ -199,7 +200,7 @@ int SimulatorNode::runExperiment() {
     finishExperiment(config, config_text, parameters.output_dir, sets, &results, stopping,
                      [](const std::string& line) { ROS_INFO("%s", line.c_str()); }, planner_rows);
   } catch (const Interrupted&) {
-    ROS_WARN("interrupted while writing the report: restart on the same output_dir to write it");
+    ROS_WARN("interrupted while finishing (the report, the corpora): restart on the same output_dir to finish");
     return 130;
   }
   ROS_INFO("experiment done: report in %s/report.html", parameters.output_dir.c_str());

@@ -199,8 +199,10 @@ void finishExperiment(const ExperimentConfig& config, const std::string& config_
   writeExperimentReport(dir, config, config_text, sets, rows, stop, planner_rows);
   if (hasCorpus(config)) {
     say(log, "adding the hunted sets' failures to their corpora");
+    const std::string corpus_log = (fs::path(dir) / kCorpusLogFile).string();
+    fs::remove(corpus_log);  // an interrupted step leaves none, not an older run's
     const std::vector<CorpusEntry> entries = addHuntFailuresToCorpora(config, sets, rows, planner_rows, stop, log);
-    writeCorpusLog((fs::path(dir) / kCorpusLogFile).string(), entries);
+    writeCorpusLog(corpus_log, entries);
   }
 }
 

@@ -26,13 +26,14 @@ std::string shownText(const RunsOutcome& outcome, const FailureToKeep& keep) {
   return std::to_string(shownRuns(outcome, keep)) + " of " + std::to_string(outcome.runs);
 }
 
+
+}  // namespace
+
 std::string seedList(const std::vector<std::uint64_t>& seeds) {
   std::string text;
   for (const std::uint64_t s : seeds) text += (text.empty() ? "" : ",") + std::to_string(s);
   return text;
 }
-
-}  // namespace
 
 RunsOutcome outcomeOfRows(const std::vector<agents::EpisodeResult>& rows) {
   RunsOutcome outcome;

@@ -42,14 +42,14 @@ FailureJudging judgingOf(const agents::AgentConfig& agent, const EpisodeOptions&
   return judging;
 }
 
-/// Shrinks the failure of `judging`'s agent on `problem` (PPP `id` of `set`) into `corpus`.
+/// Shrinks the failure of `judging`'s agent on PPP `index` of `set` into `corpus`.
 CorpusEntry shrinkInto(Corpus* corpus, const agents::PreparedSet& set, std::size_t index,
                        const FailureJudging& judging, const StopCheck& stop) {
   CorpusEntry entry;
   entry.set = set.name;
   entry.problem = set.set.ids[index];
   entry.agent = judging.agent.name;
-  for (const std::uint64_t seed : judging.seeds) entry.seeds += (entry.seeds.empty() ? "" : ",") + std::to_string(seed);
+  entry.seeds = seedList(judging.seeds);
   try {
     ShrunkFailure shrunk = shrinkFailure(set.set.problems[index], set.name + "/" + entry.problem + ".ppp", judging,
                                          ShrinkUnits::Descriptors, stop);
@@ -98,11 +98,14 @@ std::vector<CorpusEntry> addHuntFailuresToCorpora(const ExperimentConfig& config
   for (const agents::PreparedSet& set : sets) {
     const SetSpec* spec = findSet(config, set.name);
     if (spec == nullptr || !addsToCorpus(*spec)) continue;
-    std::unique_ptr<Corpus>& corpus = corpora[fs::path(spec->corpus).lexically_normal().string()];
+    std::unique_ptr<Corpus>& corpus = corpora[(fs::path(spec->corpus) / "").lexically_normal().string()];
     if (!corpus) corpus = std::make_unique<Corpus>(spec->corpus);
     for (const std::string& name : spec->generator->agents) {
       const agents::AgentConfig& agent = configAgent(config, name);
-      if (agents::isPlanner(agent) && !planner_rows) continue;  // not played here (ppp experiment)
+      if (agents::isPlanner(agent) && !planner_rows) {
+        if (log) log("corpus " + spec->corpus + ": planner " + name + "'s failures are left out: it plays only through ROS");
+        continue;
+      }
       const FailedRunSeeds failed = failedRunSeeds(rows, name, kCorpusJudgedRuns);
       FailureJudging judging = judgingOf(agent, config.episode, planner_rows);
       for (std::size_t i = 0; i < set.set.problems.size(); ++i) {

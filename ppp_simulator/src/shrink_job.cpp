@@ -1,8 +1,6 @@
 #include "ppp_simulator/shrink_job.hpp"
 
-#include <algorithm>
 #include <filesystem>
-#include <map>
 #include <optional>
 #include <ostream>
 
@@ -60,8 +58,8 @@ int shrinkOne(const ShrinkJob& job, FailureJudging judging, const FailedRunSeeds
     const std::string id = fs::path(job.input).stem().string();
     const auto found = failing->find({set, id});
     if (found == failing->end()) {
-      throw InvalidArgument("results", "no failed run of " + judging.agent.name + " on " + set + "/" + id + " in " +
-                                             job.results);
+      throw InvalidArgument("results", "no failed run (lost runs left out) of " + judging.agent.name + " on " + set +
+                                             "/" + id + " in " + job.results);
     }
     judging.seeds = found->second;
   }
@@ -88,7 +86,8 @@ int shrinkSet(const ShrinkJob& job, FailureJudging judging, const FailedRunSeeds
     if (failing != nullptr) {
       const auto found = failing->find({directoryName(job.input), set.ids[i]});
       if (found == failing->end()) {
-        out << name << ": no failed run of " << judging.agent.name << " in " << job.results << ", kept out\n";
+        out << name << ": no failed run (lost runs left out) of " << judging.agent.name << " in " << job.results
+            << ", kept out\n";
         continue;
       }
       judging.seeds = found->second;
@@ -194,7 +193,7 @@ const std::vector<OptionSpec<ShrinkTask>>& shrinkTaskSpecs() {
                     "results: at most this many of each PPP's failed runs, 3 when 0)",
                     +[](T& t) -> int& { return t.runs; }, Bounds{0, kMaxJudgedRuns}),
       declareOption("results", "an experiment's results.csv: judge each PPP on the seeds of the agent's failed runs "
-                    "there", +[](T& t) -> std::string& { return t.results; }),
+                    "there (runs lost to the agent link left out)", +[](T& t) -> std::string& { return t.results; }),
       declareOption("min_rate", "keep only candidates on which at least this share of the runs fail so (0: the "
                     "original's share)", +[](T& t) -> double& { return t.min_rate; }, Bounds{0, 1}),
       declareOption("any_kind", "keep any failure, not only the diagnosis most of the failing runs had",

@@ -77,7 +77,7 @@ seeds=$(sed -n 's/^meta shrink_seeds //p' "$work/shrunk_turns/$first")
 expected=$(awk -F, -v id="${first%.ppp}" '$1 == "turns" && $2 == id && $3 == "explorer_memory_5x5" && $6 == 0 { print $4, $5 }' \
   "$work/a/results.csv" | sort -n | head -2 | cut -d' ' -f2 | paste -sd,)
 [ -n "$seeds" ] && [ "$seeds" = "$expected" ] && pass || fail "shrunk $first on seeds '$seeds', its failed runs' are '$expected'"
-expect_error "shrink without a failed run" "--results: no failed run of astar on turns/ppp_000 in" \
+expect_error "shrink without a failed run" "--results: no failed run (lost runs left out) of astar on turns/ppp_000 in" \
   "$ppp" shrink "$work/a/sets/turns/ppp_000.ppp" --agent astar --results "$work/a/results.csv" -o "$work/none.ppp"
 
 # Runs lost to the agent link (rows a ROS run records as timeout or agent_lost) are played again on a resume, and

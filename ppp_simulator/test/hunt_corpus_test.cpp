@@ -154,7 +154,7 @@ TEST_F(HuntCorpusTest, ABadCorpusIsRefusedBeforeAnyRun) {
   fs::create_directories(corpus());
   writeFileAtomically((fs::path(corpus()) / "set.csv").string(), "id\n");
   EXPECT_THROW(runExperiment(config(), kHuntYaml, out()), IoError);
-  EXPECT_FALSE(fs::exists(resultsPath(out())));
+  EXPECT_FALSE(fs::exists(out())) << "the experiment started";
   fs::remove_all(corpus());
   writeFileAtomically(corpus(), "not a directory\n");
   try {
@@ -163,13 +163,14 @@ TEST_F(HuntCorpusTest, ABadCorpusIsRefusedBeforeAnyRun) {
   } catch (const IoError& e) {
     EXPECT_NE(std::string(e.what()).find(corpus()), std::string::npos) << e.what();
   }
-  EXPECT_FALSE(fs::exists(resultsPath(out())));
+  EXPECT_FALSE(fs::exists(out())) << "the experiment started";
 }
 
 TEST_F(HuntCorpusTest, OnlyAHuntedSetTakesACorpusAndItChangesNoResult) {
   std::string yaml = kHuntYaml;
   const ExperimentConfig hunted = config();
-  yaml.replace(yaml.find("    corpus: corpus\n"), 18, "");
+  const std::string corpus_line = "    corpus: corpus\n";
+  yaml.erase(yaml.find(corpus_line), corpus_line.size());
   const ExperimentConfig plain = parseExperimentConfig(yaml, yamlPath());
   EXPECT_EQ(experimentFingerprint(hunted), experimentFingerprint(plain));  // a rerun may add or drop it
 
@@ -182,7 +183,8 @@ TEST_F(HuntCorpusTest, OnlyAHuntedSetTakesACorpusAndItChangesNoResult) {
     EXPECT_EQ(e.name(), yamlPath() + ": sets[0].corpus");
   }
   std::string empty = kHuntYaml;
-  empty.replace(empty.find("corpus: corpus"), 14, "corpus: ''");
+  const std::string corpus_key = "corpus: corpus";
+  empty.replace(empty.find(corpus_key), corpus_key.size(), "corpus: ''");
   EXPECT_THROW(parseExperimentConfig(empty, yamlPath()), ParseError);
 }
 

@@ -1,6 +1,7 @@
 // PlannerNode plans each episode towards that episode's goal: a map that starts a new episode (a new
 // info.map_load_time) before its goal has come is not planned on towards the previous episode's goal, and a planner
-// with a memory of its own hears episode_started once per episode, before its first plan there.
+// with a memory of its own hears episode_started once per episode, before its first plan there; a new episode's goal
+// that comes before its map is planned once the map and the pose have come.
 // The test publishes as the bridge does, handing over, so each callback runs in the publishing call: "not planned"
 // is a fact, not a wait.
 #include <gtest/gtest.h>
@@ -88,6 +89,13 @@ class BridgeSide {
     ppp_msgs::publishHandingOver(goal_, goal);
   }
 
+  /// Episode 1 starts at t = 1, its goal in column 4: map, pose, then the request, as the bridge publishes them.
+  void firstEpisode() {
+    map(1.0, 1.0, 0);
+    odom(1.0);
+    goal(1.0, 4);
+  }
+
   const std::vector<Planned>& planned() const { return planned_; }
   int episodes() const { return episodes_; }
 
@@ -102,10 +110,7 @@ class BridgeSide {
 TEST(PlannerNodeEpisodes, ANewEpisodesMapWaitsForItsOwnGoal) {
   BridgeSide bridge("episodes");
   ASSERT_TRUE(bridge.connected());
-  // Episode 1 starts at t = 1: the goal in column 4.
-  bridge.map(1.0, 1.0, 0);
-  bridge.odom(1.0);
-  bridge.goal(1.0, 4);
+  bridge.firstEpisode();
   ASSERT_EQ(bridge.planned().size(), 1u);
   const Cell first_goal = bridge.planned()[0].goal;
   EXPECT_EQ(first_goal.x, 4);
@@ -125,6 +130,22 @@ TEST(PlannerNodeEpisodes, ANewEpisodesMapWaitsForItsOwnGoal) {
   EXPECT_EQ(bridge.planned()[2].goal.x, 2);
   EXPECT_EQ(bridge.planned()[2].episodes, 2);
   EXPECT_EQ(bridge.episodes(), 2);
+}
+
+TEST(PlannerNodeEpisodes, ANewEpisodesGoalBeforeItsMapIsPlannedOnceBothHaveCome) {
+  BridgeSide bridge("early_goal");
+  ASSERT_TRUE(bridge.connected());
+  bridge.firstEpisode();
+  ASSERT_EQ(bridge.planned().size(), 1u);
+  // Episode 2's goal comes first (another connection may be faster): it waits for a map and pose of its stamp.
+  bridge.goal(3.0, 2);
+  EXPECT_EQ(bridge.planned().size(), 1u);
+  bridge.map(3.0, 3.0, 2);
+  EXPECT_EQ(bridge.planned().size(), 1u);
+  bridge.odom(3.0);
+  ASSERT_EQ(bridge.planned().size(), 2u);
+  EXPECT_EQ(bridge.planned()[1].goal.x, 2);
+  EXPECT_EQ(bridge.planned()[1].episodes, 2);
 }
 
 }  // namespace

@@ -29,6 +29,9 @@ struct RunsOutcome {
 /// What the runs `rows` (one agent's on one PPP, as results.csv has them) came to.
 RunsOutcome outcomeOfRows(const std::vector<agents::EpisodeResult>& rows);
 
+/// Run seeds as a shrunk PPP's meta shrink_seeds lists them: "11,42".
+std::string seedList(const std::vector<std::uint64_t>& seeds);
+
 /// Whether the robot can solve `problem` under `episode` (its goal reachable, for its body): a shrink's candidates
 /// must be.
 bool solvableForRobot(const Problem& problem, const EpisodeOptions& episode);

@@ -25,7 +25,7 @@ struct CorpusEntry {
   std::string problem;  ///< Its PPP's id.
   std::string agent;    ///< The panel agent that failed it.
   std::string seeds;    ///< The failed runs' seeds judged ("11,42"), as the shrunk PPP's meta shrink_seeds.
-  std::string kept;     ///< The failure kept ("loop", "any failure"); "" when it was not shrunk.
+  std::string kept;     ///< The failure kept ("loop", "endless loop", "missed_route"); "" when it was not shrunk.
   int descriptors_before = 0;  ///< Descriptors of the hunted PPP.
   int descriptors_after = 0;   ///< And of its shrunk trap.
   std::string trap;     ///< The corpus's file name of the trap: the one written, or the one of the same shape.
@@ -44,7 +44,8 @@ void checkCorpora(const ExperimentConfig& config);
 /// failed in `rows` (results.csv's standing rows; runs lost to the agent link left out), shrunk on the seeds of its
 /// first kCorpusJudgedRuns failed runs (shrinkFailure(), its most common diagnosis kept) and added to the corpus
 /// once per obstacle shape (Corpus). A built-in agent plays in process, a planner through `planner_rows` (its
-/// failures are left out without it). Corpora named by several sets are one. `log` hears each PPP shrunk.
+/// failures are left out without it, which `log` hears). Corpora named by several sets are one. `log` hears each PPP
+/// shrunk.
 /// @throws IoError, ParseError, Interrupted when `stop` says stop (every trap added by then is whole).
 std::vector<CorpusEntry> addHuntFailuresToCorpora(const ExperimentConfig& config,
                                                   const std::vector<agents::PreparedSet>& sets,
