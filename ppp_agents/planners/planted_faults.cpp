@@ -1,9 +1,9 @@
 #include "planted_faults.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/text_format.hpp"
 
 namespace ppp {
 namespace planners {
@@ -44,22 +44,19 @@ const PlantedFault& plantedFault(const std::string& name) {
   const std::vector<PlantedFault>& faults = plantedFaults();
   const auto found = std::find_if(faults.begin(), faults.end(), [&](const PlantedFault& f) { return f.name == name; });
   if (found != faults.end()) return *found;
-  std::string names;
-  for (const PlantedFault& f : faults) names += (names.empty() ? "" : ", ") + f.name;
-  throw InvalidArgument("fault", "unknown fault '" + name + "'; expected one of " + names);
+  std::vector<std::string> names;
+  for (const PlantedFault& f : faults) names.push_back(f.name);
+  throw InvalidArgument("fault", "unknown fault '" + name + "'; expected one of " + joinNames(names));
 }
 
 namespace {
 
 constexpr Cell kSteps[] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
 
-/// True when a step cannot enter `next`: off the map or not passable.
-bool blocked(const GridMap& map, Cell next) { return !map.passable(next); }
-
 /// The cell's sides that are blocked (off the map or not passable).
 int blockedSides(const GridMap& map, Cell c) {
   int sides = 0;
-  for (const Cell s : kSteps) sides += blocked(map, Cell{c.x + s.x, c.y + s.y}) ? 1 : 0;
+  for (const Cell s : kSteps) sides += map.passable(Cell{c.x + s.x, c.y + s.y}) ? 0 : 1;
   return sides;
 }
 

@@ -1,7 +1,5 @@
 #include "ppp_generator/evaluation_log.hpp"
 
-#include <cstdio>
-
 #include "ppp_core/csv.hpp"
 #include "ppp_core/text_format.hpp"
 
@@ -17,10 +15,8 @@ Fitness EvaluationLog::wrap(Fitness fitness) const {
     std::vector<FitnessScore> scores = scorer(problems, grids);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - rows->start).count();
     for (std::size_t i = 0; i < scores.size() && i < grids.size(); ++i) {
-      char grid[17];
-      std::snprintf(grid, sizeof grid, "%016llx", static_cast<unsigned long long>(grids[i]->hash()));
       rows->text += std::to_string(++rows->count) + "," + formatFixed(seconds, 3) + "," + formatNumber(scores[i].value) +
-                    "," + formatNumber(scores[i].failure_rate) + "," + grid + "\n";
+                    "," + formatNumber(scores[i].failure_rate) + "," + formatHex64(grids[i]->hash()) + "\n";
     }
     return scores;
   };

@@ -1,6 +1,5 @@
 #include "ppp_simulator/corpus.hpp"
 
-#include <cstdio>
 #include <filesystem>
 
 #include "ppp_core/error.hpp"
@@ -8,6 +7,7 @@
 #include "ppp_core/ppp_file.hpp"
 #include "ppp_core/problem_io.hpp"
 #include "ppp_core/rng.hpp"
+#include "ppp_core/text_format.hpp"
 #include "ppp_generator/problem_set.hpp"
 
 namespace ppp {
@@ -33,10 +33,9 @@ CorpusAddition Corpus::add(const Problem& problem) {
   const std::string shape = obstacleShape(decodeGrid(problem));
   const auto found = files_.find(shape);
   if (found != files_.end()) return CorpusAddition{found->second, false};
-  char hash[17];
-  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(nameHash(shape)));
-  std::string name = std::string("trap_") + hash;
-  for (int k = 2; names_.count(name) > 0; ++k) name = std::string("trap_") + hash + "_" + std::to_string(k);
+  const std::string hash = formatHex64(nameHash(shape));
+  std::string name = "trap_" + hash;
+  for (int k = 2; names_.count(name) > 0; ++k) name = "trap_" + hash + "_" + std::to_string(k);
   std::error_code error;
   if (!fs::create_directories(dir_, error) && error) throw IoError(dir_, "cannot create it: " + error.message());
   const std::string file = (fs::path(dir_) / (name + ".ppp")).string();

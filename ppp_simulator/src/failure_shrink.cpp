@@ -26,7 +26,6 @@ std::string shownText(const RunsOutcome& outcome, const FailureToKeep& keep) {
   return std::to_string(shownRuns(outcome, keep)) + " of " + std::to_string(outcome.runs);
 }
 
-
 }  // namespace
 
 std::string seedList(const std::vector<std::uint64_t>& seeds) {

@@ -9,7 +9,6 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/problem.hpp"
 #include "ppp_core/text_file.hpp"
-#include "ppp_generator/fitness.hpp"
 #include "ppp_simulator/corpus.hpp"
 #include "ppp_simulator/failure_shrink.hpp"
 #include "ppp_simulator/results_file.hpp"
@@ -20,11 +19,6 @@ namespace simulator {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// Whether `set` is hunted and adds its failures to a corpus.
-bool addsToCorpus(const SetSpec& set) {
-  return !set.corpus.empty() && set.generator && generator::isPanelFitness(set.generator->fitness);
-}
 
 /// How `agent`'s runs are judged: in process for a built-in agent, through `planner_rows` for a planner.
 FailureJudging judgingOf(const agents::AgentConfig& agent, const EpisodeOptions& episode,
@@ -84,7 +78,7 @@ bool hasCorpus(const ExperimentConfig& config) {
 
 void checkCorpora(const ExperimentConfig& config) {
   for (const SetSpec& set : config.sets) {
-    if (addsToCorpus(set)) Corpus check(set.corpus);
+    if (!set.corpus.empty()) Corpus check(set.corpus);
   }
 }
 
@@ -97,7 +91,7 @@ std::vector<CorpusEntry> addHuntFailuresToCorpora(const ExperimentConfig& config
   std::vector<CorpusEntry> entries;
   for (const agents::PreparedSet& set : sets) {
     const SetSpec* spec = findSet(config, set.name);
-    if (spec == nullptr || !addsToCorpus(*spec)) continue;
+    if (spec == nullptr || spec->corpus.empty()) continue;  // validate(): only hunted sets name a corpus
     std::unique_ptr<Corpus>& corpus = corpora[(fs::path(spec->corpus) / "").lexically_normal().string()];
     if (!corpus) corpus = std::make_unique<Corpus>(spec->corpus);
     for (const std::string& name : spec->generator->agents) {

@@ -75,6 +75,13 @@ TEST(TextFormatTest, EscapeMarkupEscapesTheFiveSpecialCharacters) {
   EXPECT_EQ(escapeMarkup("plain"), "plain");
 }
 
+TEST(TextFormatTest, Hex64WritesSixteenLowercaseDigits) {
+  EXPECT_EQ(formatHex64(0), "0000000000000000");
+  EXPECT_EQ(formatHex64(255), "00000000000000ff");
+  EXPECT_EQ(formatHex64(0x0123456789abcdefULL), "0123456789abcdef");
+  EXPECT_EQ(formatHex64(~0ULL), "ffffffffffffffff");
+}
+
 TEST(TextFormatTest, TickStepIsOneTwoOrFiveTimesAPowerOfTen) {
   EXPECT_DOUBLE_EQ(tickStep(100), 20);  // raw step 20
   EXPECT_DOUBLE_EQ(tickStep(30), 5);    // raw 6

@@ -4,6 +4,7 @@
 // locale says.
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,9 @@ std::string escapeMarkup(const std::string& text);
 
 /// One shell word: `word` as is when made of letters, digits and ._-/+=:,@ only, else single-quoted.
 std::string shellWord(const std::string& word);
+
+/// `value` as 16 lowercase hex digits ("00000000000000ff"): a hash in a file name or a CSV column.
+std::string formatHex64(std::uint64_t value);
 
 /// The items separated by ", " (for error messages listing the valid names).
 std::string joinNames(const std::vector<std::string>& items);
