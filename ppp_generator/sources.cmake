@@ -11,6 +11,7 @@ set(PPP_GENERATOR_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/genetic_algorithm.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/initial_pool.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/map_elites.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/signature_archive.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/set_evolution.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/problem_set.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/set_csv.cpp

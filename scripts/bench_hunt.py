@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Hunting power on the fault zoo (scripts/bench-hunt.sh runs this; figures go in BENCHMARKS.md).
 
-For each planner (the zoo planner with each of its planted faults, and MRPT's wavefront planner) and each route:
+For each planner (the zoo planner with each of its planted faults, with three faults at once in a fixed sample of
+twelve combinations, and MRPT's wavefront planner) and each route:
   shipped  config/planner_hunt.yaml as it is, with only its agent entry swapped for the planner's;
-  today    the same file as it was at commit TODAY (the hunt before this benchmark changed it), each hunt given
-           as many matings as the shipped hunt of its name, so that both spend as many evaluations;
+  today    the same file as it was at commit TODAY (the hunt before failure signatures), each hunt given as many
+           matings as the shipped hunt of its name, so that both spend as many evaluations;
   random   random search: the route's reference sets, and in place of its hunts one set of as many random solvable
            PPPs (same generator options: size, obstacle budget) as the shipped route evaluated, each scored once;
 it runs the experiment through roslaunch, then shrinks the hunted PPPs that failed into a corpus, and reports:
@@ -13,13 +14,24 @@ it runs the experiment through roslaunch, then shrinks the hunted PPPs that fail
   evaluations the PPPs its hunts scored (evaluations.csv), and the evaluation and seconds of the first that failed;
   failing     distinct failing PPPs per 1,000 evaluations;
   traps       distinct minimal traps: the hunted set's failing PPPs shrunk, deduplicated up to translation, mirror
-              and rotation (the corpus keeps one PPP per obstacle shape).
+              and rotation (the corpus keeps one PPP per obstacle shape);
+  signatures  distinct failure signatures of the planner's failed runs on the hunted set;
+and for a planner with several faults:
+  recall      the share of its faults the hunted set reveals: a PPP reveals fault f when the zoo planner with f alone
+              fails it and the optimistic planner (no fault) passes it, decided by playing them on the hunted set
+              (each PPP's verdicts in OUT/attribution.csv);
+  first       per fault, the evaluation at which the first hunted PPP revealing it was scored.
+The sample: 12 of the 50 plantable three-fault combinations (dead_end_filter never with goal_clearance), drawn
+with SAMPLE_SEED until every fault is in at least three of them.
 """
 import argparse
+import collections
 import csv
 import glob
+import itertools
 import json
 import os
+import random
 import shutil
 import socket
 import subprocess
@@ -31,20 +43,42 @@ import yaml
 ROOT = os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
 ZOO_FAULTS = ["search_horizon", "expansion_budget", "open_list_cap", "west_edge", "goal_clearance",
               "dead_end_filter", "no_backtrack", "replan_limit"]
-PLANNERS = ZOO_FAULTS + ["mrpt"]
+SAMPLE_SEED = 72
 ROUTES = ["shipped", "today", "random"]
-TODAY = "951753f"  # config/planner_hunt.yaml before this benchmark's hunts changed it
+TODAY = "488355d"  # config/planner_hunt.yaml before failure signatures
 AGENT = "mine"
 REFERENCE_SET = "turns"
 
 
-def agent_entry(planner):
-    """The agent entry that puts `planner` in the config's place for the user's planner."""
+def fault_sample():
+    """The fixed sample of three-fault planners, "a+b+c" each."""
+    combos = [c for c in itertools.combinations(ZOO_FAULTS, 3)
+              if not {"dead_end_filter", "goal_clearance"} <= set(c)]
+    rng = random.Random(SAMPLE_SEED)
+    while True:
+        sample = rng.sample(combos, 12)
+        counts = collections.Counter(f for c in sample for f in c)
+        if all(counts[f] >= 3 for f in ZOO_FAULTS):
+            return ["+".join(c) for c in sample]
+
+
+PLANNERS = ZOO_FAULTS + fault_sample() + ["mrpt"]
+
+
+def faults_of(planner):
+    return planner.split("+") if planner != "mrpt" else []
+
+
+def agent_entry(planner, name=AGENT):
+    """The agent entry that puts `planner` ("none": the optimistic planner without a fault) in the config's place
+    for the user's planner."""
     if planner == "mrpt":  # as config/planner_hunt.yaml's comments give it
-        return {"name": AGENT, "type": "planner", "planner_node": "ppp_agents/mrpt_planner_node",
+        return {"name": name, "type": "planner", "planner_node": "ppp_agents/mrpt_planner_node",
                 "cells_per_ppp_cell": 4, "planner_args": "_inflation:=1"}
-    return {"name": AGENT, "type": "planner", "planner_node": "ppp_agents/zoo_planner_node",
-            "planner_args": "_fault:=" + planner}
+    if planner == "none":
+        return {"name": name, "type": "planner", "planner_node": "ppp_agents/optimistic_planner_node"}
+    return {"name": name, "type": "planner", "planner_node": "ppp_agents/zoo_planner_node",
+            "planner_args": "_fault:=" + ",".join(faults_of(planner))}
 
 
 def is_hunt(entry):
@@ -130,13 +164,81 @@ def measure(route, planner, out, seconds, config_path, size):
                if any(x["set"] == hunted_set and x["problem"] == r["id"] and x["agent"] == AGENT and x["pass"] == "0"
                       for x in results)]
     traps = shrink_into_corpus(out, hunted_set, failing, config_path) if failing else 0
+    signatures = {r["signature"] for r in results if r["set"] == hunted_set and r["problem"] in hunted
+                  and r["agent"] == AGENT and r["signature"]}
+    diagnoses = collections.Counter(r["diagnosis"] + (" endless" if r["endless_step"] else "") for r in results
+                                    if r["set"] == hunted_set and r["problem"] in hunted and r["agent"] == AGENT
+                                    and r["diagnosis"])
+    attributed = attribute(out, planner, hunted_set, hunted_rows, config_path, log) if len(faults_of(planner)) > 1 \
+        else {}
     return {"planner": planner, "route": route, "seconds": round(seconds, 1), "evaluations": len(log),
             "first_failing_evaluation": first + 1 if first is not None else None,
             "first_failing_seconds": float(log[first]["seconds"]) if first is not None else None,
             "failing_per_1000": round(1000.0 * len(failing_grids) / len(log), 2) if log else 0.0,
             "hunted_failure": round(hunted_failure, 3), "reference_failure": round(reference_failure, 3),
             "broken": hunted_failure >= 0.8 and hunted_failure - reference_failure >= 0.4,
-            "hunted_failing_ppps": len(failing), "traps": traps}
+            "hunted_failing_ppps": len(failing), "traps": traps, "signatures": len(signatures),
+            "diagnoses": dict(diagnoses), **attributed}
+
+
+def grid_hash(ppp_path):
+    """Grid::hash() of a .ppp file's grid: FNV-1a over its cells, row by row, 1 for an obstacle."""
+    with open(ppp_path) as f:
+        lines = f.read().split("\n")
+    rows = lines[lines.index("grid") + 1:]
+    h = 0xcbf29ce484222325
+    for row in rows:
+        if not row or row[0] not in ".#SG":
+            break
+        for c in row:
+            h = ((h ^ (1 if c == "#" else 0)) * 0x100000001b3) % (1 << 64)
+    return "%016x" % h
+
+
+def attribute(out, planner, hunted_set, hunted_rows, config_path, log):
+    """Plays the optimistic planner and each of the planner's faults alone on the hunted PPPs; the share of its
+    faults some hunted PPP reveals, and per fault the evaluation of the first such PPP."""
+    faults = faults_of(planner)
+    directory = os.path.join(out, "attributed")
+    os.makedirs(directory, exist_ok=True)
+    for row in hunted_rows:
+        shutil.copy(os.path.join(out, "sets", hunted_set, row["file"]), directory)
+    with open(config_path) as f:
+        config = yaml.safe_load(f)
+    config["agents"] = [agent_entry("none", "none")] + [agent_entry(f, f) for f in faults]
+    config["sets"] = [{"name": "attributed", "directory": directory}]
+    attribution_config = os.path.join(out, "attribution.yaml")
+    with open(attribution_config, "w") as f:
+        yaml.safe_dump(config, f, sort_keys=False)
+    played = os.path.join(out, "attribution")
+    shutil.rmtree(played, ignore_errors=True)
+    roslaunch("experiment.launch", ["output_dir:=" + played, "config:=" + attribution_config],
+              os.path.join(out, "attribution.log"))
+    failed = collections.defaultdict(set)  # agent -> PPP files it failed
+    ids = {os.path.splitext(name)[0]: name for name in os.listdir(directory)}  # a plain directory's ids: file stems
+    for r in read_csv(os.path.join(played, "results.csv")):
+        if r["pass"] == "0":
+            failed[r["agent"]].add(ids[r["problem"]])
+    order = {}
+    for i, r in enumerate(log):
+        order.setdefault(r["grid"], i + 1)
+    first = {}
+    with open(os.path.join(out, "attribution.csv"), "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["problem", "none"] + faults + ["reveals", "evaluation"])
+        for row in hunted_rows:
+            name = row["file"]
+            reveals = [fault for fault in faults if name in failed[fault] and name not in failed["none"]]
+            evaluation = order.get(grid_hash(os.path.join(directory, name)))
+            for fault in reveals:
+                if evaluation is not None and (fault not in first or evaluation < first[fault]):
+                    first[fault] = evaluation
+                first.setdefault(fault, None)
+            writer.writerow([name, "fail" if name in failed["none"] else "pass"] +
+                            ["fail" if name in failed[fault] else "pass" for fault in faults] +
+                            [" ".join(reveals), evaluation or ""])
+    return {"recall": round(len(first) / len(faults), 3), "revealed": sorted(first),
+            "first_per_fault": {fault: first.get(fault) for fault in faults}}
 
 
 def shrink_into_corpus(out, hunted_set, failing, config_path):

@@ -240,7 +240,19 @@ const std::vector<OptionSpec<TpSpaceNodeParameters>>& tpSpaceNodeOptionSpecs() {
 void ZooNodeParameters::validate() const {
   if (fault.empty()) throw InvalidArgument("fault", "the zoo planner needs a fault; expected one of its choices");
   checkOptionRanges(zooNodeOptionSpecs(), *this);
+  FaultyPlanner(fault, limit);  // refuses an unknown, repeated or unplantable fault, or a limit of several faults
 }
+
+namespace {
+
+/// `spec` with `choices` named in its documentation but not restricted to one of them: the zoo's fault takes a
+/// list of them, checked by ZooNodeParameters::validate().
+OptionSpec<ZooNodeParameters> withChoicesListed(OptionSpec<ZooNodeParameters> spec, std::vector<OptionChoice> choices) {
+  spec.choices = std::move(choices);
+  return spec;
+}
+
+}  // namespace
 
 const std::vector<OptionSpec<ZooNodeParameters>>& zooNodeOptionSpecs() {
   using Z = ZooNodeParameters;
@@ -251,10 +263,13 @@ const std::vector<OptionSpec<ZooNodeParameters>>& zooNodeOptionSpecs() {
       faults.push_back({f.name, f.kind + ": " + f.description + limit});
     }
     return std::vector<OptionSpec<Z>>{
-        declareOption("fault", "the planted fault (required)", +[](Z& z) -> std::string& { return z.fault; })
-            .withChoices("fault", faults),
+        withChoicesListed(declareOption("fault", "the planted fault, or several separated by commas (required; "
+                                                 "dead_end_filter cannot go with goal_clearance, which refuses its goals first)",
+                                        +[](Z& z) -> std::string& { return z.fault; }),
+                          faults),
         declareOption("limit", "the fault's limit: cells of route, cells expanded, open-list entries or routes "
-                               "planned (0: the fault's own default; faults without one ignore it)",
+                               "planned (0: the fault's own default; faults without one ignore it; with several "
+                               "faults that take one, only 0)",
                       +[](Z& z) -> int& { return z.limit; }, Bounds{0, 1000000}),
     };
   }();

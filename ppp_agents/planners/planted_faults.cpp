@@ -73,10 +73,47 @@ bool nearKnownObstacle(const GridMap& map, Cell c) {
 
 }  // namespace
 
-FaultyPlanner::FaultyPlanner(const std::string& fault, int limit) : fault_(plantedFault(fault).name), limit_(limit) {
-  if (limit < 0) throw InvalidArgument("limit", "expected 0 (the fault's default) or more, got " + std::to_string(limit));
-  if (limit_ == 0) limit_ = plantedFault(fault).default_limit;
+std::vector<std::string> plantedFaultList(const std::string& list) {
+  std::vector<std::string> faults;
+  std::size_t begin = 0;
+  for (;;) {
+    const std::size_t comma = list.find(',', begin);
+    std::string name = list.substr(begin, comma == std::string::npos ? std::string::npos : comma - begin);
+    name.erase(0, name.find_first_not_of(' '));
+    name.erase(name.find_last_not_of(' ') + 1);
+    if (name.empty()) throw InvalidArgument("fault", "an empty fault in '" + list + "'; expected names separated by commas");
+    plantedFault(name);  // an unknown name is refused, listing the valid ones
+    if (std::find(faults.begin(), faults.end(), name) != faults.end()) {
+      throw InvalidArgument("fault", "fault '" + name + "' is planted twice in '" + list + "'");
+    }
+    faults.push_back(name);
+    if (comma == std::string::npos) break;
+    begin = comma + 1;
+  }
+  const auto has = [&faults](const char* name) { return std::find(faults.begin(), faults.end(), name) != faults.end(); };
+  if (has("dead_end_filter") && has("goal_clearance")) {
+    throw InvalidArgument("fault", "dead_end_filter cannot be planted with goal_clearance: every goal it takes for an "
+                                   "obstacle has a known obstacle beside it, so goal_clearance refuses that goal first "
+                                   "and dead_end_filter never fails a run alone");
+  }
+  return faults;
 }
+
+FaultyPlanner::FaultyPlanner(const std::string& faults, int limit) : faults_(plantedFaultList(faults)), limit_(limit) {
+  if (limit < 0) throw InvalidArgument("limit", "expected 0 (the fault's default) or more, got " + std::to_string(limit));
+  int limited = 0;
+  for (const std::string& f : faults_) limited += plantedFault(f).default_limit > 0 ? 1 : 0;
+  if (limit > 0 && limited > 1) {
+    throw InvalidArgument("limit", "a limit of " + std::to_string(limit) + " for '" + faults +
+                                       "', where several faults take one; leave it 0 (each fault's default)");
+  }
+}
+
+bool FaultyPlanner::planted(const char* fault) const {
+  return std::find(faults_.begin(), faults_.end(), fault) != faults_.end();
+}
+
+int FaultyPlanner::limitOf(const char* fault) const { return limit_ > 0 ? limit_ : plantedFault(fault).default_limit; }
 
 void FaultyPlanner::startEpisode() {
   last_robot_ = left_cell_ = Cell{-1, -1};
@@ -84,12 +121,12 @@ void FaultyPlanner::startEpisode() {
   route_changes_ = 0;
 }
 
-bool FaultyPlanner::routeChangeAllowed(const std::vector<Cell>& route, Cell robot) {
+bool FaultyPlanner::routeChangeAllowed(const std::vector<Cell>& route, Cell robot, int limit) {
   const auto on_last = std::find(last_route_.begin(), last_route_.end(), robot);
   const bool same = on_last != last_route_.end() && std::equal(on_last, last_route_.end(), route.begin(), route.end());
   last_route_ = route;
   if (!same) ++route_changes_;
-  return route_changes_ <= limit_;
+  return route_changes_ <= limit;
 }
 
 std::vector<Cell> FaultyPlanner::plan(const GridMap& map, Cell robot, Cell goal) {
@@ -97,29 +134,22 @@ std::vector<Cell> FaultyPlanner::plan(const GridMap& map, Cell robot, Cell goal)
     left_cell_ = last_robot_;
     last_robot_ = robot;
   }
+  if (planted("goal_clearance") && nearKnownObstacle(map, goal)) return {};
   SearchRules rules;
-  if (fault_ == "search_horizon") {
-    std::vector<Cell> route = optimisticAStar(map, robot, goal);
-    return static_cast<int>(route.size()) > limit_ ? std::vector<Cell>{} : route;
-  }
-  if (fault_ == "expansion_budget") {
-    rules.max_expansions = limit_;
-  } else if (fault_ == "west_edge") {
-    rules.can_step = [&map](Cell from, Cell to) { return map.passable(to) && !(to.x == 0 && from.x == 1); };
-  } else if (fault_ == "dead_end_filter") {
-    rules.can_step = [&map](Cell, Cell to) { return map.passable(to) && blockedSides(map, to) < 3; };
-  } else if (fault_ == "open_list_cap") {
-    rules.max_open = limit_;
-  } else if (fault_ == "goal_clearance") {
-    if (nearKnownObstacle(map, goal)) return {};
-  } else if (fault_ == "no_backtrack") {
+  if (planted("expansion_budget")) rules.max_expansions = limitOf("expansion_budget");
+  if (planted("open_list_cap")) rules.max_open = limitOf("open_list_cap");
+  const bool west_edge = planted("west_edge"), dead_end = planted("dead_end_filter"), no_backtrack = planted("no_backtrack");
+  if (west_edge || dead_end || no_backtrack) {
     const Cell left = left_cell_;
-    rules.can_step = [&map, left](Cell, Cell to) { return to != left && map.passable(to); };
-  } else if (fault_ == "replan_limit") {
-    const std::vector<Cell> route = optimisticAStar(map, robot, goal);
-    return routeChangeAllowed(route, robot) ? route : std::vector<Cell>{};
+    rules.can_step = [&map, left, west_edge, dead_end, no_backtrack](Cell from, Cell to) {
+      return map.passable(to) && !(west_edge && to.x == 0 && from.x == 1) && !(dead_end && blockedSides(map, to) >= 3) &&
+             !(no_backtrack && to == left);
+    };
   }
-  return gridAStar(map, robot, goal, rules);
+  std::vector<Cell> route = gridAStar(map, robot, goal, rules);
+  if (planted("replan_limit") && !routeChangeAllowed(route, robot, limitOf("replan_limit"))) return {};
+  if (planted("search_horizon") && static_cast<int>(route.size()) > limitOf("search_horizon")) return {};
+  return route;
 }
 
 }  // namespace planners

@@ -28,12 +28,21 @@ const std::vector<PlantedFault>& plantedFaults();
 /// The fault of a name. @throws InvalidArgument("fault", ...) listing the valid names.
 const PlantedFault& plantedFault(const std::string& name);
 
-/// The optimistic planner with a planted fault. Two faults keep a memory of the episode (the cell the robot left,
-/// the routes it planned): startEpisode() clears it.
+/// The faults of a comma-separated list ("search_horizon,west_edge"), in the list's order. Faults combine (an
+/// effort limit and a bounds error both act on one search), except dead_end_filter with goal_clearance: every goal
+/// the filter takes for an obstacle has a known obstacle beside it, so goal_clearance would refuse it first and
+/// the filter could never fail a run alone.
+/// @throws InvalidArgument("fault", ...) naming an unknown, repeated or unplantable fault, or an empty list.
+std::vector<std::string> plantedFaultList(const std::string& list);
+
+/// The optimistic planner with one or more planted faults. Two faults keep a memory of the episode (the cell the
+/// robot left, the routes it planned): startEpisode() clears it.
 class FaultyPlanner {
  public:
-  /// @throws InvalidArgument for an unknown fault or a negative limit (0: the fault's default).
-  FaultyPlanner(const std::string& fault, int limit);
+  /// `faults`: a plantedFaultList(). `limit`: the limit of the one planted fault that takes one (0: each fault's
+  /// default). @throws InvalidArgument for a bad list, a negative limit, or a limit given to several faults that
+  /// take one (it could not say whose it is).
+  FaultyPlanner(const std::string& faults, int limit);
 
   /// Every cell from `robot` to `goal` of the route the faulty planner takes, or none.
   std::vector<Cell> plan(const GridMap& map, Cell robot, Cell goal);
@@ -42,10 +51,13 @@ class FaultyPlanner {
   void startEpisode();
 
  private:
-  /// Counts a new route (one that is not what was left of the last): true while within the limit.
-  bool routeChangeAllowed(const std::vector<Cell>& route, Cell robot);
+  /// Counts a new route (one that is not what was left of the last): true while within `limit`.
+  bool routeChangeAllowed(const std::vector<Cell>& route, Cell robot, int limit);
 
-  std::string fault_;
+  bool planted(const char* fault) const;
+  int limitOf(const char* fault) const;
+
+  std::vector<std::string> faults_;
   int limit_;
   Cell last_robot_{-1, -1};      // where the robot stood at the last plan
   Cell left_cell_{-1, -1};       // the cell it stood on before that one

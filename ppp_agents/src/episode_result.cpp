@@ -6,13 +6,14 @@
 
 #include "ppp_core/csv.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/failure_signature.hpp"
 
 namespace ppp {
 namespace agents {
 
 namespace {
 
-constexpr std::size_t kFields = 16;  // of a row, as resultCsvHeader()
+constexpr std::size_t kFields = 17;  // of a row, as resultCsvHeader()
 
 template <typename T>
 T parseNumber(std::string_view text, const std::string& source, int line, const char* field) {
@@ -79,6 +80,22 @@ void parseDiagnosis(std::string_view kind, std::string_view step, std::string_vi
   }
 }
 
+/// The signature field of `r`, checked for its form and against the diagnosis and reason it must agree with.
+void parseSignature(std::string_view text, const std::string& source, int line, EpisodeResult* r) {
+  std::string why;
+  if (!isWellFormedSignature(text, &why)) throw ParseError(source, line, "signature", why);
+  r->signature = std::string(text);
+  if (r->diagnosis.empty() != r->signature.empty()) {
+    throw ParseError(source, line, "signature", "a failed or soft-failed run has a signature, a clean pass none");
+  }
+  if (r->signature.empty()) return;
+  const std::string how = failureHow(diagnosisOf(*r), r->reason);
+  if (r->signature.compare(0, r->signature.find('/'), how) != 0) {
+    throw ParseError(source, line, "signature",
+                     "'" + r->signature + "' does not begin with '" + how + "/', as its diagnosis and reason say");
+  }
+}
+
 /// A row from its fields in header order (any count: a wrong one is named).
 template <typename Field>
 EpisodeResult rowFromFields(const Field* f, std::size_t count, const std::string& source, int line) {
@@ -101,6 +118,7 @@ EpisodeResult rowFromFields(const Field* f, std::size_t count, const std::string
   r.soft_failure = parseFlag(f[11], source, line, "soft_failure");
   if (r.soft_failure && !r.passed) throw ParseError(source, line, "soft_failure", "a soft failure is a passed run");
   parseDiagnosis(f[12], f[13], f[14], f[15], source, line, &r);
+  parseSignature(f[16], source, line, &r);
   return r;
 }
 
@@ -158,7 +176,7 @@ const std::vector<std::string>& resultCsvHeader() {
   static const std::vector<std::string> header = {"set",   "problem", "agent",       "run",            "seed",
                                                   "pass",  "steps",   "bumps",       "path_length",    "optimal_length",
                                                   "reason", "soft_failure", "diagnosis", "diagnosis_step",
-                                                  "loop_period", "endless_step"};
+                                                  "loop_period", "endless_step", "signature"};
   return header;
 }
 
@@ -178,7 +196,8 @@ std::vector<std::string> toCsvFields(const EpisodeResult& r) {
           r.diagnosis,
           optionalText(r.diagnosis_step, -1),
           optionalText(r.loop_period, 0),
-          optionalText(r.endless_step, -1)};
+          optionalText(r.endless_step, -1),
+          r.signature};
 }
 
 Diagnosis diagnosisOf(const EpisodeResult& result) {
@@ -230,6 +249,8 @@ void appendCsvRow(const EpisodeResult& r, std::string* out) {
   appendOptional(r.loop_period, 0, out);
   *out += ',';
   appendOptional(r.endless_step, -1, out);
+  *out += ',';
+  *out += r.signature;
   *out += '\n';
 }
 

@@ -28,8 +28,15 @@ EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::stri
   r.optimal_length = set.optimal[problem];
   r.soft_failure = isSoftFailure(r.passed, r.path_length, r.optimal_length, set.episode.soft_failure_ratio);
   r.reason = outcome.reason;
-  setDiagnosis(diagnoseRun(r.passed, r.soft_failure, r.reason, outcome.cells, states, reported_kind), &r);
+  setDiagnosisAndSignature(set, problem, diagnoseRun(r.passed, r.soft_failure, r.reason, outcome.cells, states, reported_kind),
+                           outcome.cells, &r);
   return r;
+}
+
+void setDiagnosisAndSignature(const PreparedSet& set, int problem, const Diagnosis& d, const std::vector<Cell>& cells,
+                              EpisodeResult* result) {
+  setDiagnosis(d, result);
+  result->signature = failureSignature(set.signature_maps[static_cast<std::size_t>(problem)], d, result->reason, cells);
 }
 
 int largestActionLimit(const std::vector<PreparedSet>& sets) {
@@ -60,6 +67,7 @@ PreparedSet prepareSet(const std::string& name, ProblemSet set, const EpisodeOpt
     p.optimal.push_back(optimum.length);
     p.moves.push_back(optimum.moves);
     p.budgets.push_back(episodeBudget(episode, optimum.moves));
+    p.signature_maps.emplace_back(p.grids.back(), motion, problem.start, problem.goal);
     p.windows.push_back(WindowAtlas::bytes(p.grids.back(), sensor_range) <= kMaxWindowAtlasBytes
                             ? std::optional<WindowAtlas>(std::in_place, p.grids.back(), sensor_range)
                             : std::nullopt);

@@ -120,6 +120,7 @@ void Breeder::score(const std::vector<Individual*>& individuals) {
     for (std::size_t i = begin; i < end; ++i) {
       individuals[i]->value = scores.at(i - begin).value;
       individuals[i]->score = scores.at(i - begin).score;
+      individuals[i]->signatures = scores.at(i - begin).signatures;
     }
   }
 }

@@ -9,7 +9,9 @@
 #include <thread>
 
 #include "ppp_agents/episode_runner.hpp"
+#include "ppp_core/diagnosis.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/failure_signature.hpp"
 #include "ppp_core/footprint.hpp"
 #include "ppp_core/optimum.hpp"
 #include "ppp_core/rng.hpp"
@@ -63,6 +65,7 @@ FitnessScore panelScore(const std::string& fitness, const FailureEstimate& estim
   FitnessScore score = fitness == kRegretFitness ? regretScore(estimate.regret, estimate.budget_used)
                                                  : failureScore(estimate.failure_rate, estimate.budget_used);
   score.failure_rate = estimate.failure_rate;
+  score.signatures = estimate.signatures;
   return score;
 }
 
@@ -76,11 +79,14 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
   std::vector<Optimum> optima;
   std::vector<int> budgets;
   std::vector<std::optional<WindowAtlas>> atlases(problems.size());
+  std::vector<SignatureMap> signature_maps;
+  std::vector<std::map<std::string, int>> signatures(units);  // per (PPP, agent) slot, as the tallies
   for (std::size_t p = 0; p < problems.size(); ++p) {
     hashes.push_back(grids[p]->hash());
     Grid space;
     const Grid& motion = motionGrid(*grids[p], panel.episode.robot_radius, &space);
     optima.push_back(optimumOf(*problems[p], motion, panel.episode.connectivity));
+    signature_maps.emplace_back(*grids[p], motion, problems[p]->start, problems[p]->goal);
     budgets.push_back(episodeBudget(panel.episode, optima.back().moves));
   }
   std::vector<std::once_flag> atlas_built(problems.size());
@@ -111,6 +117,10 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
           const bool soft = isSoftFailure(outcome.passed, pathLength(outcome), optima[p].length,
                                           panel.episode.soft_failure_ratio);
           tallies[p].add(a, outcome.passed && !soft, outcome.steps, budgets[p], optima[p].moves);
+          if (!outcome.passed || soft) {
+            const Diagnosis d = diagnoseRun(outcome.passed, soft, outcome.reason, outcome.cells);
+            ++signatures[u][failureSignature(signature_maps[p], d, outcome.reason, outcome.cells)];
+          }
         }
       }
     } catch (...) {
@@ -128,6 +138,9 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
   std::vector<FailureEstimate> estimates;
   for (std::size_t p = 0; p < problems.size(); ++p) {
     estimates.push_back(estimateOf(tallies[p], panel.runs_per_eval, budgets[p]));
+    for (std::size_t a = 0; a < agent_count; ++a) {
+      for (const auto& [signature, runs] : signatures[p * agent_count + a]) estimates.back().signatures[signature] += runs;
+    }
   }
   return estimates;
 }

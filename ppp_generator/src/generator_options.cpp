@@ -28,6 +28,10 @@ void validateHuntOptions(const GeneratorOptions& o) {
   if (panel && o.agents.empty()) {
     throw InvalidArgument("agents", "empty panel: the " + o.fitness + " fitness needs at least one agent name");
   }
+  if (o.archive == kSignatureArchive && !panel) {
+    throw InvalidArgument("archive", "'" + std::string(kSignatureArchive) + "' keeps a panel's failures by signature, "
+                                     "and fitness '" + o.fitness + "' plays no panel; use it with failure or regret");
+  }
   if (!panel && !o.agents.empty()) {
     throw InvalidArgument("agents", "only the panel fitnesses (failure, regret) use an agent panel");
   }
@@ -164,7 +168,11 @@ const std::vector<OptionSpec<GeneratorOptions>>& generatorOptionSpecs() {
                     +[](O& o) -> int& { return o.round_size; }, Bounds{1, kMaxRoundSize}),
       declareOption("archive", "what the set is", +[](O& o) -> std::string& { return o.archive; })
           .withChoices("archive", {{kNoArchive, "the final pool"},
-                                   {kMapElitesArchive, "the elites of an archive binned over features"}}),
+                                   {kMapElitesArchive, "the elites of an archive binned over features"},
+                                   {kSignatureArchive,
+                                    "failure, regret: one PPP per way the panel failed (failure signature), picked "
+                                    "for difference; a child failing in a new way enters the pool whatever its score, "
+                                    "and half the parents come from the archive"}}),
       declareOption("features", "map_elites: taxonomic characters binned (two or more)",
                     +[](O& o) -> std::vector<std::string>& { return o.features; }),
       declareOption("bins", "map_elites: bins per feature", +[](O& o) -> int& { return o.bins; }, Bounds{2, kMaxBins}),

@@ -33,6 +33,8 @@ GeneticAlgorithm::GeneticAlgorithm(const GeneratorOptions& options, Fitness fitn
       rng_(options.seed),
       breeder_(options_, fitness_, &rng_) {}
 
+bool GeneticAlgorithm::keepsSignatures() const { return options_.archive == kSignatureArchive; }
+
 std::vector<Individual> GeneticAlgorithm::initialPool(const StopCheck& stop) {
   std::vector<Individual> pool = initialPoolIndividuals(options_, &breeder_);
   pool.reserve(static_cast<std::size_t>(options_.population));
@@ -51,6 +53,9 @@ std::vector<Individual> GeneticAlgorithm::initialPool(const StopCheck& stop) {
   std::vector<Individual*> members;
   for (Individual& i : pool) members.push_back(&i);
   breeder_.score(members);
+  if (keepsSignatures()) {
+    for (const Individual& i : pool) signatures_.offer(i);
+  }
   return pool;
 }
 
@@ -60,6 +65,8 @@ void GeneticAlgorithm::replace(std::vector<Individual>* pool, const std::vector<
     ++stats_.children_duplicate;
     return;
   }
+  const bool novel = keepsSignatures() && signatures_.offer(*child);
+  if (novel) ++stats_.children_novel;
   if (options_.replacement == kTournamentReplacement) {
     const int slot = tournament[tournament.size() - 1 - static_cast<std::size_t>(*replaced)];
     (*pool)[static_cast<std::size_t>(slot)] = *child;
@@ -76,7 +83,7 @@ void GeneticAlgorithm::replace(std::vector<Individual>* pool, const std::vector<
     if (d < nearest_difference) nearest_difference = d, nearest = member;
   }
   Individual& rival = (*pool)[static_cast<std::size_t>(nearest)];
-  if (child->score >= rival.score) {
+  if (novel || child->score >= rival.score) {
     rival = *child;
     ++stats_.children_accepted;
   } else {
@@ -87,6 +94,7 @@ void GeneticAlgorithm::replace(std::vector<Individual>* pool, const std::vector<
 std::vector<Individual> GeneticAlgorithm::run(const ProgressCallback& progress, long progress_interval,
                                              const StopCheck& stop) {
   stats_ = GenerationStats{};
+  signatures_ = SignatureArchive(maxSignatureElites(options_));
   std::vector<Individual> pool = initialPool(stop);
   const int tournament_size = std::min(options_.tournament_size, options_.population);
   auto best = [&]() {
@@ -113,8 +121,14 @@ std::vector<Individual> GeneticAlgorithm::run(const ProgressCallback& progress, 
       // Fittest first; ties keep the draw order.
       std::stable_sort(m.tournament.begin(), m.tournament.end(),
                        [&](int a, int b) { return pool[a].score > pool[b].score; });
-      breeder_.crossover(pool[m.tournament[0]].problem, pool[m.tournament[1]].problem, &m.children[0].problem,
-                         &m.children[1].problem);
+      const Problem* parents[2] = {&pool[m.tournament[0]].problem, &pool[m.tournament[1]].problem};
+      if (keepsSignatures() && rng_.below(2) == 0) {
+        for (const Problem*& parent : parents) {
+          const Individual* elite = signatures_.randomElite(&rng_);
+          if (elite != nullptr) parent = &elite->problem;
+        }
+      }
+      breeder_.crossover(*parents[0], *parents[1], &m.children[0].problem, &m.children[1].problem);
       for (int c = 0; c < 2; ++c) {
         breeder_.mutate(&m.children[c].problem);
         m.valid[c] = breeder_.decode(&m.children[c]);
@@ -143,7 +157,7 @@ std::vector<Individual> GeneticAlgorithm::run(const ProgressCallback& progress, 
     }
   }
   if (progress) progress(options_.matings, options_.matings, best());
-  return pool;
+  return keepsSignatures() ? signatures_.diverseSet(options_.population, pool) : pool;
 }
 
 }  // namespace generator

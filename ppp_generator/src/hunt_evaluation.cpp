@@ -85,6 +85,7 @@ void HuntEvaluation::record(const std::vector<agents::EpisodeResult>& ended) {
       tallies_[p].add(a, passed, r.steps, budget, sets_[0].moves[p]);
     }
     if (!r.diagnosis.empty()) ++e.diagnoses[r.diagnosis];
+    if (!r.signature.empty()) ++e.signatures[r.signature];
     if (r.endless_step >= 0) ++e.endless;
     if (!passed) {
       ++e.failed;

@@ -7,6 +7,17 @@
 namespace ppp {
 namespace generator {
 
+namespace {
+
+/// The set's ids by the hash of their grids.
+std::map<std::uint64_t, std::string> idsByGrid(const ProblemSet& set) {
+  std::map<std::uint64_t, std::string> ids;
+  for (std::size_t i = 0; i < set.problems.size(); ++i) ids[decodeGrid(set.problems[i]).hash()] = set.ids[i];
+  return ids;
+}
+
+}  // namespace
+
 EvolvedSet evolveSet(const GeneratorOptions& options, Fitness fitness, const ProgressCallback& progress,
                      long progress_interval, const StopCheck& stop) {
   options.validate();
@@ -16,10 +27,7 @@ EvolvedSet evolveSet(const GeneratorOptions& options, Fitness fitness, const Pro
   if (options.archive == kMapElitesArchive) {
     MapElites search(options, std::move(fitness));
     evolved.set = makeProblemSet(options, search.run(progress, progress_interval, stop));
-    std::map<std::uint64_t, std::string> ids;
-    for (std::size_t i = 0; i < evolved.set.problems.size(); ++i) {
-      ids[decodeGrid(evolved.set.problems[i]).hash()] = evolved.set.ids[i];
-    }
+    const std::map<std::uint64_t, std::string> ids = idsByGrid(evolved.set);
     std::vector<FeatureRange> ranges;
     for (const std::string& name : options.features) ranges.push_back(featureRange(name, options));
     evolved.extra_files["archive.csv"] = archiveCsv(search.archive(), options.features, ids);
@@ -38,6 +46,13 @@ EvolvedSet evolveSet(const GeneratorOptions& options, Fitness fitness, const Pro
                       " children accepted, " + std::to_string(s.children_pruned) + " pruned as unsolvable, " +
                       std::to_string(s.children_duplicate) + " dropped as duplicates, " +
                       std::to_string(s.children_rejected) + " lost to a similar PPP";
+    if (options.archive == kSignatureArchive) {
+      const SignatureArchive& archive = ga.signatureArchive();
+      evolved.extra_files[kSignatureArchiveFile] = archive.csv(idsByGrid(evolved.set));
+      evolved.summary += "; " + std::to_string(archive.entries().size()) + " failure signatures, " +
+                         std::to_string(s.children_novel) + " children failing in a new way";
+      if (archive.dropped() > 0) evolved.summary += " (" + std::to_string(archive.dropped()) + " more not kept: archive full)";
+    }
   }
   if (!log.empty()) evolved.extra_files[kEvaluationLogFile] = log.csv();
   evolved.summary += "; diversity " + formatNumber(evolved.set.diversity);

@@ -4,6 +4,7 @@
 
 #include "ppp_core/diagnosis.hpp"
 #include "ppp_core/error.hpp"
+#include "ppp_core/failure_signature.hpp"
 #include "ppp_core/stop.hpp"
 #include "ppp_msgs/EvaluateProblems.h"
 #include "ppp_msgs/conversions.h"
@@ -24,6 +25,10 @@ RunsOutcome outcomeOf(const ppp_msgs::ProblemEvaluation& e, int runs, const std:
     const int kind = diagnosis::kindIndex(e.diagnoses[i]);
     if (kind < 0) throw IoError(service, "answered an unknown diagnosis '" + e.diagnoses[i] + "'");
     outcome.kinds[static_cast<std::size_t>(kind)] += static_cast<int>(e.diagnosis_counts[i]);
+  }
+  for (std::size_t i = 0; i < e.signatures.size() && i < e.signature_counts.size(); ++i) {
+    if (!isWellFormedSignature(e.signatures[i])) throw IoError(service, "answered a malformed signature '" + e.signatures[i] + "'");
+    outcome.signatures[e.signatures[i]] += static_cast<int>(e.signature_counts[i]);
   }
   return outcome;
 }

@@ -42,6 +42,7 @@ RunsOutcome outcomeOfRows(const std::vector<agents::EpisodeResult>& rows) {
     ++outcome.failed;
     ++outcome.kinds[static_cast<std::size_t>(diagnosis::kindIndex(row.diagnosis))];
     if (row.endless_step >= 0) ++outcome.endless;
+    ++outcome.signatures[row.signature];
   }
   return outcome;
 }

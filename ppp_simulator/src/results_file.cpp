@@ -22,6 +22,11 @@ std::string headerLine() { return csvLine(agents::resultCsvHeader()); }
 constexpr std::string_view kUndiagnosedHeader =
     "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,soft_failure";
 
+/// The header of results files written before failed runs had signatures.
+constexpr std::string_view kUnsignedHeader =
+    "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,soft_failure,diagnosis,"
+    "diagnosis_step,loop_period,endless_step";
+
 constexpr int kLinesPerStopCheck = 1 << 14;  // lines read or written between two questions to the StopCheck
 
 /// Parses complete lines, asking `stop` every kLinesPerStopCheck lines; returns the byte length of the text
@@ -43,6 +48,12 @@ std::size_t parseRows(const std::string& text, const std::string& path, std::vec
                          "written by an earlier PPP Lab, without the diagnosis columns; its runs cannot be resumed "
                          "or read with diagnosed ones: write the experiment to a new output directory (or move "
                          "this results.csv away to play every run again)");
+      }
+      if (content == kUnsignedHeader) {
+        throw ParseError(path, 1, "header",
+                         "written by an earlier PPP Lab, without the signature column; its runs cannot be resumed "
+                         "or read with signed ones: write the experiment to a new output directory (or move this "
+                         "results.csv away to play every run again)");
       }
       if (content != headerLine()) {
         throw ParseError(path, 1, "header", "not a PPP Lab results file; expected '" + headerLine() + "'");

@@ -85,9 +85,9 @@ expect_error "shrink without a failed run" "--results: no failed run (lost runs 
 cp -r "$work/a" "$work/l"
 awk 'NR == 1 || NR % 997 != 0' "$work/a/results.csv" > "$work/l/results.csv"
 awk -F, -v OFS=, 'NR > 1 && NR % 997 == 0 {
-  $6 = 0; $11 = (NR % 2 ? "timeout" : "agent_lost"); $12 = 0; $13 = "reported"; $14 = $15 = $16 = ""; print }' \
-  "$work/a/results.csv" >> "$work/l/results.csv"
-lost=$(grep -c ",timeout,0,reported,,,$\|,agent_lost,0,reported,,,$" "$work/l/results.csv")
+  $6 = 0; $11 = (NR % 2 ? "timeout" : "agent_lost"); $12 = 0; $13 = "reported"; $14 = $15 = $16 = "";
+  $17 = $11 "/g16-31/s0/t0/w0e2"; print }' "$work/a/results.csv" >> "$work/l/results.csv"
+lost=$(grep -c ",\(timeout\|agent_lost\),0,reported,,,,\(timeout\|agent_lost\)/" "$work/l/results.csv")
 expect_ok "resume with lost runs" "$ppp" experiment "$work/experiment.yaml" -o "$work/l"
 grep -q "playing again $lost runs lost to the agent link" "$work/err" "$work/out" && pass || \
   fail "no word about $lost lost runs: $(cat "$work/err")"

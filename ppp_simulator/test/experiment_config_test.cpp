@@ -285,7 +285,7 @@ TEST_F(ExperimentYaml, HuntedSetsNameTheirPanelFromTheExperimentsAgents) {
   EXPECT_EQ(errorOf(hunt("agents: [slow], archive: map_elites, features: [turns, advances, obstacles], bins: 50")),
             " sets[0].generator.bins: bins^features = 125000 archive cells; at most 100000");
   EXPECT_EQ(errorOf(hunt("agents: [slow], archive: grid")),
-            "4: sets[0].generator.archive: unknown archive 'grid'; valid: none, map_elites");
+            "4: sets[0].generator.archive: unknown archive 'grid'; valid: none, map_elites, signatures");
   EXPECT_EQ(errorOf(hunt("agents: [slow], agents_file: agents.yaml")),
             " sets[0].generator.agents_file: in an experiment the panel's names come from its agents");
   EXPECT_EQ(errorOf("agents: agents.yaml\nsets:\n  - name: t\n    generator: {fitness: turns, agents: [slow]}\n"),

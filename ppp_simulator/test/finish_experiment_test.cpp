@@ -58,7 +58,7 @@ class FinishExperimentTest : public ::testing::Test {
   static std::string textOf(const std::vector<agents::EpisodeResult>& rows) {
     std::string text =
         "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,soft_failure,diagnosis,"
-        "diagnosis_step,loop_period,endless_step\n";
+        "diagnosis_step,loop_period,endless_step,signature\n";
     for (const agents::EpisodeResult& r : rows) agents::appendCsvRow(r, &text);
     return text;
   }

@@ -121,7 +121,7 @@ TEST(HuntEvaluationTest, EstimatesEqualTheInProcessFailureFitness) {
 
 TEST(HuntEvaluationTest, GivenRunSeedsEveryCandidateIsPlayedOnThemAndDiagnosedAsInProcess) {
   // A shrink's judging through ROS: the random agent in 12 moves on the seeds of four failed runs. Each
-  // candidate's failures and their diagnoses are those of the same seeds played in process (playRuns).
+  // candidate's failures, their diagnoses and signatures are those of the same seeds played in process (playRuns).
   EpisodeOptions episode;
   episode.budget = 12;
   const std::vector<Problem> problems = candidates();
@@ -140,6 +140,7 @@ TEST(HuntEvaluationTest, GivenRunSeedsEveryCandidateIsPlayedOnThemAndDiagnosedAs
       if (expected.kinds[k] > 0) kinds[diagnosis::kKinds[k]] = expected.kinds[k];
     }
     EXPECT_EQ(got[p].diagnoses, kinds) << p;
+    EXPECT_EQ(got[p].signatures, expected.signatures) << p;  // through the lanes as in process, run for run
     diagnosed += got[p].failed;
   }
   EXPECT_GT(diagnosed, 0);  // the far goal is not reached in 12 random moves every time

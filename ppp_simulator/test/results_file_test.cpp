@@ -32,6 +32,7 @@ agents::EpisodeResult row(int run, bool passed) {
   if (!passed) {
     r.diagnosis = "wandering";
     r.diagnosis_step = 5;
+    r.signature = "wandering/g4-7/s4-7/t1/w0e0";
   }
   return r;
 }
@@ -91,8 +92,8 @@ TEST_F(ResultsFileTest, ForeignFilesAreRefused) {
   std::ofstream(path_) << "a,b,c\n1,2,3\n";
   EXPECT_THROW(ResultsFile{path_}, ParseError);
   std::ofstream(path_) << "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,soft_failure,"
-                          "diagnosis,diagnosis_step,loop_period,endless_step\n"
-                       << "turns,ppp_000,random,zero,1,1,1,0,1,1,goal_reached,0,,,,\n";
+                          "diagnosis,diagnosis_step,loop_period,endless_step,signature\n"
+                       << "turns,ppp_000,random,zero,1,1,1,0,1,1,goal_reached,0,,,,,\n";
   try {
     ResultsFile file(path_);
     FAIL();
@@ -101,21 +102,37 @@ TEST_F(ResultsFileTest, ForeignFilesAreRefused) {
   }
 }
 
-TEST_F(ResultsFileTest, FilesWrittenBeforeRunsWereDiagnosedAreRefusedWithWhatToDo) {
-  const std::string old_text = "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,soft_failure\n"
-                               "turns,ppp_000,random,0,1,0,300,0,1,1,budget_exhausted,0\n";
-  std::ofstream(path_) << old_text;
+/// Expects the file at `path` holding `old_text` (an earlier version's) to be refused on opening with a message that
+/// begins `path:1: header: written by an earlier PPP Lab, without ` + `missing` and says what to do, the file left as
+/// it was.
+void expectEarlierFileRefusedUntouched(const std::string& path, const std::string& old_text, const std::string& missing) {
+  std::ofstream(path) << old_text;
   try {
-    ResultsFile file(path_);
-    FAIL();
+    ResultsFile file(path);
+    ADD_FAILURE() << "an earlier results.csv was opened";
   } catch (const ParseError& e) {
     const std::string what = e.what();
-    EXPECT_EQ(what.rfind(path_ + ":1: header: written by an earlier PPP Lab, without the diagnosis columns", 0), 0u)
-        << what;
+    EXPECT_EQ(what.rfind(path + ":1: header: written by an earlier PPP Lab, without " + missing, 0), 0u) << what;
     EXPECT_NE(what.find("new output directory"), std::string::npos) << what;
   }
-  std::ifstream in(path_);
+  std::ifstream in(path);
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), old_text);  // nothing appended or cut
+}
+
+TEST_F(ResultsFileTest, FilesWrittenBeforeRunsWereDiagnosedAreRefusedWithWhatToDo) {
+  expectEarlierFileRefusedUntouched(path_,
+                                    "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,"
+                                    "soft_failure\nturns,ppp_000,random,0,1,0,300,0,1,1,budget_exhausted,0\n",
+                                    "the diagnosis columns");
+}
+
+TEST_F(ResultsFileTest, FilesWrittenBeforeFailuresHadSignaturesAreRefusedUntouched) {
+  // A resumed experiment never mixes rows with and without signatures: the older file is refused as it stands.
+  expectEarlierFileRefusedUntouched(path_,
+                                    "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,"
+                                    "soft_failure,diagnosis,diagnosis_step,loop_period,endless_step\n"
+                                    "turns,ppp_000,random,0,1,0,300,0,1,1,budget_exhausted,0,loop,100,2,\n",
+                                    "the signature column");
 }
 
 /// Row `run` of the planner agent `mine`, with one action per step (E, E, S, ...).
@@ -126,6 +143,7 @@ agents::EpisodeResult plannerRow(int run, int steps) {
   r.reason = "no_path";
   r.diagnosis = "missed_route";
   r.diagnosis_step = -1;
+  r.signature = "missed_route/g16-31/s1/t0/w0e0";
   for (int i = 0; i < steps; ++i) r.actions.push_back(i % 3 == 2 ? Action::South : Action::East);
   return r;
 }
@@ -185,13 +203,13 @@ TEST_F(ResultsFileTest, PlannerMovesOfARunPlayedAgainAndBadLinesAreHandled) {
 TEST(ResultsCsvText, RowsOfTextWithErrorsNamingTheGivenPath) {
   const std::string header =
       "set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,soft_failure,diagnosis,"
-      "diagnosis_step,loop_period,endless_step\n";
-  const std::string good = "turns,ppp_000,random,0,1,1,1,0,1,1,goal_reached,0,,,,\n";
+      "diagnosis_step,loop_period,endless_step,signature\n";
+  const std::string good = "turns,ppp_000,random,0,1,1,1,0,1,1,goal_reached,0,,,,,\n";
   const auto rows = parseResultsCsv(header + good + "turns,ppp_000,ran", "out/results.csv");
   ASSERT_EQ(rows.size(), 1u);  // the half-written last line is left out
   EXPECT_EQ(rows[0].reason, "goal_reached");
   try {
-    parseResultsCsv(header + good + "turns,ppp_000,random,zero,1,1,1,0,1,1,goal_reached,0,,,,\n", "out/results.csv");
+    parseResultsCsv(header + good + "turns,ppp_000,random,zero,1,1,1,0,1,1,goal_reached,0,,,,,\n", "out/results.csv");
     ADD_FAILURE() << "run zero accepted";
   } catch (const ParseError& e) {
     EXPECT_EQ(std::string(e.what()), "out/results.csv:3: run: expected a whole number, got 'zero'");
@@ -211,29 +229,29 @@ TEST(ResultsCsvText, LengthsAreWholeNumbersOrEightDecimals) {
   r.optimal_length = -1;
   std::string line;
   agents::appendCsvRow(r, &line);
-  EXPECT_EQ(line, "s,p,astar,0,0,1,0,0,12,-1,goal_reached,0,,,,\n");
+  EXPECT_EQ(line, "s,p,astar,0,0,1,0,0,12,-1,goal_reached,0,,,,,\n");
   r.path_length = 3 + 2 * std::sqrt(2.0);
   r.optimal_length = 5.65685424949238;
   line.clear();
   agents::appendCsvRow(r, &line);
-  EXPECT_EQ(line, "s,p,astar,0,0,1,0,0,5.82842712,5.65685425,goal_reached,0,,,,\n");
+  EXPECT_EQ(line, "s,p,astar,0,0,1,0,0,5.82842712,5.65685425,goal_reached,0,,,,,\n");
   const agents::EpisodeResult back = agents::parseCsvRow(line.substr(0, line.size() - 1), "x.csv", 2);
   EXPECT_NEAR(back.path_length, 5.82842712, 1e-12);
   // A length that rounds to a whole number at eight decimals is written as that number (the text of a row read
   // back and written again does not change).
   r.path_length = 7 + 1.5e-9;
   r.optimal_length = 2.999999996;
-  EXPECT_EQ(csvLine(agents::toCsvFields(r)), "s,p,astar,0,0,1,0,0,7,3,goal_reached,0,,,,");
-  EXPECT_THROW(agents::parseCsvRow("s,p,astar,0,0,1,0,0,7,-0.5,goal_reached,0,,,,", "x.csv", 2), ParseError);  // only -1 is negative
+  EXPECT_EQ(csvLine(agents::toCsvFields(r)), "s,p,astar,0,0,1,0,0,7,3,goal_reached,0,,,,,");
+  EXPECT_THROW(agents::parseCsvRow("s,p,astar,0,0,1,0,0,7,-0.5,goal_reached,0,,,,,", "x.csv", 2), ParseError);  // only -1 is negative
   std::string again;
   agents::appendCsvRow(back, &again);
   EXPECT_EQ(again, line);
-  for (const std::string bad : {"s,p,a,0,0,0,0,0,long,1,r,0,stuck,0,,", "s,p,a,0,0,0,0,0,1,nan,r,0,stuck,0,,",
-                                "s,p,a,0,0,0,0,0,-2,1,r,0,stuck,0,,"}) {
+  for (const std::string bad : {"s,p,a,0,0,0,0,0,long,1,r,0,stuck,0,,,stuck/g1/s1/t0/w0e0/G0e0d0", "s,p,a,0,0,0,0,0,1,nan,r,0,stuck,0,,,stuck/g1/s1/t0/w0e0/G0e0d0",
+                                "s,p,a,0,0,0,0,0,-2,1,r,0,stuck,0,,,stuck/g1/s1/t0/w0e0/G0e0d0"}) {
     EXPECT_THROW(agents::parseCsvRow(bad, "x.csv", 3), ParseError) << bad;
   }
   try {
-    agents::parseCsvRow("s,p,a,0,0,0,0,0,1e99,1,r,0,stuck,0,,", "x.csv", 3);
+    agents::parseCsvRow("s,p,a,0,0,0,0,0,1e99,1,r,0,stuck,0,,,stuck/g1/s1/t0/w0e0/G0e0d0", "x.csv", 3);
     ADD_FAILURE() << "1e99 accepted";
   } catch (const ParseError& e) {
     EXPECT_EQ(std::string(e.what()), "x.csv:3: path_length: expected a length, got '1e99'");
@@ -251,27 +269,43 @@ TEST(ResultsCsvText, DiagnosisFieldsAreCheckedAgainstTheRunAndEachOther) {
     return std::string("accepted");
   };
   // Good rows: a clean pass, a detour, a loop proven endless, a planner's missed route.
-  EXPECT_EQ(error("1,9,0,9,9,goal_reached,0,,,,"), "accepted");
-  EXPECT_EQ(error("1,30,0,30,9,goal_reached,1,detour,,,"), "accepted");
-  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,loop,56,2,58"), "accepted");
-  EXPECT_EQ(error("0,12,0,12,9,no_path,0,missed_route,,,"), "accepted");
-  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,spiral,56,,"),
+  EXPECT_EQ(error("1,9,0,9,9,goal_reached,0,,,,,"), "accepted");
+  EXPECT_EQ(error("1,30,0,30,9,goal_reached,1,detour,,,,detour/g4-7/s2-3/t1/w0e2"), "accepted");
+  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,loop,56,2,58,loop2/g4-7/s8-15/t2/w1e0"), "accepted");
+  EXPECT_EQ(error("0,12,0,12,9,no_path,0,missed_route,,,,missed_route/g1/s8-15/t1/w0e1/G0e2d3"), "accepted");
+  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,spiral,56,,,"),
             "x.csv:4: diagnosis: expected one of stuck, loop, confined, wandering, detour, missed_route, no_route, "
             "reported or nothing, got 'spiral'");
-  EXPECT_EQ(error("1,9,0,9,9,goal_reached,0,loop,0,2,"),
+  EXPECT_EQ(error("1,9,0,9,9,goal_reached,0,loop,0,2,,"),
             "x.csv:4: diagnosis: 'loop' does not fit pass 1, soft_failure 0 (a clean pass has none, a soft failure is "
             "a detour)");
-  EXPECT_NE(error("0,300,0,80,9,budget_exhausted,0,,,,").find("diagnosis: '' does not fit pass 0"), std::string::npos);
-  EXPECT_NE(error("1,30,0,30,9,goal_reached,1,loop,0,2,").find("a soft failure is a detour"), std::string::npos);
-  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,loop,56,,"),
+  EXPECT_NE(error("0,300,0,80,9,budget_exhausted,0,,,,,").find("diagnosis: '' does not fit pass 0"), std::string::npos);
+  EXPECT_NE(error("1,30,0,30,9,goal_reached,1,loop,0,2,,").find("a soft failure is a detour"), std::string::npos);
+  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,loop,56,,,"),
             "x.csv:4: loop_period: a loop has a period of at least 2, and only a loop has one");
-  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,stuck,56,2,"),
+  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,stuck,56,2,,"),
             "x.csv:4: loop_period: a loop has a period of at least 2, and only a loop has one");
-  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,confined,56,,60"), "x.csv:4: endless_step: only a loop is endless");
-  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,stuck,-1,,"),
+  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,confined,56,,60,"), "x.csv:4: endless_step: only a loop is endless");
+  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,stuck,-1,,,"),
             "x.csv:4: diagnosis_step: expected a whole number of at least 0, got '-1'");
-  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,stuck,301,,"),
+  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,stuck,301,,,"),
             "x.csv:4: diagnosis_step: a step after the run's last (300)");
+  // The signature: of a failed or soft-failed run only, well formed, and beginning with what the diagnosis and the
+  // reason say.
+  EXPECT_EQ(error("0,12,0,12,9,no_path,0,missed_route,,,,"),
+            "x.csv:4: signature: a failed or soft-failed run has a signature, a clean pass none");
+  EXPECT_EQ(error("1,9,0,9,9,goal_reached,0,,,,,detour/g4-7/s2-3/t1/w0e2"),
+            "x.csv:4: signature: a failed or soft-failed run has a signature, a clean pass none");
+  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,loop,56,2,58,loop3-4/g4-7/s8-15/t2/w1e0"),
+            "x.csv:4: signature: 'loop3-4/g4-7/s8-15/t2/w1e0' does not begin with 'loop2/', as its diagnosis and reason "
+            "say");
+  EXPECT_EQ(error("0,12,0,12,9,collision,0,reported,,,,no_path/g16-31/s1/t0/w0e0"),
+            "x.csv:4: signature: 'no_path/g16-31/s1/t0/w0e0' does not begin with 'collision/', as its diagnosis and reason "
+            "say");
+  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,stuck,56,,,stuck/g4-7/s8-15"),
+            "x.csv:4: signature: expected HOW/gG/sS/tT/wOeE[/GOeEdD], got 'stuck/g4-7/s8-15'");
+  EXPECT_EQ(error("0,300,0,80,9,budget_exhausted,0,stuck,56,,,stuck/g4-7/s8-15/t1/w3e2"),
+            "x.csv:4: signature: a bad site shape 'w3e2'");
 }
 
 TEST_F(ResultsFileTest, RewriteKeepsTheGivenOrder) {
@@ -388,6 +422,7 @@ TEST(ResultsCsvText, RowsWrittenAndParsedInOnePassMatchTheFieldByFieldWay) {
       r.diagnosis_step = 0;
       r.loop_period = 2147483647;
       r.endless_step = 300;
+      r.signature = "loop17+/gx/sx/t4/w2e2";
     }
     rows.push_back(r);
   }

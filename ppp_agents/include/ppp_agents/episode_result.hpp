@@ -32,6 +32,8 @@ struct EpisodeResult {
   int diagnosis_step = -1;  ///< Diagnosis::step (-1: none; an empty field).
   int loop_period = 0;      ///< Diagnosis::period (0: not a loop; an empty field).
   int endless_step = -1;    ///< Diagnosis::endless_step (-1: not proven endless; an empty field).
+  /// How and where the run failed (failureSignature(); docs/reference/signatures.md), "" for a clean pass.
+  std::string signature;
   /// Planner agents played by an AgentLane: every action of the run in order (not in results.csv; the simulator
   /// keeps them in planner_moves.csv so the report can show the run); empty otherwise.
   std::vector<Action> actions;
@@ -41,7 +43,7 @@ struct EpisodeResult {
 };
 
 /// The results.csv header: set,problem,agent,run,seed,pass,steps,bumps,path_length,optimal_length,reason,
-/// soft_failure,diagnosis,diagnosis_step,loop_period,endless_step.
+/// soft_failure,diagnosis,diagnosis_step,loop_period,endless_step,signature.
 const std::vector<std::string>& resultCsvHeader();
 
 /// A result as CSV fields in header order (pass and soft_failure as 1/0; a missing diagnosis step, period or

@@ -8,6 +8,7 @@
 #include "ppp_agents/episode_result.hpp"
 #include "ppp_core/episode.hpp"
 #include "ppp_core/episode_options.hpp"
+#include "ppp_core/failure_signature.hpp"
 #include "ppp_core/grid.hpp"
 #include "ppp_core/problem_set.hpp"
 #include "ppp_core/window_atlas.hpp"
@@ -28,6 +29,8 @@ struct PreparedSet {
   std::vector<int> budgets;      ///< Move budget of each PPP's episodes (episodeBudget()).
   /// Each PPP's WindowAtlas at the experiment's sensor range, when it fits kMaxWindowAtlasBytes.
   std::vector<std::optional<WindowAtlas>> windows;
+  /// What each PPP's failure signatures read (distances on the robot's motion grid, obstacle sides).
+  std::vector<SignatureMap> signature_maps;
 };
 
 /// The most actions any episode of `sets` may take (its budget, or its action limit when stays or bumps are free).
@@ -47,18 +50,23 @@ inline const WindowAtlas* windowsOf(const PreparedSet& set, int problem) {
 
 /// The results.csv row of one run of `agent` on PPP `problem` of `set` (a soft failure under its rules), with
 /// its diagnosis (diagnoseRun() of the outcome's cells, the agent's decision `states` when it reported them, and
-/// the `reported_kind` it gave for its own ending).
+/// the `reported_kind` it gave for its own ending) and its failure signature.
 EpisodeResult episodeResult(const PreparedSet& set, int problem, const std::string& agent, int run,
                             std::uint64_t seed, const EpisodeOutcome& outcome,
                             const std::vector<std::uint64_t>& states = {}, const char* reported_kind = nullptr);
+
+/// Sets `d` as the diagnosis of `result`, a run on PPP `problem` of `set` whose robot stood on `cells`, with the
+/// failure signature it makes there.
+void setDiagnosisAndSignature(const PreparedSet& set, int problem, const Diagnosis& d, const std::vector<Cell>& cells,
+                              EpisodeResult* result);
 
 /// prepareSet() of a set holding `problem` alone, as PPP `id` of set `name` (one PPP replayed or judged).
 /// @throws InvalidArgument as prepareSet().
 PreparedSet prepareSingle(const std::string& name, const std::string& id, const Problem& problem,
                           const EpisodeOptions& episode);
 
-/// A set ready to play under `episode`'s rules: its grids, optima (optimumOf()), budgets and window atlases at
-/// the sensor range.
+/// A set ready to play under `episode`'s rules: its grids, optima (optimumOf()), budgets, window atlases at
+/// the sensor range and signature maps.
 /// @throws InvalidArgument naming "sets" for a PPP unsolvable for the robot (4-connected, with its body).
 PreparedSet prepareSet(const std::string& name, ProblemSet set, const EpisodeOptions& episode);
 

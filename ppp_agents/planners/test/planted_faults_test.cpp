@@ -110,6 +110,49 @@ TEST(PlantedFaultsTest, ReplanLimitGivesUpOnTheRouteOneOverItsLimit) {
   EXPECT_TRUE(planner.plan(test::mapPicture(drawn), first[1], goal).empty());
 }
 
+TEST(PlantedFaultsTest, SeveralFaultsEachFireOnTheirOwnMapAndPlanTheOpenMapAsNone) {
+  // Each fault's map of the tests above fails the planner with that fault and any others planted beside it; on the
+  // open map every combination still plans the optimistic route.
+  const Picture open = {"S.....", "......", "......", "......", "......", ".....G"};
+  const Picture back_left = {"GS..", "##.#", "...."};
+  const Picture pocket = {"S..", "...", ".#G"};
+  const Picture diagonal = {"S...", "....", "..#.", "...G"};
+  const Picture detour = {"S#G", "..."};
+  for (const std::string faults : {"west_edge,dead_end_filter,search_horizon", "goal_clearance,west_edge,no_backtrack",
+                                   "search_horizon,expansion_budget,open_list_cap"}) {
+    EXPECT_EQ(plan(faults, open), optimisticPlan(open)) << faults;
+  }
+  EXPECT_TRUE(plan("west_edge,dead_end_filter,search_horizon", back_left).empty());
+  EXPECT_TRUE(plan("west_edge,dead_end_filter,search_horizon", pocket).empty());
+  EXPECT_EQ(plan("west_edge,search_horizon", pocket), optimisticPlan(pocket));  // neither minds the pocket
+  EXPECT_TRUE(plan("goal_clearance,west_edge,no_backtrack", diagonal).empty());
+  EXPECT_TRUE(plan("goal_clearance,west_edge,no_backtrack", back_left).empty());
+  EXPECT_TRUE(plan("west_edge,search_horizon", detour, 4).empty());  // the one limit is the horizon's
+  EXPECT_EQ(plan("west_edge,search_horizon", detour, 5).size(), 5u);
+}
+
+TEST(PlantedFaultsTest, ListsOfFaultsAreCheckedNameByName) {
+  EXPECT_EQ(plantedFaultList("west_edge, no_backtrack,replan_limit"),
+            (std::vector<std::string>{"west_edge", "no_backtrack", "replan_limit"}));
+  const auto refusal = [](const std::string& list, int limit = 0) {
+    try {
+      FaultyPlanner(list, limit);
+    } catch (const InvalidArgument& e) {
+      return e.name() + ": " + e.what();
+    }
+    return std::string("planted");
+  };
+  EXPECT_NE(refusal("west_edge,no_such_fault").find("unknown fault 'no_such_fault'"), std::string::npos);
+  EXPECT_NE(refusal("west_edge,west_edge").find("fault 'west_edge' is planted twice"), std::string::npos);
+  EXPECT_NE(refusal("west_edge,,no_backtrack").find("an empty fault"), std::string::npos);
+  EXPECT_NE(refusal("").find("an empty fault"), std::string::npos);
+  EXPECT_NE(refusal("goal_clearance,dead_end_filter").find("dead_end_filter cannot be planted with goal_clearance"),
+            std::string::npos);
+  EXPECT_NE(refusal("search_horizon,expansion_budget", 40).find("limit"), std::string::npos);
+  EXPECT_EQ(refusal("search_horizon,west_edge", 40), "planted");
+  EXPECT_EQ(refusal("search_horizon,expansion_budget"), "planted");
+}
+
 TEST(PlantedFaultsTest, BadFaultsAndLimitsAreRefusedByName) {
   try {
     FaultyPlanner("no_such_fault", 0);

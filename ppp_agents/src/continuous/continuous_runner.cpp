@@ -82,7 +82,8 @@ EpisodeResult continuousResult(const PreparedSet& set, int problem, const std::s
   r.optimal_length = optimal;
   r.soft_failure = isSoftFailure(r.passed, r.path_length, r.optimal_length, options.soft_failure_ratio);
   r.reason = outcome.reason;
-  setDiagnosis(diagnoseContinuousRun(r.passed, r.soft_failure, r.reason, outcome.cells), &r);
+  setDiagnosisAndSignature(set, problem, diagnoseContinuousRun(r.passed, r.soft_failure, r.reason, outcome.cells),
+                           outcome.cells, &r);
   return r;
 }
 

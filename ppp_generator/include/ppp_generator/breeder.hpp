@@ -1,6 +1,8 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "ppp_core/dpa.hpp"
@@ -19,6 +21,7 @@ struct Individual {
   std::uint64_t grid_hash = 0;  ///< Hash of the grid's cells, to find duplicates quickly.
   double value = 0;    ///< Raw fitness value.
   double score = 0;    ///< Fitness oriented so that larger is fitter (may carry a tie-break, see FitnessScore).
+  std::map<std::string, int> signatures;  ///< A panel fitness: failed runs per failure signature.
 };
 
 /// The variation operators and the evaluation shared by the genetic algorithm and the MAP-Elites archive:

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,7 @@ struct FailureEstimate {
   double failure_rate = 0;  ///< Mean over the panel of each agent's share of failed runs (soft failures included).
   double budget_used = 0;   ///< Mean share of the budget the panel's runs used.
   double regret = 0;        ///< Mean over the panel of each agent's mean regret (runRegret()).
+  std::map<std::string, int> signatures{};  ///< Failed and soft-failed runs per failure signature.
 };
 
 /// What a panel's runs on one PPP came to, per panel agent.

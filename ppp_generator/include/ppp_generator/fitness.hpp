@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,8 @@ struct FitnessScore {
   double value = 0;  ///< The raw fitness value (e.g. a failure rate).
   double score = 0;  ///< Larger is fitter: the value oriented, plus any documented tie-break.
   double failure_rate = 0;  ///< A panel fitness: the share of the panel's runs that failed (as `failure`'s value).
+  /// A panel fitness: its failed and soft-failed runs per failure signature (docs/reference/signatures.md).
+  std::map<std::string, int> signatures{};
 };
 
 /// Scores many valid PPPs at once, in input order (`grids[i]` is the decoded grid of `problems[i]`): the

@@ -23,6 +23,8 @@ constexpr const char* kCrowdingReplacement = "crowding";
 constexpr const char* kNoArchive = "none";
 /// MAP-Elites: the set is the elites of an archive binned over taxonomic characters.
 constexpr const char* kMapElitesArchive = "map_elites";
+/// A hunt's archive of failures by signature: the set is one PPP per way the panel fails, picked for difference.
+constexpr const char* kSignatureArchive = "signatures";
 /// Largest crowding window (a window beyond the population is the whole pool).
 constexpr int kMaxCrowdingWindow = 100000;
 /// Most runs per evaluation of a panel fitness (failure, regret).
@@ -65,7 +67,7 @@ struct GeneratorOptions {
   std::string agents_file;          ///< Panel fitness: agents file the names resolve in ("": built-in types).
   int runs_per_eval = 20;           ///< Panel fitness: episodes per agent per evaluated PPP.
   int round_size = kFailureBatchSize;  ///< Panel fitness: matings per round, their children scored together.
-  std::string archive = kNoArchive; ///< kNoArchive or kMapElitesArchive.
+  std::string archive = kNoArchive; ///< kNoArchive, kMapElitesArchive or kSignatureArchive.
   std::vector<std::string> features{"turns", "obstacles"};  ///< MAP-Elites: characters binned (two or more).
   int bins = 8;                     ///< MAP-Elites: bins per feature.
   std::string initial_pool;         ///< Directory of .ppp files the initial pool starts from ("": all random).

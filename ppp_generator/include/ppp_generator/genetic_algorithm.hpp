@@ -6,6 +6,7 @@
 #include "ppp_core/rng.hpp"
 #include "ppp_core/stop.hpp"
 #include "ppp_generator/breeder.hpp"
+#include "ppp_generator/signature_archive.hpp"
 #include "ppp_generator/fitness.hpp"
 #include "ppp_generator/generator_options.hpp"
 
@@ -19,6 +20,7 @@ struct GenerationStats {
   long children_pruned = 0;    ///< Children discarded by Wei's pruning (goal unreachable).
   long children_duplicate = 0; ///< Valid children discarded because their grid is already in the pool.
   long children_rejected = 0;  ///< Valid children that lost to the member they would have replaced (crowding).
+  long children_novel = 0;     ///< archive signatures: children that showed a failure signature new to the archive.
   long initial_redraws = 0;    ///< Unsolvable or repeated random chromosomes redrawn for the initial pool.
 };
 
@@ -37,6 +39,12 @@ using ProgressCallback = std::function<void(long done, long total, double best_v
 /// drawn from the pool as it was before the round, and the children enter in mating order afterwards (under
 /// `tournament` replacement into the tournament slots drawn before the round, so a later mating of the round
 /// may replace an earlier one's child).
+/// `archive: signatures` (a panel fitness): every scored PPP is offered to a SignatureArchive, and a child that
+/// shows a failure signature the archive did not hold enters the pool whatever its score (under crowding it
+/// replaces its nearest rival), so the search keeps each new way of failing as a stepping stone. Half the matings
+/// (a coin per mating) take both parents from the archive instead, each an elite drawn uniformly over its
+/// signatures and its hardest passed PPP: every known way of failing is explored alike, and the passed PPP climbs
+/// towards the failures that easier ones hide. The set is drawn from the archive (SignatureArchive::diverseSet()).
 /// Deterministic for a seed.
 class GeneticAlgorithm {
  public:
@@ -48,16 +56,20 @@ class GeneticAlgorithm {
   GeneticAlgorithm& operator=(const GeneticAlgorithm&) = delete;  ///< As the copy constructor.
 
   /// Builds the initial pool (options.initial_pool's PPPs first, then random ones) and runs every mating event;
-  /// returns the final pool in pool order.
+  /// returns the final pool in pool order, or under `archive: signatures` the archive's diverseSet() of
+  /// `population` PPPs (the final pool filling what the archive leaves).
   /// @throws Interrupted when `stop` says stop (asked before each PPP of the initial pool and each round).
   std::vector<Individual> run(const ProgressCallback& progress = {}, long progress_interval = 1000,
                               const StopCheck& stop = {});
 
   /// Counters of the last run().
   const GenerationStats& stats() const { return stats_; }
+  /// The failures of the last run() by signature (empty unless `archive: signatures`).
+  const SignatureArchive& signatureArchive() const { return signatures_; }
 
  private:
   std::vector<Individual> initialPool(const StopCheck& stop);
+  bool keepsSignatures() const;
   void replace(std::vector<Individual>* pool, const std::vector<int>& tournament, Individual* child, int* replaced);
 
   GeneratorOptions options_;
@@ -65,6 +77,7 @@ class GeneticAlgorithm {
   Rng rng_;
   Breeder breeder_;
   GenerationStats stats_;
+  SignatureArchive signatures_;
 };
 
 /// Draws up to `count` distinct pool indices below `size` (a partial Fisher-Yates shuffle of `order`).

@@ -28,6 +28,7 @@ struct PanelEvaluation {
   std::map<std::string, int> reasons;   ///< Failed runs per reason (budget_exhausted, soft_failure, ...).
   std::map<std::string, int> diagnoses; ///< Failed and soft-failed runs per diagnosis (loop, detour, ...).
   int endless = 0;                      ///< Of the loops, those proven endless (EpisodeResult::endless_step).
+  std::map<std::string, int> signatures;  ///< Failed and soft-failed runs per failure signature.
 };
 
 /// One evaluation request of a hunt, played through agent lanes (the simulator node's ~evaluate): per panel agent

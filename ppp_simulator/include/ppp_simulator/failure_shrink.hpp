@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@ struct RunsOutcome {
   int failed = 0;     ///< Of them, failed or soft-failed (diagnosed).
   std::array<int, diagnosis::kKindCount> kinds{};  ///< Failed and soft-failed runs per diagnosis kind.
   int endless = 0;    ///< Of the loops, those proven endless (a lockstep planner's; never a built-in agent's).
+  std::map<std::string, int> signatures;  ///< Failed and soft-failed runs per failure signature.
 };
 
 /// What the runs `rows` (one agent's on one PPP, as results.csv has them) came to.

@@ -108,6 +108,11 @@ TEST_F(HuntTest, ASilentPlannerFailsEveryRunWithItsReason) {
     EXPECT_EQ(e.diagnoses, std::vector<std::string>{"reported"});
     EXPECT_EQ(e.diagnosis_counts, std::vector<std::uint32_t>{2u});
     EXPECT_EQ(e.endless_loops, 0u);
+    // Both runs fail the same way, on the start: one signature, named by the reason, no move from the start.
+    ASSERT_EQ(e.signatures.size(), 1u);
+    EXPECT_EQ(e.signatures[0].rfind("planner_timeout/", 0), 0u) << e.signatures[0];
+    EXPECT_NE(e.signatures[0].find("/s0/"), std::string::npos) << e.signatures[0];
+    EXPECT_EQ(e.signature_counts, std::vector<std::uint32_t>{2u});
   }
 }
 
