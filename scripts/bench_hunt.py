@@ -230,10 +230,9 @@ def attribute(out, planner, hunted_set, hunted_rows, config_path, log):
             name = row["file"]
             reveals = [fault for fault in faults if name in failed[fault] and name not in failed["none"]]
             evaluation = order.get(grid_hash(os.path.join(directory, name)))
-            for fault in reveals:
-                if evaluation is not None and (fault not in first or evaluation < first[fault]):
+            for fault in reveals:  # the earliest evaluation of a PPP revealing it (None: not in the log)
+                if fault not in first or (evaluation is not None and (first[fault] is None or evaluation < first[fault])):
                     first[fault] = evaluation
-                first.setdefault(fault, None)
             writer.writerow([name, "fail" if name in failed["none"] else "pass"] +
                             ["fail" if name in failed[fault] else "pass" for fault in faults] +
                             [" ".join(reveals), evaluation or ""])
@@ -268,17 +267,34 @@ def run(route, planner, work, evaluations, shipped):
 
 
 def markdown_table(jsonl):
-    """The figures of a hunt_power.jsonl as BENCHMARKS.md's table, then the zoo's totals per route."""
+    """The figures of a hunt_power.jsonl as BENCHMARKS.md's tables: the single faults and MRPT's planner, the
+    three-fault sample with its recall, then the totals per route."""
     rows = [json.loads(line) for line in open(jsonl)]
+
+    def first(r):
+        return "none" if r["first_failing_evaluation"] is None else "%d, %.1f s" % (r["first_failing_evaluation"],
+                                                                                 r["first_failing_seconds"])
+
     lines = ["| planner | route | broken | hunted set fails | `turns` fails | evaluations | first failing: evaluation, "
-             "seconds | failing PPPs per 1,000 evaluations | distinct traps | wall time |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+             "seconds | failing PPPs per 1,000 evaluations | distinct traps | signatures | wall time |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        first = "none" if r["first_failing_evaluation"] is None else "%d, %.1f s" % (r["first_failing_evaluation"],
-                                                                                    r["first_failing_seconds"])
-        lines.append("| %s | %s | %s | %.0f %% | %.0f %% | %d | %s | %.1f | %d | %.0f s |" % (
+        if len(faults_of(r["planner"])) > 1:
+            continue
+        lines.append("| %s | %s | %s | %.0f %% | %.0f %% | %d | %s | %.1f | %d | %d | %.0f s |" % (
             r["planner"], r["route"], "yes" if r["broken"] else "no", 100 * r["hunted_failure"],
-            100 * r["reference_failure"], r["evaluations"], first, r["failing_per_1000"], r["traps"], r["seconds"]))
+            100 * r["reference_failure"], r["evaluations"], first(r), r["failing_per_1000"], r["traps"],
+            r.get("signatures", 0), r["seconds"]))
+    lines += ["", "| planner (three faults) | route | recall | revealed | first hunted PPP revealing each fault: "
+              "evaluation | hunted set fails | failing PPPs per 1,000 evaluations | distinct traps | signatures |",
+              "|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        if len(faults_of(r["planner"])) < 2:
+            continue
+        firsts = ", ".join("%s %s" % (f, "none" if e is None else e) for f, e in r["first_per_fault"].items())
+        lines.append("| %s | %s | %d of 3 | %s | %s | %.0f %% | %.1f | %d | %d |" % (
+            r["planner"].replace("+", ", "), r["route"], round(3 * r["recall"]), ", ".join(r["revealed"]) or "none",
+            firsts, 100 * r["hunted_failure"], r["failing_per_1000"], r["traps"], r["signatures"]))
     lines.append("")
     for route in ROUTES:
         zoo = [r for r in rows if r["route"] == route and r["planner"] in ZOO_FAULTS]
@@ -288,6 +304,59 @@ def markdown_table(jsonl):
             lines.append("%s over the zoo: %d of %d faults broken, %.1f failing PPPs per 1,000 evaluations, %d traps" % (
                 route, sum(r["broken"] for r in zoo), len(zoo), 1000 * found / evaluations,
                 sum(r["traps"] for r in zoo)))
+    for route in ROUTES:
+        sample = [r for r in rows if r["route"] == route and len(faults_of(r["planner"])) > 1]
+        if sample:
+            revealed = sum(len(r["revealed"]) for r in sample)
+            found = sum(r["failing_per_1000"] * r["evaluations"] / 1000 for r in sample)
+            evaluations = sum(r["evaluations"] for r in sample)
+            lines.append("%s over the three-fault sample: fault recall %.0f %% (%d of %d faults revealed), %.1f failing "
+                         "PPPs per 1,000 evaluations, %d traps" % (route, 100.0 * revealed / (3 * len(sample)), revealed,
+                                                                  3 * len(sample), 1000 * found / evaluations,
+                                                                  sum(r["traps"] for r in sample)))
+    for r in rows:
+        if r["planner"] == "mrpt":
+            lines.append("mrpt, %s: the hunted set's failed runs by diagnosis: %s" % (
+                r["route"], ", ".join("%s %d" % kv for kv in sorted(r.get("diagnoses", {}).items())) or "none"))
+    return "\n".join(lines)
+
+
+def separation(work):
+    """How well failure signatures tell the zoo's faults apart: each single-fault planner played once on the
+    `turns` set and 1,000 random solvable PPPs; per fault its failed runs, their distinct signatures, and the share
+    of its failed runs whose signature no other fault's runs showed; then per pair of faults the share of the
+    first's failed runs whose signature the second also showed."""
+    out = os.path.join(work, "separation")
+    shutil.rmtree(out, ignore_errors=True)
+    config = {"seed": 1, "runs": 1, "budget": 300, "sensor_range": 2,
+              "agents": [agent_entry(f, f) for f in ZOO_FAULTS],
+              "sets": [{"name": "random", "generator": {"fitness": "random", "population": 1000, "matings": 0,
+                                                          "seed": 5}},
+                       {"name": "turns", "generator": {"fitness": "turns", "matings": 10000, "seed": 1}}]}
+    os.makedirs(work, exist_ok=True)
+    with open(out + ".yaml", "w") as f:
+        yaml.safe_dump(config, f, sort_keys=False)
+    roslaunch("experiment.launch", ["output_dir:=" + out, "config:=" + out + ".yaml"], out + ".log")
+    shown = collections.defaultdict(collections.Counter)  # fault -> signature -> failed runs
+    for r in read_csv(os.path.join(out, "results.csv")):
+        if r["pass"] == "0":
+            shown[r["agent"]][r["signature"]] += 1
+    lines = ["| fault | failed runs | distinct signatures | runs whose signature no other fault showed |",
+             "|---|---:|---:|---:|"]
+    for fault in ZOO_FAULTS:
+        runs = sum(shown[fault].values())
+        alone = sum(n for sig, n in shown[fault].items() if not any(sig in shown[o] for o in ZOO_FAULTS if o != fault))
+        lines.append("| %s | %d | %d | %s |" % (fault, runs, len(shown[fault]),
+                                              "%.0f %%" % (100.0 * alone / runs) if runs else "-"))
+    lines += ["", "Share of the row fault's failed runs whose signature the column fault also showed:", "",
+              "| | " + " | ".join(ZOO_FAULTS) + " |", "|---|" + "---:|" * len(ZOO_FAULTS)]
+    for a in ZOO_FAULTS:
+        runs = sum(shown[a].values())
+        cells = []
+        for b in ZOO_FAULTS:
+            shared = sum(n for sig, n in shown[a].items() if sig in shown[b])
+            cells.append("" if a == b else ("%.0f %%" % (100.0 * shared / runs) if runs else "-"))
+        lines.append("| %s | %s |" % (a, " | ".join(cells)))
     return "\n".join(lines)
 
 
@@ -297,11 +366,16 @@ def main():
     parser.add_argument("--routes", default=",".join(ROUTES), help="comma-separated (default: all)")
     parser.add_argument("--work", default="/tmp/bench-hunt", help="where the runs are kept")
     parser.add_argument("--table", metavar="JSONL", help="print the table of a finished run's hunt_power.jsonl and exit")
+    parser.add_argument("--separation", action="store_true",
+                        help="measure how well failure signatures tell the zoo's faults apart, print it and exit")
     parser.add_argument("--config", default=os.path.join(ROOT, "config", "planner_hunt.yaml"),
                         help="the hunt config of the shipped route (default: config/planner_hunt.yaml)")
     args = parser.parse_args()
     if args.table:
         print(markdown_table(args.table))
+        return 0
+    if args.separation:
+        print(separation(args.work))
         return 0
     routes = args.routes.split(",")
     # Until the shipped file changes, today's hunt is the shipped one: run once, reported for both.
