@@ -9,6 +9,7 @@ set(PPP_REPORT_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/report/svg_plot.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/report/episode_animation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/report/continuous_animation.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/report/distinct_failures.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/report/report.cpp
 )
 # The experiment: its config, sets, runs, results file and graph, and its report made with the report library.

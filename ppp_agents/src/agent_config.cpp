@@ -378,6 +378,12 @@ std::string replayFlags(const AgentConfig& config, const EpisodeOptions& episode
   return episode_flags.empty() ? flags : flags + " " + episode_flags;
 }
 
+std::string replayCommand(const std::string& file, const AgentConfig& config, const EpisodeOptions& episode,
+                          std::uint64_t seed) {
+  return "ppp replay " + shellWord(file) + " " + replayFlags(config, episode) + " --seed " + std::to_string(seed) +
+         " -o path.png";
+}
+
 bool isPlanner(const AgentConfig& config) { return config.type == kPlannerType; }
 
 bool playsContinuously(const AgentConfig& config, const EpisodeOptions& options) {

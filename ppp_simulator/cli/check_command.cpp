@@ -93,9 +93,8 @@ int runCheck(const CheckFlags& f) {
   job.play = [agent = agent, episode = episode](const Problem& problem, const std::vector<std::uint64_t>& seeds) {
     return simulator::playRuns(problem, agent, episode, seeds);
   };
-  const std::string flags = agents::replayFlags(agent, episode);
-  job.replay = [flags](const simulator::CorpusCase& c, std::uint64_t seed) {
-    return "ppp replay " + shellWord(c.file) + " " + flags + " --seed " + std::to_string(seed) + " -o path.png";
+  job.replay = [agent = agent, episode = episode](const simulator::CorpusCase& c, std::uint64_t seed) {
+    return agents::replayCommand(c.file, agent, episode, seed);
   };
   return simulator::runCheck(job, stopOnSignals(), std::cout);
 }

@@ -83,6 +83,9 @@ int runShrink(const ShrinkFlags& f) {
   job.results = task.results;
   if (f.command->count("--runs") > 0) job.results_runs = f.runs;
   job.units = task.by;
+  job.replay = [agent = job.judging.agent, episode = job.judging.episode](const std::string& file, std::uint64_t seed) {
+    return agents::replayCommand(file, agent, episode, seed);
+  };
   try {
     return simulator::runShrinkJob(job, stopOnSignals(), std::cout, std::cerr);
   } catch (const InvalidArgument& e) {

@@ -182,7 +182,8 @@ void runReplay(const ReplayFlags& f) {
   }
   // The run as results.csv has it, diagnosis included.
   const agents::PreparedSet set = agents::prepareSingle("replay", "replayed", problem, options);
-  const Diagnosis diagnosis = agents::diagnosisOf(agents::episodeResult(set, 0, config.name, 0, f.seed, outcome));
+  const agents::EpisodeResult row = agents::episodeResult(set, 0, config.name, 0, f.seed, outcome);
+  const Diagnosis diagnosis = agents::diagnosisOf(row);
   const std::vector<Cell> cycle = cycleCells(diagnosis, outcome.cells);
   if (!animated) writeProblemPng(problem, outcome.path, f.output, PictureOptions{}, cycle);
   std::cout << config.name << " with seed " << f.seed << ": " << (outcome.passed ? "passed" : "failed") << " ("
@@ -191,6 +192,7 @@ void runReplay(const ReplayFlags& f) {
   if (*diagnosis.kind != '\0') {
     std::cout << "diagnosis: " << describeDiagnosis(diagnosis, outcome.reason, static_cast<int>(cycle.size()))
               << (cycle.empty() || animated ? "" : " (the cycle's cells are pink)") << "\n";
+    std::cout << "signature: " << row.signature << "\n";
   }
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/text_format.hpp"
 #include "ppp_msgs/graph_names.h"
 #include "ppp_msgs/node_parameters.h"
 #include "ppp_simulator/experiment_config.hpp"
@@ -35,9 +36,13 @@ int runShrinkNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh) {
   } catch (const InvalidArgument& e) {
     throw ppp_msgs::parameterError(e);  // "~agent: ..."
   }
-  const ShrinkJob job = shrinkJobOf(
+  ShrinkJob job = shrinkJobOf(
       task, agent, config.episode,
       remoteRunsPlayer(nh, ppp_msgs::topics::kEvaluator, agent.name, config.episode, kServiceWaitSeconds));
+  job.replay = [task](const std::string& file, std::uint64_t) {  // a shrunk PPP records its seeds: check plays them
+    return "roslaunch launch/check.launch corpus:=" + shellWord(file) + " agent:=" + shellWord(task.agent) +
+           " config:=" + shellWord(task.config);
+  };
   return runShrinkJob(job, [] { return !ros::ok(); }, std::cout, std::cerr);
 }
 

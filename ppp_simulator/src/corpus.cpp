@@ -15,6 +15,14 @@ namespace simulator {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+std::string trapNameOfShape(const std::string& shape) { return "trap_" + formatHex64(nameHash(shape)); }
+
+}  // namespace
+
+std::string trapName(const Problem& problem) { return trapNameOfShape(obstacleShape(decodeGrid(problem))); }
+
 Corpus::Corpus(std::string dir) : dir_(std::move(dir)) {
   std::error_code error;
   if (!fs::exists(dir_, error)) return;
@@ -33,9 +41,9 @@ CorpusAddition Corpus::add(const Problem& problem) {
   const std::string shape = obstacleShape(decodeGrid(problem));
   const auto found = files_.find(shape);
   if (found != files_.end()) return CorpusAddition{found->second, false};
-  const std::string hash = formatHex64(nameHash(shape));
-  std::string name = "trap_" + hash;
-  for (int k = 2; names_.count(name) > 0; ++k) name = "trap_" + hash + "_" + std::to_string(k);
+  const std::string trap = trapNameOfShape(shape);
+  std::string name = trap;
+  for (int k = 2; names_.count(name) > 0; ++k) name = trap + "_" + std::to_string(k);
   std::error_code error;
   if (!fs::create_directories(dir_, error) && error) throw IoError(dir_, "cannot create it: " + error.message());
   const std::string file = (fs::path(dir_) / (name + ".ppp")).string();

@@ -16,6 +16,7 @@
 #include "ppp_core/text_file.hpp"
 #include "ppp_core/text_format.hpp"
 #include "ppp_generator/problem_set.hpp"
+#include "ppp_simulator/report/distinct_failures.hpp"
 #include "ppp_simulator/shrink_job.hpp"
 
 namespace ppp {
@@ -80,6 +81,26 @@ std::string diagnosisOf(const RunsOutcome& outcome) {
   return "failed";
 }
 
+/// A failed run of a check: its PPP, its seed and its diagnosis.
+struct FailedRun {
+  const CorpusCase* problem;
+  std::uint64_t seed;
+  std::string diagnosis;
+};
+
+/// The check's failed runs grouped by failure signature, one line each with the smallest PPP and its replay.
+void writeDistinctFailures(const CheckJob& job, const FailureGrouping& grouping, const std::vector<FailedRun>& runs,
+                           std::ostream& out) {
+  const std::vector<DistinctFailure> kinds = grouping.groups();
+  out << kinds.size() << " distinct failure" << (kinds.size() == 1 ? "" : "s") << " of " << job.task.agent
+      << " by failure signature (docs/reference/signatures.md):\n";
+  for (const DistinctFailure& kind : kinds) {
+    const FailedRun& run = runs[kind.smallest];
+    out << distinctFailureLine(kind, "run", run.diagnosis, run.problem->name, job.replay(*run.problem, run.seed))
+        << "\n";
+  }
+}
+
 }  // namespace
 
 std::vector<CorpusCase> readCorpusCases(const std::string& corpus, std::uint64_t seed, int runs) {
@@ -120,8 +141,11 @@ int runCheck(const CheckJob& job, const StopCheck& stop, std::ostream& out) {
   if (!job.task.junit.empty()) checkWritable(job.task.junit);
   std::vector<CaseVerdict> verdicts;
   std::vector<std::string> failing;
+  FailureGrouping grouping;
+  std::vector<FailedRun> failed_runs;
   for (const CorpusCase& c : cases) {
     CaseVerdict verdict;
+    const int obstacle_cells = decodeGrid(c.problem).obstacleCount();
     const double start = steadySeconds();
     for (const std::uint64_t seed : c.seeds) {
       if (stop && stop()) {
@@ -133,6 +157,9 @@ int runCheck(const CheckJob& job, const StopCheck& stop, std::ostream& out) {
       if (outcome.failed == 0) continue;
       verdict.failed.push_back(seed);
       verdict.diagnoses.push_back(diagnosisOf(outcome));
+      const std::string signature = outcome.signatures.empty() ? verdict.diagnoses.back() : outcome.signatures.begin()->first;
+      grouping.add(signature, c.name, obstacle_cells, failed_runs.size());
+      failed_runs.push_back(FailedRun{&c, seed, verdict.diagnoses.back()});
     }
     verdict.seconds = steadySeconds() - start;
     if (verdict.passed()) {
@@ -145,6 +172,7 @@ int runCheck(const CheckJob& job, const StopCheck& stop, std::ostream& out) {
     out << std::flush;
     verdicts.push_back(std::move(verdict));
   }
+  if (!failed_runs.empty()) writeDistinctFailures(job, grouping, failed_runs, out);
   if (!job.task.junit.empty()) {
     const fs::path corpus(job.task.corpus);
     const std::string suite = (corpus.filename().empty() ? corpus.parent_path() : corpus).filename().string();

@@ -203,6 +203,7 @@ void finishExperiment(const ExperimentConfig& config, const std::string& config_
     fs::remove(corpus_log);  // an interrupted step leaves none, not an older run's
     const std::vector<CorpusEntry> entries = addHuntFailuresToCorpora(config, sets, rows, planner_rows, stop, log);
     writeCorpusLog(corpus_log, entries);
+    for (const std::string& line : distinctTrapLines(config, entries)) say(log, line);
   }
 }
 

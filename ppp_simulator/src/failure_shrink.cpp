@@ -112,14 +112,27 @@ void FailureJudging::validate() const {
   }
 }
 
+RunsPlayer FailureJudging::player() const {
+  if (play) return play;
+  return [agent = agent, episode = episode](const Problem& p, const std::vector<std::uint64_t>& s) {
+    return playRuns(p, agent, episode, s);
+  };
+}
+
+std::uint64_t firstFailingSeed(const Problem& problem, const FailureJudging& judging) {
+  const RunsPlayer play = judging.player();
+  for (const std::uint64_t seed : judging.seeds) {
+    if (play(problem, {seed}).failed > 0) return seed;
+  }
+  return judging.seeds.at(0);
+}
+
 ShrunkFailure shrinkFailure(const Problem& problem, const std::string& source, const FailureJudging& judging,
                             ShrinkUnits units, const StopCheck& stop) {
   judging.validate();
   const agents::AgentConfig& agent = judging.agent;
   const std::vector<std::uint64_t>& seeds = judging.seeds;
-  const RunsPlayer play = judging.play ? judging.play : [&](const Problem& p, const std::vector<std::uint64_t>& s) {
-    return playRuns(p, agent, judging.episode, s);
-  };
+  const RunsPlayer play = judging.player();
   ShrunkFailure shrunk;
   shrunk.before = play(problem, seeds);
   if (!shrunk.before.valid) {

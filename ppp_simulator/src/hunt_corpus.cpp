@@ -9,8 +9,10 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/problem.hpp"
 #include "ppp_core/text_file.hpp"
+#include "ppp_core/text_format.hpp"
 #include "ppp_simulator/corpus.hpp"
 #include "ppp_simulator/failure_shrink.hpp"
+#include "ppp_simulator/report/distinct_failures.hpp"
 #include "ppp_simulator/results_file.hpp"
 
 namespace ppp {
@@ -53,7 +55,10 @@ CorpusEntry shrinkInto(Corpus* corpus, const agents::PreparedSet& set, std::size
     entry.descriptors_before = shrunk.descriptors_before;
     entry.descriptors_after = shrunk.descriptors_after;
     entry.trap = fs::path(addition.file).filename().string();
+    entry.trap_file = addition.file;
     entry.added = addition.added;
+    entry.cells_after = shrunk.cells_after;
+    entry.failing_seed = firstFailingSeed(shrunk.problem, judging);
   } catch (const InvalidArgument& e) {
     if (e.name() != "problem") throw;
     entry.note = e.problem();
@@ -70,7 +75,33 @@ std::string entryLine(const CorpusEntry& e) {
          (e.added ? "added as " : "in the corpus already, as ") + e.trap;
 }
 
+/// The command that plays `e`'s trap again: ppp replay on its failing seed for a built-in agent, the check node (on
+/// the trap's recorded seeds) for a planner.
+std::string trapReplay(const CorpusEntry& e, const agents::AgentConfig& agent, const EpisodeOptions& episode) {
+  if (!agents::isPlanner(agent)) return agents::replayCommand(e.trap_file, agent, episode, e.failing_seed);
+  return "roslaunch launch/check.launch corpus:=" + shellWord(e.trap_file) + " agent:=" + shellWord(agent.name) +
+         " config:=EXPERIMENT.yaml";
+}
+
 }  // namespace
+
+std::vector<std::string> distinctTrapLines(const ExperimentConfig& config, const std::vector<CorpusEntry>& entries) {
+  FailureGrouping grouping;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const CorpusEntry& e = entries[i];
+    if (!e.trap.empty()) grouping.add(e.agent + " " + e.trap, e.set + "/" + e.problem, e.cells_after, i);
+  }
+  const std::vector<DistinctFailure> traps = grouping.groups();
+  std::vector<std::string> lines{std::to_string(traps.size()) + " distinct trap" + (traps.size() == 1 ? "" : "s") +
+                                 " in " + std::to_string(grouping.total()) + " shrunk failures (per agent):"};
+  for (DistinctFailure trap : traps) {
+    const CorpusEntry& e = entries[trap.smallest];
+    trap.key = e.trap;
+    lines.push_back(distinctFailureLine(trap, "PPP", e.agent + ", " + e.kept, e.set + "/" + e.problem,
+                                        trapReplay(e, configAgent(config, e.agent), config.episode)));
+  }
+  return lines;
+}
 
 bool hasCorpus(const ExperimentConfig& config) {
   return std::any_of(config.sets.begin(), config.sets.end(), [](const SetSpec& s) { return !s.corpus.empty(); });

@@ -14,6 +14,7 @@
 #include "ppp_core/text_format.hpp"
 #include "ppp_generator/problem_set.hpp"
 #include "ppp_simulator/corpus.hpp"
+#include "ppp_simulator/report/distinct_failures.hpp"
 #include "ppp_simulator/results_file.hpp"
 
 namespace ppp {
@@ -39,11 +40,43 @@ std::string summary(const ShrunkFailure& s, double seconds) {
          std::to_string(s.evaluations) + " candidates, " + formatFixed(seconds * 1000, 1) + " ms)";
 }
 
-/// Adds `shrunk` to `corpus`, if any, and says where it went.
-void addToCorpus(Corpus* corpus, const Problem& shrunk, std::ostream& out) {
-  if (corpus == nullptr) return;
+/// Adds `shrunk` to `corpus`, if any, and says where it went; returns its file there ("" without a corpus).
+std::string addToCorpus(Corpus* corpus, const Problem& shrunk, std::ostream& out) {
+  if (corpus == nullptr) return "";
   const CorpusAddition addition = corpus->add(shrunk);
   out << (addition.added ? "  added to the corpus as " : "  in the corpus already, as ") << addition.file << "\n";
+  return addition.file;
+}
+
+/// One PPP of a set as shrunk: its input file's name, what it kept, the seeds it was judged on and where it was
+/// written.
+struct ShrunkEntry {
+  std::string name;
+  std::string kept;
+  std::vector<std::uint64_t> seeds;
+  std::string file;
+};
+
+/// The set's shrunk PPPs grouped by trap (trapName(): one obstacle shape up to moves and symmetries), one line
+/// each with its smallest PPP and the command that replays its first failing run.
+void writeDistinctTraps(const ShrinkJob& job, const std::vector<Problem>& shrunk,
+                        const std::vector<ShrunkEntry>& entries, std::ostream& out) {
+  FailureGrouping grouping;
+  for (std::size_t i = 0; i < shrunk.size(); ++i) {
+    grouping.add(trapName(shrunk[i]), entries[i].name, decodeGrid(shrunk[i]).obstacleCount(), i);
+  }
+  const std::vector<DistinctFailure> traps = grouping.groups();
+  out << traps.size() << " distinct trap" << (traps.size() == 1 ? "" : "s") << " (one obstacle shape each):\n";
+  for (const DistinctFailure& trap : traps) {
+    const ShrunkEntry& e = entries[trap.smallest];
+    std::string replay;
+    if (job.replay && !e.file.empty()) {
+      FailureJudging judging = job.judging;
+      judging.seeds = e.seeds;
+      replay = job.replay(e.file, firstFailingSeed(shrunk[trap.smallest], judging));
+    }
+    out << distinctFailureLine(trap, "PPP", e.kept, e.name, replay) << "\n";
+  }
 }
 
 /// The name of the directory `path` is (a set's name, as results.csv has it).
@@ -80,6 +113,7 @@ int shrinkSet(const ShrinkJob& job, FailureJudging judging, const FailedRunSeeds
   const ProblemSet set = generator::readProblemSetDirectory(job.input);
   const std::vector<std::string> files = generator::problemSetFiles(job.input);
   std::vector<Problem> shrunk;  // written only once every PPP is done, as a set
+  std::vector<ShrunkEntry> entries;
   for (std::size_t i = 0; i < set.problems.size(); ++i) {
     const std::string name = fs::path(files[i]).filename().string();
     const double start = steadySeconds();
@@ -97,6 +131,7 @@ int shrinkSet(const ShrinkJob& job, FailureJudging judging, const FailedRunSeeds
       out << name << ": " << summary(s, steadySeconds() - start) << "\n" << std::flush;
       setMetadata(&s.problem.metadata, "id", set.ids[i]);  // a corpus's or an imported map's name, as the set's
       shrunk.push_back(s.problem);
+      entries.push_back(ShrunkEntry{name, s.kept.text(), judging.seeds, ""});
     } catch (const InvalidArgument& e) {
       if (e.name() != "problem") throw;
       out << name << ": " << e.problem() << ", kept out\n";
@@ -111,11 +146,17 @@ int shrinkSet(const ShrinkJob& job, FailureJudging judging, const FailedRunSeeds
   }
   const std::size_t count = shrunk.size();
   if (!job.output.empty()) {
-    generator::writeDerivedSetDirectory(job.output, generator::problemSetFromProblems(shrunk, {}, job.input));
+    const ProblemSet derived = generator::problemSetFromProblems(shrunk, {}, job.input);
+    generator::writeDerivedSetDirectory(job.output, derived);
+    for (std::size_t i = 0; i < count; ++i) entries[i].file = (fs::path(job.output) / (derived.ids[i] + ".ppp")).string();
   }
-  for (const Problem& problem : shrunk) addToCorpus(corpus, problem, out);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::string file = addToCorpus(corpus, shrunk[i], out);
+    if (!file.empty()) entries[i].file = file;
+  }
   out << count << " of " << set.problems.size() << " PPPs shrunk"
       << (job.output.empty() ? "" : " into " + job.output) << "\n";
+  writeDistinctTraps(job, shrunk, entries, out);
   return 0;
 }
 

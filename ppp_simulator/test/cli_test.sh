@@ -254,6 +254,21 @@ expect_ok "shrink a set" "$ppp" shrink "$work/hunt_a" --agent bumper --runs 2 -o
 [ "$(($(wc -l < "$work/small_set/set.csv") - 1))" -eq "$(grep -c "obstacle cells, still" "$work/out")" ] && \
   [ -s "$work/small_set/tree.nwk" ] && [ ! -e "$work/small_set/generator.yaml" ] && pass || \
   fail "the shrunk set has no set.csv and tree: $(ls "$work/small_set")"
+# The shrunk PPPs grouped by trap: the lines count every shrunk PPP once, there are as many as a corpus keeps
+# obstacle shapes, and the most common trap's replay command plays the failure it kept.
+traps=$(sed -n 's/^\([0-9]*\) distinct traps\{0,1\} (one obstacle shape each):$/\1/p' "$work/out")
+[ -n "$traps" ] && [ "$(grep -c '^  [0-9]* PPPs\{0,1\}: trap_' "$work/out")" -eq "$traps" ] && \
+  [ "$(sed -n 's/^  \([0-9]*\) PPPs\{0,1\}: trap_.*/\1/p' "$work/out" | awk '{n += $1} END {print n}')" -eq \
+    "$(grep -c "obstacle cells, still" "$work/out")" ] && pass || fail "the traps do not count the shrunk PPPs: $(cat "$work/out")"
+expect_ok "shrink a set into a corpus" "$ppp" shrink "$work/hunt_a" --agent bumper --runs 2 --corpus "$work/small_corpus"
+[ "$(ls "$work/small_corpus" | grep -c '\.ppp$')" -eq "$traps" ] && pass || \
+  fail "$traps distinct traps said, but the corpus kept $(ls "$work/small_corpus")"
+first=$(grep -m1 '^  [0-9]* PPPs\{0,1\}: trap_' "$work/out")
+kept=$(printf '%s\n' "$first" | sed -n 's/^  [0-9]* PPPs\{0,1\}: trap_[0-9a-f]* (\([a-z_ ]*\));.*/\1/p')
+replay=$(printf '%s\n' "$first" | sed -n 's/.*; replay: ppp replay \(.*\) -o path\.png$/\1/p')
+# shellcheck disable=SC2086  # the replay command's words, as a user pastes them
+expect_ok "replay the most common trap" "$ppp" replay $replay -o "$work/trap.png"
+grep -q "^diagnosis: $kept" "$work/out" && pass || fail "the trap's replay is not a $kept run: $(cat "$work/out")"
 printf 'runs: 2\nagents: [{name: bumper, type: bumper}]\nsets: [{name: small, directory: %s}]\n' "$work/small_set" \
   > "$work/small_set.yaml"
 expect_ok "an experiment on the shrunk set" "$ppp" experiment "$work/small_set.yaml" -o "$work/small_run" --quiet

@@ -141,6 +141,36 @@ TEST(CorpusCheckTest, OneFailingPppOfThreeExitsOneAndTheJunitXmlNamesIt) {
   fs::remove_all(dir);
 }
 
+TEST(CorpusCheckTest, FailedRunsAreListedOncePerSignatureWithTheirSmallestPpp) {
+  const std::string dir = threePppCorpus();
+  const std::uint64_t s1 = deriveSeed(7, {1});
+  CheckJob job = checkJob(dir, nullptr);
+  // The bar of 3 loops on both its seeds; the bar of 4 loops the same way on its first seed and is stuck elsewhere
+  // on its second; the bar of 2 passes.
+  job.play = [s1](const Problem& problem, const std::vector<std::uint64_t>& seeds) {
+    RunsOutcome outcome;
+    outcome.runs = 1;
+    const int length = problem.obstacles.at(0).length;
+    if (length == 2) return outcome;
+    const bool stuck = length == 4 && seeds.at(0) == s1;
+    outcome.failed = 1;
+    outcome.kinds[static_cast<std::size_t>(diagnosis::kindIndex(stuck ? diagnosis::kStuck : diagnosis::kLoop))] = 1;
+    outcome.signatures[stuck ? "stuck/g4-7/s4-7/t1/w3e0" : "loop2/g8-15/s1/t0/w1e1"] = 1;
+    return outcome;
+  };
+  std::ostringstream out;
+  EXPECT_EQ(runCheck(job, {}, out), 1);
+  EXPECT_NE(out.str().find("2 distinct failures of mine by failure signature (docs/reference/signatures.md):\n"
+                           "  3 runs on 2 PPPs: loop2/g8-15/s1/t0/w1e1 (loop); smallest b_three, 3 obstacle cells; "
+                           "replay: replay b_three 11\n"
+                           "  1 run on 1 PPP: stuck/g4-7/s4-7/t1/w3e0 (stuck); smallest c_four, 4 obstacle cells; "
+                           "replay: replay c_four " + std::to_string(s1) + "\n"
+                           "mine fails 2 of 3 PPPs"),
+            std::string::npos)
+      << out.str();
+  fs::remove_all(dir);
+}
+
 TEST(CorpusCheckTest, BadInputIsRefusedBeforeAnyRunAndNothingIsWritten) {
   const std::string dir = threePppCorpus();
   std::vector<std::uint64_t> played;

@@ -20,6 +20,23 @@ ls "$work/a/pictures/"*.png > /dev/null 2>&1 && pass || fail "report has no pict
 shrunk_lines=$(grep -c "^- shrunk: " "$work/a/report.md")
 [ "$shrunk_lines" -ge 1 ] && [ "$(ls "$work/a/ppps/"*_shrunk.ppp | wc -l)" -eq "$shrunk_lines" ] && pass || \
   fail "the report shows $shrunk_lines shrunk PPPs: $(ls "$work/a/ppps")"
+# Each agent's failures by signature: the report's count of kinds and failed runs is results.csv's, and the most
+# common kind's replay command, run from the report's directory, plays a run of that kind on its smallest PPP.
+listed=$(sed -n 's/^`\([a-z0-9_]*\)`: \([0-9]*\) distinct failures\{0,1\} in \([0-9]*\) failed runs\{0,1\}.*/\1 \2 \3/p' \
+  "$work/a/report.md")
+[ -n "$listed" ] && pass || fail "the report lists no distinct failures"
+while read -r agent kinds runs; do
+  counted=$(awk -F, -v a="$agent" 'NR > 1 && $3 == a && $17 != "" { n++; k[$17] = 1 }
+    END { printf "%d %d", length(k), n }' "$work/a/results.csv")
+  [ "$counted" = "$kinds $runs" ] && pass || fail "$agent: the report says $kinds kinds in $runs runs, results.csv $counted"
+done <<< "$listed"
+row=$(grep -m1 '^| `[a-z]*[0-9-]*/g' "$work/a/report.md")
+signature=$(printf '%s\n' "$row" | cut -d'|' -f2 | tr -d ' `')
+replay=$(printf '%s\n' "$row" | sed -n 's/.*| `ppp replay \(.*\) -o path\.png` |$/\1/p')
+# shellcheck disable=SC2086  # the command's words, as a user pastes them
+(cd "$work/a" && "$ppp" replay $replay -o "$work/kind.png" > "$work/out" 2> "$work/err") && \
+  grep -qx "signature: $signature" "$work/out" && pass || \
+  fail "the replay of $signature does not play it: $(cat "$work/out" "$work/err")"
 # Every failing run pictured is also animated, beside the picture and inline in the HTML.
 for png in "$work/a/pictures/"*.png; do
   [ -s "${png%.png}.gif" ] && pass || fail "no animation beside $png"

@@ -212,6 +212,39 @@ TEST(FailedRunSeedsTest, FirstFailedRunsInRunOrderWithoutLostOnes) {
   EXPECT_TRUE(failedRunSeeds(rows, "c", 2).empty());
 }
 
+TEST(DistinctTrapLinesTest, OneLinePerTrapAndAgentWithItsFirstPppAndHowToPlayItAgain) {
+  ExperimentConfig config;
+  config.agents = {agents::AgentConfig{"bumper", "bumper"}, agents::AgentConfig{"mine", "planner"}};
+  auto entry = [](const std::string& problem, const std::string& agent, const std::string& trap, int cells) {
+    CorpusEntry e;
+    e.set = "hunted";
+    e.problem = problem;
+    e.agent = agent;
+    e.seeds = "5,9";
+    e.failing_seed = 9;
+    e.kept = agent == "mine" ? "missed_route" : "loop";
+    e.trap = trap + ".ppp";
+    e.trap_file = "corpus/" + e.trap;
+    e.cells_after = cells;
+    return e;
+  };
+  CorpusEntry lost = entry("ppp_003", "mine", "", 0);
+  lost.trap.clear();
+  lost.note = "its planner cannot be reached";
+  const std::vector<CorpusEntry> entries = {entry("ppp_000", "bumper", "trap_a", 2), entry("ppp_001", "mine", "trap_b", 1),
+                                            entry("ppp_002", "bumper", "trap_a", 2), lost,
+                                            entry("ppp_004", "mine", "trap_a", 2)};
+  const std::vector<std::string> lines = distinctTrapLines(config, entries);
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[0], "3 distinct traps in 4 shrunk failures (per agent):");  // the lost one is no trap
+  EXPECT_EQ(lines[1], "  2 PPPs: trap_a.ppp (bumper, loop); smallest hunted/ppp_000, 2 obstacle cells; replay: "
+                      "ppp replay corpus/trap_a.ppp --agent bumper --seed 9 -o path.png");
+  EXPECT_EQ(lines[2], "  1 PPP: trap_b.ppp (mine, missed_route); smallest hunted/ppp_001, 1 obstacle cell; replay: "
+                      "roslaunch launch/check.launch corpus:=corpus/trap_b.ppp agent:=mine config:=EXPERIMENT.yaml");
+  EXPECT_EQ(lines[3].substr(0, 36), "  1 PPP: trap_a.ppp (mine, missed_ro");  // one trap, two agents: two failures
+  EXPECT_EQ(distinctTrapLines(config, {}), std::vector<std::string>{"0 distinct traps in 0 shrunk failures (per agent):"});
+}
+
 class PlannerCorpusTest : public HuntCorpusTest {
  protected:
   void SetUp() override {
@@ -271,6 +304,8 @@ TEST_F(PlannerCorpusTest, APlannersFailureShrinksThroughTheRowsItsNodePlays) {
   EXPECT_EQ(entries[0].descriptors_before, 3);
   EXPECT_EQ(entries[0].descriptors_after, 1);
   EXPECT_TRUE(entries[0].added);
+  EXPECT_EQ(entries[0].failing_seed, 7u);
+  EXPECT_EQ(entries[0].cells_after, 1);  // any obstacle fails it: the shrink leaves one descriptor of one cell
   EXPECT_EQ(corpusFiles(), std::set<std::string>{entries[0].trap});
   EXPECT_EQ(std::set<std::uint64_t>(played.begin(), played.end()), std::set<std::uint64_t>{7});
   EXPECT_EQ(readProblemFile((fs::path(corpus()) / entries[0].trap).string()).obstacles.size(), 1u);

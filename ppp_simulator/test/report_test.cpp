@@ -200,6 +200,35 @@ TEST_F(ReportTest, FaultsFoundCountsFailedPppsShowsTheWorstAndTheArchive) {
   EXPECT_NE(read("report.html").find("<svg><title>the beta archive</title></svg>"), std::string::npos);
 }
 
+TEST_F(ReportTest, DistinctFailuresListEachAgentsKindsWithTheirSmallestPppAndReplay) {
+  ReportInput input = handMadeInput();
+  AgentFailureKinds explorer{"explorer", 3, 9, {}};
+  explorer.shown.push_back(FailureKind{DistinctFailure{"loop2/g1/s4-7/t1/w2e0/G1e0d1", 6, 2, 0, 7}, "loop", "beta/q2",
+                                       "ppp replay sets/beta/q2.ppp --agent explorer --seed 5 -o path.png"});
+  explorer.shown.push_back(FailureKind{DistinctFailure{"stuck/g4-7/s2-3/t0/w3e0", 2, 1, 0, 11}, "stuck", "alpha/p1",
+                                       "ppp replay sets/alpha/p1.ppp --agent explorer --seed 8 -o path.png"});
+  input.failure_kinds = {explorer};
+  writeReport(dir_, input);
+  const std::string md = read("report.md");
+  const std::size_t at = md.find("### Distinct failures");
+  ASSERT_NE(at, std::string::npos) << md;
+  EXPECT_GT(at, md.find("## Faults found"));
+  EXPECT_LT(at, md.find("## Plots"));
+  EXPECT_NE(md.find("`explorer`: 3 distinct failures in 9 failed runs (the 1 least common not listed)\n\n"
+                    "| Signature | Diagnosis | Runs | PPPs | Smallest PPP | Replay |\n"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| `loop2/g1/s4-7/t1/w2e0/G1e0d1` | loop | 6 | 2 | `beta/q2 (7 obstacle cells)` | "
+                    "`ppp replay sets/beta/q2.ppp --agent explorer --seed 5 -o path.png` |\n"
+                    "| `stuck/g4-7/s2-3/t0/w3e0` | stuck | 2 | 1 |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(read("report.html").find("<td><code>stuck/g4-7/s2-3/t0/w3e0</code></td><td>stuck</td>"), std::string::npos);
+  input.failure_kinds.clear();  // no agent fails: no section
+  writeReport(dir_, input);
+  EXPECT_EQ(read("report.md").find("### Distinct failures"), std::string::npos);
+}
+
 TEST_F(ReportTest, DiagnosesAreTabledPerAgentAndSetAndSaidBesideEachPicture) {
   // handMadeInput()'s runs, their failures diagnosed by hand: explorer wandering everywhere (3 failed runs on
   // alpha, 5 on beta); random looping on alpha (7, of which run 3 on each PPP endless: 2) and confined on beta (8).

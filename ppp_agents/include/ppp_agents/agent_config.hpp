@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -125,6 +126,10 @@ const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs();
 /// The flags that make `ppp simulate` and `ppp replay` play `config` under `episode` ("--agent explorer --memory 5
 /// --budget 100"): its type and every play option and episode rule that is not the default.
 std::string replayFlags(const AgentConfig& config, const EpisodeOptions& episode);
+
+/// The `ppp replay` command that plays `config`'s run `seed` under `episode` on the PPP in `file` and draws it.
+std::string replayCommand(const std::string& file, const AgentConfig& config, const EpisodeOptions& episode,
+                          std::uint64_t seed);
 
 /// The type of agents played by an external ROS planner through planner_bridge_node, one episode at a time.
 constexpr const char* kPlannerType = "planner";

@@ -9,6 +9,10 @@
 namespace ppp {
 namespace simulator {
 
+/// The name of `problem`'s trap: "trap_" and 16 hex digits of its obstacle shape (obstacleShape()), the same for
+/// every PPP whose obstacles are its own moved, mirrored or rotated.
+std::string trapName(const Problem& problem);
+
 /// Where a PPP went when added to a corpus.
 struct CorpusAddition {
   std::string file;    ///< The file holding it: the one written, or the corpus's PPP of the same shape.
@@ -24,8 +28,8 @@ class Corpus {
   /// @throws IoError when `dir` is not a directory or is a set (its set.csv would not list a PPP added to it);
   /// ParseError for a PPP file of it that cannot be read.
   explicit Corpus(std::string dir);
-  /// Adds `problem` as `trap_HASH.ppp` (HASH: 16 hex digits of its obstacle shape; `_2`, `_3`, ... after it when a
-  /// file of that name is there already), unless the corpus holds its shape. @throws IoError when it cannot be
+  /// Adds `problem` as `trapName().ppp` (`_2`, `_3`, ... after the name when a file of that name is there
+  /// already), unless the corpus holds its shape. @throws IoError when it cannot be
   /// written.
   CorpusAddition add(const Problem& problem);
 

@@ -36,6 +36,13 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
                                           const std::vector<ResultGroup>& groups, const StopCheck& stop = {},
                                           const PlannerRows& planner_rows = {});
 
+/// Per agent shown in the report (as worstFailures()) that has a failed or soft-failed run in `rows`, its runs
+/// grouped by failure signature (FailureGrouping): the kShownFailureKinds most common, each with the smallest PPP
+/// it happened on (fewest obstacle cells), that run's diagnosis and the command that plays it again on its set's
+/// file (relative to the report's directory `dir`: ppp replay, or launch/shrink.launch for a planner).
+std::vector<AgentFailureKinds> failureKinds(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets,
+                                            const std::vector<agents::EpisodeResult>& rows, const std::string& dir);
+
 /// Per agent (as worstFailures()), its longest passed run on the PPP of `detours` (detourStats() of the results)
 /// where its passed runs were longest against the optimum, replayed and animated; agents with no passed run are
 /// left out; a planner's run in continuous motion is played again by `planner_rows` to be drawn, and left out

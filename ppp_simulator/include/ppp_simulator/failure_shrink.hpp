@@ -82,7 +82,13 @@ struct FailureJudging {
   double min_rate = 0;
   /// @throws InvalidArgument naming "seeds" (none) or "min_rate".
   void validate() const;
+  /// `play`, or playRuns() in process when it is empty.
+  RunsPlayer player() const;
 };
+
+/// The first of `judging`'s seeds on which its agent fails `problem` (played one at a time), or the first seed
+/// when it fails on none.
+std::uint64_t firstFailingSeed(const Problem& problem, const FailureJudging& judging);
 
 /// Whether `outcome` is a valid PPP's and still shows `keep`.
 bool stillShows(const RunsOutcome& outcome, const FailureToKeep& keep);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -29,6 +30,9 @@ struct CorpusEntry {
   int descriptors_before = 0;  ///< Descriptors of the hunted PPP.
   int descriptors_after = 0;   ///< And of its shrunk trap.
   std::string trap;     ///< The corpus's file name of the trap: the one written, or the one of the same shape.
+  std::string trap_file;  ///< Its path.
+  int cells_after = 0;  ///< Its obstacle cells.
+  std::uint64_t failing_seed = 0;  ///< The first of `seeds` on which the agent fails the trap.
   bool added = false;   ///< False when the corpus had a trap of the same obstacle shape already.
   std::string note;     ///< Why it was not shrunk ("it does not fail so again", "its planner is gone").
 };
@@ -52,6 +56,11 @@ std::vector<CorpusEntry> addHuntFailuresToCorpora(const ExperimentConfig& config
                                                   const std::vector<agents::EpisodeResult>& rows,
                                                   const PlannerRows& planner_rows, const StopCheck& stop = {},
                                                   const std::function<void(const std::string&)>& log = {});
+
+/// The failures `entries` grouped by trap and agent, for the log: a heading ("3 distinct traps in 7 shrunk failures
+/// (per agent):"), then distinctFailureLine() per trap with its first entry's PPP and the command that plays it
+/// again (`ppp replay` on its first seed for a built-in agent of `config`, launch/check.launch for a planner).
+std::vector<std::string> distinctTrapLines(const ExperimentConfig& config, const std::vector<CorpusEntry>& entries);
 
 /// Writes `entries` to `path` as corpus.csv (set, problem, agent, seeds, kept, descriptors_before,
 /// descriptors_after, trap, added, note), replacing it whole. @throws IoError.

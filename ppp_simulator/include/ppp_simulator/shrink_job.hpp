@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -31,6 +32,9 @@ struct ShrinkJob {
   std::string results;
   int results_runs = 3;  ///< At most this many of each PPP's failed runs in `results`.
   std::string units;     ///< "descriptors", "cells", or "" (descriptors for .ppp files, cells for imported maps).
+  /// The command that plays the shrunk PPP in `file` again on run `seed`, for a set's list of distinct traps
+  /// (empty: none said).
+  std::function<std::string(const std::string& file, std::uint64_t seed)> replay;
   /// @throws InvalidArgument naming "by" (units), "input" (missing), "output" (neither it nor a corpus given; a set's
   /// output directory exists and is not empty), as FailureJudging::validate().
   void validate() const;
@@ -38,7 +42,8 @@ struct ShrinkJob {
 
 /// Runs `job`: shrinks the input (each PPP of a set the agent fails), writes the result only once every PPP is
 /// done, and says what each shrink kept on `out` ("9 -> 1 descriptors, 87 -> 1 obstacle cells, still loop in 3 of
-/// 3 runs"); why nothing was written goes to `err`. Returns the exit status: 0 when written, 1 when the agent
+/// 3 runs"), for a set then its shrunk PPPs grouped by trap (distinctFailureLine(), with `replay`'s command on the
+/// written file: the corpus's when there is one); why nothing was written goes to `err`. Returns the exit status: 0 when written, 1 when the agent
 /// fails nothing (nothing written), 130 when `stop` said stop (nothing written).
 /// @throws InvalidArgument naming the option ("results": no failed run of the PPP there) or the input's
 /// "problem", IoError, ParseError.

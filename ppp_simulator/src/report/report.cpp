@@ -831,7 +831,44 @@ void motionSection(const ReportInput& input, Text* out) {
   out->html += "</tbody>\n</table>\n";
 }
 
-/// Per agent and set, how many PPPs the agent fails; each agent's worst PPP; the sets' archives.
+/// Per agent, its failures grouped by signature: one row per kind with its runs, PPPs, smallest PPP and replay.
+void failureKindTables(const std::vector<AgentFailureKinds>& agents, Text* out) {
+  if (agents.empty()) return;
+  const std::string intro =
+      "Per agent, its failed and soft-failed runs grouped by failure signature (how and where a run failed: "
+      "docs/reference/signatures.md), so that one trap failed a hundred times reads as one line and a second fault "
+      "as a second: the most common first (at most " + std::to_string(kShownFailureKinds) + "; results.csv's "
+      "signature column has every run's), each with its runs, the PPPs they happened on, the smallest of those "
+      "(fewest obstacle cells) and the command that plays its run there again, from this report's directory.";
+  out->md += "### Distinct failures\n\n" + mdText(intro) + "\n\n";
+  out->html += "<h3>Distinct failures</h3>\n<p>" + escapeMarkup(intro) + "</p>\n";
+  for (const AgentFailureKinds& a : agents) {
+    const int hidden = a.kinds - static_cast<int>(a.shown.size());
+    std::string heading = std::to_string(a.kinds) + " distinct failure" + (a.kinds == 1 ? "" : "s") + " in " +
+                          std::to_string(a.runs) + " failed run" + (a.runs == 1 ? "" : "s");
+    if (hidden > 0) heading += " (the " + std::to_string(hidden) + " least common not listed)";
+    out->md += mdCode(a.agent, false) + ": " + heading + "\n\n| Signature | Diagnosis | Runs | PPPs | Smallest PPP | "
+               "Replay |\n|:---|:---|---:|---:|:---|:---|\n";
+    out->html += "<p><code>" + escapeMarkup(a.agent) + "</code>: " + escapeMarkup(heading) +
+                 "</p>\n<table>\n<thead><tr><th>Signature</th><th>Diagnosis</th><th class=\"num\">Runs</th><th "
+                 "class=\"num\">PPPs</th><th>Smallest PPP</th><th>Replay</th></tr></thead>\n<tbody>\n";
+    for (const FailureKind& k : a.shown) {
+      const std::string smallest = k.smallest + " (" + std::to_string(k.failure.smallest_cells) + " obstacle cells)";
+      out->md += "| " + mdCode(k.failure.key, true) + " | " + k.diagnosis + " | " + std::to_string(k.failure.count) +
+                 " | " + std::to_string(k.failure.places) + " | " + mdCode(smallest, true) + " | " +
+                 mdCode(k.replay, true) + " |\n";
+      out->html += "<tr><td><code>" + escapeMarkup(k.failure.key) + "</code></td><td>" + escapeMarkup(k.diagnosis) +
+                   "</td><td class=\"num\">" + std::to_string(k.failure.count) + "</td><td class=\"num\">" +
+                   std::to_string(k.failure.places) + "</td><td><code>" + escapeMarkup(smallest) +
+                   "</code></td><td><code>" + escapeMarkup(k.replay) + "</code></td></tr>\n";
+    }
+    out->md += "\n";
+    out->html += "</tbody>\n</table>\n";
+  }
+}
+
+/// Per agent and set, how many PPPs the agent fails; each agent's failures by signature and worst PPP; the sets'
+/// archives.
 void faultSection(const ReportInput& input, const std::vector<Picture>& pictures, Text* out) {
   const PassRateTable& rates = input.rates;
   out->md += "## Faults found\n\n";
@@ -859,6 +896,7 @@ void faultSection(const ReportInput& input, const std::vector<Picture>& pictures
   }, out);
   out->md += "\n";
   out->html += "</tbody>\n</table>\n";
+  failureKindTables(input.failure_kinds, out);
   for (std::size_t i = 0; i < input.worst.size(); ++i) {
     failureEntry(input.worst[i], pictures[i], "", out);
   }

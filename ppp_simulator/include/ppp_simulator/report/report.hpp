@@ -12,6 +12,7 @@
 #include "ppp_core/problem.hpp"
 #include "ppp_core/stop.hpp"
 #include "ppp_simulator/report/detours.hpp"
+#include "ppp_simulator/report/distinct_failures.hpp"
 #include "ppp_simulator/report/motion_models.hpp"
 #include "ppp_simulator/report/pass_rates.hpp"
 #include "ppp_simulator/report/reference.hpp"
@@ -59,6 +60,25 @@ struct FailureExample {
   std::optional<ShrunkExample> shrunk;  ///< Its PPP shrunk, when the report shows it.
 };
 
+/// One way an agent failed: its failed runs of one failure signature, with the smallest PPP they happened on.
+struct FailureKind {
+  DistinctFailure failure;  ///< The signature, its runs and PPPs, and the smallest PPP's obstacle cells.
+  std::string diagnosis;    ///< The diagnosis of its run on the smallest PPP (a diagnosis:: kind).
+  std::string smallest;     ///< That PPP: "set/problem".
+  std::string replay;       ///< The command that plays that run again.
+};
+
+/// An agent's failures by signature ("Faults found", "Distinct failures").
+struct AgentFailureKinds {
+  std::string agent;               ///< The agent.
+  int kinds = 0;                   ///< Its different signatures.
+  int runs = 0;                    ///< Its failed and soft-failed runs.
+  std::vector<FailureKind> shown;  ///< The most common kinds, most common first (at most kShownFailureKinds).
+};
+
+/// The most kinds of failure the report lists per agent.
+constexpr int kShownFailureKinds = 8;
+
 /// What the report says about a set besides its pass rates.
 struct SetInfo {
   std::string name;         ///< Set name, as in the pass-rate table.
@@ -78,6 +98,7 @@ struct ReportInput {
   std::vector<std::pair<std::string, std::string>> comparisons;  ///< Set pairs to compare, usually the first two.
   std::vector<FailureExample> failures;                          ///< Hardest PPPs with a failing path each.
   std::vector<FailureExample> worst;  ///< Per agent, a failing run on its worst PPP ("Faults found").
+  std::vector<AgentFailureKinds> failure_kinds;  ///< Per agent that fails, its failures by signature ("Faults found").
   std::vector<DetourStats> detours;   ///< Path / optimal of passed runs per set and agent ("Detours").
   std::vector<FailureExample> detour_examples;  ///< Per agent, its longest run on its worst-detour PPP.
   std::vector<SetInfo> sets;          ///< Diversity and archive of each set (may be empty).
