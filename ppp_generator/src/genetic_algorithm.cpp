@@ -118,9 +118,13 @@ std::vector<Individual> GeneticAlgorithm::run(const ProgressCallback& progress, 
     std::vector<Individual*> to_score;
     for (Mating& m : round) {
       m.tournament = drawDistinct(&rng_, static_cast<int>(pool.size()), tournament_size);
-      // Fittest first; ties keep the draw order.
-      std::stable_sort(m.tournament.begin(), m.tournament.end(),
-                       [&](int a, int b) { return pool[a].score > pool[b].score; });
+      // Fittest first; under the archive, of equally fit ones the one failing in the rarest way (a new way of
+      // failing is worth breeding from more than one more copy of a known one); then the draw order.
+      std::stable_sort(m.tournament.begin(), m.tournament.end(), [&](int a, int b) {
+        if (pool[a].score != pool[b].score || !keepsSignatures()) return pool[a].score > pool[b].score;
+        const long seen_a = signatures_.timesSeen(pool[a]), seen_b = signatures_.timesSeen(pool[b]);
+        return seen_a >= 0 && (seen_b < 0 || seen_a < seen_b);
+      });
       const Problem* parents[2] = {&pool[m.tournament[0]].problem, &pool[m.tournament[1]].problem};
       if (keepsSignatures() && rng_.below(2) == 0) {
         for (const Problem*& parent : parents) {

@@ -41,6 +41,16 @@ int signatureDistance(const std::string& a, const std::string& b) {
   return differing;
 }
 
+long SignatureArchive::timesSeen(const Individual& individual) const {
+  long fewest = -1;
+  for (const auto& shown : individual.signatures) {
+    const auto it = entries_.find(shown.first);
+    const long seen = it == entries_.end() ? 0 : it->second.seen;
+    if (fewest < 0 || seen < fewest) fewest = seen;
+  }
+  return fewest;
+}
+
 bool SignatureArchive::offer(const Individual& individual) {
   if (individual.signatures.empty() && (!has_passed_ || individual.score > passed_.score)) {
     passed_ = individual;
@@ -67,13 +77,17 @@ bool SignatureArchive::offer(const Individual& individual) {
 }
 
 const Individual* SignatureArchive::randomElite(Rng* rng) const {
-  const std::size_t choices = entries_.size() + (has_passed_ ? 1 : 0);
-  if (choices == 0) return nullptr;
-  const std::size_t k = static_cast<std::size_t>(rng->below(choices));
-  if (k == entries_.size()) return &passed_;
-  auto it = entries_.begin();
-  std::advance(it, static_cast<long>(k));
-  return &it->second.elite;
+  if (entries_.empty() && !has_passed_) return nullptr;
+  // Each signature weighs 1 / (PPPs that showed it): a failure the search meets seldom is bred from as often, over
+  // the hunt, as a common one; the passed PPP weighs as a signature seen once.
+  double total = has_passed_ ? 1.0 : 0.0;
+  for (const auto& entry : entries_) total += 1.0 / static_cast<double>(std::max(1L, entry.second.seen));
+  double drawn = rng->uniform01() * total;
+  for (const auto& entry : entries_) {
+    drawn -= 1.0 / static_cast<double>(std::max(1L, entry.second.seen));
+    if (drawn < 0) return &entry.second.elite;
+  }
+  return has_passed_ ? &passed_ : &entries_.rbegin()->second.elite;
 }
 
 std::vector<Individual> SignatureArchive::diverseSet(int size, const std::vector<Individual>& pool) const {

@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/rng.hpp"
 #include "ppp_generator/genetic_algorithm.hpp"
 
 namespace ppp {
@@ -48,6 +51,30 @@ TEST(SignatureArchiveTest, EachSignatureKeepsItsFittestPPPAndTheFirstOfEquals) {
   EXPECT_EQ(entries.at("b/g16+/s1/w0e0").found, 3);
   EXPECT_EQ(archive.csv({{4, "ppp_007"}}),
             "signature,found,seen,value,problem\na/g1/s1/w0e0/G0e0d0,0,4,0.9,ppp_007\nb/g16+/s1/w0e0,3,1,0.9,ppp_007\n");
+}
+
+TEST(SignatureArchiveTest, ParentsAreDrawnInInverseProportionToHowOftenTheirSignatureWasSeen) {
+  SignatureArchive archive(100);
+  EXPECT_EQ(archive.randomElite(nullptr), nullptr);  // nothing to draw: no draw made
+  archive.offer(shown(1, 1, {"common"}));
+  archive.offer(shown(2, 1, {"common"}));
+  archive.offer(shown(3, 1, {"common", "rare"}));
+  archive.offer(shown(4, 0.3, {}));  // the hardest passed PPP
+  EXPECT_EQ(archive.timesSeen(shown(9, 1, {"common"})), 3);
+  EXPECT_EQ(archive.timesSeen(shown(9, 1, {"common", "rare"})), 1);  // its rarest signature
+  EXPECT_EQ(archive.timesSeen(shown(9, 1, {"new"})), 0);
+  EXPECT_EQ(archive.timesSeen(shown(9, 0, {})), -1);
+  // Weights 1/3 (common, seen 3 times), 1 (rare, once) and 1 (the passed PPP): probabilities 1/7, 3/7 and 3/7.
+  Rng rng(11);
+  std::map<std::uint64_t, int> drawn;
+  const int draws = 70000;
+  for (int k = 0; k < draws; ++k) ++drawn[archive.randomElite(&rng)->grid_hash];
+  ASSERT_EQ(drawn.size(), 3u);
+  // The common signature's elite is the first that showed it; the rare one's is PPP 3. Within 4 standard errors.
+  const double sd = std::sqrt(draws * (3.0 / 7) * (4.0 / 7));
+  EXPECT_NEAR(drawn[1], draws / 7.0, 4 * std::sqrt(draws * (1.0 / 7) * (6.0 / 7)));
+  EXPECT_NEAR(drawn[3], draws * 3.0 / 7, 4 * sd);
+  EXPECT_NEAR(drawn[4], draws * 3.0 / 7, 4 * sd);
 }
 
 TEST(SignatureArchiveTest, AFullArchiveCountsNewSignaturesWithoutKeepingThem) {

@@ -41,10 +41,11 @@ using ProgressCallback = std::function<void(long done, long total, double best_v
 /// may replace an earlier one's child).
 /// `archive: signatures` (a panel fitness): every scored PPP is offered to a SignatureArchive, and a child that
 /// shows a failure signature the archive did not hold enters the pool whatever its score (under crowding it
-/// replaces its nearest rival), so the search keeps each new way of failing as a stepping stone. Half the matings
-/// (a coin per mating) take both parents from the archive instead, each an elite drawn uniformly over its
-/// signatures and its hardest passed PPP: every known way of failing is explored alike, and the passed PPP climbs
-/// towards the failures that easier ones hide. The set is drawn from the archive (SignatureArchive::diverseSet()).
+/// replaces its nearest rival), so the search keeps each new way of failing as a stepping stone; a tournament
+/// ranks equally fit PPPs by how seldom the archive has seen their rarest signature. Half the matings (a coin per
+/// mating) take both parents from the archive instead (SignatureArchive::randomElite(): the rarer a signature, the
+/// likelier), and its hardest passed PPP climbs towards the failures that easier ones hide. The set is drawn from
+/// the archive (SignatureArchive::diverseSet()).
 /// Deterministic for a seed.
 class GeneticAlgorithm {
  public:

@@ -33,11 +33,16 @@ class SignatureArchive {
   bool offer(const Individual& individual);
   /// New signatures not kept: the archive was full.
   long dropped() const { return dropped_; }
-  /// The elite of an entry, or the passed PPP kept (passed()), drawn uniformly; nullptr when it holds neither.
+  /// The elite of an entry or the passed PPP kept (passed()), drawn with weight 1 / (PPPs that showed the entry's
+  /// signature), the passed PPP as a signature seen once: the masked faults' failures, which a search meets
+  /// seldom, are bred from as often as the common ones; nullptr (no draw made) when it holds neither.
   const Individual* randomElite(Rng* rng) const;
   /// The fittest PPP offered that showed no failure (the first of equals): the hardest one the panel still
   /// passes, from which a search climbs towards failures the easier ones hide; nullptr before the first.
   const Individual* passed() const { return has_passed_ ? &passed_ : nullptr; }
+  /// How often the archive has seen `individual`'s rarest signature: the `seen` of the least seen one among its
+  /// signatures (0 for one it does not hold), or -1 for a PPP showing none (a tournament ranks it behind).
+  long timesSeen(const Individual& individual) const;
   /// The entries by signature.
   const std::map<std::string, Entry>& entries() const { return entries_; }
 
