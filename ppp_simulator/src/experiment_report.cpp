@@ -12,8 +12,6 @@
 #include "ppp_core/csv.hpp"
 #include "ppp_core/reachability.hpp"
 #include "ppp_core/text_file.hpp"
-#include "ppp_core/text_format.hpp"
-#include "ppp_generator/problem_set.hpp"
 #include "ppp_agents/episode_runner.hpp"
 #include "ppp_simulator/failure_shrink.hpp"
 #include "ppp_simulator/report/continuous_animation.hpp"
@@ -224,28 +222,10 @@ std::optional<FailureExample> failingRun(const ExperimentConfig& config, const a
   return replayedRun(config, set, problem, agent_config, *row, stop);
 }
 
-/// The file of PPP `problem` of `set`, relative to the report's directory `dir` when it can be.
-std::string problemFile(const agents::PreparedSet& set, int problem, const std::string& dir) {
-  const std::vector<std::string> files = generator::problemSetFiles(set.directory);
-  const std::string file = files.at(static_cast<std::size_t>(problem));
-  std::error_code error;
-  const std::filesystem::path relative = std::filesystem::relative(file, dir, error);
-  return error || relative.empty() ? file : relative.string();
-}
-
-/// The command that plays run `row` of `agent` on the PPP in `file` again: ppp replay, or for a planner (which
-/// plays only through ROS) its shrink through ROS on the run's seed, which says whether it still fails so.
-std::string runReplay(const agents::AgentConfig& agent, const EpisodeOptions& episode, const agents::EpisodeResult& row,
-                      const std::string& file) {
-  if (!agents::isPlanner(agent)) return agents::replayCommand(file, agent, episode, row.seed);
-  return "roslaunch launch/shrink.launch input:=" + shellWord(file) + " agent:=" + shellWord(agent.name) +
-         " output:=check.ppp config:=EXPERIMENT.yaml args:=\"--seed " + std::to_string(row.seed) + "\"";
-}
-
 }  // namespace
 
 std::vector<AgentFailureKinds> failureKinds(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets,
-                                            const std::vector<agents::EpisodeResult>& rows, const std::string& dir) {
+                                            const std::vector<agents::EpisodeResult>& rows) {
   std::map<std::pair<std::string, std::string>, std::pair<int, int>> where;  // (set, id) -> (set, problem)
   for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
     for (int p = 0; p < static_cast<int>(sets[s].set.ids.size()); ++p) where[{sets[s].name, sets[s].set.ids[p]}] = {s, p};
@@ -269,8 +249,9 @@ std::vector<AgentFailureKinds> failureKinds(const ExperimentConfig& config, cons
     for (std::size_t k = 0; k < groups.size() && k < static_cast<std::size_t>(kShownFailureKinds); ++k) {
       const agents::EpisodeResult& row = rows[groups[k].smallest];
       const auto [s, p] = where.at({row.set, row.problem});
-      a.shown.push_back(FailureKind{groups[k], agents::diagnosisOf(row).kind, row.set + "/" + row.problem,
-                                    runReplay(agent, config.episode, row, problemFile(sets[s], p, dir))});
+      a.shown.push_back(FailureKind{groups[k], agents::diagnosisOf(row).kind, row.set, row.problem,
+                                    sets[s].set.problems[static_cast<std::size_t>(p)], row.seed,
+                                    agents::isPlanner(agent) ? "" : agents::replayFlags(agent, config.episode)});
     }
     kinds.push_back(std::move(a));
   }
@@ -440,7 +421,7 @@ void writeExperimentReport(const std::string& dir, const ExperimentConfig& confi
   input.failures = hardestFailures(config, sets, groups, config.hardest, stop);
   stopIfAsked(stop);
   input.worst = worstFailures(config, sets, groups, stop, planner_rows);
-  input.failure_kinds = failureKinds(config, sets, rows, dir);
+  input.failure_kinds = failureKinds(config, sets, rows);
   stopIfAsked(stop);
   input.detours = detourStats(rows, set_names, agent_names);
   input.detour_examples = longestDetours(config, sets, input.detours, stop, planner_rows);

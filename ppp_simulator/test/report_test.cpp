@@ -202,12 +202,16 @@ TEST_F(ReportTest, FaultsFoundCountsFailedPppsShowsTheWorstAndTheArchive) {
 
 TEST_F(ReportTest, DistinctFailuresListEachAgentsKindsWithTheirSmallestPppAndReplay) {
   ReportInput input = handMadeInput();
+  const Problem q2 = walledProblem();
   AgentFailureKinds explorer{"explorer", 3, 9, {}};
-  explorer.shown.push_back(FailureKind{DistinctFailure{"loop2/g1/s4-7/t1/w2e0/G1e0d1", 6, 2, 0, 7}, "loop", "beta/q2",
-                                       "ppp replay sets/beta/q2.ppp --agent explorer --seed 5 -o path.png"});
-  explorer.shown.push_back(FailureKind{DistinctFailure{"stuck/g4-7/s2-3/t0/w3e0", 2, 1, 0, 11}, "stuck", "alpha/p1",
-                                       "ppp replay sets/alpha/p1.ppp --agent explorer --seed 8 -o path.png"});
-  input.failure_kinds = {explorer};
+  explorer.shown.push_back(FailureKind{DistinctFailure{"loop2/g1/s4-7/t1/w2e0/G1e0d1", 6, 2, 0, 4}, "loop", "beta", "q2",
+                                       q2, 5, "--agent explorer"});
+  explorer.shown.push_back(FailureKind{DistinctFailure{"stuck/g4-7/s2-3/t0/w3e0", 2, 1, 0, 4}, "stuck", "beta", "q2",
+                                       q2, 8, "--agent explorer"});
+  AgentFailureKinds planner{"mine", 1, 1, {}};
+  planner.shown.push_back(FailureKind{DistinctFailure{"missed_route/g8-15/s0/t0/w1e1", 1, 1, 0, 4}, "missed_route",
+                                      "alpha", "p1", q2, 7, ""});
+  input.failure_kinds = {explorer, planner};
   writeReport(dir_, input);
   const std::string md = read("report.md");
   const std::size_t at = md.find("### Distinct failures");
@@ -218,11 +222,20 @@ TEST_F(ReportTest, DistinctFailuresListEachAgentsKindsWithTheirSmallestPppAndRep
                     "| Signature | Diagnosis | Runs | PPPs | Smallest PPP | Replay |\n"),
             std::string::npos)
       << md;
-  EXPECT_NE(md.find("| `loop2/g1/s4-7/t1/w2e0/G1e0d1` | loop | 6 | 2 | `beta/q2 (7 obstacle cells)` | "
-                    "`ppp replay sets/beta/q2.ppp --agent explorer --seed 5 -o path.png` |\n"
-                    "| `stuck/g4-7/s2-3/t0/w3e0` | stuck | 2 | 1 |"),
+  // One file per PPP, however many kinds it is the smallest of; a planner's run is played again by its shrink.
+  EXPECT_NE(md.find("| `loop2/g1/s4-7/t1/w2e0/G1e0d1` | loop | 6 | 2 | `beta/q2 (4 obstacle cells)` | "
+                    "`ppp replay ppps/failures/beta_q2.ppp --agent explorer --seed 5 -o path.png` |\n"
+                    "| `stuck/g4-7/s2-3/t0/w3e0` | stuck | 2 | 1 | `beta/q2 (4 obstacle cells)` | "
+                    "`ppp replay ppps/failures/beta_q2.ppp --agent explorer --seed 8 -o path.png` |\n"),
             std::string::npos)
       << md;
+  EXPECT_NE(md.find("`mine`: 1 distinct failure in 1 failed run\n"), std::string::npos) << md;
+  EXPECT_NE(md.find("`roslaunch launch/shrink.launch input:=ppps/failures/alpha_p1.ppp agent:=mine output:=check.ppp "
+                    "config:=EXPERIMENT.yaml args:=\"--seed 7\"`"),
+            std::string::npos)
+      << md;
+  EXPECT_EQ(read("ppps/failures/beta_q2.ppp"), formatPpp(q2));
+  EXPECT_TRUE(fs::is_regular_file(dir_ + "/ppps/failures/alpha_p1.ppp"));
   EXPECT_NE(read("report.html").find("<td><code>stuck/g4-7/s2-3/t0/w3e0</code></td><td>stuck</td>"), std::string::npos);
   input.failure_kinds.clear();  // no agent fails: no section
   writeReport(dir_, input);

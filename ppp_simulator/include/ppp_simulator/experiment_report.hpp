@@ -38,10 +38,11 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
 
 /// Per agent shown in the report (as worstFailures()) that has a failed or soft-failed run in `rows`, its runs
 /// grouped by failure signature (FailureGrouping): the kShownFailureKinds most common, each with the smallest PPP
-/// it happened on (fewest obstacle cells), that run's diagnosis and the command that plays it again on its set's
-/// file (relative to the report's directory `dir`: ppp replay, or launch/shrink.launch for a planner).
+/// it happened on (fewest obstacle cells), that run's diagnosis and seed, and the agent's replay flags (none for a
+/// planner). The PPPs are the sets' own: the report writes them, so a set published by a generator node elsewhere
+/// serves as well as one in the output directory.
 std::vector<AgentFailureKinds> failureKinds(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets,
-                                            const std::vector<agents::EpisodeResult>& rows, const std::string& dir);
+                                            const std::vector<agents::EpisodeResult>& rows);
 
 /// Per agent (as worstFailures()), its longest passed run on the PPP of `detours` (detourStats() of the results)
 /// where its passed runs were longest against the optimum, replayed and animated; agents with no passed run are

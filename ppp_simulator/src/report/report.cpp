@@ -831,18 +831,48 @@ void motionSection(const ReportInput& input, Text* out) {
   out->html += "</tbody>\n</table>\n";
 }
 
+/// Where the report writes each agent's failure kinds' smallest PPPs: "ppps/failures/SET_PROBLEM.ppp", one file per
+/// PPP however many kinds it is the smallest of; parallel to `agents` and their shown kinds.
+std::vector<std::vector<std::string>> failureKindFiles(const std::vector<AgentFailureKinds>& agents) {
+  FileNames names;
+  std::map<std::pair<std::string, std::string>, std::string> claimed;
+  std::vector<std::vector<std::string>> files;
+  for (const AgentFailureKinds& a : agents) {
+    files.emplace_back();
+    for (const FailureKind& k : a.shown) {
+      std::string& file = claimed[{k.set, k.problem}];
+      if (file.empty()) file = "ppps/failures/" + names.claim(safeStem(k.set) + "_" + safeStem(k.problem), ".ppp");
+      files.back().push_back(file);
+    }
+  }
+  return files;
+}
+
+/// How to play kind `k`'s run of `agent` again on its PPP in `file`: ppp replay, or for a planner its shrink
+/// through ROS on the run's seed.
+std::string failureKindReplay(const std::string& agent, const FailureKind& k, const std::string& file) {
+  FailureExample run;
+  run.agent = agent;
+  run.seed = k.seed;
+  run.replay_flags = k.replay_flags;
+  return k.replay_flags.empty() ? shrinkLaunchCommand(run, file) : replayCommand(run, file);
+}
+
 /// Per agent, its failures grouped by signature: one row per kind with its runs, PPPs, smallest PPP and replay.
-void failureKindTables(const std::vector<AgentFailureKinds>& agents, Text* out) {
+void failureKindTables(const std::vector<AgentFailureKinds>& agents, const std::vector<std::vector<std::string>>& files,
+                       Text* out) {
   if (agents.empty()) return;
   const std::string intro =
       "Per agent, its failed and soft-failed runs grouped by failure signature (how and where a run failed: "
       "docs/reference/signatures.md), so that one trap failed a hundred times reads as one line and a second fault "
       "as a second: the most common first (at most " + std::to_string(kShownFailureKinds) + "; results.csv's "
       "signature column has every run's), each with its runs, the PPPs they happened on, the smallest of those "
-      "(fewest obstacle cells) and the command that plays its run there again, from this report's directory.";
+      "(fewest obstacle cells, written under ppps/failures/) and the command that plays its run there again, from "
+      "this report's directory.";
   out->md += "### Distinct failures\n\n" + mdText(intro) + "\n\n";
   out->html += "<h3>Distinct failures</h3>\n<p>" + escapeMarkup(intro) + "</p>\n";
-  for (const AgentFailureKinds& a : agents) {
+  for (std::size_t i = 0; i < agents.size(); ++i) {
+    const AgentFailureKinds& a = agents[i];
     const int hidden = a.kinds - static_cast<int>(a.shown.size());
     std::string heading = std::to_string(a.kinds) + " distinct failure" + (a.kinds == 1 ? "" : "s") + " in " +
                           std::to_string(a.runs) + " failed run" + (a.runs == 1 ? "" : "s");
@@ -852,15 +882,18 @@ void failureKindTables(const std::vector<AgentFailureKinds>& agents, Text* out) 
     out->html += "<p><code>" + escapeMarkup(a.agent) + "</code>: " + escapeMarkup(heading) +
                  "</p>\n<table>\n<thead><tr><th>Signature</th><th>Diagnosis</th><th class=\"num\">Runs</th><th "
                  "class=\"num\">PPPs</th><th>Smallest PPP</th><th>Replay</th></tr></thead>\n<tbody>\n";
-    for (const FailureKind& k : a.shown) {
-      const std::string smallest = k.smallest + " (" + std::to_string(k.failure.smallest_cells) + " obstacle cells)";
+    for (std::size_t j = 0; j < a.shown.size(); ++j) {
+      const FailureKind& k = a.shown[j];
+      const std::string smallest =
+          k.set + "/" + k.problem + " (" + std::to_string(k.failure.smallest_cells) + " obstacle cells)";
+      const std::string replay = failureKindReplay(a.agent, k, files[i][j]);
       out->md += "| " + mdCode(k.failure.key, true) + " | " + k.diagnosis + " | " + std::to_string(k.failure.count) +
                  " | " + std::to_string(k.failure.places) + " | " + mdCode(smallest, true) + " | " +
-                 mdCode(k.replay, true) + " |\n";
+                 mdCode(replay, true) + " |\n";
       out->html += "<tr><td><code>" + escapeMarkup(k.failure.key) + "</code></td><td>" + escapeMarkup(k.diagnosis) +
                    "</td><td class=\"num\">" + std::to_string(k.failure.count) + "</td><td class=\"num\">" +
                    std::to_string(k.failure.places) + "</td><td><code>" + escapeMarkup(smallest) +
-                   "</code></td><td><code>" + escapeMarkup(k.replay) + "</code></td></tr>\n";
+                   "</code></td><td><code>" + escapeMarkup(replay) + "</code></td></tr>\n";
     }
     out->md += "\n";
     out->html += "</tbody>\n</table>\n";
@@ -869,7 +902,8 @@ void failureKindTables(const std::vector<AgentFailureKinds>& agents, Text* out) 
 
 /// Per agent and set, how many PPPs the agent fails; each agent's failures by signature and worst PPP; the sets'
 /// archives.
-void faultSection(const ReportInput& input, const std::vector<Picture>& pictures, Text* out) {
+void faultSection(const ReportInput& input, const std::vector<Picture>& pictures,
+                  const std::vector<std::vector<std::string>>& kind_files, Text* out) {
   const PassRateTable& rates = input.rates;
   out->md += "## Faults found\n\n";
   out->html += "<h2>Faults found</h2>\n";
@@ -896,7 +930,7 @@ void faultSection(const ReportInput& input, const std::vector<Picture>& pictures
   }, out);
   out->md += "\n";
   out->html += "</tbody>\n</table>\n";
-  failureKindTables(input.failure_kinds, out);
+  failureKindTables(input.failure_kinds, kind_files, out);
   for (std::size_t i = 0; i < input.worst.size(); ++i) {
     failureEntry(input.worst[i], pictures[i], "", out);
   }
@@ -1000,7 +1034,8 @@ void writeReport(const std::string& dir, const ReportInput& input, const StopChe
   comparisonSection(input, &text);
   diagnosisSection(input.rates, &text);
   motionSection(input, &text);
-  faultSection(input, worst_pictures, &text);
+  const std::vector<std::vector<std::string>> kind_files = failureKindFiles(input.failure_kinds);
+  faultSection(input, worst_pictures, kind_files, &text);
   detourSection(input, detour_pictures, &text);
   plotSection(plots, &text);
   failureSection(input, pictures, &text);
@@ -1030,6 +1065,14 @@ void writeReport(const std::string& dir, const ReportInput& input, const StopChe
         write(all_pictures[i].shrunk_gif_file, shown[i].shrunk->animation_gif);
       }
       write(all_pictures[i].shrunk_ppp_file, formatPpp(shown[i].shrunk->ppp));
+    }
+  }
+  if (!input.failure_kinds.empty()) makeDirectory((root / "ppps" / "failures").string());
+  std::set<std::string> written_kinds;
+  for (std::size_t i = 0; i < input.failure_kinds.size(); ++i) {
+    for (std::size_t j = 0; j < input.failure_kinds[i].shown.size(); ++j) {
+      const std::string& file = kind_files[i][j];
+      if (written_kinds.insert(file).second) write(file, formatPpp(input.failure_kinds[i].shown[j].ppp));
     }
   }
   write("report.md", text.md);

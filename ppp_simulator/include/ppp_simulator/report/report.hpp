@@ -60,12 +60,18 @@ struct FailureExample {
   std::optional<ShrunkExample> shrunk;  ///< Its PPP shrunk, when the report shows it.
 };
 
-/// One way an agent failed: its failed runs of one failure signature, with the smallest PPP they happened on.
+/// One way an agent failed: its failed runs of one failure signature, with the smallest PPP they happened on and
+/// what plays its run there again (the report writes the PPP under ppps/failures/).
 struct FailureKind {
   DistinctFailure failure;  ///< The signature, its runs and PPPs, and the smallest PPP's obstacle cells.
   std::string diagnosis;    ///< The diagnosis of its run on the smallest PPP (a diagnosis:: kind).
-  std::string smallest;     ///< That PPP: "set/problem".
-  std::string replay;       ///< The command that plays that run again.
+  std::string set;          ///< The smallest PPP's set.
+  std::string problem;      ///< And its id there.
+  ppp::Problem ppp;         ///< The PPP.
+  std::uint64_t seed = 0;   ///< The seed of the run on it.
+  /// `ppp replay` flags recreating the agent ("--agent explorer --memory 5"); empty for a planner, whose run is
+  /// played again by its shrink through ROS on the seed.
+  std::string replay_flags;
 };
 
 /// An agent's failures by signature ("Faults found", "Distinct failures").
