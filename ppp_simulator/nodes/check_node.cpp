@@ -10,7 +10,6 @@
 #include <string>
 
 #include "ppp_core/error.hpp"
-#include "ppp_core/text_format.hpp"
 #include "ppp_msgs/graph_names.h"
 #include "ppp_msgs/node_parameters.h"
 #include "ppp_simulator/corpus_check.hpp"
@@ -34,8 +33,7 @@ int runCheckNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh) {
   job.episode = config.episode;
   // The check of the one PPP again, on the same seeds (its own, or those derived as here).
   job.replay = [task](const CorpusCase& c, std::uint64_t) {
-    return "roslaunch launch/check.launch corpus:=" + shellWord(c.file) + " agent:=" + shellWord(task.agent) +
-           " config:=" + shellWord(task.config) +
+    return checkLaunchCommand(c.file, task.agent, task.config) +
            (c.recorded ? "" : " args:=\"--seed " + std::to_string(task.seed) + " --runs " + std::to_string(task.runs) +
                                   "\"");
   };

@@ -11,10 +11,10 @@
 #include <string>
 
 #include "ppp_core/error.hpp"
-#include "ppp_core/text_format.hpp"
 #include "ppp_msgs/graph_names.h"
 #include "ppp_msgs/node_parameters.h"
 #include "ppp_simulator/experiment_config.hpp"
+#include "ppp_simulator/corpus_check.hpp"
 #include "ppp_simulator/shrink_job.hpp"
 #include "remote_runs_player.hpp"
 
@@ -40,8 +40,7 @@ int runShrinkNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh) {
       task, agent, config.episode,
       remoteRunsPlayer(nh, ppp_msgs::topics::kEvaluator, agent.name, config.episode, kServiceWaitSeconds));
   job.replay = [task](const std::string& file, std::uint64_t) {  // a shrunk PPP records its seeds: check plays them
-    return "roslaunch launch/check.launch corpus:=" + shellWord(file) + " agent:=" + shellWord(task.agent) +
-           " config:=" + shellWord(task.config);
+    return checkLaunchCommand(file, task.agent, task.config);
   };
   return runShrinkJob(job, [] { return !ros::ok(); }, std::cout, std::cerr);
 }

@@ -221,6 +221,11 @@ std::string checkJunitXml(const std::string& suite, const std::string& agent, co
   return xml.str();
 }
 
+std::string checkLaunchCommand(const std::string& corpus, const std::string& agent, const std::string& config) {
+  return "roslaunch launch/check.launch corpus:=" + shellWord(corpus) + " agent:=" + shellWord(agent) +
+         " config:=" + shellWord(config);
+}
+
 void CheckTask::validate() const {
   checkOptionRanges(checkTaskSpecs(), *this);
   for (const auto& [name, value] : {std::pair<const char*, const std::string*>{"config", &config},

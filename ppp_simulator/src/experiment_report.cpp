@@ -230,20 +230,24 @@ std::vector<AgentFailureKinds> failureKinds(const ExperimentConfig& config, cons
   for (int s = 0; s < static_cast<int>(sets.size()); ++s) {
     for (int p = 0; p < static_cast<int>(sets[s].set.ids.size()); ++p) where[{sets[s].name, sets[s].set.ids[p]}] = {s, p};
   }
-  std::map<std::string, FailureGrouping> by_agent;
+  std::map<std::string, FailureGrouping> by_agent;  // the agents the report shows (not the control or the baseline)
+  for (const agents::AgentConfig& agent : config.agents) {
+    if (replayedInReport(agent, config.episode)) by_agent[agent.name];
+  }
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const agents::EpisodeResult& row = rows[i];
-    if (row.signature.empty()) continue;
+    const auto grouping = by_agent.find(row.agent);
+    if (row.signature.empty() || grouping == by_agent.end()) continue;
     const auto found = where.find({row.set, row.problem});
     if (found == where.end()) continue;
     const auto [s, p] = found->second;
-    by_agent[row.agent].add(row.signature, row.set + "/" + row.problem,
+    grouping->second.add(row.signature, row.set + "/" + row.problem,
                             sets[s].grids[static_cast<std::size_t>(p)].obstacleCount(), i);
   }
   std::vector<AgentFailureKinds> kinds;
   for (const agents::AgentConfig& agent : config.agents) {
     const auto grouped = by_agent.find(agent.name);
-    if (!replayedInReport(agent, config.episode) || grouped == by_agent.end()) continue;
+    if (grouped == by_agent.end() || grouped->second.total() == 0) continue;
     const std::vector<DistinctFailure> groups = grouped->second.groups();
     AgentFailureKinds a{agent.name, static_cast<int>(groups.size()), grouped->second.total(), {}};
     for (std::size_t k = 0; k < groups.size() && k < static_cast<std::size_t>(kShownFailureKinds); ++k) {

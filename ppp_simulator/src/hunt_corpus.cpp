@@ -9,8 +9,8 @@
 #include "ppp_core/error.hpp"
 #include "ppp_core/problem.hpp"
 #include "ppp_core/text_file.hpp"
-#include "ppp_core/text_format.hpp"
 #include "ppp_simulator/corpus.hpp"
+#include "ppp_simulator/corpus_check.hpp"
 #include "ppp_simulator/failure_shrink.hpp"
 #include "ppp_simulator/report/distinct_failures.hpp"
 #include "ppp_simulator/results_file.hpp"
@@ -79,8 +79,7 @@ std::string entryLine(const CorpusEntry& e) {
 /// the trap's recorded seeds) for a planner.
 std::string trapReplay(const CorpusEntry& e, const agents::AgentConfig& agent, const EpisodeOptions& episode) {
   if (!agents::isPlanner(agent)) return agents::replayCommand(e.trap_file, agent, episode, e.failing_seed);
-  return "roslaunch launch/check.launch corpus:=" + shellWord(e.trap_file) + " agent:=" + shellWord(agent.name) +
-         " config:=EXPERIMENT.yaml";
+  return checkLaunchCommand(e.trap_file, agent.name, "EXPERIMENT.yaml");
 }
 
 }  // namespace

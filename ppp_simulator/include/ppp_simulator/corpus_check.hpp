@@ -76,6 +76,10 @@ std::string checkJunitXml(const std::string& suite, const std::string& agent, co
                           const std::vector<CaseVerdict>& verdicts,
                           const std::function<std::string(const CorpusCase&, std::uint64_t)>& replay);
 
+/// The launch of the check node that plays `agent` of the experiment config `config` on `corpus` (a PPP file or
+/// directory) through ROS: "roslaunch launch/check.launch corpus:=... agent:=... config:=...".
+std::string checkLaunchCommand(const std::string& corpus, const std::string& agent, const std::string& config);
+
 /// One declaration per CheckTask option.
 const std::vector<OptionSpec<CheckTask>>& checkTaskSpecs();
 
