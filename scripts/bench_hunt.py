@@ -171,7 +171,12 @@ def measure(route, planner, out, seconds, config_path, size):
                                     and r["diagnosis"])
     attributed = attribute(out, planner, hunted_set, hunted_rows, config_path, log) if len(faults_of(planner)) > 1 \
         else {}
+    hunt_seconds = max((float(r["seconds"]) for r in log), default=0.0)  # the hunts of a route run side by side
+    steps = sum(int(r["steps"]) for r in log)
     return {"planner": planner, "route": route, "seconds": round(seconds, 1), "evaluations": len(log),
+            "hunt_seconds": hunt_seconds, "steps_per_evaluation": round(steps / len(log), 1) if log else 0.0,
+            "ms_per_evaluation": round(1000 * hunt_seconds / len(log), 3) if log else 0.0,
+            "us_per_step": round(1e6 * hunt_seconds / steps, 2) if steps else 0.0,
             "first_failing_evaluation": first + 1 if first is not None else None,
             "first_failing_seconds": float(log[first]["seconds"]) if first is not None else None,
             "failing_per_1000": round(1000.0 * len(failing_grids) / len(log), 2) if log else 0.0,
@@ -314,6 +319,15 @@ def markdown_table(jsonl):
                          "PPPs per 1,000 evaluations, %d traps" % (route, 100.0 * revealed / (3 * len(sample)), revealed,
                                                                   3 * len(sample), 1000 * found / evaluations,
                                                                   sum(r["traps"] for r in sample)))
+    lines.append("")
+    lines += ["| planner | route | hunt wall time | ms an evaluation | steps an evaluation | µs a step |",
+              "|---|---|---|---|---|---|"]
+    for r in rows:
+        if "us_per_step" in r:
+            lines.append("| %s | %s | %.1f s | %.2f | %.1f | %.1f |" % (
+                r["planner"].replace("+", ", "), r["route"], r["hunt_seconds"], r["ms_per_evaluation"],
+                r["steps_per_evaluation"], r["us_per_step"]))
+    lines.append("")
     for r in rows:
         if r["planner"] == "mrpt":
             lines.append("mrpt, %s: the hunted set's failed runs by diagnosis: %s" % (

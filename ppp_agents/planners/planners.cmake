@@ -174,3 +174,7 @@ if(benchmark_FOUND)
   target_link_libraries(laser_bench ppp_planners_mrpt benchmark::benchmark_main)
   target_compile_options(planners_bench PRIVATE -Wall -Wextra)
 endif()
+# How often MRPT's wavefront planner answers notFound for a path that exists, by distance, on fine random maps
+# and on maps as the planner node draws them (a census program, not a test: its counts go in findings.md).
+add_executable(mrpt_not_found_census planners/bench/mrpt_not_found_census.cpp)
+target_link_libraries(mrpt_not_found_census mrpt::nav)

@@ -378,10 +378,13 @@ std::string replayFlags(const AgentConfig& config, const EpisodeOptions& episode
   return episode_flags.empty() ? flags : flags + " " + episode_flags;
 }
 
+std::string replayCommand(const std::string& file, const std::string& flags, std::uint64_t seed) {
+  return "ppp replay " + shellWord(file) + " " + flags + " --seed " + std::to_string(seed) + " -o path.png";
+}
+
 std::string replayCommand(const std::string& file, const AgentConfig& config, const EpisodeOptions& episode,
                           std::uint64_t seed) {
-  return "ppp replay " + shellWord(file) + " " + replayFlags(config, episode) + " --seed " + std::to_string(seed) +
-         " -o path.png";
+  return replayCommand(file, replayFlags(config, episode), seed);
 }
 
 bool isPlanner(const AgentConfig& config) { return config.type == kPlannerType; }

@@ -4,7 +4,6 @@
 
 #include "ppp_core/episode_reason.hpp"
 #include "ppp_core/error.hpp"
-#include "ppp_core/failure_signature.hpp"
 #include "ppp_core/stop.hpp"
 #include "ppp_generator/failure_fitness.hpp"
 #include "ppp_generator/hunt_evaluation.hpp"
@@ -49,12 +48,8 @@ Fitness makeRemoteFailureFitness(ros::NodeHandle& nh, const GeneratorOptions& op
       estimate.failure_rate = e.failure_rate;
       estimate.budget_used = e.budget_used;
       estimate.regret = e.regret;
-      for (std::size_t s = 0; s < e.signatures.size() && s < e.signature_counts.size(); ++s) {
-        if (!isWellFormedSignature(e.signatures[s])) {
-          throw IoError(service, "answered a malformed failure signature '" + e.signatures[s] + "'");
-        }
-        estimate.signatures[e.signatures[s]] += static_cast<int>(e.signature_counts[s]);
-      }
+      estimate.steps = static_cast<long>(e.steps);
+      estimate.signatures = ppp_msgs::signatureCounts(e, service);
       scores.push_back(panelScore(options.fitness, estimate));
       for (std::size_t r = 0; r < e.reasons.size() && r < e.reason_counts.size(); ++r) {
         if (e.reasons[r] != reason::kBudgetExhausted && e.reasons[r] != kSoftFailureReason) {

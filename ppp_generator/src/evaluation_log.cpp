@@ -16,7 +16,7 @@ Fitness EvaluationLog::wrap(Fitness fitness) const {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - rows->start).count();
     for (std::size_t i = 0; i < scores.size() && i < grids.size(); ++i) {
       rows->text += std::to_string(++rows->count) + "," + formatFixed(seconds, 3) + "," + formatNumber(scores[i].value) +
-                    "," + formatNumber(scores[i].failure_rate) + "," + formatHex64(grids[i]->hash()) + "\n";
+                    "," + formatNumber(scores[i].failure_rate) + "," + formatHex64(grids[i]->hash()) + "," + std::to_string(scores[i].steps) + "\n";
     }
     return scores;
   };
@@ -25,7 +25,7 @@ Fitness EvaluationLog::wrap(Fitness fitness) const {
 
 bool EvaluationLog::empty() const { return rows_->count == 0; }
 
-std::string EvaluationLog::csv() const { return "evaluation,seconds,value,failure_rate,grid\n" + rows_->text; }
+std::string EvaluationLog::csv() const { return "evaluation,seconds,value,failure_rate,grid,steps\n" + rows_->text; }
 
 std::string withoutSeconds(const std::string& evaluations_csv) {
   std::string kept;

@@ -57,6 +57,7 @@ FailureEstimate estimateOf(const PanelTally& tally, int runs, int budget) {
     estimate.failure_rate += tally.failures[a] / static_cast<double>(runs) / agents;
     estimate.budget_used += tally.steps[a] / (static_cast<double>(runs) * budget) / agents;
     estimate.regret += tally.regret[a] / runs / agents;
+    estimate.steps += tally.played[a];
   }
   return estimate;
 }
@@ -66,6 +67,7 @@ FitnessScore panelScore(const std::string& fitness, const FailureEstimate& estim
                                                  : failureScore(estimate.failure_rate, estimate.budget_used);
   score.failure_rate = estimate.failure_rate;
   score.signatures = estimate.signatures;
+  score.steps = estimate.steps;
   return score;
 }
 
@@ -86,7 +88,7 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
     Grid space;
     const Grid& motion = motionGrid(*grids[p], panel.episode.robot_radius, &space);
     optima.push_back(optimumOf(*problems[p], motion, panel.episode.connectivity));
-    signature_maps.emplace_back(*grids[p], motion, problems[p]->start, problems[p]->goal);
+    if (panel.signatures) signature_maps.emplace_back(*grids[p], motion, problems[p]->start, problems[p]->goal);
     budgets.push_back(episodeBudget(panel.episode, optima.back().moves));
   }
   std::vector<std::once_flag> atlas_built(problems.size());
@@ -117,7 +119,8 @@ std::vector<FailureEstimate> estimateFailures(const FailurePanel& panel, const s
           const bool soft = isSoftFailure(outcome.passed, pathLength(outcome), optima[p].length,
                                           panel.episode.soft_failure_ratio);
           tallies[p].add(a, outcome.passed && !soft, outcome.steps, budgets[p], optima[p].moves);
-          if (!outcome.passed || soft) {
+          tallies[p].played[a] += outcome.steps;
+          if (panel.signatures && (!outcome.passed || soft)) {
             const Diagnosis d = diagnoseRun(outcome.passed, soft, outcome.reason, outcome.cells);
             ++signatures[u][failureSignature(signature_maps[p], d, outcome.reason, outcome.cells)];
           }
@@ -190,6 +193,7 @@ Fitness fitnessFor(const GeneratorOptions& options, const std::vector<agents::Ag
   panel.round_size = options.round_size;
   panel.seed = options.seed;
   panel.threads = threads;
+  panel.signatures = options.archive == kSignatureArchive;
   return makeFailureFitness(panel);
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "ppp_core/continuous_episode.hpp"
 #include "ppp_core/error.hpp"
@@ -84,8 +85,9 @@ void HuntEvaluation::record(const std::vector<agents::EpisodeResult>& ended) {
     } else {
       tallies_[p].add(a, passed, r.steps, budget, sets_[0].moves[p]);
     }
+    tallies_[p].played[a] += r.steps;
     if (!r.diagnosis.empty()) ++e.diagnoses[r.diagnosis];
-    if (!r.signature.empty()) ++e.signatures[r.signature];
+    if (!r.signature.empty()) ++e.estimate.signatures[r.signature];
     if (r.endless_step >= 0) ++e.endless;
     if (!passed) {
       ++e.failed;
@@ -109,7 +111,11 @@ std::vector<agents::EpisodeResult> HuntEvaluation::rows() const {
 std::vector<PanelEvaluation> HuntEvaluation::evaluations() const {
   std::lock_guard<std::mutex> lock(mutex_);
   std::vector<PanelEvaluation> result = evaluations_;
-  for (std::size_t p = 0; p < result.size(); ++p) result[p].estimate = estimateOf(tallies_[p], runs_, sets_[0].budgets[p]);
+  for (std::size_t p = 0; p < result.size(); ++p) {
+    FailureEstimate estimate = estimateOf(tallies_[p], runs_, sets_[0].budgets[p]);
+    estimate.signatures = std::move(result[p].estimate.signatures);  // counted run by run in record()
+    result[p].estimate = std::move(estimate);
+  }
   return result;
 }
 

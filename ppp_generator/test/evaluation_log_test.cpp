@@ -32,10 +32,11 @@ TEST(EvaluationLogTest, AHuntLogsEveryPppItScoredInOrderWithItsFigures) {
     for (const Grid* g : grids) {
       const int cells = g->obstacleCount();
       scores.push_back({double(cells), double(cells), cells > 40 ? 1.0 : 0.0});
+      scores.back().steps = 7L * cells;
       char hash[17];
       std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(g->hash()));
       expected.push_back(std::to_string(expected.size() + 1) + "," + std::to_string(cells) + "," +
-                         (cells > 40 ? "1" : "0") + "," + hash);
+                         (cells > 40 ? "1" : "0") + "," + hash + "," + std::to_string(7 * cells));
     }
     return scores;
   };
@@ -49,7 +50,7 @@ TEST(EvaluationLogTest, AHuntLogsEveryPppItScoredInOrderWithItsFigures) {
   const std::vector<std::string> rows = linesOf(withoutSeconds(log->second));
   ASSERT_GE(expected.size(), 10u);  // the initial pool at least
   ASSERT_EQ(rows.size(), expected.size() + 1);
-  EXPECT_EQ(rows[0], "evaluation,value,failure_rate,grid");
+  EXPECT_EQ(rows[0], "evaluation,value,failure_rate,grid,steps");
   for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_EQ(rows[i + 1], expected[i]) << i;
   // The seconds column: non-negative and never decreasing.
   double last = 0;

@@ -59,11 +59,39 @@ TEST(FailureFitnessTest, HandWorkedFiguresOnTheIsland) {
   ASSERT_EQ(estimates.size(), 1u);
   EXPECT_DOUBLE_EQ(estimates[0].failure_rate, 0.5);
   EXPECT_NEAR(estimates[0].budget_used, (1.0 + 38.0 / 300.0) / 2.0, 1e-12);
+  EXPECT_EQ(estimates[0].steps, 10 * 300 + 10 * 38);  // the steps played: every move of both agents' runs
+  int signed_runs = 0;
+  for (const auto& [signature, runs] : estimates[0].signatures) signed_runs += runs;
+  EXPECT_EQ(signed_runs, 10);  // the wall follower's failed runs, each signed once
   const Fitness fitness = makeFailureFitness(panel);
   const auto scores = fitness.batch({&problem}, {&grid});
   EXPECT_DOUBLE_EQ(scores[0].value, 0.5);
   EXPECT_NEAR(scores[0].score, 0.5 + 0.001 * (1.0 + 38.0 / 300.0) / 2.0, 1e-12);
   EXPECT_EQ(fitness.batch_size, kFailureBatchSize);
+}
+
+TEST(FailureFitnessTest, FailedRunsAreSignedOnlyForAnArchiveKeyedBySignatures) {
+  // The wall follower fails its 10 runs on the island: a hunt whose archive reads signatures gets them, another
+  // hunt's scores carry none (signing costs time no one reads); the failure rate and steps are the same.
+  const Problem problem = islandProblem();
+  const Grid grid = decodeGrid(problem);
+  GeneratorOptions options;
+  options.fitness = kFailureFitness;
+  options.agents = {"wall_follower_left"};
+  options.runs_per_eval = 10;
+  std::vector<FitnessScore> scores;
+  for (const char* archive : {kNoArchive, kMapElitesArchive, kSignatureArchive}) {
+    options.archive = archive;
+    scores.push_back(fitnessFor(options, {}, EpisodeOptions{}, 1).batch({&problem}, {&grid}).at(0));
+    EXPECT_DOUBLE_EQ(scores.back().failure_rate, 1.0) << archive;
+    EXPECT_EQ(scores.back().steps, 3000) << archive;
+  }
+  EXPECT_TRUE(scores[0].signatures.empty());
+  EXPECT_TRUE(scores[1].signatures.empty());
+  ASSERT_FALSE(scores[2].signatures.empty());
+  int signed_runs = 0;
+  for (const auto& [signature, runs] : scores[2].signatures) signed_runs += runs;
+  EXPECT_EQ(signed_runs, 10);
 }
 
 TEST(FailureFitnessTest, TheRoundSizeIsTheBatchOfCandidatesScoredTogether) {

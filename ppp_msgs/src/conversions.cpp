@@ -6,6 +6,7 @@
 #include <string>
 
 #include "ppp_core/error.hpp"
+#include "ppp_core/failure_signature.hpp"
 #include "ppp_core/map_frame.hpp"
 #include "ppp_core/scan_rays.hpp"
 
@@ -282,6 +283,21 @@ sensor_msgs::LaserScan toLaserScan(const std::int8_t* window, int range, double 
     laser.ranges.push_back(std::isinf(r) ? r : r * static_cast<float>(resolution));
   }
   return laser;
+}
+
+std::map<std::string, int> signatureCounts(const ppp_msgs::ProblemEvaluation& evaluation, const std::string& source) {
+  if (evaluation.signatures.size() != evaluation.signature_counts.size()) {
+    throw ppp::IoError(source, "answered " + std::to_string(evaluation.signatures.size()) + " failure signatures and " +
+                                   std::to_string(evaluation.signature_counts.size()) + " counts");
+  }
+  std::map<std::string, int> counts;
+  for (std::size_t i = 0; i < evaluation.signatures.size(); ++i) {
+    if (!ppp::isWellFormedSignature(evaluation.signatures[i])) {
+      throw ppp::IoError(source, "answered a malformed failure signature '" + evaluation.signatures[i] + "'");
+    }
+    counts[evaluation.signatures[i]] += static_cast<int>(evaluation.signature_counts[i]);
+  }
+  return counts;
 }
 
 }  // namespace ppp_msgs

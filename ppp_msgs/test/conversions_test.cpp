@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -380,3 +381,34 @@ TEST(CellTransform, PutsTheChildOnTheCellCentre) {
 }
 
 }  // namespace
+
+TEST(SignatureCounts, SumsTheRunsOfEachSignature) {
+  ppp_msgs::ProblemEvaluation e;
+  e.signatures = {"missed_route/g16-31/s1/t0/w0e0", "wandering/g4-7/s4-7/t1/w0e0", "missed_route/g16-31/s1/t0/w0e0"};
+  e.signature_counts = {2, 3, 4};
+  const std::map<std::string, int> counts = ppp_msgs::signatureCounts(e, "/evaluate");
+  ASSERT_EQ(counts.size(), 2u);
+  EXPECT_EQ(counts.at("missed_route/g16-31/s1/t0/w0e0"), 6);
+  EXPECT_EQ(counts.at("wandering/g4-7/s4-7/t1/w0e0"), 3);
+}
+
+TEST(SignatureCounts, RefusesListsOfDifferentLengthsAndMalformedSignaturesNamingTheService) {
+  ppp_msgs::ProblemEvaluation e;
+  e.signatures = {"wandering/g4-7/s4-7/t1/w0e0"};
+  e.signature_counts = {1, 2};
+  try {
+    ppp_msgs::signatureCounts(e, "/evaluate");
+    FAIL() << "lists of different lengths accepted";
+  } catch (const ppp::IoError& error) {
+    EXPECT_NE(std::string(error.what()).find("/evaluate"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("1 failure signatures and 2 counts"), std::string::npos) << error.what();
+  }
+  e.signatures = {"wandering/g4-7"};
+  e.signature_counts = {1};
+  try {
+    ppp_msgs::signatureCounts(e, "/evaluate");
+    FAIL() << "a malformed signature accepted";
+  } catch (const ppp::IoError& error) {
+    EXPECT_NE(std::string(error.what()).find("'wandering/g4-7'"), std::string::npos) << error.what();
+  }
+}

@@ -114,7 +114,8 @@ ppp_msgs::ProblemEvaluation HuntServer::toMessage(const generator::PanelEvaluati
     m.diagnosis_counts.push_back(static_cast<std::uint32_t>(count));
   }
   m.endless_loops = static_cast<std::uint32_t>(e.endless);
-  for (const auto& [signature, count] : e.signatures) {
+  m.steps = static_cast<std::uint64_t>(e.estimate.steps);
+  for (const auto& [signature, count] : e.estimate.signatures) {
     m.signatures.push_back(signature);
     m.signature_counts.push_back(static_cast<std::uint32_t>(count));
   }

@@ -4,7 +4,6 @@
 
 #include "ppp_core/diagnosis.hpp"
 #include "ppp_core/error.hpp"
-#include "ppp_core/failure_signature.hpp"
 #include "ppp_core/stop.hpp"
 #include "ppp_msgs/EvaluateProblems.h"
 #include "ppp_msgs/conversions.h"
@@ -26,10 +25,7 @@ RunsOutcome outcomeOf(const ppp_msgs::ProblemEvaluation& e, int runs, const std:
     if (kind < 0) throw IoError(service, "answered an unknown diagnosis '" + e.diagnoses[i] + "'");
     outcome.kinds[static_cast<std::size_t>(kind)] += static_cast<int>(e.diagnosis_counts[i]);
   }
-  for (std::size_t i = 0; i < e.signatures.size() && i < e.signature_counts.size(); ++i) {
-    if (!isWellFormedSignature(e.signatures[i])) throw IoError(service, "answered a malformed signature '" + e.signatures[i] + "'");
-    outcome.signatures[e.signatures[i]] += static_cast<int>(e.signature_counts[i]);
-  }
+  outcome.signatures = ppp_msgs::signatureCounts(e, service);
   return outcome;
 }
 

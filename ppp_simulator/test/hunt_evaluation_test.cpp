@@ -88,6 +88,7 @@ TEST(HuntEvaluationTest, APlannerInContinuousMotionIsJudgedOnContinuousLanesInSi
   EXPECT_DOUBLE_EQ(e.estimate.failure_rate, 0.5);
   EXPECT_DOUBLE_EQ(e.estimate.budget_used, 0.75);
   EXPECT_DOUBLE_EQ(e.estimate.regret, 2.0);
+  EXPECT_EQ(e.estimate.steps, 560 + 17);  // the periods played, not the budgets charged
 }
 
 TEST(HuntEvaluationTest, EstimatesEqualTheInProcessFailureFitness) {
@@ -97,9 +98,12 @@ TEST(HuntEvaluationTest, EstimatesEqualTheInProcessFailureFitness) {
   episode.budget = 20;
   const std::vector<Problem> problems = candidates();
   HuntEvaluation evaluation(problems, {agent("random")}, episode, 10, 7, 16);
-  evaluation.record(play(*evaluation.lanes()[0]));
+  const std::vector<agents::EpisodeResult> rows = play(*evaluation.lanes()[0]);
+  evaluation.record(rows);
   const std::vector<PanelEvaluation> got = evaluation.evaluations();
   ASSERT_EQ(got.size(), 3u);
+  std::vector<long> steps(problems.size(), 0);  // the moves the rows took, candidate by candidate
+  for (const agents::EpisodeResult& r : rows) steps.at(std::stoul(r.problem.substr(1))) += r.steps;
   FailurePanel panel;
   panel.agents = {agent("random")};
   panel.episode = episode;
@@ -114,6 +118,8 @@ TEST(HuntEvaluationTest, EstimatesEqualTheInProcessFailureFitness) {
     EXPECT_EQ(got[p].episodes, 10);
     EXPECT_DOUBLE_EQ(got[p].estimate.failure_rate, expected[p].failure_rate) << p;
     EXPECT_DOUBLE_EQ(got[p].estimate.budget_used, expected[p].budget_used) << p;
+    EXPECT_EQ(got[p].estimate.steps, steps[p]) << p;
+    EXPECT_EQ(expected[p].steps, steps[p]) << p;
     EXPECT_EQ(got[p].failed, static_cast<int>(expected[p].failure_rate * 10 + 0.5)) << p;
   }
   EXPECT_LT(got[0].estimate.failure_rate, got[2].estimate.failure_rate);
@@ -140,7 +146,7 @@ TEST(HuntEvaluationTest, GivenRunSeedsEveryCandidateIsPlayedOnThemAndDiagnosedAs
       if (expected.kinds[k] > 0) kinds[diagnosis::kKinds[k]] = expected.kinds[k];
     }
     EXPECT_EQ(got[p].diagnoses, kinds) << p;
-    EXPECT_EQ(got[p].signatures, expected.signatures) << p;  // through the lanes as in process, run for run
+    EXPECT_EQ(got[p].estimate.signatures, expected.signatures) << p;  // through the lanes as in process, run for run
     diagnosed += got[p].failed;
   }
   EXPECT_GT(diagnosed, 0);  // the far goal is not reached in 12 random moves every time

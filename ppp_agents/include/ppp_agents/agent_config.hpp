@@ -127,6 +127,9 @@ const std::vector<OptionSpec<AgentConfig>>& agentPlayOptionSpecs();
 /// --budget 100"): its type and every play option and episode rule that is not the default.
 std::string replayFlags(const AgentConfig& config, const EpisodeOptions& episode);
 
+/// The `ppp replay` command that plays run `seed` with `flags` (replayFlags()) on the PPP in `file` and draws it.
+std::string replayCommand(const std::string& file, const std::string& flags, std::uint64_t seed);
+
 /// The `ppp replay` command that plays `config`'s run `seed` under `episode` on the PPP in `file` and draws it.
 std::string replayCommand(const std::string& file, const AgentConfig& config, const EpisodeOptions& episode,
                           std::uint64_t seed);

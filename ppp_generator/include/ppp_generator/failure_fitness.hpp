@@ -27,6 +27,9 @@ struct FailurePanel {
   int round_size = kFailureBatchSize;       ///< PPPs scored per call (matings per round of the generator).
   std::uint64_t seed = 1;                   ///< The generator seed the run seeds derive from.
   int threads = 0;                          ///< Worker threads; 0 = every core.
+  /// Whether the estimates carry the failed runs' signatures (an archive keyed by them reads them; signing a
+  /// failed run costs about a tenth of playing a built-in agent's, so a hunt without that archive skips it).
+  bool signatures = true;
 };
 
 /// The seed of run `run` of panel agent `agent` on a PPP whose grid hashes to `grid_hash`: the same PPP is
@@ -40,15 +43,18 @@ struct FailureEstimate {
   double budget_used = 0;   ///< Mean share of the budget the panel's runs used.
   double regret = 0;        ///< Mean over the panel of each agent's mean regret (runRegret()).
   std::map<std::string, int> signatures{};  ///< Failed and soft-failed runs per failure signature.
+  long steps = 0;  ///< Steps the panel's runs took: moves on the grid, control periods in continuous motion.
 };
 
 /// What a panel's runs on one PPP came to, per panel agent.
 struct PanelTally {
   /// An empty tally of a panel of `agents`.
-  explicit PanelTally(std::size_t agents = 0) : failures(agents, 0), steps(agents, 0), regret(agents, 0) {}
+  explicit PanelTally(std::size_t agents = 0)
+      : failures(agents, 0), steps(agents, 0), regret(agents, 0), played(agents, 0) {}
   std::vector<int> failures;   ///< Failed runs (soft failures included).
   std::vector<long> steps;     ///< Moves used: a run's steps, or its whole budget when it failed.
   std::vector<double> regret;  ///< Sum of the runs' regrets.
+  std::vector<long> played;    ///< Steps the runs took (moves, or control periods), whatever their outcome.
   /// Adds a run of panel agent `agent` that `passed` (false for a soft failure too) after `steps`, on a PPP with
   /// move budget `budget` and fewest moves `optimal_moves`.
   void add(std::size_t agent, bool passed, int steps, int budget, int optimal_moves);

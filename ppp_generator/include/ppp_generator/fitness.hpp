@@ -27,6 +27,7 @@ struct FitnessScore {
   double failure_rate = 0;  ///< A panel fitness: the share of the panel's runs that failed (as `failure`'s value).
   /// A panel fitness: its failed and soft-failed runs per failure signature (docs/reference/signatures.md).
   std::map<std::string, int> signatures{};
+  long steps = 0;  ///< A panel fitness: the steps its runs took (moves, or control periods in continuous motion).
 };
 
 /// Scores many valid PPPs at once, in input order (`grids[i]` is the decoded grid of `problems[i]`): the

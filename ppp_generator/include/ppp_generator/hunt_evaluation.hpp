@@ -22,13 +22,12 @@ constexpr const char* kSoftFailureReason = "soft_failure";
 
 /// What a panel's runs on one PPP of a hunt came to, with why runs failed.
 struct PanelEvaluation {
-  FailureEstimate estimate;             ///< Failure rate, budget used and regret, as computed in process.
+  FailureEstimate estimate;             ///< Failure rate, budget used, regret, signatures, steps: as in process.
   int episodes = 0;                     ///< Runs played.
   int failed = 0;                       ///< Of them, failed.
   std::map<std::string, int> reasons;   ///< Failed runs per reason (budget_exhausted, soft_failure, ...).
   std::map<std::string, int> diagnoses; ///< Failed and soft-failed runs per diagnosis (loop, detour, ...).
   int endless = 0;                      ///< Of the loops, those proven endless (EpisodeResult::endless_step).
-  std::map<std::string, int> signatures;  ///< Failed and soft-failed runs per failure signature.
 };
 
 /// One evaluation request of a hunt, played through agent lanes (the simulator node's ~evaluate): per panel agent

@@ -5,6 +5,7 @@
 #include <sensor_msgs/LaserScan.h>
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "ppp_core/problem.hpp"
 #include "ppp_msgs/Obstacle.h"
 #include "ppp_msgs/Problem.h"
+#include "ppp_msgs/ProblemEvaluation.h"
 #include "ppp_msgs/ProblemSet.h"
 
 /// Conversions between the ROS-free ppp_core model and the PPP Lab messages.
@@ -105,5 +107,10 @@ ppp_msgs::ProblemSet toSetMessage(const std::string& name, const std::vector<ppp
 ///         decoded genotype (naming the first differing cell in grid row-major order, as map.data[i] and in
 ///         both grid and map coordinates).
 ppp::Problem fromMessage(const ppp_msgs::Problem& message);
+
+/// The failed and soft-failed runs per failure signature of an evaluation (its signatures and signature_counts).
+/// @throws ppp::IoError naming `source` (the service that answered) for lists of different lengths or a
+///         malformed signature.
+std::map<std::string, int> signatureCounts(const ppp_msgs::ProblemEvaluation& evaluation, const std::string& source);
 
 }  // namespace ppp_msgs

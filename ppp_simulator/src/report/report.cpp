@@ -19,6 +19,7 @@
 #include "ppp_core/text_format.hpp"
 #include "ppp_core/trajectory_picture.hpp"
 #include "ppp_generator/tree_html.hpp"
+#include "ppp_agents/agent_config.hpp"
 #include "ppp_agents/episode_result.hpp"
 #include "ppp_simulator/report/statistics.hpp"
 #include "ppp_simulator/report/svg_plot.hpp"
@@ -400,7 +401,7 @@ std::string replayCommand(const FailureExample& failure, const std::string& ppp_
   if (failure.recorded && failure.driven) return shrinkLaunchCommand(failure, ppp_file);
   if (failure.recorded) return "its moves: planner_moves.csv, run " + std::to_string(failure.run);
   const std::string flags = failure.replay_flags.empty() ? "--agent " + shellWord(failure.agent) : failure.replay_flags;
-  return "ppp replay " + shellWord(ppp_file) + " " + flags + " --seed " + std::to_string(failure.seed) + " -o path.png";
+  return agents::replayCommand(ppp_file, flags, failure.seed);
 }
 
 /// How to play `failure`'s run again on its shrunk PPP in `ppp_file`: ppp replay, or for a planner (which plays only
