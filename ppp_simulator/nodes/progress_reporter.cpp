@@ -8,9 +8,9 @@
 namespace ppp {
 namespace simulator {
 
-ProgressReporter::ProgressReporter(const std::string& phase, const std::string& unit, long total,
-                                   std::function<long()> done)
-    : meter_(phase, unit), total_(total), done_(std::move(done)) {
+ProgressReporter::ProgressReporter(const std::string& phase, const std::string& unit,
+                                   std::function<std::vector<LaneCount>()> lanes)
+    : meter_(phase, unit), lanes_(std::move(lanes)) {
   report();
   thread_ = std::thread([this] {
     std::unique_lock<std::mutex> lock(mutex_);
@@ -29,7 +29,7 @@ ProgressReporter::~ProgressReporter() {
 }
 
 void ProgressReporter::report() {
-  const std::string line = meter_.update(done_(), total_, steadySeconds());
+  const std::string line = meter_.update(lanes_(), steadySeconds());
   if (!line.empty()) ROS_INFO("%s", line.c_str());
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <map>
 #include <memory>
 #include <set>
 #include <thread>
@@ -124,11 +125,13 @@ int SimulatorNode::runExperiment() {
   lanes_control.stopping = [&failed, stopping] { return failed || stopping(); };
   std::vector<std::unique_ptr<PlayedLane>> lanes;
   long remaining = 0;
-  std::atomic<long> ended_runs{0};
-  const auto sink = [&results, &recorder, &ended_runs](const std::vector<agents::EpisodeResult>& ended) {
+  std::map<std::string, long> runs_of_agent;             // what each agent's lanes have to play ...
+  std::map<std::string, std::atomic<long>> ended_of_agent;  // ... and have played (the progress line's lanes)
+  for (const auto& agent : config.agents) ended_of_agent[agent.name].store(0);
+  const auto sink = [&results, &recorder, &ended_of_agent](const std::vector<agents::EpisodeResult>& ended) {
     results.append(ended);
     recorder.recordResults(ended);
-    ended_runs += static_cast<long>(ended.size());
+    for (const agents::EpisodeResult& r : ended) ++ended_of_agent.at(r.agent);
   };
   for (const auto& agent : config.agents) {
     const int instances = agents::instanceCount(agent, config.episode);  // instances share the agent's runs
@@ -152,13 +155,18 @@ int SimulatorNode::runExperiment() {
             }));
       }
       remaining += lanes.back()->remaining();
+      runs_of_agent[agent.name] += lanes.back()->remaining();
     }
   }
   ROS_INFO("running %ld episodes (%zu already done, %zu lost to the agent link played again) with %zu agent nodes and "
            "planner instances, batches of %d", remaining, results.done().size(), results.lostRuns(), lanes.size(),
            parameters.batch_size);
   {
-    const ProgressReporter progress("episodes", "episodes", remaining, [&ended_runs] { return ended_runs.load(); });
+    const ProgressReporter progress("episodes", "episodes", [&runs_of_agent, &ended_of_agent] {
+      std::vector<LaneCount> counts;
+      for (const auto& [agent, runs] : runs_of_agent) counts.push_back({agent, ended_of_agent.at(agent).load(), runs});
+      return counts;
+    });
     std::vector<std::thread> threads;
     for (const std::unique_ptr<PlayedLane>& lane : lanes) {
       threads.emplace_back([&lane, &failed] {

@@ -39,6 +39,47 @@ ProgressMeter::ProgressMeter(std::string phase, std::string unit, double interva
     : phase_(std::move(phase)), unit_(std::move(unit)), interval_(interval_seconds) {}
 
 std::string ProgressMeter::update(long done, long total, double now, const std::string& status) {
+  const double elapsed = started_ ? now - start_time_ : 0.0;
+  const double rate = elapsed > 0 ? static_cast<double>(done - start_done_) / elapsed : 0.0;
+  const double eta = total > 0 && rate > 0 ? (total - done) / rate : -1.0;
+  return line(done, total, now, total > 0 ? 100.0 * done / total : 0.0, eta, status);
+}
+
+std::string ProgressMeter::update(const std::vector<LaneCount>& lanes, double now) {
+  long done = 0, total = 0;
+  for (const LaneCount& lane : lanes) {
+    done += lane.done;
+    total += lane.total;
+    if (!started_) lane_start_done_[lane.name] = lane.done;
+  }
+  const double elapsed = started_ ? now - start_time_ : 0.0;
+  double eta = 0;
+  const LaneCount* slowest = nullptr;
+  for (const LaneCount& lane : lanes) {
+    if (lane.done >= lane.total) continue;
+    const auto start = lane_start_done_.find(lane.name);
+    const long since = lane.done - (start == lane_start_done_.end() ? 0 : start->second);
+    const double left = since > 0 && elapsed > 0 ? (lane.total - lane.done) * elapsed / since : -1.0;
+    if (slowest == nullptr || left < 0 || (eta >= 0 && left > eta)) {
+      slowest = &lane;
+      eta = left;
+    }
+    if (eta < 0) break;  // unknown: no lane can be slower
+  }
+  double percent = total > 0 ? 100.0 * done / total : 100.0;
+  if (slowest != nullptr) {
+    if (eta >= 0 && elapsed > 0) percent = 100.0 * elapsed / (elapsed + eta);
+    percent = std::min(percent, 99.9);  // work is left: never shown as all done
+  }
+  std::string status;
+  if (slowest != nullptr && lanes.size() > 1) {
+    status = "slowest: " + slowest->name + " " + std::to_string(slowest->done) + "/" + std::to_string(slowest->total);
+  }
+  return line(done, total, now, percent, eta, status);
+}
+
+std::string ProgressMeter::line(long done, long total, double now, double percent, double eta,
+                                const std::string& status) {
   const bool complete = total > 0 && done >= total;
   if (!started_) {
     started_ = true;
@@ -53,12 +94,12 @@ std::string ProgressMeter::update(long done, long total, double now, const std::
   const double rate = elapsed > 0 ? static_cast<double>(done - start_done_) / elapsed : 0.0;
   std::string line = "progress: " + phase_ + ": " + std::to_string(done);
   if (total > 0) {
-    line += "/" + std::to_string(total) + " " + unit_ + " (" + formatFixed(100.0 * done / total, 1) + " %)";
+    line += "/" + std::to_string(total) + " " + unit_ + " (" + formatFixed(percent, 1) + " %)";
   } else {
     line += " " + unit_;
   }
   if (elapsed > 0) line += ", " + formatRate(rate) + " " + unit_ + "/s";
-  if (total > 0 && !complete && rate > 0) line += ", ETA " + formatDuration((total - done) / rate);
+  if (total > 0 && !complete && elapsed > 0) line += eta >= 0 ? ", ETA " + formatDuration(eta) : ", ETA unknown";
   if (complete) line += ", done in " + formatDuration(elapsed);
   if (!status.empty()) line += ", " + status;
   return line;

@@ -42,5 +42,30 @@ TEST(ProgressMeterTest, AnUnknownTotalGivesCountAndRateOnly) {
   EXPECT_EQ(meter.update(31250, 0, 3.5, "48 evaluations"), "progress: hunt: 31250 episodes, 12500 episodes/s, 48 evaluations");
 }
 
+TEST(ProgressMeterTest, LanesSideBySideShowTheTimeLeftOfTheSlowest) {
+  // A grid agent's 1000 quick episodes and a planner's 10 slow ones, played side by side from t = 0. At t = 10 the
+  // grid lane has done 990 (99 a second: 0.1 s left), the planner 1 (9 left at one per 10 s: 90 s). The ETA is the
+  // planner's, and the share is of the time: 10 s of 100, though 981 of 1010 episodes (97 %) are done.
+  ProgressMeter meter("episodes", "episodes", 5.0);
+  EXPECT_EQ(meter.update({{"explorer", 0, 1000}, {"nd", 0, 10}}, 0.0),
+            "progress: episodes: 0/1010 episodes (0.0 %), slowest: explorer 0/1000");
+  EXPECT_EQ(meter.update({{"explorer", 990, 1000}, {"nd", 1, 10}}, 10.0),
+            "progress: episodes: 991/1010 episodes (10.0 %), 99.1 episodes/s, ETA 1 min 30 s, slowest: nd 1/10");
+  // The grid lane done, the planner's 9th at t = 90: one left at one per 10 s.
+  EXPECT_EQ(meter.update({{"explorer", 1000, 1000}, {"nd", 9, 10}}, 90.0),
+            "progress: episodes: 1009/1010 episodes (90.0 %), 11.2 episodes/s, ETA 10 s, slowest: nd 9/10");
+  EXPECT_EQ(meter.update({{"explorer", 1000, 1000}, {"nd", 10, 10}}, 100.0),
+            "progress: episodes: 1010/1010 episodes (100.0 %), 10.1 episodes/s, done in 1 min 40 s");
+}
+
+TEST(ProgressMeterTest, ALaneWithWorkLeftAndNothingDoneLeavesTheTimeUnknownAndNeverReadsAllDone) {
+  // 9999 of 10000 episodes done by one lane; the other's one episode has not ended: the share is of the episodes
+  // but held below 100 %, and the ETA is unknown.
+  ProgressMeter meter("episodes", "episodes", 5.0);
+  meter.update({{"explorer", 0, 9999}, {"tpspace", 0, 1}}, 0.0);
+  EXPECT_EQ(meter.update({{"explorer", 9999, 9999}, {"tpspace", 0, 1}}, 20.0),
+            "progress: episodes: 9999/10000 episodes (99.9 %), 500 episodes/s, ETA unknown, slowest: tpspace 0/1");
+}
+
 }  // namespace
 }  // namespace ppp

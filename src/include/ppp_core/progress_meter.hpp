@@ -1,6 +1,8 @@
 #pragma once
 
+#include <map>
 #include <string>
+#include <vector>
 
 namespace ppp {
 
@@ -9,6 +11,13 @@ double steadySeconds();
 
 /// A duration for people: "45 s", "3 min 02 s", "2 h 05 min".
 std::string formatDuration(double seconds);
+
+/// What one of several lanes of work played side by side has done: its name (an agent's), units done and in all.
+struct LaneCount {
+  std::string name;
+  long done = 0;
+  long total = 0;
+};
 
 /// Paces and words the progress lines of a long run whose output may be a log file: a line at the first update,
 /// then at most one every `interval` seconds, and one when the work is done. A line reads
@@ -23,7 +32,18 @@ class ProgressMeter {
   /// last line is more recent than the interval and the work is not done.
   std::string update(long done, long total, double now, const std::string& status = "");
 
+  /// The same for lanes played side by side whose units cost different times (a grid agent's episodes and a ROS
+  /// planner's in continuous motion): DONE and TOTAL are the lanes' sums, but the share and the ETA are of the
+  /// time, the slowest unfinished lane's at its own rate since the first update, and that lane is named with its
+  /// counts ("slowest: NAME d/t"). The share reads 100 % only when every lane is done; while a lane that has work
+  /// left has done none since the first line, the ETA is unknown and the share is of the units, below 100 %.
+  std::string update(const std::vector<LaneCount>& lanes, double now);
+
  private:
+  /// The line for `done` of `total` at `now` (pacing as update()): `percent` the share to show, `eta` the seconds
+  /// left (negative: unknown), `status` what follows.
+  std::string line(long done, long total, double now, double percent, double eta, const std::string& status);
+
   std::string phase_;
   std::string unit_;
   double interval_;
@@ -32,6 +52,7 @@ class ProgressMeter {
   double start_time_ = 0;
   long start_done_ = 0;
   double last_line_ = 0;
+  std::map<std::string, long> lane_start_done_;  ///< Each lane's units done at the first update.
 };
 
 }  // namespace ppp
