@@ -80,13 +80,13 @@ cmake -S ppp_simulator/fuzz -B "${build_dir}" -DCMAKE_CXX_COMPILER="${clangxx}" 
   -DPPP_MSGS_INCLUDE_DIR="${msgs_include}" >/dev/null
 cmake --build "${build_dir}" --target $(printf '%s_fuzz ' "${targets[@]}") -j2
 
-for target in "${targets[@]}"; do
-  corpus="${build_dir}/corpus/${target}"
-  artifacts="${build_dir}/artifacts/${target}"
+# fuzz_one TARGET: runs it for the budget and prints its figures; on a finding, the end of its log and the inputs,
+# and fails with libFuzzer's status.
+fuzz_one() {
+  local target="$1" corpus="${build_dir}/corpus/$1" artifacts="${build_dir}/artifacts/$1" status=0
   mkdir -p "${corpus}" "${artifacts}"
   cp "$(corpus_of "${target}")"/* "${corpus}/"
   echo "fuzzing ${target} for ${budget} (corpus ${corpus}, findings in ${artifacts})"
-  status=0
   # Without allocation stacks in the reports (about a third more executions of the allocation-heavy YAML readers);
   # reproducing a finding (see the top of this file) shows them.
   ASAN_OPTIONS="malloc_context_size=0${ASAN_OPTIONS:+:${ASAN_OPTIONS}}" "${build_dir}/${target}_fuzz" \
@@ -94,10 +94,31 @@ for target in "${targets[@]}"; do
     -print_final_stats=1 -artifact_prefix="${artifacts}/" "${corpus}" 2> "${build_dir}/${target}.log" || status=$?
   grep -E "stat::(number_of_executed_units|average_exec_per_sec)" "${build_dir}/${target}.log" | sed "s/^/${target}: /" || true
   if [[ ${status} -ne 0 ]]; then
-    tail -40 "${build_dir}/${target}.log" >&2
-    echo "fuzz.sh: FINDING in ${target} (libFuzzer exit ${status}); inputs in ${artifacts}/:" >&2
-    ls -l "${artifacts}" >&2 || true
-    exit "${status}"
+    tail -40 "${build_dir}/${target}.log"
+    echo "fuzz.sh: FINDING in ${target} (libFuzzer exit ${status}); inputs in ${artifacts}/:"
+    ls -l "${artifacts}" || true
+  fi
+  return "${status}"
+}
+
+# As many targets at once as there are cores (each fuzzer is one process): every target still gets its whole
+# budget on a core of its own. Each target's output is shown when it ends, a finding's on stderr.
+pids=()
+for target in "${targets[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$(nproc)" ]; do wait -n || true; done
+  fuzz_one "${target}" > "${build_dir}/${target}.out" 2>&1 &
+  pids+=($!)
+done
+first_status=0
+for i in "${!targets[@]}"; do
+  status=0
+  wait "${pids[$i]}" || status=$?
+  if [[ ${status} -eq 0 ]]; then
+    cat "${build_dir}/${targets[$i]}.out"
+  else
+    cat "${build_dir}/${targets[$i]}.out" >&2
+    [[ ${first_status} -ne 0 ]] || first_status=${status}
   fi
 done
+[[ ${first_status} -eq 0 ]] || exit "${first_status}"
 echo "fuzz.sh: no findings in ${budget} per target (${targets[*]})"

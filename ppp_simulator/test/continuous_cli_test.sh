@@ -62,6 +62,12 @@ expect_ok "replay continuous failure" "$ppp" replay empty:8x6 --agent astar --mo
   --max-angular-speed 0.3 --seed 1 -o "$work/fail.png"
 grep -q 'failed (budget_exhausted) after 240 control periods' "$work/out" && grep -q '^diagnosis: wandering' "$work/out" \
   && pass || fail "replay continuous failure: $(cat "$work/out")"
+# With a progress timeout the same slow-turning run ends once it has stayed within half a cell of one point for
+# 2 s (it dithers at step 133 on): no_progress, earlier than its budget, diagnosed from its cells as before.
+expect_ok "replay continuous no progress" "$ppp" replay empty:8x6 --agent astar --motion continuous --time-factor 1 \
+  --max-angular-speed 0.3 --progress-timeout 2 --seed 1 -o "$work/stalled.png"
+grep -q 'failed (no_progress) after 162 control periods' "$work/out" && grep -q 'the progress timeout, not a trap' "$work/out" \
+  && pass || fail "replay continuous no progress: $(cat "$work/out")"
 # The run animated: the start, every control period (258 of them), and the last frame; read back by Pillow.
 expect_ok "replay continuous gif" "$ppp" replay empty:8x6 --agent astar --motion continuous --seed 1 -o "$work/run.gif"
 grep -q 'animated in .* (259 frames)' "$work/out" && pass || fail "replay continuous gif: $(cat "$work/out")"
@@ -77,6 +83,10 @@ expect_error "zero control period" "--control-period: expected a number in" \
   "$ppp" simulate --agent astar --problem empty:8x6 --motion continuous --control-period 0
 expect_error "negative speed" "--max-linear-speed: expected a number in" \
   "$ppp" simulate --agent astar --problem empty:8x6 --motion continuous --max-linear-speed -1
+expect_error "a progress timeout that is no duration" "--progress-timeout: expected a number, got '2s'" \
+  "$ppp" simulate --agent astar --problem empty:8x6 --motion continuous --progress-timeout 2s
+expect_error "a negative progress timeout" "--progress-timeout: expected a number in [0, 1000000], got -1" \
+  "$ppp" simulate --agent astar --problem empty:8x6 --motion continuous --progress-timeout -1
 expect_error "grid-only agent" "motion: agent 'explorer' (explorer) moves only on the grid" \
   "$ppp" simulate --agent explorer --problem empty:8x6 --motion continuous
 write_experiment "$work/explorer.yaml" "motion: continuous" ""

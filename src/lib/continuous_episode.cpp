@@ -45,6 +45,11 @@ ContinuousEpisode::ContinuousEpisode(const Problem& problem, const Grid& grid, c
       radius_(radius_cells * options.resolution),
       goal_tolerance_(options.goal_tolerance * options.resolution),
       step_budget_(step_budget),
+      patience_steps_(options.progress_timeout > 0
+                          ? static_cast<long>(std::ceil(options.progress_timeout / options.control_period - 1e-9))
+                          : 0),
+      progress_radius_(options.progress_radius * options.resolution),
+      anchor_{world_.frame().centreX(problem.start), world_.frame().centreY(problem.start)},
       goal_{world_.frame().centreX(problem.goal), world_.frame().centreY(problem.goal)},
       noise_(noiseSeed(run_seed)),
       pose_{world_.frame().centreX(problem.start), world_.frame().centreY(problem.start), 0},
@@ -107,6 +112,13 @@ void ContinuousEpisode::apply(const BodyVelocity& command) {
     end(reason::kGoalReached, true);
   } else if (outcome_.steps >= step_budget_) {
     end(reason::kBudgetExhausted, false);
+  } else if (patience_steps_ > 0) {
+    if (std::hypot(pose_.x - anchor_.x, pose_.y - anchor_.y) > progress_radius_) {
+      anchor_ = MapPoint{pose_.x, pose_.y};
+      anchor_step_ = outcome_.steps;
+    } else if (outcome_.steps - anchor_step_ >= patience_steps_) {
+      end(reason::kNoProgress, false);
+    }
   }
 }
 

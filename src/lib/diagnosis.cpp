@@ -144,8 +144,8 @@ std::string describeDiagnosis(const Diagnosis& d, const std::string& reason, int
            "nothing new), though not in a cycle";
   }
   if (kind == diagnosis::kWandering) {
-    return "wandering: the robot still reached a cell it had never stood on at step " + step +
-           ", late in the run: the budget, not a trap, ended it";
+    return "wandering: the robot still reached a cell it had never stood on at step " + step + ", late in the run: " +
+           (reason == reason::kNoProgress ? "the progress timeout" : "the budget") + ", not a trap, ended it";
   }
   if (kind == diagnosis::kDetour) return "detour: it passed, on a path longer than the soft failure ratio allows";
   if (kind == diagnosis::kMissedRoute) {
@@ -200,7 +200,9 @@ Diagnosis diagnoseContinuousTrajectory(const std::vector<Cell>& cells) {
 
 Diagnosis diagnoseContinuousRun(bool passed, bool soft_failure, const std::string& reason,
                                 const std::vector<Cell>& cells) {
-  if (!passed && reason == reason::kBudgetExhausted) return diagnoseContinuousTrajectory(cells);
+  if (!passed && (reason == reason::kBudgetExhausted || reason == reason::kNoProgress)) {
+    return diagnoseContinuousTrajectory(cells);
+  }
   return diagnoseRun(passed, soft_failure, reason, cells);
 }
 

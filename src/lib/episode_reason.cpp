@@ -23,7 +23,7 @@ const char* reason::agentReportedReason(const std::string& text) {
 const char* reason::reasonNamed(const std::string& text) {
   return reasonAmong(text, {kGoalReached, kBudgetExhausted, kActionLimit, kTimeout, kAgentLost, kInvalidAction,
                             kNoPath, kInvalidPath, kInvalidCommand, kPlannerTimeout, kPlannerLost,
-                            kPlannerAborted, kCollision});
+                            kPlannerAborted, kCollision, kNoProgress});
 }
 
 }  // namespace ppp

@@ -51,6 +51,12 @@ const std::vector<OptionSpec<MotionOptions>>& motionOptionSpecs() {
                     "continuous motion: a run's budget of simulated time is this factor x the time its shortest "
                     "route takes at top speed",
                     +[](M& m) -> double& { return m.time_factor; }, Bounds{1, 1000}),
+      declareOption("progress_timeout",
+                    "continuous motion: a run whose robot stays within progress_radius of one point for this many "
+                    "seconds of simulated time ends as no_progress (a patience timer); 0: never",
+                    +[](M& m) -> double& { return m.progress_timeout; }, Bounds{0, kMaxMotionMagnitude}),
+      declareOption("progress_radius", "continuous motion: cells the robot's centre must move to make progress",
+                    +[](M& m) -> double& { return m.progress_radius; }, Bounds{kPositive, 1000}),
   };
   return specs;
 }

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "ppp_core/diagnosis.hpp"
 #include "ppp_core/episode_reason.hpp"
 #include "ppp_core/error.hpp"
 #include "ppp_core/random_problem.hpp"
@@ -217,6 +218,50 @@ TEST(ContinuousEpisodeTest, RunsEndOnTheGoalTheBudgetOrAnInvalidCommand) {
   EXPECT_STREQ(infinite.outcome().reason, reason::kInvalidCommand);
 }
 
+TEST(ContinuousEpisodeTest, AProgressTimeoutEndsARunThatStaysNearOnePoint) {
+  // A corridor 4 m long, 0.1 s periods, a budget of 320 periods; progress_radius 0.5 cells (0.5 m).
+  const Grid grid = gridOf({"#####", ".....", "#####"});
+  const Problem problem = problemOf(grid, Cell{0, 1}, Cell{4, 1});
+  MotionOptions options;
+  options.progress_timeout = 2.0;  // 20 periods
+  // Standing still: no progress for 20 periods.
+  ContinuousEpisode still(problem, grid, options, 0.2, 320, 1);
+  while (!still.done()) still.apply(BodyVelocity{});
+  EXPECT_STREQ(still.outcome().reason, reason::kNoProgress);
+  EXPECT_FALSE(still.outcome().passed);
+  EXPECT_EQ(still.outcome().steps, 20);
+  // Creeping at 0.1 m/s: 0.01 m a period, 0.2 m in 20 periods, never 0.5 m from the start.
+  ContinuousEpisode creeping(problem, grid, options, 0.2, 320, 1);
+  while (!creeping.done()) creeping.apply(BodyVelocity{0.1, 0, 0});
+  EXPECT_STREQ(creeping.outcome().reason, reason::kNoProgress);
+  EXPECT_EQ(creeping.outcome().steps, 20);
+  // Driving at 0.5 m/s, accelerating at 1 m/s^2: 0.01, 0.02, ... 0.05 m in the first five periods, then 0.05 m
+  // each; 0.55 m from the start after period 13, and then 0.55 m further every 11 periods: within 20 each time,
+  // so it reaches the goal. Given 1 s (10 periods), it is 0.40 m from the start after period 10 and ends there.
+  ContinuousEpisode driven(problem, grid, options, 0.2, 320, 1);
+  while (!driven.done()) driven.apply(BodyVelocity{0.5, 0, 0});
+  EXPECT_STREQ(driven.outcome().reason, reason::kGoalReached);
+  options.progress_timeout = 1.0;
+  ContinuousEpisode impatient(problem, grid, options, 0.2, 320, 1);
+  while (!impatient.done()) impatient.apply(BodyVelocity{0.5, 0, 0});
+  EXPECT_STREQ(impatient.outcome().reason, reason::kNoProgress);
+  EXPECT_EQ(impatient.outcome().steps, 10);
+  EXPECT_NEAR(impatient.pose().x - 0.5, 0.40, 1e-9);
+  // Turning on the spot is no progress either; without the option the run goes on to its budget.
+  options.progress_timeout = 2.0;
+  ContinuousEpisode spinning(problem, grid, options, 0.2, 320, 1);
+  while (!spinning.done()) spinning.apply(BodyVelocity{0, 0, 1.0});
+  EXPECT_STREQ(spinning.outcome().reason, reason::kNoProgress);
+  options.progress_timeout = 0;
+  ContinuousEpisode patient(problem, grid, options, 0.2, 320, 1);
+  while (!patient.done()) patient.apply(BodyVelocity{});
+  EXPECT_STREQ(patient.outcome().reason, reason::kBudgetExhausted);
+  EXPECT_EQ(patient.outcome().steps, 320);
+  // A run ended for want of progress is diagnosed from its trajectory, as one whose budget ran out.
+  const Diagnosis d = diagnoseContinuousRun(false, false, reason::kNoProgress, still.outcome().cells);
+  EXPECT_STREQ(d.kind, diagnosis::kStuck);
+}
+
 TEST(ContinuousEpisodeTest, ARobotThatCannotStandAtTheStartIsRefusedNamingItsRadius) {
   const Grid grid = gridOf({".....", "....."});
   const Problem problem = problemOf(grid, Cell{0, 0}, Cell{4, 0});
@@ -265,6 +310,15 @@ TEST(MotionOptionsTest, BadValuesAreRefusedNamingTheOption) {
   options = MotionOptions{};
   options.kinematics = "tracked";
   refused(options, "kinematics");
+  options = MotionOptions{};
+  options.progress_timeout = -1;
+  refused(options, "progress_timeout");
+  options = MotionOptions{};
+  options.progress_timeout = std::numeric_limits<double>::quiet_NaN();
+  refused(options, "progress_timeout");
+  options = MotionOptions{};
+  options.progress_radius = 0;
+  refused(options, "progress_radius");
 }
 
 }  // namespace

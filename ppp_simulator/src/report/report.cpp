@@ -348,6 +348,7 @@ std::string reasonText(const std::string& reason) {
   if (reason == reason::kPlannerTimeout) return "the planner did not answer in time";
   if (reason == reason::kPlannerLost) return "the planner's process went away";
   if (reason == reason::kPlannerAborted) return "the planner gave up on the goal";
+  if (reason == reason::kNoProgress) return "the robot stayed in one place for the progress timeout";
   return "";
 }
 

@@ -42,7 +42,8 @@ long continuousStepBudget(const MotionOptions& options, int optimal_moves);
 /// centre heading east (+x) at rest; each period it holds the velocity its command gives after the limits
 /// (limitVelocity) and moves along the exact arc (integrate); the run ends when its centre is within the goal
 /// tolerance of the goal cell's centre (pass), when the disc touches an obstacle square or the border
-/// (collision, at the first instant of contact), or when its budget of control periods is spent.
+/// (collision, at the first instant of contact), when its budget of control periods is spent, or, with a
+/// progress_timeout, when its centre has stayed within progress_radius of one point for that long (no_progress).
 class ContinuousEpisode {
  public:
   /// A run of `problem` (decoded as `grid`) by a disc of `radius_cells` cells under
@@ -90,6 +91,10 @@ class ContinuousEpisode {
   double radius_;
   double goal_tolerance_;
   long step_budget_;
+  long patience_steps_;      ///< Control periods without progress that end the run (0: never).
+  double progress_radius_;   ///< Metres the robot's centre must move from the anchor to make progress.
+  MapPoint anchor_;          ///< Where the robot was when it last made progress ...
+  long anchor_step_ = 0;     ///< ... and after how many periods.
   MapPoint goal_;
   Rng noise_;
   Pose2D pose_;

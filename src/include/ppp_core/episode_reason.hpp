@@ -22,6 +22,8 @@ constexpr const char* kPlannerLost = "planner_lost";          ///< Fail (planner
 /// Fail (local planner): it gave up on its goal (an actionlib_msgs/GoalStatus ABORTED instead of a command).
 constexpr const char* kPlannerAborted = "planner_aborted";
 constexpr const char* kCollision = "collision";  ///< Fail (planner, robot with a body): it drove into an obstacle.
+/// Fail (continuous motion with a progress_timeout): the robot stayed near one point for that long.
+constexpr const char* kNoProgress = "no_progress";
 /// The reason constant equal to `text` among those an agent may report itself (the planner ones), or
 /// nullptr.
 const char* agentReportedReason(const std::string& text);

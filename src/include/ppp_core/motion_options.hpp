@@ -43,6 +43,9 @@ struct MotionOptions {
                                    ///< centre, in cells.
   double time_factor = 4;          ///< A run's budget of simulated time: factor x the time the optimal route
                                    ///< takes at top speed (ContinuousEpisode).
+  double progress_timeout = 0;     ///< Seconds of simulated time a run may stay within progress_radius of one
+                                   ///< point before it ends as no_progress; 0: never (the default).
+  double progress_radius = 0.5;    ///< Cells the robot's centre must move to make progress.
   /// True for a holonomic robot.
   bool holonomic() const { return kinematics == kKinematicsHolonomic; }
   /// @throws InvalidArgument naming the option.
