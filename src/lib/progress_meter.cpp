@@ -50,16 +50,19 @@ std::string ProgressMeter::update(const std::vector<LaneCount>& lanes, double no
   for (const LaneCount& lane : lanes) {
     done += lane.done;
     total += lane.total;
-    if (!started_) lane_start_done_[lane.name] = lane.done;
+    auto& samples = lane_samples_[lane.name];
+    samples.emplace_back(now, lane.done);
+    // Keep the newest sample at least a window old as the base, and those after it.
+    while (samples.size() > 2 && samples[1].first <= now - kLaneRateWindow) samples.pop_front();
   }
   const double elapsed = started_ ? now - start_time_ : 0.0;
   double eta = 0;
   const LaneCount* slowest = nullptr;
   for (const LaneCount& lane : lanes) {
     if (lane.done >= lane.total) continue;
-    const auto start = lane_start_done_.find(lane.name);
-    const long since = lane.done - (start == lane_start_done_.end() ? 0 : start->second);
-    const double left = since > 0 && elapsed > 0 ? (lane.total - lane.done) * elapsed / since : -1.0;
+    const auto& [base_time, base_done] = lane_samples_.at(lane.name).front();
+    const long since = lane.done - base_done;
+    const double left = since > 0 && now > base_time ? (lane.total - lane.done) * (now - base_time) / since : -1.0;
     if (slowest == nullptr || left < 0 || (eta >= 0 && left > eta)) {
       slowest = &lane;
       eta = left;

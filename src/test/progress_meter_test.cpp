@@ -67,5 +67,20 @@ TEST(ProgressMeterTest, ALaneWithWorkLeftAndNothingDoneLeavesTheTimeUnknownAndNe
             "progress: episodes: 9999/10000 episodes (99.9 %), 500 episodes/s, ETA unknown, slowest: tpspace 0/1");
 }
 
+TEST(ProgressMeterTest, ALaneIsJudgedByItsRecentPaceNotByTheTimeItWaitedForTheOthers) {
+  // A planner's lane gets no core while a grid lane plays its 1000 episodes (100 s), then ends one episode a second.
+  // Its rate is reckoned over the last 30 s of updates: at t = 110 that reaches back to t = 0 (10 in 110 s: 170 left
+  // take 1870 s); at t = 140, to t = 110 (30 in 30 s: 140 left take 140 s), where its rate since the start (40 in
+  // 140 s) would say 490 s.
+  ProgressMeter meter("episodes", "episodes", 5.0);
+  meter.update({{"explorer", 0, 1000}, {"nd", 0, 180}}, 0.0);
+  EXPECT_EQ(meter.update({{"explorer", 1000, 1000}, {"nd", 0, 180}}, 100.0),
+            "progress: episodes: 1000/1180 episodes (84.7 %), 10.0 episodes/s, ETA unknown, slowest: nd 0/180");
+  EXPECT_EQ(meter.update({{"explorer", 1000, 1000}, {"nd", 10, 180}}, 110.0),
+            "progress: episodes: 1010/1180 episodes (5.6 %), 9.18 episodes/s, ETA 31 min 10 s, slowest: nd 10/180");
+  EXPECT_EQ(meter.update({{"explorer", 1000, 1000}, {"nd", 40, 180}}, 140.0),
+            "progress: episodes: 1040/1180 episodes (50.0 %), 7.43 episodes/s, ETA 2 min 20 s, slowest: nd 40/180");
+}
+
 }  // namespace
 }  // namespace ppp

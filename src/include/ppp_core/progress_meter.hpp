@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deque>
 #include <map>
 #include <string>
 #include <vector>
@@ -34,9 +35,10 @@ class ProgressMeter {
 
   /// The same for lanes played side by side whose units cost different times (a grid agent's episodes and a ROS
   /// planner's in continuous motion): DONE and TOTAL are the lanes' sums, but the share and the ETA are of the
-  /// time, the slowest unfinished lane's at its own rate since the first update, and that lane is named with its
-  /// counts ("slowest: NAME d/t"). The share reads 100 % only when every lane is done; while a lane that has work
-  /// left has done none since the first line, the ETA is unknown and the share is of the units, below 100 %.
+  /// time, the slowest unfinished lane's at its own recent rate (over the last kLaneRateWindow seconds of updates,
+  /// so a lane that waited for the others' cores is judged by its pace once they are done), and that lane is named
+  /// with its counts ("slowest: NAME d/t"). The share reads 100 % only when every lane is done; while a lane that
+  /// has work left has done none over that window, the ETA is unknown and the share is of the units, below 100 %.
   std::string update(const std::vector<LaneCount>& lanes, double now);
 
  private:
@@ -52,7 +54,11 @@ class ProgressMeter {
   double start_time_ = 0;
   long start_done_ = 0;
   double last_line_ = 0;
-  std::map<std::string, long> lane_start_done_;  ///< Each lane's units done at the first update.
+  /// Each lane's (seconds, units done) at every update since kLaneRateWindow before the last one.
+  std::map<std::string, std::deque<std::pair<double, long>>> lane_samples_;
 };
+
+/// Seconds of a lane's recent updates its rate is reckoned over (ProgressMeter::update of lanes).
+constexpr double kLaneRateWindow = 30.0;
 
 }  // namespace ppp
