@@ -16,7 +16,8 @@ Fitness EvaluationLog::wrap(Fitness fitness) const {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - rows->start).count();
     for (std::size_t i = 0; i < scores.size() && i < grids.size(); ++i) {
       rows->text += std::to_string(++rows->count) + "," + formatFixed(seconds, 3) + "," + formatNumber(scores[i].value) +
-                    "," + formatNumber(scores[i].failure_rate) + "," + formatHex64(grids[i]->hash()) + "," + std::to_string(scores[i].steps) + "\n";
+                    "," + formatNumber(scores[i].failure_rate) + "," + formatHex64(grids[i]->hash()) + "," +
+                    std::to_string(scores[i].steps) + "\n";
     }
     return scores;
   };

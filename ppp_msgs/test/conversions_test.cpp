@@ -380,8 +380,6 @@ TEST(CellTransform, PutsTheChildOnTheCellCentre) {
   EXPECT_DOUBLE_EQ(t.transform.rotation.w, 1.0);
 }
 
-}  // namespace
-
 TEST(SignatureCounts, SumsTheRunsOfEachSignature) {
   ppp_msgs::ProblemEvaluation e;
   e.signatures = {"missed_route/g16-31/s1/t0/w0e0", "wandering/g4-7/s4-7/t1/w0e0", "missed_route/g16-31/s1/t0/w0e0"};
@@ -412,3 +410,5 @@ TEST(SignatureCounts, RefusesListsOfDifferentLengthsAndMalformedSignaturesNaming
     EXPECT_NE(std::string(error.what()).find("'wandering/g4-7'"), std::string::npos) << error.what();
   }
 }
+
+}  // namespace

@@ -124,7 +124,6 @@ int SimulatorNode::runExperiment() {
   NodeControl lanes_control = control_;
   lanes_control.stopping = [&failed, stopping] { return failed || stopping(); };
   std::vector<std::unique_ptr<PlayedLane>> lanes;
-  long remaining = 0;
   std::map<std::string, long> runs_of_agent;             // what each agent's lanes have to play ...
   std::map<std::string, std::atomic<long>> ended_of_agent;  // ... and have played (the progress line's lanes)
   for (const auto& agent : config.agents) ended_of_agent[agent.name].store(0);
@@ -154,10 +153,11 @@ int SimulatorNode::runExperiment() {
               recorder.recordScan(name, scan);
             }));
       }
-      remaining += lanes.back()->remaining();
       runs_of_agent[agent.name] += lanes.back()->remaining();
     }
   }
+  long remaining = 0;
+  for (const auto& [agent, runs] : runs_of_agent) remaining += runs;
   ROS_INFO("running %ld episodes (%zu already done, %zu lost to the agent link played again) with %zu agent nodes and "
            "planner instances, batches of %d", remaining, results.done().size(), results.lostRuns(), lanes.size(),
            parameters.batch_size);
