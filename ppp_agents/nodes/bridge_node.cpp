@@ -10,7 +10,7 @@ BridgeNode::BridgeNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh, c
     : nh_(nh),
       parameters_(readBridgeParameters(private_nh, nh.getNamespace())),
       bridge_(nh_, parameters_, in_network_thread),
-      continuous_(bridge_.link(), parameters_) {
+      continuous_(bridge_.link(), parameters_, in_network_thread) {
   ROS_INFO("bridge '%s': waiting for a planner on %s", parameters_.config.name.c_str(),
            bridge_.plannerTopics().c_str());
   if (in_network_thread) {

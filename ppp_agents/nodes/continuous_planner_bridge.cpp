@@ -21,8 +21,12 @@ const ros::Duration kEpisodeGap(1.0);  // simulated time between one episode's l
 
 }  // namespace
 
-ContinuousPlannerBridge::ContinuousPlannerBridge(PlannerLink* link, const BridgeParameters& parameters)
-    : link_(*link), parameters_(parameters), spinner_(1, &queue_) {}
+ContinuousPlannerBridge::ContinuousPlannerBridge(PlannerLink* link, const BridgeParameters& parameters,
+                                                 bool in_network_thread)
+    : link_(*link),
+      parameters_(parameters),
+      spinner_(1, &own_queue_),
+      handed_over_(in_network_thread ? nullptr : std::make_unique<ppp_msgs::LockstepQueue>(false)) {}
 
 ContinuousPlannerBridge::~ContinuousPlannerBridge() {
   sensing_.shutdown();
@@ -34,14 +38,14 @@ void ContinuousPlannerBridge::serve(ros::NodeHandle& nh) {
   ros::SubscribeOptions options;
   options.init<ppp_msgs::SensingBatch>(ppp_msgs::topics::kSensing, 10,
                                        [this](const ppp_msgs::SensingBatch::ConstPtr& b) { onSensing(b); });
-  options.callback_queue = &queue_;
+  options.callback_queue = handed_over_ ? handed_over_->get() : &own_queue_;
   // The planner's time starts before its first episode: a timer or rate started at time 0 waits for the first
   // clock and then a whole period, which the episode's first period would wait on for ever.
   last_stamp_ = ros::Time(1.0);
   link_.publishClock(last_stamp_);
   link_.publishOdometryFrame();
   sensing_ = nh.subscribe(options);
-  spinner_.start();
+  if (!handed_over_) spinner_.start();
 }
 
 void ContinuousPlannerBridge::warnOnce(const std::string& kind, const std::string& text) {

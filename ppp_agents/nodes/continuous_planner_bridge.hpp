@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "ppp_agents/continuous/plan_follower.hpp"
 #include "ppp_agents/protocol/continuous_codec.hpp"
 #include "ppp_msgs/SensingBatch.h"
+#include "ppp_msgs/lockstep_queue.h"
 
 namespace ppp {
 namespace agents {
@@ -29,11 +31,13 @@ namespace agents {
 ///   robot's map (the true one, or the one its laser built) and the goal and waits for the planner's path; the
 ///   command follows the path taken by pure pursuit.
 /// Each episode's clock starts a second after the last one's end, so the planner's time never runs backwards.
-/// Periods are played in a thread of the bridge's own, which may wait for the planner.
+/// A nodelet plays each period in the simulator's thread that handed it over (a planner nodelet of the same manager
+/// answers there too: no thread wakes for a period); a process of its own plays them in a thread of its own, which
+/// may wait for the planner while roscpp's network thread reads its answer.
 class ContinuousPlannerBridge {
  public:
-  /// Talks to the planner through `link` (PlannerBridge's).
-  ContinuousPlannerBridge(PlannerLink* link, const BridgeParameters& parameters);
+  /// Talks to the planner through `link` (PlannerBridge's); `in_network_thread`: a process of its own.
+  ContinuousPlannerBridge(PlannerLink* link, const BridgeParameters& parameters, bool in_network_thread);
   ~ContinuousPlannerBridge();
   /// Connects to the simulator in `nh`'s namespace (sensing in, commands out).
   void serve(ros::NodeHandle& nh);
@@ -58,8 +62,9 @@ class ContinuousPlannerBridge {
 
   PlannerLink& link_;
   BridgeParameters parameters_;
-  ros::CallbackQueue queue_;  // the sensing's: played by spinner_, which may wait for the planner
+  ros::CallbackQueue own_queue_;  // a process's sensing: played by spinner_, which may wait for the planner
   ros::AsyncSpinner spinner_;
+  std::unique_ptr<ppp_msgs::LockstepQueue> handed_over_;  // a nodelet's sensing, played where it is handed over
   ros::Publisher commands_;
   ros::Subscriber sensing_;
 

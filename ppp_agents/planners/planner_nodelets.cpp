@@ -3,6 +3,7 @@
 #include <pluginlib/class_list_macros.hpp>
 
 #include "dwa_planner_node.hpp"
+#include "echo_planner_node.hpp"
 #include "mrpt_planner_node.hpp"
 #include "mrpt_reactive_node.hpp"
 #include "ompl_planner_node.hpp"
@@ -19,6 +20,7 @@ class MrptPlannerNodelet : public ppp_msgs::NodeletOf<MrptPlannerNode> {};
 class MrptReactiveNodelet : public ppp_msgs::NodeletOf<ReactiveNode> {};
 class DwaPlannerNodelet : public ppp_msgs::NodeletOf<DwaPlannerNode> {};
 class ZooPlannerNodelet : public ppp_msgs::NodeletOf<ZooPlannerNode> {};
+class EchoPlannerNodelet : public ppp_msgs::NodeletOf<EchoPlannerNode> {};
 
 }  // namespace planners
 }  // namespace ppp
@@ -29,3 +31,4 @@ PLUGINLIB_EXPORT_CLASS(ppp::planners::MrptPlannerNodelet, nodelet::Nodelet)
 PLUGINLIB_EXPORT_CLASS(ppp::planners::MrptReactiveNodelet, nodelet::Nodelet)
 PLUGINLIB_EXPORT_CLASS(ppp::planners::DwaPlannerNodelet, nodelet::Nodelet)
 PLUGINLIB_EXPORT_CLASS(ppp::planners::ZooPlannerNodelet, nodelet::Nodelet)
+PLUGINLIB_EXPORT_CLASS(ppp::planners::EchoPlannerNodelet, nodelet::Nodelet)

@@ -33,7 +33,7 @@ target_compile_options(ppp_planners_mrpt PRIVATE -Wall -Wextra)
 # The nodes' ROS glue and node classes, shared by the executables and the nodelet library.
 add_library(ppp_planners_ros STATIC planners/planner_node.cpp planners/planner_node_parameters.cpp
   planners/optimistic_planner_node.cpp planners/ompl_planner_node.cpp planners/velocity_planner_link.cpp
-  planners/dwa_planner_node.cpp planners/zoo_planner_node.cpp)
+  planners/dwa_planner_node.cpp planners/zoo_planner_node.cpp planners/echo_planner_node.cpp)
 set_target_properties(ppp_planners_ros PROPERTIES POSITION_INDEPENDENT_CODE ON)  # linked into the nodelet library
 target_include_directories(ppp_planners_ros SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
 target_link_libraries(ppp_planners_ros PUBLIC ppp_planners ${catkin_LIBRARIES})
@@ -49,7 +49,7 @@ target_link_libraries(ppp_planners_mrpt_ros PUBLIC ppp_planners_ros ppp_planners
 target_compile_options(ppp_planners_mrpt_ros PRIVATE -Wall -Wextra)
 
 # Each node as a process of its own (NAME_node, from NAME_main.cpp) ...
-foreach(node optimistic_planner ompl_planner dwa_planner zoo_planner)
+foreach(node optimistic_planner ompl_planner dwa_planner zoo_planner echo_planner)
   add_executable(${node}_node planners/${node}_main.cpp)
   target_link_libraries(${node}_node ppp_planners_ros)
   target_compile_options(${node}_node PRIVATE -Wall -Wextra)
@@ -64,7 +64,7 @@ add_library(ppp_planners_nodelets planners/planner_nodelets.cpp)
 target_link_libraries(ppp_planners_nodelets ppp_planners_mrpt_ros)
 target_compile_options(ppp_planners_nodelets PRIVATE -Wall -Wextra)
 
-install(TARGETS optimistic_planner_node zoo_planner_node ompl_planner_node dwa_planner_node mrpt_planner_node mrpt_reactive_node mrpt_tpspace_node ppp_planners_nodelets
+install(TARGETS echo_planner_node optimistic_planner_node zoo_planner_node ompl_planner_node dwa_planner_node mrpt_planner_node mrpt_reactive_node mrpt_tpspace_node ppp_planners_nodelets
   RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION}
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 # simple_planner.py, and two variants of it with a classic, rare fault each, for hunting

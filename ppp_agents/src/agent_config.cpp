@@ -401,7 +401,8 @@ const ExamplePlanner* examplePlanner(const std::string& planner_node) {
       {"ppp_agents/mrpt_planner_node", {"ppp_agents/MrptPlanner", false}},
       {"ppp_agents/mrpt_reactive_node", {"ppp_agents/MrptReactive", true}},
       {"ppp_agents/dwa_planner_node", {"ppp_agents/DwaPlanner", true}},
-      {"ppp_agents/mrpt_tpspace_node", {nullptr, true}}};
+      {"ppp_agents/mrpt_tpspace_node", {nullptr, true}},
+      {"ppp_agents/echo_planner_node", {"ppp_agents/EchoPlanner", true}}};
   const auto found = planners.find(planner_node);
   return found != planners.end() ? &found->second : nullptr;
 }

@@ -81,7 +81,7 @@ const std::vector<OptionSpec<BridgeOptions>>& bridgeOptionSpecs() {
           .withChoices("planner wake-up",
                        {{kWakesOnAuto,
                          "messages for this repository's local planners (planner_node ppp_agents/dwa_planner_node, "
-                         "mrpt_reactive_node, mrpt_tpspace_node), a timer for any other planner"},
+                         "mrpt_reactive_node, mrpt_tpspace_node, echo_planner_node), a timer for any other planner"},
                         {kWakesOnTimer,
                          "a timer on the robot's clock, as move_base's controller runs: the period is asked again "
                          "a control period later (a timer that overslept wakes), the rest of the episode moved with "

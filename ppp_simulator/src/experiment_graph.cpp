@@ -200,15 +200,16 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, 
     planner.agent = agent.name;
     planner.args = agent.planner_args;
     planner.remaps = bridge.remaps;
-    if (simulated_time) {
-      // Its own clock, which its bridge publishes; a process of its own, as a process has one time for all its nodes.
-      planner.remaps.push_back({kClock, ns + ppp_msgs::topics::kRobotNamespace + "/" + ppp_msgs::topics::kPlannerClock});
-      addRobotParams(episode, &planner);
-      nodes.push_back(planner);
-      continue;
-    }
     const agents::ExamplePlanner* example = agents::examplePlanner(agent.planner_node);
-    if (example != nullptr && example->nodelet != nullptr) loadInto(in_manager, example->nodelet, &planner);
+    const bool nodelet = example != nullptr && example->nodelet != nullptr && !in_manager.empty();
+    if (simulated_time) addRobotParams(episode, &planner);
+    if (simulated_time && !nodelet) {
+      // Its own clock, which its bridge publishes; a process of its own, as a process has one time for all its nodes.
+      // This repository's planners that build as nodelets read the time from the stamps of what they answer, so
+      // they join the manager beside their bridge, which asks them in its own thread.
+      planner.remaps.push_back({kClock, ns + ppp_msgs::topics::kRobotNamespace + "/" + ppp_msgs::topics::kPlannerClock});
+    }
+    if (nodelet) loadInto(in_manager, example->nodelet, &planner);
     nodes.push_back(planner);
   }
   return nodes;

@@ -46,7 +46,8 @@ NODELET_EXECUTABLES = {'ppp_agents/Agent': 'agent_node', 'ppp_generator/Generato
                        'ppp_simulator/Simulator': 'simulator_node', 'ppp_agents/PlannerBridge': 'planner_bridge_node',
                        'ppp_agents/OptimisticPlanner': 'optimistic_planner_node',
                        'ppp_agents/OmplPlanner': 'ompl_planner_node', 'ppp_agents/MrptPlanner': 'mrpt_planner_node',
-                       'ppp_agents/MrptReactive': 'mrpt_reactive_node', 'ppp_agents/DwaPlanner': 'dwa_planner_node'}
+                       'ppp_agents/MrptReactive': 'mrpt_reactive_node', 'ppp_agents/DwaPlanner': 'dwa_planner_node',
+                       'ppp_agents/EchoPlanner': 'echo_planner_node'}
 
 
 def nodelet_of(node):
@@ -217,20 +218,25 @@ class DefaultGraphTest(unittest.TestCase):
                 self.assertEqual(self.params[namespace + 'bridge/name'], agent['name'])
                 planner_nodes = [n for n in self.config.nodes if n.namespace == namespace + 'robot/']
                 self.assertEqual([executable(n) for n in planner_nodes], [agent['planner_node']])
+                nodelets = [k for k, v in NODELET_EXECUTABLES.items() if 'ppp_agents/' + v == agent['planner_node']]
                 if agent.get('motion') == 'continuous':
-                    # On simulated time, a process of its own with its bridge's clock, told the robot it drives.
-                    self.assertEqual([nodelet_of(n) for n in planner_nodes], [None])
-                    self.assertIn(['/clock', namespace + 'robot/clock'], [list(r) for r in planner_nodes[0].remap_args])
+                    # Told the robot it drives.
                     planner = namespace + 'robot/planner/'
                     self.assertEqual(self.params[planner + 'kinematics'], 'diff_drive')
                     self.assertEqual(self.params[planner + 'max_linear_speed'], 0.5)
                     self.assertEqual(self.params[planner + 'control_period'], 0.1)
                     self.assertEqual(self.params[planner + 'robot_radius'], 0.0)
-                    continue
-                # The example planners on the grid are nodelets of the manager beside their bridges, asked in the
-                # simulator's thread.
-                self.assertEqual([nodelet_of(n) for n in planner_nodes],
-                                 [k for k, v in NODELET_EXECUTABLES.items() if 'ppp_agents/' + v == agent['planner_node']])
+                    clock = ['/clock', namespace + 'robot/clock']
+                    if not nodelets:
+                        # On simulated time: a process of its own (a process has one time) with its bridge's clock.
+                        self.assertEqual([nodelet_of(n) for n in planner_nodes], [None])
+                        self.assertIn(clock, [list(r) for r in planner_nodes[0].remap_args])
+                        continue
+                    # One that reads the time from its messages' stamps: a nodelet beside its bridge, no clock.
+                    self.assertNotIn(clock, [list(r) for r in planner_nodes[0].remap_args])
+                # The example planners are nodelets of the manager beside their bridges, asked in the simulator's
+                # thread.
+                self.assertEqual([nodelet_of(n) for n in planner_nodes], nodelets)
                 # Each instance's bridge and planner talk tf in their namespace, not on the global /tf.
                 bridge = [n for n in self.config.nodes if n.namespace == namespace and role(n) == 'planner_bridge_node']
                 self.assertEqual([nodelet_of(n) for n in bridge], ['ppp_agents/PlannerBridge'])

@@ -147,7 +147,8 @@ cmp -s "$work/small/steer/results.csv" "$work/small/steer_loaded/results.csv" &&
   fail "the steering planner's rows differ under load: $(diff "$work/small/steer/results.csv" "$work/small/steer_loaded/results.csv" | head -5)"
 # MRPT's ND through its node, on the grid and in continuous motion in one experiment: the grid's rows are those of
 # the experiment without the continuous entry (/use_sim_time, set for the graph, leaves them alone), and a second
-# launch gives the same rows.
+# launch with every node a process of its own (the driven planner on its bridge's clock instead of a nodelet beside
+# its bridge, every message through TCPROS) gives the same rows.
 cat > "$work/small/nd.yaml" <<'EOF2'
 seed: 3
 runs: 2
@@ -160,14 +161,20 @@ sets:
     generator: {fitness: turns, population: 10, matings: 100, width: 12, height: 12, seed: 2}
 EOF2
 grep -v mrpt_nd_driven "$work/small/nd.yaml" > "$work/small/nd_grid.yaml"
-for run in nd nd_again nd_grid; do
+for run in nd nd_own nd_grid; do
+  processes=manager
+  [ "$run" = nd_own ] && processes=own
   timeout 300 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$work/small/$run" \
-    config:="$work/small/${run%_again}.yaml" > "$work/small/$run.log" 2>&1
+    config:="$work/small/${run%_own}.yaml" args:="--processes $processes" > "$work/small/$run.log" 2>&1
 done
 [ "$(grep -c ',mrpt_nd_driven,' "$work/small/nd/results.csv")" -eq 20 ] && \
   ! grep ',mrpt_nd_driven,' "$work/small/nd/results.csv" | grep -q -e planner_ -e agent_lost -e ',timeout,' && pass || \
   fail "ND in continuous motion: $(cut -d, -f3,11 "$work/small/nd/results.csv" | sort | uniq -c) $(tail "$work/small/nd.log")"
-cmp -s "$work/small/nd/results.csv" "$work/small/nd_again/results.csv" && pass || fail "ND's rows differ between two launches"
+grep -q "Loading nodelet /mrpt_nd_driven/instance_1/robot/planner" "$work/small/nd.log" && \
+  grep -q "process\[mrpt_nd_driven/instance_1/robot/planner-[0-9]*\]: started" "$work/small/nd_own.log" && pass || \
+  fail "ND's driven planner: not a nodelet in one launch and a process in the other"
+cmp -s "$work/small/nd/results.csv" "$work/small/nd_own/results.csv" && pass || \
+  fail "ND's rows differ between its nodelet and its process: $(diff "$work/small/nd/results.csv" "$work/small/nd_own/results.csv" | head -5)"
 diff <(grep ',mrpt_nd,' "$work/small/nd/results.csv") <(grep ',mrpt_nd,' "$work/small/nd_grid/results.csv") > /dev/null && \
   pass || fail "ND's grid rows changed beside its continuous entry"
 # Path planners in continuous motion: the robot follows their paths by pure pursuit, re-planning as plan_requests
