@@ -2,6 +2,7 @@
 
 #include <boost/make_shared.hpp>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,13 @@ namespace agents {
 
 namespace {
 
-const ros::Duration kEpisodeGap(1.0);  // simulated time between one episode's last period and the next one's first
+// Simulated time between one episode's last period and the next one's first: a second, or two control periods when
+// that is longer, so a planner tells an episode's first period from one that continues the last (one period on).
+const ros::Duration kEpisodeGap(1.0);
+
+ros::Duration episodeGap(double control_period) {
+  return std::max(kEpisodeGap, ros::Duration(2 * control_period));
+}
 
 }  // namespace
 
@@ -81,8 +88,10 @@ void ContinuousPlannerBridge::onSensing(const ppp_msgs::SensingBatch::ConstPtr& 
 
 agents::ContinuousReply ContinuousPlannerBridge::step(const ppp_msgs::SensingBatch& batch) {
   agents::ContinuousReply reply{batch.episodes[0], static_cast<int>(batch.steps[0]), {}, nullptr};
+  bool begins = false;  // the batch's period is its episode's first
   for (const ppp_msgs::ContinuousStart& start : batch.starts) {
     if (start.episode != reply.episode) continue;
+    begins = true;
     try {
       episode_ = protocol::decodeContinuousStart(start);
     } catch (const InvalidArgument& e) {
@@ -92,7 +101,7 @@ agents::ContinuousReply ContinuousPlannerBridge::step(const ppp_msgs::SensingBat
       return reply;
     }
     episode_id_ = start.episode;
-    origin_ = last_stamp_ + kEpisodeGap;
+    origin_ = last_stamp_ + episodeGap(episode_->start.control_period);
     episode_start_ = origin_;
     link_.newEpisode();
     const MapFrame& frame = episode_->start.frame;
@@ -111,6 +120,7 @@ agents::ContinuousReply ContinuousPlannerBridge::step(const ppp_msgs::SensingBat
     return reply;
   }
   const ros::Time stamp = origin_ + ros::Duration(batch.time[0]);
+  if (begins) first_period_ = stamp;
   last_stamp_ = stamp;
   const std::vector<float> ranges(batch.ranges.begin(), batch.ranges.end());
   const ContinuousSensing sensing{Pose2D{batch.x[0], batch.y[0], batch.theta[0]},
@@ -125,12 +135,18 @@ agents::ContinuousReply ContinuousPlannerBridge::step(const ppp_msgs::SensingBat
 
 void ContinuousPlannerBridge::publish(const ros::Time& stamp, const ContinuousSensing& sensing, bool request) {
   const ContinuousStart& start = episode_->start;
-  // Every period of a local planner's carries the episode's map stamped with it: a planner in a process of its own
-  // reads each topic on a connection of its own, in no set order, and can tell the period's map (and so whether it
-  // begins a new episode) from the previous episode's only by its stamp.
-  if (commandsVelocity(parameters_)) link_.publishContinuousMap(stamp, episode_start_, start.frame, start_map_);
+  // A planner in a process of its own reads each topic on a connection of its own, in no set order, and tells the
+  // period's map (and so whether it begins a new episode) from the previous episode's by its stamp: with
+  // period_messages every, each period of a local planner's carries the map and goal stamped with it; with changes,
+  // only the episode's first does, and the planner tells a later
+  // period by its distance from the last it answered (one control period).
+  const bool velocity = commandsVelocity(parameters_);
+  const bool episode_news = !velocity || !sendsChangesOnly(parameters_) || stamp == first_period_;
+  if (velocity && episode_news) {
+    link_.publishContinuousMap(stamp, episode_start_, start.frame, start_map_);
+  }
   link_.publishContinuous(stamp, sensing.pose, sensing.velocity, *sensing.ranges, start.beams,
-                          request ? std::optional<MapPoint>(start.goal) : std::nullopt);
+                          request && episode_news ? std::optional<MapPoint>(start.goal) : std::nullopt);
 }
 
 const char* ContinuousPlannerBridge::silentPlannerFailure() {

@@ -25,12 +25,14 @@ namespace agents {
 /// base_link, odom with pose and twist, the laser, and robot/clock, which the planner reads as /clock with
 /// /use_sim_time set) and answers the simulator with a velocity command (the simulator's base controller clamps
 /// it), or with a failure (planner_timeout, planner_lost, ...):
-/// - interface cmd_vel: every period is a request (the goal, and the episode's map); the command is the planner's,
-///   stamped at that time or later;
+/// - interface cmd_vel: every period is a request; the episode's map and goal go with each period
+///   (period_messages every) or with its first (changes); the command is the planner's, stamped at that time or
+///   later;
 /// - interface path: a PlanFollower says which periods are requests (plan_requests); a request publishes the
 ///   robot's map (the true one, or the one its laser built) and the goal and waits for the planner's path; the
 ///   command follows the path taken by pure pursuit.
-/// Each episode's clock starts a second after the last one's end, so the planner's time never runs backwards.
+/// Each episode's clock starts a second (or two control periods, when longer) after the last one's end, so the
+/// planner's time never runs backwards and an episode's first period never comes one control period after another.
 /// A nodelet plays each period in the simulator's thread that handed it over (a planner nodelet of the same manager
 /// answers there too: no thread wakes for a period); a process of its own plays them in a thread of its own, which
 /// may wait for the planner while roscpp's network thread reads its answer.
@@ -73,6 +75,7 @@ class ContinuousPlannerBridge {
   std::uint32_t episode_id_ = 0;
   ros::Time origin_;         // the simulated time of the episode's start, moved on by each period asked again
   ros::Time episode_start_;  // the simulated time of the episode's start: its map's map_load_time
+  ros::Time first_period_;   // the stamp of the episode's first period (period_messages changes: its map and goal)
   std::vector<std::int8_t> start_map_;  // what the robot knows at the start (kScan... values, the frame's cells)
   ros::Time last_stamp_;  // the latest time published
   std::map<std::string, long> warnings_;

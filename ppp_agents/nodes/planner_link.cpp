@@ -43,7 +43,8 @@ PlannerLink::PlannerLink(ros::NodeHandle& nh, const BridgeParameters& parameters
   map_ = nh_.advertise<nav_msgs::OccupancyGrid>(ppp_msgs::topics::kPlannerMap, 1, true);
   odom_ = nh_.advertise<nav_msgs::Odometry>(ppp_msgs::topics::kPlannerOdom, 10);
   scan_ = nh_.advertise<sensor_msgs::LaserScan>(ppp_msgs::topics::kPlannerScan, 10);
-  goal_ = nh_.advertise<geometry_msgs::PoseStamped>(ppp_msgs::topics::kPlannerGoal, 10);
+  // Latched when it goes out once an episode: a planner that connects later still gets the episode's goal.
+  goal_ = nh_.advertise<geometry_msgs::PoseStamped>(ppp_msgs::topics::kPlannerGoal, 10, sendsChangesOnly(parameters));
   // Latched: a planner that subscribes late still learns the time (rospy's first sleep waits for it).
   clock_ = nh_.advertise<rosgraph_msgs::Clock>(ppp_msgs::topics::kPlannerClock, 10, true);
   tf_ = nh.advertise<tf2_msgs::TFMessage>("/tf", 100);

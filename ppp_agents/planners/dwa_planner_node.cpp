@@ -10,7 +10,8 @@ DwaPlannerNode::DwaPlannerNode(ros::NodeHandle& nh, const ros::NodeHandle& priva
                                const std::string& /*node_name*/, bool in_network_thread)
     : parameters_(readDwaNodeParameters(private_nh)),
       planner_(parameters_),
-      link_(nh, readPlannerFrames(private_nh, nh.getNamespace()), !parameters_.kinematics.empty(),
+      link_(nh, readPlannerFrames(private_nh, nh.getNamespace()),
+            parameters_.kinematics.empty() ? 0.0 : parameters_.control_period,
             in_network_thread, [this](const VelocityRequest& request) { return command(request); }) {
   ROS_INFO("DWA local planner (%s, %.2f m/s, a disc of %.2f m): %s",
            parameters_.kinematics.empty() ? "the grid" : parameters_.kinematics.c_str(),

@@ -15,7 +15,8 @@ ReactiveNode::ReactiveNode(ros::NodeHandle& nh, const ros::NodeHandle& private_n
                            bool in_network_thread)
     : parameters_(readReactiveNodeParameters(private_nh)),
       steering_(parameters_),
-      link_(nh, readPlannerFrames(private_nh, nh.getNamespace()), continuous(), in_network_thread,
+      link_(nh, readPlannerFrames(private_nh, nh.getNamespace()),
+            continuous() ? readPlannerPeriod(private_nh).control_period : 0.0, in_network_thread,
             [this](const VelocityRequest& request) { return command(request); }) {
   ROS_INFO("MRPT reactive navigator (%s, obstacles from the %s for a body of %g m in the %s frame, range %s): %s",
            parameters_.method.c_str(), parameters_.obstacles.c_str(), parameters_.robot_radius,

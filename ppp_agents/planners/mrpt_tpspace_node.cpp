@@ -35,7 +35,8 @@ TpSpaceNode::TpSpaceNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh,
       config_path_(configPath(parameters_)),
       navigator_(configText(config_path_), config_path_,
                  TpSpaceRobot{parameters_.bodyRadius(), parameters_.max_linear_speed, parameters_.max_angular_speed}),
-      link_(nh, readPlannerFrames(private_nh, nh.getNamespace()), true, in_network_thread,
+      link_(nh, readPlannerFrames(private_nh, nh.getNamespace()), readPlannerPeriod(private_nh).control_period,
+            in_network_thread,
             [this](const VelocityRequest& request) { return command(request); }) {
   ROS_INFO("MRPT TP-space navigator (%s, a body of %g m): %s", config_path_.c_str(), parameters_.bodyRadius(),
            link_.topics().c_str());

@@ -34,6 +34,17 @@ const std::vector<OptionSpec<PlannerFrames>>& plannerFrameSpecs() {
   return specs;
 }
 
+void PlannerPeriod::validate() const { checkOptionRanges(plannerPeriodSpecs(), *this); }
+
+const std::vector<OptionSpec<PlannerPeriod>>& plannerPeriodSpecs() {
+  using P = PlannerPeriod;
+  static const std::vector<OptionSpec<P>> specs = {
+      declareOption("control_period", "continuous motion: seconds between two control periods (set by the graph)",
+                    +[](P& p) -> double& { return p.control_period; }, Bounds{1e-6, 1e3}),
+  };
+  return specs;
+}
+
 void PlannerBody::validate() const { checkOptionRanges(plannerBodySpecs(), *this); }
 
 const std::vector<OptionSpec<PlannerBody>>& plannerBodySpecs() {

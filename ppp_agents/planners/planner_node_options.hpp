@@ -23,6 +23,18 @@ struct PlannerFrames {
 /// One declaration per frame parameter of a planner node.
 const std::vector<OptionSpec<PlannerFrames>>& plannerFrameSpecs();
 
+/// When a local example planner's control periods come (`~control_period`, which the experiment's graph sets in
+/// continuous motion): it tells a period that continues the episode of the last one it answered (one period later)
+/// from one that begins an episode.
+struct PlannerPeriod {
+  double control_period = MotionOptions{}.control_period;  ///< Seconds between two control periods.
+  /// @throws InvalidArgument naming the parameter out of its declared range.
+  void validate() const;
+};
+
+/// The declaration of `~control_period`.
+const std::vector<OptionSpec<PlannerPeriod>>& plannerPeriodSpecs();
+
 /// The robot's body as an example planner believes it (every example planner's `~inflation`).
 struct PlannerBody {
   double inflation = 0;  ///< Known obstacles grown by a disc of this radius in map cells (footprint.hpp; 0: none).

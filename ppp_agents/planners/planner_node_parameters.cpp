@@ -30,6 +30,10 @@ PlannerBody readPlannerBody(const ros::NodeHandle& private_nh) {
   return readDeclared(private_nh, plannerBodySpecs());
 }
 
+PlannerPeriod readPlannerPeriod(const ros::NodeHandle& private_nh) {
+  return readDeclared(private_nh, plannerPeriodSpecs());
+}
+
 OmplNodeParameters readOmplNodeParameters(const ros::NodeHandle& private_nh) {
   return readDeclared(private_nh, omplNodeOptionSpecs());
 }

@@ -16,6 +16,9 @@ PlannerFrames readPlannerFrames(const ros::NodeHandle& private_nh, const std::st
 /// Reads ~inflation from its declaration. @throws InvalidArgument naming the parameter and what was expected.
 PlannerBody readPlannerBody(const ros::NodeHandle& private_nh);
 
+/// A local planner's `~control_period`. @throws InvalidArgument naming it when it is out of range.
+PlannerPeriod readPlannerPeriod(const ros::NodeHandle& private_nh);
+
 /// Reads the OMPL planner node's declared parameters (omplNodeOptionSpecs()).
 /// @throws InvalidArgument naming the parameter and what was expected.
 OmplNodeParameters readOmplNodeParameters(const ros::NodeHandle& private_nh);

@@ -35,9 +35,13 @@ void keep(std::deque<Message>* messages, Message message) {
 
 }  // namespace
 
-VelocityPlannerLink::VelocityPlannerLink(ros::NodeHandle& nh, const PlannerFrames& frames, bool continuous,
+VelocityPlannerLink::VelocityPlannerLink(ros::NodeHandle& nh, const PlannerFrames& frames, double control_period,
                                          bool in_network_thread, Answer answer)
-    : frames_(frames), continuous_(continuous), answer_(std::move(answer)), queue_(in_network_thread) {
+    : frames_(frames),
+      control_period_(control_period),
+      continuous_(control_period > 0),
+      answer_(std::move(answer)),
+      queue_(in_network_thread) {
   namespace names = ppp_msgs::topics;
   command_ = nh.advertise<geometry_msgs::TwistStamped>(names::kPlannerCommand, 10);
   status_ = nh.advertise<actionlib_msgs::GoalStatus>(names::kPlannerStatus, 10);
@@ -116,11 +120,14 @@ void VelocityPlannerLink::drive() {
   if (!goal_pose_ || !map_message_ || scans_.empty()) return;
   const ros::Time stamp = scans_.back()->header.stamp;
   if (stamp <= answered_) return;
-  // Each topic has a connection of its own, read in no set order: the period's goal and map (which says whether it
-  // begins an episode) are the ones stamped with it, not whichever came last.
-  if (goal_pose_->header.stamp != stamp || map_message_->header.stamp != stamp) return;
   const nav_msgs::Odometry::ConstPtr pose = stampedAt<nav_msgs::Odometry>(poses_, stamp);
   if (!pose) return;
+  // Each topic has a connection of its own, read in no set order. A period one control period after the last one
+  // answered continues its episode, whose goal and map are in. Any other begins an episode: its goal and map
+  // (which says that it begins one) are the ones stamped with it, not whichever came last.
+  const bool continues = answered_ > ros::Time() && stamp - answered_ < control_period_ * 1.5 &&
+                         goal_pose_->header.stamp <= stamp && map_message_->header.stamp <= stamp;
+  if (!continues && (goal_pose_->header.stamp != stamp || map_message_->header.stamp != stamp)) return;
   answered_ = stamp;
   respond(stamp, *scans_.back(), *pose, *goal_pose_);
 }

@@ -9,11 +9,14 @@
 //                                                          episode
 //               move_base_simple/goal (geometry_msgs/PoseStamped)  on the grid a request, answered once the scan,
 //                                                          pose and map of its stamp are in; in continuous motion
-//                                                          the episode's goal, sent with every period
+//                                                          the episode's goal, sent with every period or with its
+//                                                          first (the bridge's period_messages)
 //   publishes   cmd_vel (geometry_msgs/TwistStamped)       on the grid stamped with the goal's stamp; in continuous
 //                                                          motion one command per control period, stamped with its
-//                                                          scan's, as soon as the scan, odometry, goal and map of
-//                                                          its stamp are in
+//                                                          scan's, as soon as the scan and odometry of its stamp are
+//                                                          in, and, when it begins an episode (it does not come one
+//                                                          control period after the last one answered), the goal
+//                                                          and map of its stamp
 //               planner_status (actionlib_msgs/GoalStatus) instead of the command when the node gives up on its
 //                                                          goal: ABORTED, its goal_id stamped as the command would
 //                                                          be, the reason as text
@@ -61,9 +64,10 @@ class VelocityPlannerLink {
   /// (logged).
   using Answer = std::function<geometry_msgs::Twist(const VelocityRequest&)>;
 
-  /// Subscribes in `nh`'s namespace. `continuous`: the robot moves continuously (the periods ask, not goals).
-  VelocityPlannerLink(ros::NodeHandle& nh, const PlannerFrames& frames, bool continuous, bool in_network_thread,
-                      Answer answer);
+  /// Subscribes in `nh`'s namespace. `control_period` > 0: the robot moves continuously, a period every so many
+  /// seconds (the periods ask, not goals); 0: the grid.
+  VelocityPlannerLink(ros::NodeHandle& nh, const PlannerFrames& frames, double control_period,
+                      bool in_network_thread, Answer answer);
 
   /// "scan, odom, map, goal -> cmd_vel" with their resolved names, for the node's start-up line.
   std::string topics() const;
@@ -82,6 +86,7 @@ class VelocityPlannerLink {
                const geometry_msgs::PoseStamped& goal);
 
   PlannerFrames frames_;
+  ros::Duration control_period_;  // zero on the grid
   bool continuous_;
   Answer answer_;
   std::mutex mutex_;  // held by each callback: a nodelet's may run in two threads (a publisher's and its own)

@@ -225,6 +225,12 @@ void AgentConfig::validate() const {
     throw InvalidArgument("plan_requests", agentPlanRequestsProblem(*this));
   }
   if (!agentInterfaceProblem(*this).empty()) throw InvalidArgument("interface", agentInterfaceProblem(*this));
+  BridgeOptions resolved = bridge;
+  resolved.wakes_on = plannerWakesOn(*this);
+  resolved.period_messages = plannerPeriodMessages(*this);
+  if (!periodMessagesProblem(resolved).empty()) {
+    throw InvalidArgument("period_messages", periodMessagesProblem(resolved));
+  }
   if (!hostProblem(host).empty()) throw InvalidArgument("host", hostProblem(host));
 }
 
@@ -334,7 +340,7 @@ const std::vector<OptionSpec<AgentConfig>>& agentOptionSpecs() {
     };
     const std::vector<OptionSpec<BridgeOptions>> per_agent =
         selectOptions(bridgeOptionSpecs(), {"plan_timeout", "lockstep", "plan_requests", "interface", "endless_proof",
-                                            "wakes_on", "cells_per_ppp_cell"});
+                                            "wakes_on", "period_messages", "cells_per_ppp_cell"});
     for (OptionSpec<A>& spec : nestedOptions(per_agent, +[](A& a) -> BridgeOptions& { return a.bridge; })) {
       spec.doc = "planner agents: " + spec.doc;
       list.insert(list.end() - 2, spec);  // before host and process
@@ -411,6 +417,14 @@ std::string plannerWakesOn(const AgentConfig& config) {
   if (config.bridge.wakes_on != kWakesOnAuto) return config.bridge.wakes_on;
   const ExamplePlanner* planner = examplePlanner(config.planner_node);
   return planner != nullptr && planner->answers_messages ? kWakesOnMessages : kWakesOnTimer;
+}
+
+
+std::string plannerPeriodMessages(const AgentConfig& config) {
+  if (config.bridge.period_messages != kPeriodMessagesAuto) return config.bridge.period_messages;
+  const ExamplePlanner* planner = examplePlanner(config.planner_node);
+  const bool ours = planner != nullptr && planner->answers_messages;
+  return ours && plannerWakesOn(config) == kWakesOnMessages ? kPeriodMessagesChanges : kPeriodMessagesEvery;
 }
 
 int instanceCount(const AgentConfig& config, const EpisodeOptions& options) {

@@ -13,6 +13,7 @@ void BridgeOptions::validate() const {
   checkOptionRanges(bridgeOptionSpecs(), *this);
   if (!planRequestsProblem(*this).empty()) throw InvalidArgument("plan_requests", planRequestsProblem(*this));
   if (!interfaceProblem(*this).empty()) throw InvalidArgument("interface", interfaceProblem(*this));
+  if (!periodMessagesProblem(*this).empty()) throw InvalidArgument("period_messages", periodMessagesProblem(*this));
   if (map_frame.empty()) throw InvalidArgument("map_frame", "expected a non-empty frame name");
   if (base_frame.empty()) throw InvalidArgument("base_frame", "expected a non-empty frame name");
 }
@@ -21,6 +22,13 @@ std::string planRequestsProblem(const BridgeOptions& options) {
   if (options.lockstep || asksEveryStep(options)) return "";
   return "a free-running bridge (lockstep: false) asks only when the robot's path is blocked; " +
          options.plan_requests + " needs lockstep: true";
+}
+
+std::string periodMessagesProblem(const BridgeOptions& options) {
+  if (!sendsChangesOnly(options) || !wakesOnTimer(options)) return "";
+  return "changes needs a planner that answers each period's messages (wakes_on: messages): a period a timer "
+         "overslept is asked again a control period later, and its planner could not tell it from the first of an "
+         "episode whose map and goal it has not yet received";
 }
 
 std::string interfaceProblem(const BridgeOptions& options) {
@@ -90,6 +98,23 @@ const std::vector<OptionSpec<BridgeOptions>>& bridgeOptionSpecs() {
                          "the period's messages, answered as they come, as this repository's local planners do: the "
                          "period's messages are sent again as they were (a planner that restarted gets them, one "
                          "that is only slow answers once) and the clock stays"}}),
+      declareOption("period_messages",
+                    "interface cmd_vel in continuous motion: which messages each control period sends the planner "
+                    "(the rows are the same either way for a planner that follows the rule of the one it is given)",
+                    +[](B& b) -> std::string& { return b.period_messages; })
+          .withChoices("period messages",
+                       {{kPeriodMessagesAuto,
+                         "changes for this repository's local planners (unless their wakes_on is timer), every for "
+                         "any other planner"},
+                        {kPeriodMessagesEvery,
+                         "the episode's map and goal with every period, stamped with it, beside tf, odometry, the "
+                         "laser and the clock: a planner answers a period when its messages of that stamp are in"},
+                        {kPeriodMessagesChanges,
+                         "the map and goal only when an episode begins (latched, stamped with its first period), "
+                         "then tf, odometry, the laser and the clock: a period more than one and a half control "
+                         "periods after the last one answered begins an episode, and is answered when the map and "
+                         "goal stamped with it are in (needs wakes_on: messages)"}})
+          .notAffectingResults(),
       declareOption("connect_timeout",
                     "seconds to wait at start-up for the planner's topics (an experiment's graph sets 300 for a "
                     "planner the user starts, 20 for one it starts)",

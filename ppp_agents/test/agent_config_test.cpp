@@ -147,7 +147,8 @@ TEST(AgentConfigTest, RejectsBadYamlWithFileLineAndKey) {
   EXPECT_EQ(parseError("agents:\n  - {type: explorer, colour: red}\n"),
             "agents.yaml:2: agents[0].colour: unknown key; valid keys: bumper_turn, cells_per_ppp_cell, "
             "endless_proof, explorer_idle, explorer_ties, frontier, goal_range, goal_seeking, goal_ties, host, "
-            "instances, interface, lockstep, memory, memory_model, motion, name, plan_requests, plan_timeout, planner_args, "
+            "instances, interface, lockstep, memory, memory_model, motion, name, period_messages, plan_requests, plan_timeout, "
+            "planner_args, "
             "planner_node, prior_map, process, runs, "
             "sensor_noise, type, wakes_on, wall_leave, wall_sense, wall_start");
   EXPECT_EQ(parseError("agents:\n  - {type: explorer}\n  - {name: lonely}\n"),
@@ -412,6 +413,37 @@ TEST(AgentConfigTest, ALocalPlannerAnswersWithVelocityCommandsInLockstepAtEveryS
             "along), not on_change");
   EXPECT_EQ(parseError("agents:\n  - {type: bumper, interface: cmd_vel}\n"),
             "agents.yaml:2: agents[0].interface: only planner agents answer through a planner interface");
+}
+
+TEST(AgentConfigTest, OnlyAPlannerThatAnswersItsMessagesIsSentOnlyWhatChanged) {
+  const auto configs = read(
+      "agents:\n"
+      "  - {name: nd, type: planner, interface: cmd_vel, planner_node: ppp_agents/mrpt_reactive_node}\n"
+      "  - {name: nd_timer, type: planner, interface: cmd_vel, wakes_on: timer, "
+      "planner_node: ppp_agents/mrpt_reactive_node}\n"
+      "  - {name: mine, type: planner, interface: cmd_vel}\n"
+      "  - {name: mine_told, type: planner, interface: cmd_vel, wakes_on: messages, period_messages: changes}\n");
+  EXPECT_EQ(plannerPeriodMessages(configs[0]), kPeriodMessagesChanges);
+  EXPECT_EQ(plannerPeriodMessages(configs[1]), kPeriodMessagesEvery);
+  EXPECT_EQ(plannerPeriodMessages(configs[2]), kPeriodMessagesEvery);
+  EXPECT_EQ(plannerPeriodMessages(configs[3]), kPeriodMessagesChanges);
+  EXPECT_EQ(parseError("agents:\n  - {type: planner, interface: cmd_vel, period_messages: changes}\n"),
+            "agents.yaml:2: agents[0].period_messages: changes needs a planner that answers each period's messages "
+            "(wakes_on: messages): a period a timer overslept is asked again a control period later, and its "
+            "planner could not tell it from the first of an episode whose map and goal it has not yet received");
+  EXPECT_EQ(parseError("agents:\n  - {type: planner, interface: cmd_vel, period_messages: sometimes}\n"),
+            "agents.yaml:2: agents[0].period_messages: unknown period messages 'sometimes'; valid: auto, every, "
+            "changes");
+  // A bridge started by hand resolves nothing: auto is every there, and changes needs wakes_on: messages.
+  BridgeOptions bridge;
+  bridge.base_frame = "robot/base_link";
+  bridge.interface = kInterfaceCmdVel;
+  bridge.period_messages = kPeriodMessagesChanges;
+  EXPECT_NE(invalidArgument([&] { bridge.validate(); }).find("period_messages"), std::string::npos);
+  bridge.wakes_on = kWakesOnMessages;
+  EXPECT_EQ(invalidArgument([&] { bridge.validate(); }), "");
+  bridge.period_messages = kPeriodMessagesAuto;
+  EXPECT_FALSE(sendsChangesOnly(bridge));
 }
 
 TEST(AgentConfigTest, LoadRejectsUnknownTopLevelKeysAndMissingFiles) {

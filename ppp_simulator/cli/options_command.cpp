@@ -111,6 +111,10 @@ std::string optionsReference() {
       << optionsMarkdownTable(planners::mrptNodeOptionSpecs(), planners::MrptNodeParameters{}, &parameter)
       << "\n`mrpt_reactive_node` (a local planner answering on `cmd_vel`) reads the frames above and:\n\n"
       << optionsMarkdownTable(planners::reactiveNodeOptionSpecs(), planners::ReactiveNodeParameters{}, &parameter)
+      << "\nIn continuous motion it, `mrpt_tpspace_node` and `echo_planner_node` (which answers every period at\n"
+      << "once, standing still) read the control period the graph sets, to tell a period that continues an episode\n"
+      << "from one that begins the next ([the planner interface](planner-interface.md)):\n\n"
+      << optionsMarkdownTable(planners::plannerPeriodSpecs(), planners::PlannerPeriod{}, &parameter)
       << "\n`dwa_planner_node` (a dynamic-window local planner answering on `cmd_vel`) reads the frames above and\n"
       << "the robot's description, which the experiment's graph sets in continuous motion from the motion options\n"
       << "(on the grid the window samples standing and the four moves), and its window's weights:\n\n"

@@ -167,12 +167,13 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, 
   options.connect_timeout = plannerConnectTimeout(agent);
   options.robot_radius = episode.robot_radius;
   options.wakes_on = agents::plannerWakesOn(agent);
+  options.period_messages = agents::plannerPeriodMessages(agent);
   static const std::vector<OptionSpec<agents::AgentConfig>> named =
       selectOptions(agents::agentNodeOptionSpecs(), {"name", "memory"});
   static const std::vector<OptionSpec<agents::BridgeOptions>> written =
       selectOptions(agents::bridgeOptionSpecs(),
-                    {"plan_timeout", "lockstep", "plan_requests", "interface", "endless_proof", "wakes_on", "connect_timeout",
-                     "cells_per_ppp_cell", "robot_radius"});
+                    {"plan_timeout", "lockstep", "plan_requests", "interface", "endless_proof", "wakes_on",
+                     "period_messages", "connect_timeout", "cells_per_ppp_cell", "robot_radius"});
   std::vector<ppp_msgs::GraphNode> nodes;
   const int instances = agents::instanceCount(agent, episode);
   for (int instance = 0; instance < instances; ++instance) {

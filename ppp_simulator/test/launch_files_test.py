@@ -507,15 +507,31 @@ class ContinuousGraphTest(unittest.TestCase):
                  for name in ('dwa', 'tp', 'steer', 'mine', 'told')}
         self.assertEqual(woken, {'dwa': 'messages', 'tp': 'messages', 'steer': 'timer', 'mine': 'timer',
                                  'told': 'timer'})
+        # And which messages each period sends it: only what changed to this repository's planners that answer
+        # their messages, the map and goal with every period to any other.
+        sent = {name: graph.params['/%s/bridge/period_messages' % name].value
+                for name in ('dwa', 'tp', 'steer', 'mine', 'told')}
+        self.assertEqual(sent, {'dwa': 'changes', 'tp': 'changes', 'steer': 'every', 'mine': 'every',
+                                'told': 'every'})
 
-    def test_a_free_running_planner_in_continuous_motion_is_refused_naming_lockstep(self):
-        path = write_config(tempfile.mkdtemp(), "motion: continuous\nagents:\n  - {name: ompl, type: planner, "
-                            "lockstep: false, planner_node: ppp_agents/ompl_planner_node}\n" + self.SETS)
+    def assert_refused(self, agent, message):
+        """A continuous experiment with the one agent entry `agent` gives no graph and an error saying `message`."""
+        path = write_config(tempfile.mkdtemp(), "motion: continuous\nagents:\n  - %s\n" % agent + self.SETS)
         xml, status, errors, _ = launch_file(path)
         self.assertNotEqual(status, 0)
         self.assertEqual(xml, '')
-        self.assertIn("lockstep: planner agent 'ompl' plays in continuous motion, which its bridge plays in lockstep "
-                      "only", errors)
+        self.assertIn(message, errors)
+
+    def test_only_changes_for_a_planner_woken_by_a_timer_is_refused_naming_period_messages(self):
+        self.assert_refused("{name: steer, type: planner, interface: cmd_vel, period_messages: changes, "
+                            "planner_node: ppp_agents/steering_planner.py}",
+                            "period_messages: changes needs a planner that answers each period's messages "
+                            "(wakes_on: messages)")
+
+    def test_a_free_running_planner_in_continuous_motion_is_refused_naming_lockstep(self):
+        self.assert_refused("{name: ompl, type: planner, lockstep: false, planner_node: ppp_agents/ompl_planner_node}",
+                            "lockstep: planner agent 'ompl' plays in continuous motion, which its bridge plays in "
+                            "lockstep only")
 
 
 class InspectLaunchTest(unittest.TestCase):

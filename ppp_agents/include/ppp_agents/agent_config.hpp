@@ -156,6 +156,11 @@ const ExamplePlanner* examplePlanner(const std::string& planner_node);
 /// `wakes_on`, with auto resolved by its planner_node (this repository's local planners answer their messages).
 std::string plannerWakesOn(const AgentConfig& config);
 
+/// Which messages a control period sends the agent's planner (kPeriodMessagesEvery or kPeriodMessagesChanges): its
+/// `period_messages`, with auto resolved by its planner_node (changes for this repository's local planners, unless
+/// told to wake on a timer).
+std::string plannerPeriodMessages(const AgentConfig& config);
+
 /// How many instances play an agent's runs in parallel through ROS, each its share (every n-th run): for a planner
 /// agent, bridge and planner pairs: `instances` when given, else as many as this machine has cores for a planner
 /// the experiment starts (planner_node), and 1 for one the user starts. For a built-in agent in continuous motion

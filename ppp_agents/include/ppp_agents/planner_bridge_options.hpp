@@ -32,6 +32,15 @@ inline constexpr const char* kWakesOnTimer = "timer";
 /// `wakes_on`: a local planner in continuous motion answers each control period's messages as they come.
 inline constexpr const char* kWakesOnMessages = "messages";
 
+/// `period_messages`: `changes` for this repository's local planners, `every` for any other (plannerPeriodMessages
+/// in agent_config.hpp); a bridge started by hand takes it as `every`.
+inline constexpr const char* kPeriodMessagesAuto = "auto";
+/// `period_messages`: every control period carries the episode's map and goal, stamped with it.
+inline constexpr const char* kPeriodMessagesEvery = "every";
+/// `period_messages`: the map and goal go out when an episode begins (latched, stamped with its first period);
+/// each period carries only what changed (tf, odometry, the laser, the clock).
+inline constexpr const char* kPeriodMessagesChanges = "changes";
+
 /// The planner bridge's own `~` parameters (besides its agent's name and memory): what it publishes to the
 /// planner and how long it waits for it.
 struct BridgeOptions {
@@ -44,6 +53,7 @@ struct BridgeOptions {
   std::string interface = kInterfacePath;          ///< What the planner answers with (kInterface...).
   bool endless_proof = true;  ///< Report the decision state that proves loops endless (a planner without memory).
   std::string wakes_on = kWakesOnAuto;  ///< Continuous motion, cmd_vel: what makes the planner answer (kWakesOn...).
+  std::string period_messages = kPeriodMessagesAuto;  ///< Continuous motion, cmd_vel: kPeriodMessages...
   double connect_timeout = 20.0;                   ///< Seconds to wait at start-up for the planner's topics.
   std::string map_frame = ppp_msgs::frames::kMap;  ///< Frame of the map, poses and goal.
   std::string base_frame;  ///< The robot's frame (tf child, odom child, scan frame); "": defaultBridgeBaseFrame.
@@ -62,6 +72,14 @@ inline bool commandsVelocity(const BridgeOptions& options) { return options.inte
 
 /// True when a local planner in continuous motion answers on a timer (so a period asked again moves its clock on).
 inline bool wakesOnTimer(const BridgeOptions& options) { return options.wakes_on != kWakesOnMessages; }
+
+/// True when a local planner in continuous motion is sent the map and goal only when an episode begins.
+inline bool sendsChangesOnly(const BridgeOptions& options) {
+  return options.period_messages == kPeriodMessagesChanges;
+}
+
+/// What is wrong with `options`' period_messages beside its wakes_on (both resolved), or "" when nothing is.
+std::string periodMessagesProblem(const BridgeOptions& options);
 
 /// True when a lockstep bridge with `options` asks the planner at every step.
 inline bool asksEveryStep(const BridgeOptions& options) { return options.plan_requests == kPlanRequestsEveryStep; }

@@ -1,8 +1,10 @@
-// VelocityPlannerLink answers each request once. In continuous motion it answers a control period only with that
-// period's goal and map, in whatever order its topics arrive: a planner in a process of its own reads each topic on
-// a connection of its own, so the scan of an episode's first period can come before the map that starts the episode
-// (the link would then play the period in the previous episode, with that episode's memory) and before the
-// period's goal.
+// VelocityPlannerLink answers each request once. In continuous motion it answers a control period once its scan and
+// odometry are in; a period that does not come one control period after the last one answered begins an episode,
+// and is answered only with the goal and map stamped with it, in whatever order its topics arrive: a planner in a
+// process of its own reads each topic on a connection of its own, so the scan of an episode's first period can come
+// before the map that starts the episode (the link would then play the period in the previous episode, with that
+// episode's memory) and before the period's goal. The bridge sends the map and goal with every period
+// (period_messages every) or with an episode's first only (changes): the same rule answers both.
 // The test publishes as the bridge does, handing over, so each callback runs in the publishing call: the order of
 // arrival is the order of the calls below, and "not answered yet" is a fact, not a wait.
 #include <gtest/gtest.h>
@@ -23,6 +25,9 @@
 namespace ppp {
 namespace planners {
 namespace {
+
+/// The control period of the continuous tests, seconds.
+constexpr double kControlPeriod = 0.1;
 
 /// What the planner was asked, and the command the link published for it.
 struct Answered {
@@ -46,7 +51,8 @@ class BridgeSide {
     PlannerFrames frames;
     frames.base_frame = "robot/base_link";
     link_ = std::make_unique<VelocityPlannerLink>(
-        nh_, frames, continuous, /*in_network_thread=*/false, [this](const VelocityRequest& request) {
+        nh_, frames, continuous ? kControlPeriod : 0.0, /*in_network_thread=*/false,
+        [this](const VelocityRequest& request) {
           asked_.push_back({ros::Time(), request.new_episode, request.goal.pose.position.x});
           return geometry_msgs::Twist();
         });
@@ -118,59 +124,76 @@ class BridgeSide {
   ros::Subscriber commands_;
 };
 
-TEST(VelocityPlannerLinkOrder, EachPeriodIsAnsweredWithItsOwnGoalAndMapWhateverTheOrder) {
+TEST(VelocityPlannerLinkOrder, EachPeriodIsAnsweredInItsOwnEpisodeWhateverTheOrder) {
   BridgeSide bridge(/*continuous=*/true, "periods");
   ASSERT_TRUE(bridge.connected()) << "the link did not connect within 30 s";
 
   // Episode A's first period (starting at t = 2 s), in the order the bridge publishes it: answered once, a new
-  // episode towards goal A (x = 7.5).
+  // episode towards goal A (x = 7.5), when its goal is in.
   bridge.map(2.0, 2.0);
   bridge.odom(2.0);
   bridge.scan(2.0);
-  EXPECT_TRUE(bridge.asked().empty()) << "answered before the period's goal came";
+  EXPECT_TRUE(bridge.asked().empty()) << "an episode's first period answered before its goal came";
   bridge.goal(2.0, 7.5);
   ASSERT_EQ(bridge.asked().size(), 1u);
   EXPECT_EQ(bridge.asked()[0].command_stamp, ros::Time(2.0));
   EXPECT_TRUE(bridge.asked()[0].new_episode);
   EXPECT_DOUBLE_EQ(bridge.asked()[0].goal_x, 7.5);
 
-  // Its second period with the scan and odometry first: nothing until the period's goal and map are in.
+  // Its second period, one control period later, with no map or goal of its own (period_messages changes):
+  // answered once its scan and odometry are in, in episode A.
   bridge.scan(2.1);
+  EXPECT_EQ(bridge.asked().size(), 1u) << "period 2.1 answered before its odometry came";
   bridge.odom(2.1);
-  EXPECT_EQ(bridge.asked().size(), 1u) << "period 2.1 answered with period 2.0's goal and map";
-  bridge.goal(2.1, 7.5);
-  EXPECT_EQ(bridge.asked().size(), 1u) << "period 2.1 answered with period 2.0's map";
-  bridge.map(2.1, 2.0);
   ASSERT_EQ(bridge.asked().size(), 2u);
   EXPECT_EQ(bridge.asked()[1].command_stamp, ros::Time(2.1));
   EXPECT_FALSE(bridge.asked()[1].new_episode);
+  EXPECT_DOUBLE_EQ(bridge.asked()[1].goal_x, 7.5);
+
+  // The third with its map and goal too (period_messages every), these last: answered once, when its scan and
+  // odometry are in.
+  bridge.odom(2.2);
+  bridge.scan(2.2);
+  ASSERT_EQ(bridge.asked().size(), 3u);
+  EXPECT_EQ(bridge.asked()[2].command_stamp, ros::Time(2.2));
+  EXPECT_FALSE(bridge.asked()[2].new_episode);
+  bridge.goal(2.2, 7.5);
+  bridge.map(2.2, 2.0);
+  EXPECT_EQ(bridge.asked().size(), 3u) << "period 2.2 answered twice";
 
   // Episode B (a second after A's end) whose first scan, odometry and goal come before its map: played in B, not in
   // A with A's memory.
-  bridge.scan(3.1);
-  bridge.odom(3.1);
-  bridge.goal(3.1, 4.5);
-  EXPECT_EQ(bridge.asked().size(), 2u) << "episode B's first period played with episode A's map";
-  bridge.map(3.1, 3.1);
-  ASSERT_EQ(bridge.asked().size(), 3u);
-  EXPECT_EQ(bridge.asked()[2].command_stamp, ros::Time(3.1));
-  EXPECT_TRUE(bridge.asked()[2].new_episode);
-  EXPECT_DOUBLE_EQ(bridge.asked()[2].goal_x, 4.5);
-
-  // Its second period with the goal last: answered when the goal comes, as B's second period.
-  bridge.map(3.2, 3.1);
   bridge.scan(3.2);
   bridge.odom(3.2);
-  EXPECT_EQ(bridge.asked().size(), 3u) << "period 3.2 answered with period 3.1's goal";
   bridge.goal(3.2, 4.5);
+  EXPECT_EQ(bridge.asked().size(), 3u) << "episode B's first period played with episode A's map";
+  bridge.map(3.2, 3.2);
   ASSERT_EQ(bridge.asked().size(), 4u);
   EXPECT_EQ(bridge.asked()[3].command_stamp, ros::Time(3.2));
-  EXPECT_FALSE(bridge.asked()[3].new_episode);
+  EXPECT_TRUE(bridge.asked()[3].new_episode);
+  EXPECT_DOUBLE_EQ(bridge.asked()[3].goal_x, 4.5);
+
+  // Episode C, its goal last: played towards C's goal, not B's.
+  bridge.map(4.3, 4.3);
+  bridge.scan(4.3);
+  bridge.odom(4.3);
+  EXPECT_EQ(bridge.asked().size(), 4u) << "episode C's first period played towards episode B's goal";
+  bridge.goal(4.3, 9.5);
+  ASSERT_EQ(bridge.asked().size(), 5u);
+  EXPECT_TRUE(bridge.asked()[4].new_episode);
+  EXPECT_DOUBLE_EQ(bridge.asked()[4].goal_x, 9.5);
+
+  // A period two control periods on is not one that continues C: it waits for a map and goal of its own.
+  bridge.scan(4.5);
+  bridge.odom(4.5);
+  EXPECT_EQ(bridge.asked().size(), 5u) << "a period two control periods on taken as continuing the episode";
 
   // A period already answered is not answered again when its messages come twice.
-  bridge.goal(3.2, 4.5);
-  bridge.map(3.2, 3.1);
-  EXPECT_EQ(bridge.asked().size(), 4u);
+  bridge.scan(4.3);
+  bridge.odom(4.3);
+  bridge.goal(4.3, 9.5);
+  bridge.map(4.3, 4.3);
+  EXPECT_EQ(bridge.asked().size(), 5u);
 }
 
 TEST(VelocityPlannerLinkOrder, AGridRequestAskedAgainAsItWasIsAnsweredOnce) {
