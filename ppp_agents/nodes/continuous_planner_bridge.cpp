@@ -138,8 +138,8 @@ void ContinuousPlannerBridge::publish(const ros::Time& stamp, const ContinuousSe
   // A planner in a process of its own reads each topic on a connection of its own, in no set order, and tells the
   // period's map (and so whether it begins a new episode) from the previous episode's by its stamp: with
   // period_messages every, each period of a local planner's carries the map and goal stamped with it; with changes,
-  // only the episode's first does, and the planner tells a later
-  // period by its distance from the last it answered (one control period).
+  // only the episode's first does, and the planner tells a later period by its distance from the last it answered
+  // (one control period).
   const bool velocity = commandsVelocity(parameters_);
   const bool episode_news = !velocity || !sendsChangesOnly(parameters_) || stamp == first_period_;
   if (velocity && episode_news) {
