@@ -11,6 +11,7 @@
 #include <ros/master.h>
 #include <ros/network.h>
 #include <ros/this_node.h>
+#include <ros/xmlrpc_manager.h>
 #include <xmlrpcpp/XmlRpcClient.h>
 
 namespace ppp_msgs {
@@ -57,6 +58,9 @@ bool publisherAlive(const std::string& topic) {
       lookup_args[0] = ros::this_node::getName();
       lookup_args[1] = state[0][i][1][j];
       if (!ros::master::execute("lookupNode", lookup_args, lookup_result, uri, false)) continue;
+      // A publisher in this very process (a nodelet of the same manager) is alive while this code runs; asking
+      // the process's own XML-RPC server, whose thread a loaded manager may not serve in time, could say otherwise.
+      if (static_cast<std::string>(uri) == ros::XMLRPCManager::instance()->getServerURI()) return true;
       std::string host;
       std::uint32_t port = 0;
       if (!ros::network::splitURI(static_cast<std::string>(uri), host, port) || !connects(host, port)) continue;
