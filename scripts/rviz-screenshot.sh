@@ -3,7 +3,9 @@
 #   scripts/rviz-screenshot.sh BAG OUT.png [SECONDS]
 # Under a virtual X server (xvfb-run) it starts a private roscore on a free port, `rosbag play --clock -l BAG`
 # and rviz, waits until rviz has subscribed to /map (at most 60 s), lets it render for SECONDS (default 5),
-# grabs the screen with ImageMagick's import, and stops everything it started. Needs: rviz xvfb xauth
+# grabs the screen with ImageMagick's import, and stops everything it started. A picture that does not show the
+# map yet (scripts/check_screenshot.py: a loaded machine renders late) is grabbed again each second, at most 30
+# times; the last one is kept either way. Needs: rviz xvfb xauth
 # imagemagick (scripts/install-deps.sh). Check the picture with scripts/check_screenshot.py OUT.png.
 # The set-up it shares with rviz-video.sh (xvfb-run, roscore, rviz, cleanup) is in rviz-headless.sh.
 set -euo pipefail
@@ -31,5 +33,10 @@ rviz_headless_wait_map
 
 rviz_headless_sleep "$seconds"
 /usr/bin/import -window root "$out"
+for _ in $(seq 30); do
+  "$PPP_ROOT/scripts/check_screenshot.py" "$out" > /dev/null 2>&1 && break
+  rviz_headless_sleep 1
+  /usr/bin/import -window root "$out"
+done
 [ -s "$out" ] || { echo "rviz-screenshot: no picture written to $out" >&2; exit 1; }
 echo "rviz-screenshot: wrote $out"
