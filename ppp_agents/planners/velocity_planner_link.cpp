@@ -39,7 +39,6 @@ VelocityPlannerLink::VelocityPlannerLink(ros::NodeHandle& nh, const PlannerFrame
                                          bool in_network_thread, Answer answer)
     : frames_(frames),
       control_period_(control_period),
-      continuous_(control_period > 0),
       answer_(std::move(answer)),
       queue_(in_network_thread) {
   namespace names = ppp_msgs::topics;
@@ -64,19 +63,19 @@ std::string VelocityPlannerLink::topics() const {
 void VelocityPlannerLink::onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
   std::lock_guard<std::mutex> lock(mutex_);
   keep(&scans_, scan);
-  continuous_ ? drive() : serve();
+  continuous() ? drive() : serve();
 }
 
 void VelocityPlannerLink::onOdom(const nav_msgs::Odometry::ConstPtr& odom) {
   std::lock_guard<std::mutex> lock(mutex_);
   keep(&poses_, odom);
-  continuous_ ? drive() : serve();
+  continuous() ? drive() : serve();
 }
 
 void VelocityPlannerLink::onMap(const nav_msgs::OccupancyGrid::ConstPtr& map) {
   std::lock_guard<std::mutex> lock(mutex_);
   map_message_ = map;
-  continuous_ ? drive() : serve();
+  continuous() ? drive() : serve();
 }
 
 void VelocityPlannerLink::onGoal(const geometry_msgs::PoseStamped::ConstPtr& goal) {
@@ -86,7 +85,7 @@ void VelocityPlannerLink::onGoal(const geometry_msgs::PoseStamped::ConstPtr& goa
     return;
   }
   std::lock_guard<std::mutex> lock(mutex_);
-  if (continuous_) {
+  if (continuous()) {
     goal_pose_ = goal;  // the episode's goal; the periods' scans and poses ask
     drive();
   } else {

@@ -73,6 +73,8 @@ class VelocityPlannerLink {
   std::string topics() const;
 
  private:
+  /// True when the robot moves continuously (a control period was given), false on the grid.
+  bool continuous() const { return control_period_ > ros::Duration(0); }
   void onScan(const sensor_msgs::LaserScan::ConstPtr& scan);
   void onOdom(const nav_msgs::Odometry::ConstPtr& odom);
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& map);
@@ -87,7 +89,6 @@ class VelocityPlannerLink {
 
   PlannerFrames frames_;
   ros::Duration control_period_;  // zero on the grid
-  bool continuous_;
   Answer answer_;
   std::mutex mutex_;  // held by each callback: a nodelet's may run in two threads (a publisher's and its own)
   std::deque<sensor_msgs::LaserScan::ConstPtr> scans_;

@@ -225,12 +225,8 @@ void AgentConfig::validate() const {
     throw InvalidArgument("plan_requests", agentPlanRequestsProblem(*this));
   }
   if (!agentInterfaceProblem(*this).empty()) throw InvalidArgument("interface", agentInterfaceProblem(*this));
-  BridgeOptions resolved = bridge;
-  resolved.wakes_on = plannerWakesOn(*this);
-  resolved.period_messages = plannerPeriodMessages(*this);
-  if (!periodMessagesProblem(resolved).empty()) {
-    throw InvalidArgument("period_messages", periodMessagesProblem(resolved));
-  }
+  const std::string period_messages = periodMessagesProblem(plannerBridgeOptions(*this));
+  if (!period_messages.empty()) throw InvalidArgument("period_messages", period_messages);
   if (!hostProblem(host).empty()) throw InvalidArgument("host", hostProblem(host));
 }
 
@@ -425,6 +421,13 @@ std::string plannerPeriodMessages(const AgentConfig& config) {
   const ExamplePlanner* planner = examplePlanner(config.planner_node);
   const bool ours = planner != nullptr && planner->answers_messages;
   return ours && plannerWakesOn(config) == kWakesOnMessages ? kPeriodMessagesChanges : kPeriodMessagesEvery;
+}
+
+BridgeOptions plannerBridgeOptions(const AgentConfig& config) {
+  BridgeOptions options = config.bridge;
+  options.wakes_on = plannerWakesOn(config);
+  options.period_messages = plannerPeriodMessages(config);
+  return options;
 }
 
 int instanceCount(const AgentConfig& config, const EpisodeOptions& options) {

@@ -163,11 +163,9 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, 
   const std::size_t slash = agent.planner_node.find('/');
   const std::string package = agent.planner_node.substr(0, slash);
   const std::string type = slash == std::string::npos ? "" : agent.planner_node.substr(slash + 1);
-  agents::BridgeOptions options = agent.bridge;
+  agents::BridgeOptions options = agents::plannerBridgeOptions(agent);
   options.connect_timeout = plannerConnectTimeout(agent);
   options.robot_radius = episode.robot_radius;
-  options.wakes_on = agents::plannerWakesOn(agent);
-  options.period_messages = agents::plannerPeriodMessages(agent);
   static const std::vector<OptionSpec<agents::AgentConfig>> named =
       selectOptions(agents::agentNodeOptionSpecs(), {"name", "memory"});
   static const std::vector<OptionSpec<agents::BridgeOptions>> written =
@@ -207,7 +205,7 @@ std::vector<ppp_msgs::GraphNode> plannerNodes(const agents::AgentConfig& agent, 
     if (simulated_time && !nodelet) {
       // Its own clock, which its bridge publishes; a process of its own, as a process has one time for all its nodes.
       // This repository's planners that build as nodelets read the time from the stamps of what they answer, so
-      // they join the manager beside their bridge, which asks them in its own thread.
+      // they join the manager beside their bridge, which asks them in the simulator's thread.
       planner.remaps.push_back({kClock, ns + ppp_msgs::topics::kRobotNamespace + "/" + ppp_msgs::topics::kPlannerClock});
     }
     if (nodelet) loadInto(in_manager, example->nodelet, &planner);

@@ -161,6 +161,10 @@ std::string plannerWakesOn(const AgentConfig& config);
 /// told to wake on a timer).
 std::string plannerPeriodMessages(const AgentConfig& config);
 
+/// The agent's bridge options with `wakes_on` and `period_messages` resolved (plannerWakesOn, plannerPeriodMessages):
+/// what its bridge is told.
+BridgeOptions plannerBridgeOptions(const AgentConfig& config);
+
 /// How many instances play an agent's runs in parallel through ROS, each its share (every n-th run): for a planner
 /// agent, bridge and planner pairs: `instances` when given, else as many as this machine has cores for a planner
 /// the experiment starts (planner_node), and 1 for one the user starts. For a built-in agent in continuous motion
