@@ -21,6 +21,7 @@ trap 'kill $(jobs -p) 2> /dev/null; [[ -n "${KEEP:-}" ]] || rm -rf "$work"' EXIT
 export ROS_HOME="$work/ros"
 ppp="$PPP_BUILD_DIR/devel/lib/ppp_simulator/ppp"
 bench="$PPP_BUILD_DIR/devel/lib/ppp_agents/period_round_trip_bench"
+cmake --build "$PPP_BUILD_DIR" --target period_round_trip_bench -j "$(nproc)" > /dev/null
 free_port() { python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'; }
 echo "machine: nproc=$(nproc) cpu='$(grep -m1 '^model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')'"
 

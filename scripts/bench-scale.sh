@@ -11,6 +11,7 @@ trap 'rm -rf "$work"' EXIT
 
 echo "machine: nproc=$(nproc) cpu='$(grep -m1 '^model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')'" \
   "date=$(date -u +%Y-%m-%dT%H:%M:%SZ) commit=$(git rev-parse --short HEAD 2>/dev/null || echo none)"
+cmake --build "$PPP_BUILD_DIR" --target scale_bench -j "$(nproc)" > /dev/null
 "$PPP_BUILD_DIR/devel/lib/ppp_simulator/scale_bench" --benchmark_format=console
 
 grep -v "type: planner" config/agents.yaml > "$work/agents.yaml"

@@ -31,6 +31,7 @@ for bench in "${benchmarks[@]}"; do
 done
 # Generator benchmarks live in the catkin workspace (package ppp_generator).
 PATH="/usr/bin:$PATH" scripts/build.sh > /dev/null
+cmake --build build --target benchmarks -j "$(nproc)" > /dev/null
 for bench in ppp_generator/upgma_bench ppp_generator/generator_bench ppp_agents/agent_step_bench \
   ppp_agents/planners_bench ppp_agents/continuous_step_bench ppp_agents/continuous_lockstep_bench ppp_agents/laser_bench \
   ppp_simulator/episode_bench \

@@ -9,17 +9,19 @@ failures=()
 passed_steps=0
 step() {
   local name="$1"; shift
+  local started=$SECONDS
   echo "=== $name"
   if "$@"; then
-    echo "=== $name: ok"
+    echo "=== $name: ok in $((SECONDS - started)) s"
     passed_steps=$((passed_steps + 1))
   else
-    echo "=== $name: FAILED"
+    echo "=== $name: FAILED in $((SECONDS - started)) s"
     failures+=("$name")
   fi
 }
 
 scripts/install-deps.sh || { echo "install failed"; exit 1; }
+echo "=== install what is missing: ok in $SECONDS s"
 step "build workspace" scripts/build.sh
 step "build tests" cmake --build "$PPP_BUILD_DIR" --target tests -j "$(nproc)"
 step "workspace tests (ctest)" ctest --test-dir "$PPP_BUILD_DIR" --output-on-failure -j "$(nproc)"
@@ -36,5 +38,5 @@ step "fuzz every parser target (20 s each)" scripts/fuzz.sh 20
 
 echo
 [ ${#failures[@]} -eq 0 ] || echo "test.sh: FAILED steps: ${failures[*]}"
-echo "test.sh: $passed_steps passed, ${#failures[@]} failed"
+echo "test.sh: $passed_steps passed, ${#failures[@]} failed in $SECONDS s"
 [ ${#failures[@]} -eq 0 ]
