@@ -77,6 +77,7 @@ if [ -f "${build_dir}/CMakeCache.txt" ] && ! grep -q "CMAKE_PROJECT_NAME:STATIC=
   rm -rf "${build_dir}"  # an older build of the core alone
 fi
 cmake -S ppp_simulator/fuzz -B "${build_dir}" -DCMAKE_CXX_COMPILER="${clangxx}" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" \
   -DPPP_MSGS_INCLUDE_DIR="${msgs_include}" >/dev/null
 cmake --build "${build_dir}" --target $(printf '%s_fuzz ' "${targets[@]}") -j2
 

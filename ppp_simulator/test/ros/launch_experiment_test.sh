@@ -64,7 +64,7 @@ timeout 300 roslaunch -p "$port" "$root/launch/experiment.launch" output_dir:="$
 launch=$!
 total=$((6 * 2 * 3000))
 for _ in $(seq 1 600); do
-  rows=$(($(wc -l < "$work/small/killed/results.csv" 2>/dev/null || echo 1) - 1))
+  rows=$(($(wc -l 2>/dev/null < "$work/small/killed/results.csv" || echo 1) - 1))
   [ "$rows" -gt 0 ] && break
   sleep 0.1
 done
