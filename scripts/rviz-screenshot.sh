@@ -32,11 +32,10 @@ rviz_headless_track "$!"
 rviz_headless_wait_map
 
 rviz_headless_sleep "$seconds"
-/usr/bin/import -window root "$out"
-for _ in $(seq 30); do
-  "$PPP_ROOT/scripts/check_screenshot.py" "$out" > /dev/null 2>&1 && break
-  rviz_headless_sleep 1
+for retry in $(seq 0 30); do
+  [ "$retry" -eq 0 ] || rviz_headless_sleep 1
   /usr/bin/import -window root "$out"
+  "$PPP_ROOT/scripts/check_screenshot.py" "$out" > /dev/null 2>&1 && break
 done
 [ -s "$out" ] || { echo "rviz-screenshot: no picture written to $out" >&2; exit 1; }
 echo "rviz-screenshot: wrote $out"
