@@ -12,6 +12,9 @@ set(PPP_REPORT_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/report/distinct_failures.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/report/report.cpp
 )
+# The two animations draw with palettes of their own under the same names: never compiled as one unit (a unity build).
+set_source_files_properties(${CMAKE_CURRENT_LIST_DIR}/src/report/continuous_animation.cpp
+  PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
 # The experiment: its config, sets, runs, results file and graph, and its report made with the report library.
 set(PPP_SIMULATOR_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/scenario_runner.cpp

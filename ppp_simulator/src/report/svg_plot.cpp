@@ -25,11 +25,11 @@ constexpr std::size_t kMaxLegendChars = 40;
 constexpr const char* kFont = "font-family=\"sans-serif\"";
 
 // Tableau 10: distinguishable, and not relying on red/green alone.
-constexpr const char* kPalette[] = {"#4e79a7", "#f28e2b", "#e15759", "#76b7b2", "#59a14f",
+constexpr const char* kSeriesColours[] = {"#4e79a7", "#f28e2b", "#e15759", "#76b7b2", "#59a14f",
                                     "#edc948", "#b07aa1", "#ff9da7", "#9c755f", "#7f7f7f"};
-constexpr std::size_t kPaletteSize = sizeof kPalette / sizeof kPalette[0];
+constexpr std::size_t kSeriesColourCount = sizeof kSeriesColours / sizeof kSeriesColours[0];
 
-const char* colour(std::size_t series) { return kPalette[series % kPaletteSize]; }
+const char* colour(std::size_t series) { return kSeriesColours[series % kSeriesColourCount]; }
 
 /// A coordinate with one decimal.
 std::string px(double value) { return formatFixed(value, 1); }
