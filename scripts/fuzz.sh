@@ -2,7 +2,7 @@
 # Builds the libFuzzer targets of the parsers with clang (ASan + UBSan) in build-fuzz/ (ppp_simulator/fuzz's
 # project) and runs each for a bounded time: scripts/fuzz.sh [SECONDS] [TARGET...] (default 30 s each, every
 # target), or for a number of executions: scripts/fuzz.sh --runs N [TARGET...] (the long campaigns in
-# BENCHMARKS.md), or only builds them: scripts/fuzz.sh --build [TARGET...] (test.sh builds them while other tests run). Targets: ppp_parser (.ppp files), map_yaml (map_server YAML + PGM), movingai_map (MovingAI .map grid
+# BENCHMARKS.md). Targets: ppp_parser (.ppp files), map_yaml (map_server YAML + PGM), movingai_map (MovingAI .map grid
 # maps), movingai_scen (MovingAI .scen scenario lists), newick (taxonomy trees), generator_yaml (generator options),
 # set_csv (a set directory's set.csv), agents_yaml (agents lists), experiment_yaml (experiment configs), results_csv
 # (the results a resume reads), and the batch protocol's scan_batch (ROS-serialised ScanBatch messages as the agent
@@ -18,14 +18,10 @@ set -euo pipefail
 all_targets=(ppp_parser map_yaml movingai_map movingai_scen newick generator_yaml set_csv agents_yaml experiment_yaml
   results_csv scan_batch move_batch)
 ros_targets=(scan_batch move_batch)
-usage="usage: $0 [SECONDS | --runs N | --build] [TARGET...]  (a positive whole number of seconds, default 30, or of
-  executions per target, or build only; targets: ${all_targets[*]})"
+usage="usage: $0 [SECONDS | --runs N] [TARGET...]  (a positive whole number of seconds, default 30, or of
+  executions per target; targets: ${all_targets[*]})"
 runs=""
-build_only=""
-if [[ "${1:-}" == "--build" ]]; then
-  build_only=1
-  shift
-elif [[ "${1:-}" == "--runs" ]]; then
+if [[ "${1:-}" == "--runs" ]]; then
   runs="${2:-}"
   if ! [[ "${runs}" =~ ^[1-9][0-9]*$ ]]; then
     echo "${usage}" >&2
@@ -84,7 +80,6 @@ cmake -S ppp_simulator/fuzz -B "${build_dir}" -DCMAKE_CXX_COMPILER="${clangxx}" 
   -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" \
   -DPPP_MSGS_INCLUDE_DIR="${msgs_include}" >/dev/null
 cmake --build "${build_dir}" --target $(printf '%s_fuzz ' "${targets[@]}") -j2
-[[ -z "${build_only}" ]] || exit 0
 
 # fuzz_one TARGET: runs it for the budget and prints its figures; on a finding, the end of its log and the inputs,
 # and fails with libFuzzer's status.

@@ -24,27 +24,14 @@ scripts/install-deps.sh || { echo "install failed"; exit 1; }
 echo "=== install what is missing: ok in $SECONDS s"
 step "build workspace" scripts/build.sh
 step "build tests" cmake --build "$PPP_BUILD_DIR" --target tests -j "$(nproc)"
-
-# The core must build and pass its tests with no ROS at all: catkin is never looked for, and #error stand-ins for ROS
-# headers come first on the include path. It and the fuzzers are built while the workspace tests run, at the lowest
-# priority, on the cores the tests leave idle while they wait on ROS round trips (BENCHMARKS.md: where the test
-# command's time goes).
-core_dir="$PPP_ROOT/build-core"
-background_log="$PPP_BUILD_DIR/background-builds.log"
-# In a session of its own, so that the script's end stops all of it.
-setsid nice -n 19 bash -c 'cmake -S src -B "$1" -DPPP_CORE_FORBID_ROS=ON -DPPP_CORE_BENCHMARKS=OFF \
-  -DCMAKE_BUILD_TYPE=Release && cmake --build "$1" -j "$(nproc)" && scripts/fuzz.sh --build' _ "$core_dir" \
-  > "$background_log" 2>&1 &
-background_builds=$!
-trap 'kill -- -"$background_builds" 2> /dev/null' EXIT
 step "workspace tests (ctest)" ctest --test-dir "$PPP_BUILD_DIR" --output-on-failure -j "$(nproc)"
-# wait_for_background_builds: their status; on a failure, the end of their log.
-wait_for_background_builds() {
-  wait "$background_builds" && return 0
-  tail -40 "$background_log"
-  return 1
-}
-step "build core without ROS and fuzzers (begun beside the workspace tests)" wait_for_background_builds
+
+# The core must build and pass its tests with no ROS at all: catkin is never looked for, and
+# #error stand-ins for ROS headers come first on the include path.
+core_dir="$PPP_ROOT/build-core"
+step "configure core without ROS" cmake -S src -B "$core_dir" -DPPP_CORE_FORBID_ROS=ON -DPPP_CORE_BENCHMARKS=OFF \
+  -DCMAKE_BUILD_TYPE=Release
+step "build core without ROS" cmake --build "$core_dir" -j "$(nproc)"
 step "core tests without ROS (ctest)" ctest --test-dir "$core_dir" --output-on-failure -j "$(nproc)"
 
 step "fuzz every parser target (20 s each)" scripts/fuzz.sh 20
