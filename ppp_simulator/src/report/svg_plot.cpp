@@ -26,7 +26,7 @@ constexpr const char* kFont = "font-family=\"sans-serif\"";
 
 // Tableau 10: distinguishable, and not relying on red/green alone.
 constexpr const char* kSeriesColours[] = {"#4e79a7", "#f28e2b", "#e15759", "#76b7b2", "#59a14f",
-                                    "#edc948", "#b07aa1", "#ff9da7", "#9c755f", "#7f7f7f"};
+                                          "#edc948", "#b07aa1", "#ff9da7", "#9c755f", "#7f7f7f"};
 constexpr std::size_t kSeriesColourCount = sizeof kSeriesColours / sizeof kSeriesColours[0];
 
 const char* colour(std::size_t series) { return kSeriesColours[series % kSeriesColourCount]; }
