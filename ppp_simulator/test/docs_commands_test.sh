@@ -81,8 +81,8 @@ if [ -z "$(ls -A "$work/tmp")" ]; then pass; else fail "scratch directories left
 expect_error "no such page" "no such page in" docs nope.md
 expect_error "bad timeout" "--timeout: expected a positive number" docs --timeout 0
 
-# The real documentation, with the built workspace. A page may take up to 900 s: the corpus how-to hunts a Python
-# planner for 4,000 matings through ROS while other tests share the cores.
-if PPP_BUILD_DIR="$build_dir" /usr/bin/python3 "$runner" --timeout 900 > "$work/out" 2>&1; then pass
+# The real documentation, with the built workspace. A page may take up to 600 s: the corpus how-to hunts a Python
+# planner through ROS (600 matings) and shrinks its failures while other tests share the cores (180 s then).
+if PPP_BUILD_DIR="$build_dir" /usr/bin/python3 "$runner" --timeout 600 > "$work/out" 2>&1; then pass
 else fail "the repository's documentation:"$'\n'"$(cat "$work/out")"; fi
 finish
