@@ -67,7 +67,7 @@ std::string launchXml(const LaunchGraph& graph) {
   out << "<launch>\n  <!-- " << ppp::escapeMarkup(graph.comment) << " -->\n";
   for (const GraphMachine& m : graph.machines) {
     out << "  <machine name=" << attribute(m.name, "host") << " address=" << attribute(m.address, "host")
-        << " env-loader=" << attribute(m.env_loader, "env_loader") << "/>\n";
+        << " env-loader=" << attribute(m.env_loader, "env_loader") << " timeout=\"" << m.start_timeout << "\"/>\n";
   }
   for (const GraphParam& p : graph.params) {
     out << "  <param name=" << attribute(p.name, p.name) << " type=" << attribute(p.type, p.name)

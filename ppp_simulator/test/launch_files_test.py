@@ -371,6 +371,8 @@ class SmallGraphTest(unittest.TestCase):
         explorer = [n for n in config.nodes if n.name == 'explorer'][0]
         machine = config.machines[explorer.machine_name]
         self.assertEqual((machine.address, machine.env_loader), ('10.0.0.2', '/ws/devel/env.sh'))
+        # roslaunch's own 10 s for the remote roslaunch to register is too short on a busy host.
+        self.assertEqual(machine.timeout, 60.0)
         self.assertIsNone([n for n in config.nodes if n.name == 'astar'][0].machine_name)
         self.assertEqual(config.params['/explorer/memory'].value, '5x5')
         text, _, _, _ = launch_file(path, '--env-loader', '/ws/devel/env.sh', '--json')

@@ -51,6 +51,9 @@ struct GraphMachine {
   std::string name;        ///< Machine name the nodes refer to.
   std::string address;     ///< Host name or address (reached over ssh).
   std::string env_loader;  ///< Script the host runs nodes through.
+  /// Seconds roslaunch waits for the host's remote roslaunch to register. Its own default, 10 s, is shorter than
+  /// an ssh login and a Python start take on a busy host.
+  int start_timeout = 60;
 };
 
 /// A whole graph.
