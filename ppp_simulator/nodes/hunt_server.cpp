@@ -22,6 +22,13 @@ bool HuntServer::evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs
   std::lock_guard<std::mutex> serving(serving_);  // one request at a time: the agents serve one lane each
   try {
     const std::vector<agents::AgentConfig> panel = generator::resolvePanel(request.agents, config_.agents, true);
+    std::vector<AgentRunners*> entries;
+    for (const agents::AgentConfig& agent : panel) entries.push_back(&runnersOf(agent));
+    // Locked in one order (by address): a second caller locking the same agents waits, never deadlocks.
+    std::sort(entries.begin(), entries.end(), std::less<AgentRunners*>());
+    entries.erase(std::unique(entries.begin(), entries.end()), entries.end());
+    std::vector<std::unique_lock<std::mutex>> playing;
+    for (AgentRunners* entry : entries) playing.emplace_back(entry->playing);
     std::vector<Problem> problems;
     for (const ppp_msgs::Problem& m : request.problems) problems.push_back(ppp_msgs::fromMessage(m));
     generator::HuntEvaluation evaluation(problems, panel, config_.episode, static_cast<int>(request.runs), request.seed,
@@ -47,7 +54,7 @@ bool HuntServer::evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs
 
 std::vector<agents::EpisodeResult> HuntServer::playRows(const agents::AgentConfig& agent, const Problem& problem,
                                                         const std::vector<std::uint64_t>& seeds) {
-  std::lock_guard<std::mutex> serving(serving_);
+  std::lock_guard<std::mutex> playing(runnersOf(agent).playing);
   generator::HuntEvaluation evaluation({problem}, {agent}, config_.episode, static_cast<int>(seeds.size()), 0,
                                        parameters_.batch_size, seeds);
   try {
@@ -65,20 +72,23 @@ void HuntServer::play(generator::HuntEvaluation& evaluation, const std::vector<a
   // One task per lane, pairing the panel's runners with the evaluation's lanes of the same protocol, in order.
   std::vector<std::function<void()>> tasks;
   std::size_t grid = 0, continuous = 0;
+  std::vector<AgentRunners*> entries;
   for (const agents::AgentConfig& agent : panel) {
+    AgentRunners& entry = runnersOf(agent);
+    entry.target = &evaluation;  // its runners' sink
+    entries.push_back(&entry);
     if (agents::playsContinuously(agent, config_.episode)) {
-      for (const auto& runner : runnersFor(agent, &continuous_runners_)) {
+      for (const auto& runner : runnersFor(agent, &entry, &entry.continuous)) {
         tasks.push_back([runner = runner.get(), lane = evaluation.continuousLanes().at(continuous++).get()] {
           runner->run(lane);
         });
       }
     } else {
-      for (const auto& runner : runnersFor(agent, &runners_)) {
+      for (const auto& runner : runnersFor(agent, &entry, &entry.grid)) {
         tasks.push_back([runner = runner.get(), lane = evaluation.lanes().at(grid++).get()] { runner->run(lane); });
       }
     }
   }
-  target_ = &evaluation;  // the runners' sink
   std::vector<std::exception_ptr> failures(tasks.size());
   std::vector<std::thread> threads;
   for (std::size_t i = 0; i < tasks.size(); ++i) {
@@ -91,7 +101,7 @@ void HuntServer::play(generator::HuntEvaluation& evaluation, const std::vector<a
     });
   }
   for (std::thread& t : threads) t.join();
-  target_ = nullptr;
+  for (AgentRunners* entry : entries) entry->target = nullptr;
   for (const std::exception_ptr& failure : failures) {
     if (failure) std::rethrow_exception(failure);
   }
@@ -122,18 +132,25 @@ ppp_msgs::ProblemEvaluation HuntServer::toMessage(const generator::PanelEvaluati
   return m;
 }
 
+HuntServer::AgentRunners& HuntServer::runnersOf(const agents::AgentConfig& agent) {
+  std::lock_guard<std::mutex> lock(agents_mutex_);
+  std::unique_ptr<AgentRunners>& entry = agents_[agent.name];
+  if (!entry) entry = std::make_unique<AgentRunners>();
+  return *entry;
+}
+
 template <class Runner>
-const std::vector<std::unique_ptr<Runner>>& HuntServer::runnersFor(
-    const agents::AgentConfig& agent, std::map<std::string, std::vector<std::unique_ptr<Runner>>>* all) {
-  std::vector<std::unique_ptr<Runner>>& runners = (*all)[agent.name];
+const std::vector<std::unique_ptr<Runner>>& HuntServer::runnersFor(const agents::AgentConfig& agent,
+                                                                    AgentRunners* entry,
+                                                                    std::vector<std::unique_ptr<Runner>>* runners) {
   const int instances = agents::instanceCount(agent, config_.episode);
-  for (int instance = static_cast<int>(runners.size()); instance < instances; ++instance) {
-    runners.push_back(std::make_unique<Runner>(
+  for (int instance = static_cast<int>(runners->size()); instance < instances; ++instance) {
+    runners->push_back(std::make_unique<Runner>(
         nh_, parameters_, control_, agent, agents::LaneShare{instance, instances},
-        [this](const std::vector<agents::EpisodeResult>& ended) { target_->record(ended); },
+        [entry](const std::vector<agents::EpisodeResult>& ended) { entry->target->record(ended); },
         typename Runner::ScanObserver{}, false));
   }
-  return runners;
+  return *runners;
 }
 
 int runHuntServer(ros::NodeHandle& nh, ros::NodeHandle& services_nh, const SimulatorParameters& parameters,

@@ -35,29 +35,39 @@ class HuntServer {
   bool evaluate(ppp_msgs::EvaluateProblems::Request& request, ppp_msgs::EvaluateProblems::Response& response);
 
   /// Plays `agent` (of ~config) on `problem` (solvable for the robot) once per seed of `seeds`, as the service
-  /// would; returns the rows in run order (a planner's with its actions). @throws Interrupted when the node stops
-  /// first.
+  /// would; returns the rows in run order (a planner's with its actions). Calls for different agents play at once;
+  /// for one agent, one after another. @throws Interrupted when the node stops first.
   std::vector<agents::EpisodeResult> playRows(const agents::AgentConfig& agent, const Problem& problem,
                                               const std::vector<std::uint64_t>& seeds);
 
  private:
+  /// One agent's runners (one per instance, agents::instanceCount, of its lockstep protocol), made on first use.
+  struct AgentRunners {
+    std::mutex playing;  // held while its runners play: one evaluation at a time per agent
+    generator::HuntEvaluation* target = nullptr;  // the evaluation in play, where its runners' results go
+    std::vector<std::unique_ptr<LaneRunner>> grid;
+    std::vector<std::unique_ptr<ContinuousLaneRunner>> continuous;
+  };
+
   static ppp_msgs::ProblemEvaluation toMessage(const generator::PanelEvaluation& e);
-  /// Plays every lane of `evaluation` (the panel's, in panel order) on the panel's runners, one thread each.
-  /// @throws what a runner threw; IoError when ROS shut down before every run was played.
+  /// The agent's entry, made on first use (its address stays the same).
+  AgentRunners& runnersOf(const agents::AgentConfig& agent);
+  /// Plays every lane of `evaluation` (the panel's, in panel order) on the panel's runners, one thread each; the
+  /// caller holds every panel agent's `playing`. @throws what a runner threw; IoError when ROS shut down before
+  /// every run was played.
   void play(generator::HuntEvaluation& evaluation, const std::vector<agents::AgentConfig>& panel);
-  /// The runners of the agent's instances (agents::instanceCount) of one lockstep protocol, made on first use.
+  /// `entry`'s runners of one lockstep protocol for `agent`, made on first use (the caller holds its `playing`).
   template <class Runner>
-  const std::vector<std::unique_ptr<Runner>>& runnersFor(const agents::AgentConfig& agent,
-                                                          std::map<std::string, std::vector<std::unique_ptr<Runner>>>* all);
+  const std::vector<std::unique_ptr<Runner>>& runnersFor(const agents::AgentConfig& agent, AgentRunners* entry,
+                                                          std::vector<std::unique_ptr<Runner>>* runners);
 
   ros::NodeHandle& nh_;
   SimulatorParameters parameters_;
   NodeControl control_;
   ExperimentConfig config_;
-  std::mutex serving_;
-  std::map<std::string, std::vector<std::unique_ptr<LaneRunner>>> runners_;
-  std::map<std::string, std::vector<std::unique_ptr<ContinuousLaneRunner>>> continuous_runners_;
-  generator::HuntEvaluation* target_ = nullptr;  // the request in flight, where the runners' results go
+  std::mutex serving_;  // one service request at a time
+  std::mutex agents_mutex_;  // guards the map agents_, not its entries
+  std::map<std::string, std::unique_ptr<AgentRunners>> agents_;
   long requests_ = 0;
   long episodes_ = 0;
   ProgressMeter progress_{"hunt", "episodes"};  // a line every few seconds, not one per request

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <set>
 #include <thread>
 
@@ -189,15 +190,22 @@ int SimulatorNode::runExperiment() {
   }
   // The report shrinks each planner's worst PPP, and a hunted set's corpus its failures, by playing candidates on the
   // planner's bridges, as a hunt does; a planner whose link is lost is not asked again (each try would wait for it to
-  // connect).
+  // connect). Planners are played from several threads at once (one agent each).
+  std::mutex planner_runs_mutex;  // guards the two below
   std::unique_ptr<HuntServer> planner_runs;
   std::set<std::string> unreachable;
   const PlannerRows planner_rows = [&](const agents::AgentConfig& agent, const Problem& problem,
                                        const std::vector<std::uint64_t>& seeds) {
-    if (unreachable.count(agent.name) > 0) throw AgentUnreachable(agent.name, "lost after its runs");
-    if (!planner_runs) planner_runs = std::make_unique<HuntServer>(nh, parameters, control_);
-    std::vector<agents::EpisodeResult> rows = planner_runs->playRows(agent, problem, seeds);
+    HuntServer* server = nullptr;
+    {
+      std::lock_guard<std::mutex> lock(planner_runs_mutex);
+      if (unreachable.count(agent.name) > 0) throw AgentUnreachable(agent.name, "lost after its runs");
+      if (!planner_runs) planner_runs = std::make_unique<HuntServer>(nh, parameters, control_);
+      server = planner_runs.get();
+    }
+    std::vector<agents::EpisodeResult> rows = server->playRows(agent, problem, seeds);
     if (std::any_of(rows.begin(), rows.end(), [](const auto& r) { return leavesAgentUnreachable(r.reason); })) {
+      std::lock_guard<std::mutex> lock(planner_runs_mutex);
       unreachable.insert(agent.name);
       ROS_WARN("agent '%s' is gone: its failures are not shrunk (for the report, into a corpus)", agent.name.c_str());
       throw AgentUnreachable(agent.name, "lost after its runs");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <set>
 
@@ -10,6 +11,7 @@
 #include "ppp_agents/continuous/continuous_agent.hpp"
 #include "ppp_agents/continuous/continuous_runner.hpp"
 #include "ppp_core/csv.hpp"
+#include "ppp_core/parallel_for.hpp"
 #include "ppp_core/reachability.hpp"
 #include "ppp_core/text_file.hpp"
 #include "ppp_agents/episode_runner.hpp"
@@ -342,7 +344,7 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
     c.first += g.passes;
     c.second += g.runs;
   }
-  std::vector<FailureExample> worst;
+  std::vector<std::pair<const agents::AgentConfig*, std::pair<int, int>>> picked;  // agent, (set, problem)
   for (const agents::AgentConfig& agent : config.agents) {
     if (!replayedInReport(agent, config.episode)) continue;
     double lowest = 1.0;
@@ -351,15 +353,33 @@ std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const 
       const double rate = static_cast<double>(c.first) / c.second;
       if (rate < lowest) lowest = rate, at = where;
     }
-    if (at.first < 0) continue;
-    if (std::optional<FailureExample> run =
-            failingRun(config, sets[at.first], at.second, agent, groups, stop, planner_rows)) {
-      // A run lost to the agent link, or to its planner's end, cannot be judged again: there is nothing to shrink.
-      if (config.shrink_worst && (!run->recorded || planner_rows) && !leavesAgentUnreachable(run->reason)) {
-        run->shrunk = shrunkRun(config, agent, *run, planner_rows, stop);
-      }
-      worst.push_back(std::move(*run));
+    if (at.first >= 0) picked.emplace_back(&agent, at);
+  }
+  // Each agent's run replayed and shrunk on a thread of its own (the experiment's threads; a planner's played through
+  // planner_rows), kept in agent order. The costliest start first, so that no thread is left alone with one at the
+  // end: planners driven in continuous motion, then other planners (their runs go through ROS), then the rest.
+  const auto cost = [&](std::size_t i) {
+    const agents::AgentConfig& agent = *picked[i].first;
+    return drivenPlanner(agent, config.episode) ? 2 : agents::isPlanner(agent) ? 1 : 0;
+  };
+  std::vector<std::size_t> order(picked.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost(a) > cost(b); });
+  std::vector<std::optional<FailureExample>> runs(picked.size());
+  parallelFor(order.size(), config.threads, [&](std::size_t k) {
+    const std::size_t i = order[k];
+    const agents::AgentConfig& agent = *picked[i].first;
+    const auto [set, problem] = picked[i].second;
+    runs[i] = failingRun(config, sets[set], problem, agent, groups, stop, planner_rows);
+    // A run lost to the agent link, or to its planner's end, cannot be judged again: there is nothing to shrink.
+    if (runs[i] && config.shrink_worst && (!runs[i]->recorded || planner_rows) &&
+        !leavesAgentUnreachable(runs[i]->reason)) {
+      runs[i]->shrunk = shrunkRun(config, agent, *runs[i], planner_rows, stop);
     }
+  });
+  std::vector<FailureExample> worst;
+  for (std::optional<FailureExample>& run : runs) {
+    if (run) worst.push_back(std::move(*run));
   }
   return worst;
 }

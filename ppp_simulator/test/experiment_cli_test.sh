@@ -51,6 +51,10 @@ for name in sys.argv[1:]:
     im = Image.open(name)
     assert im.format == "GIF" and im.n_frames >= 2 and im.info.get("loop") == 0, name
 ' "$work/a/pictures/"*.gif && pass || fail "the animations of the report do not read as looping GIFs"
+# The report is the same on one thread (its worst PPPs are shrunk side by side, an agent per thread).
+expect_ok "experiment on one thread" "$ppp" experiment "$work/experiment.yaml" -o "$work/one" --threads 1 --quiet
+cmp -s "$work/a/report.md" "$work/one/report.md" && cmp -s "$work/a/report.html" "$work/one/report.html" && pass || \
+  fail "the report on one thread differs from the report on two"
 # animation_frames caps every animation of the report (a presentation option: same rows, same fingerprint).
 { cat "$work/experiment.yaml"; echo "animation_frames: 3"; } > "$work/frames.yaml"
 expect_ok "experiment with animation_frames 3" "$ppp" experiment "$work/frames.yaml" -o "$work/frames" --quiet

@@ -30,7 +30,8 @@ std::vector<FailureExample> hardestFailures(const ExperimentConfig& config, cons
 /// actions its row carries, planner_moves.csv, or in continuous motion from its commands, played again by
 /// `planner_rows`; left out when it has none, it plays differently, or the map is too large to animate);
 /// agents that never fail are left out. With the config's shrink_worst, each run's PPP is shrunk for its seed
-/// (FailureExample::shrunk): a built-in agent's in process, a planner's when `planner_rows` can play it.
+/// (FailureExample::shrunk): a built-in agent's in process, a planner's when `planner_rows` can play it; one agent
+/// per thread (the config's threads), the result in agent order whatever the threads.
 /// @throws Interrupted as hardestFailures().
 std::vector<FailureExample> worstFailures(const ExperimentConfig& config, const std::vector<agents::PreparedSet>& sets,
                                           const std::vector<ResultGroup>& groups, const StopCheck& stop = {},

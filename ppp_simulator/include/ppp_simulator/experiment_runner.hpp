@@ -67,7 +67,8 @@ std::string resultsPath(const std::string& dir);
 
 /// Plays a planner agent of the experiment on one PPP once per seed, giving the rows as results.csv has them (the
 /// simulator node's lanes), so the report can shrink planners' failures too; empty where planners cannot play
-/// (`ppp experiment`). Throws AgentUnreachable when the planner is gone (a run lost to its link).
+/// (`ppp experiment`). Throws AgentUnreachable when the planner is gone (a run lost to its link). Called from several
+/// threads at once, for different agents (the report's worst PPPs are shrunk side by side).
 using PlannerRows = std::function<std::vector<agents::EpisodeResult>(
     const agents::AgentConfig& agent, const Problem& problem, const std::vector<std::uint64_t>& seeds)>;
 
