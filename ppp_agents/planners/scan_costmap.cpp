@@ -40,6 +40,8 @@ ScanCostmap::ScanCostmap(double width, double height, MapPoint origin, double re
   marked_.assign(cells, 0);
   clearance_.assign(cells, std::numeric_limits<double>::infinity());
   cost_.assign(cells, std::numeric_limits<double>::infinity());
+  lethal_.assign(cells, 0);
+  weight_.assign(cells, 1.0);
 }
 
 int ScanCostmap::cellAt(MapPoint point) const {
@@ -96,11 +98,14 @@ void ScanCostmap::plan(MapPoint goal) {
   std::fill(cost_.begin(), cost_.end(), std::numeric_limits<double>::infinity());
   const int goal_cell = cellAt(goal);
   if (goal_cell < 0) return;
-  const auto lethal = [this](int cell) { return clearance_[cell] < radius_ || marked_[cell]; };
+  // Whether each cell is lethal, and its weight (how much dearer it is to cross), once for the whole wavefront.
   const double band = inflation_radius_ - radius_;  // metres of inflation beyond the lethal zone
-  const auto weight = [this, band](int cell) {
-    return band > 0 ? 1 + kInflationWeight * std::max(0.0, 1 - (clearance_[cell] - radius_) / band) : 1.0;
-  };
+  for (std::size_t cell = 0; cell < weight_.size(); ++cell) {
+    lethal_[cell] = clearance_[cell] < radius_ || marked_[cell];
+    weight_[cell] = band > 0 ? 1 + kInflationWeight * std::max(0.0, 1 - (clearance_[cell] - radius_) / band) : 1.0;
+  }
+  const auto lethal = [this](int cell) { return lethal_[cell] != 0; };
+  const auto weight = [this](int cell) { return weight_[cell]; };
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
   cost_[goal_cell] = 0;

@@ -41,6 +41,8 @@ class ScanCostmap {
   std::vector<std::uint8_t> marked_;
   std::vector<double> clearance_;  // metres from each cell's centre to the nearest marked cell's square
   std::vector<double> cost_;       // the wavefront
+  std::vector<std::uint8_t> lethal_;  // plan()'s view of each cell: nearer a mark than the robot's radius
+  std::vector<double> weight_;        // plan()'s cost factor of crossing each cell
   MapPoint goal_;
   bool changed_ = false, planned_ = false;
 };
