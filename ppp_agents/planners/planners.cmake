@@ -137,7 +137,7 @@ cmp $out ${CMAKE_CURRENT_SOURCE_DIR}/../docs/images/${picture}")
   target_compile_options(mrpt_threads_test PRIVATE -Wall -Wextra)
   # MRPT's wavefront planner's defects, each shown by the program of its upstream report (docs/upstream/REPORT),
   # which its test runs and checks the report shows line for line: a goal off the map written outside the grid
-  # (under valgrind), the thread race, paths that are not shortest beside the change the report proposes, and ND
+  # (under valgrind), the thread race, a path that is not the shortest, notFound for a path that exists, and ND
   # turning away from an open target at its seam.
   function(upstream_report_test program test report)
     add_executable(${program} planners/test/${program}.cpp)
@@ -151,6 +151,7 @@ cmp $out ${CMAKE_CURRENT_SOURCE_DIR}/../docs/images/${picture}")
   upstream_report_test(mrpt_goal_off_map mrpt_valgrind_test mrpt-goal-off-the-map.md)
   upstream_report_test(mrpt_planner_race mrpt_race_test mrpt-planner-thread-race.md)
   upstream_report_test(mrpt_planner_paths mrpt_paths_test mrpt-planner-paths.md)
+  upstream_report_test(mrpt_planner_not_found mrpt_not_found_test mrpt-planner-not-found.md)
   upstream_report_test(mrpt_nd_seam mrpt_seam_test mrpt-nd-seam.md)
   catkin_add_gtest(planner_node_parameters_test planners/test/planner_node_parameters_test.cpp)
   target_link_libraries(planner_node_parameters_test ppp_planners_ros GTest::gtest_main)

@@ -3,6 +3,8 @@
 // space) and MRPT's own failed check of the trace's step. Usage: mrpt_planner_race [PLANS_PER_THREAD]
 // [--expect-race]. Exits 1 when one thread alone does not answer the same every time, or, with --expect-race, when
 // nothing was caught; else 0, whatever the counts (how often two threads meet in the trace is the scheduler's).
+// Built with a sanitizer (-fsanitize=thread or address), it leaves the address space unlimited: the sanitizers
+// reserve terabytes of it for their shadow memory.
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/nav/planners/PlannerSimple2D.h>
 #include <mrpt/poses/CPose2D.h>
@@ -17,6 +19,14 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#if defined(__SANITIZE_THREAD__) || defined(__SANITIZE_ADDRESS__)
+#define SANITIZED_BUILD 1
+#elif defined(__has_feature)
+#if __has_feature(thread_sanitizer) || __has_feature(address_sanitizer)
+#define SANITIZED_BUILD 1
+#endif
+#endif
 
 using Path = std::deque<mrpt::math::TPoint2D>;
 
@@ -54,8 +64,10 @@ bool same(const Path& a, const Path& b) {
 int main(int argc, char** argv) {
   const long plans = argc > 1 ? std::atol(argv[1]) : 3000;
   const bool expect_race = argc > 2 && std::string(argv[2]) == "--expect-race";
+#ifndef SANITIZED_BUILD
   const rlimit limit{2ul << 30, 2ul << 30};
   setrlimit(RLIMIT_AS, &limit);
+#endif
   mrpt::nav::PlannerSimple2D planner;
   planner.robotRadius = 0;            // the gaps are one cell wide
   planner.minStepInReturnedPath = 0;  // every cell of a path is a point

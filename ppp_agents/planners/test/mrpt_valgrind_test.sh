@@ -1,14 +1,12 @@
 #!/usr/bin/env bash
 # MRPT's PlannerSimple2D::computePath writes outside its grid for a goal just beyond the map's top edge: a heap
-# write out of bounds that no unit test sees (it lands in the allocator's slack, and the call then returns
+# write out of bounds that no unit test sees (it lands in the next heap chunk, and the call then returns
 # notFound as documented). Run under valgrind (installed by scripts/install-deps.sh), and the upstream report
 # shows exactly this program.
 # Usage: mrpt_valgrind_test.sh PROGRAM SOURCE REPORT
 set -uo pipefail
 program="$1" source="$2" report="$3"
-failures=0
-pass() { echo "ok: $1"; }
-fail() { echo "FAIL: $1"; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/upstream_report_checks.sh"
 command -v valgrind > /dev/null || { echo "FAIL: valgrind is not installed (scripts/install-deps.sh installs it)"; exit 1; }
 
 log=$(mktemp)
@@ -20,9 +18,6 @@ status=$?
   pass "MRPT writes 12 bytes past its 7x6 grid, then says notFound" || \
   fail "computePath under valgrind (exit $status, output '$output'): $(grep -A3 'Invalid\|ERROR SUMMARY' "$log" | head -12)"
 
-# The report's program is this one, line for line.
-sed -n '/^```cpp$/,/^```$/p' "$report" | sed '1d;$d' | diff -q - "$source" > /dev/null && \
-  pass "the report shows the program tested" || fail "$report's program differs from $source"
+report_shows_program "$report" "$source"
 
-echo "$((2 - failures)) passed, $failures failed"
-[ "$failures" -eq 0 ]
+finish
