@@ -56,10 +56,9 @@ for dataset in $( (git -C "$mrpt" show "$revision:${tests[0]}" 2> /dev/null || t
                   grep -oE 'datasets/[A-Za-z0-9_.-]+' | sort -u); do
   extract+=($(grep -E "(^|/)$dataset$" <<< "$listing" | head -1))
 done
-git -C "$mrpt" archive "$revision" -- $(printf '%s\n' "${extract[@]}" | sort -u) | tar -x -C "$work"
-data_dir="$(find "$work" -type d -name datasets -printf '%h\n' | head -1)"
-
-cp -r "$work" "$work.before" && mv "$work.before" "$work/before"
+mkdir "$work/before"
+git -C "$mrpt" archive "$revision" -- $(printf '%s\n' "${extract[@]}" | sort -u) | tar -x -C "$work/before"
+data_dir="$(find "$work/before" -type d -name datasets -printf '%h\n' | head -1)"
 cp -r "$work/before" "$work/after"
 echo "== $(basename "$patch") on MRPT $(git -C "$mrpt" rev-parse --short=12 "$revision^{commit}") ($revision)"
 (cd "$work/after" && git apply --check "$patch" && git apply "$patch")
